@@ -1,0 +1,25 @@
+//! # moving-hertz
+//!
+//! The Hertz contact problem for a rigid punch sliding without friction at a constant
+//! sub-Rayleigh speed over an elastic half-space, after the paper in `../shared/paper.md`
+//! (sections and equation numbers below refer to it), at any precision: `f64`, double-double
+//! ([`scalar::Dd`]) and MPFR ([`scalar::Mp`]), with exact rationals where a recurrence has exact
+//! coefficients.
+//!
+//! Layers, each importing only the ones above it:
+//!
+//! | module | holds |
+//! |---|---|
+//! | [`scalar`] | the [`scalar::Field`] / [`scalar::Real`] traits, the backends, [`scalar::Complex`] |
+//! | [`numerics`] | elliptic integrals, quadrature, root finding, the series driver |
+//!
+//! Conventions: the elliptic *parameter* is `m = k²` throughout [`numerics::elliptic`] (as in
+//! DLMF §19, mpmath and scipy); the paper's `k = b/a` is an axis ratio, never a modulus.
+
+#![warn(missing_docs)]
+
+pub mod error;
+pub mod numerics;
+pub mod scalar;
+
+pub use error::{Error, Result};

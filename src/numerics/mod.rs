@@ -1,0 +1,4 @@
+//! Generic numerical building blocks: elliptic integrals, quadrature, root finding and the
+//! series driver. Every routine is written once over [`crate::scalar::Real`], takes its
+//! tolerance from the working precision, bounds its work and returns a typed error when it does
+//! not converge.

@@ -1,0 +1,418 @@
+//! The scalar layer: the traits every formula of the crate is generic over, and their backends.
+//!
+//! * [`Field`] — exact or rounded field arithmetic (`+ − × ÷`), construction of integers and
+//!   integer ratios *at a precision*, comparison. Implemented by `f64`, [`Dd`], [`Mp`] and
+//!   `rug::Rational` (exact).
+//! * [`Real`] — a rounded real number type: precision queries (ε, bits), constants (π, ln 2) made at
+//!   the working precision, decimal parsing and printing at the working precision, and the
+//!   elementary functions the crate uses (sqrt, cbrt, exp, ln, sin, cos, atan2, ...). Implemented by
+//!   `f64`, [`Dd`] (double-double over `twofloat`) and [`Mp`] (MPFR through `rug`).
+//! * [`Complex`] — a complex number over any [`Real`], with principal square and cube roots.
+//!
+//! # How precision travels
+//!
+//! Values are not `Copy` (an MPFR number owns a heap buffer) and each value knows its precision:
+//! [`Field::prec`] returns a small `Copy` token (`()` for `f64`, [`Dd`] and `Rational`, an
+//! [`MpPrec`] holding the bit count for [`Mp`]). Generic code reads the token from an input and
+//! passes it to every constructor: `T::from_ratio(1, 3, p)`, `T::pi(p)`, `T::epsilon(p)`. No
+//! constant ever enters a computation as an `f64` decimal literal.
+//!
+//! Arithmetic operators take the left operand by value and the right one by value or by
+//! reference (`a + &b`); generic code writes `a.clone() * &b` when it needs `a` again. For `f64`
+//! and [`Dd`] the clone is a copy; for [`Mp`] it is the one allocation the result needs anyway.
+//!
+//! Mixing precisions: an [`Mp`] operation on operands of different precisions is carried out at
+//! the larger one (so no accuracy is lost silently) and counted; [`mixed_precision_events`]
+//! returns the count, and the test suite asserts it stays zero through every computation.
+
+mod complex;
+mod dd;
+mod f64_impl;
+mod mp;
+mod parse;
+mod rational;
+
+pub use complex::Complex;
+pub use dd::Dd;
+pub use mp::{mixed_precision_events, Mp, MpPrec};
+pub use parse::decimal_to_rational;
+
+use crate::error::{Error, Result};
+use std::fmt::Debug;
+use std::hash::Hash;
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// Field arithmetic at a given precision (exact for `rug::Rational`).
+///
+/// Implementors: `f64`, [`Dd`], [`Mp`], `rug::Rational`. Every formula whose coefficients are
+/// exact rationals (the recurrence (36) of the paper, the L_n/M_n recursion (40)) is written once
+/// over this trait so that it can also run exactly.
+pub trait Field:
+    Clone
+    + Debug
+    + PartialEq
+    + PartialOrd
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+    + DivAssign
+    + for<'a> AddAssign<&'a Self>
+    + for<'a> SubAssign<&'a Self>
+    + for<'a> MulAssign<&'a Self>
+    + for<'a> DivAssign<&'a Self>
+{
+    /// The precision token: `()` for fixed-precision types, [`MpPrec`] for MPFR.
+    type Prec: Copy + Debug + PartialEq + Eq + Hash + Send + Sync + 'static;
+
+    /// Precision of this value.
+    fn prec(&self) -> Self::Prec;
+    /// The integer `n` at precision `p` (exact when `|n|` fits the significand).
+    fn from_i64(n: i64, p: Self::Prec) -> Self;
+    /// The ratio `num/den` rounded once at precision `p` (exact for `Rational`). `den != 0`.
+    fn from_ratio(num: i64, den: i64, p: Self::Prec) -> Self;
+    /// Zero at precision `p`.
+    fn zero(p: Self::Prec) -> Self {
+        Self::from_i64(0, p)
+    }
+    /// One at precision `p`.
+    fn one(p: Self::Prec) -> Self {
+        Self::from_i64(1, p)
+    }
+    /// True when the value is exactly zero.
+    fn is_zero(&self) -> bool;
+    /// True when the value is strictly negative.
+    fn is_negative(&self) -> bool;
+    /// True when the value is strictly positive.
+    fn is_positive(&self) -> bool {
+        !self.is_zero() && !self.is_negative()
+    }
+    /// Absolute value.
+    fn abs(self) -> Self {
+        if self.is_negative() {
+            -self
+        } else {
+            self
+        }
+    }
+    /// `self * n` for a small integer (a fast path on every backend).
+    fn mul_i64(self, n: i64) -> Self;
+    /// `self / n` for a small nonzero integer, rounded once.
+    fn div_i64(self, n: i64) -> Self;
+    /// `self * self`.
+    fn square(&self) -> Self {
+        self.clone() * self
+    }
+    /// `1 / self`.
+    fn recip(self) -> Self {
+        Self::one(self.prec()) / self
+    }
+    /// `self^n` for an integer `n` by binary powering (`n < 0` inverts).
+    fn powi(&self, n: i64) -> Self {
+        let p = self.prec();
+        let mut base = self.clone();
+        let mut e = n.unsigned_abs();
+        let mut acc = Self::one(p);
+        while e > 0 {
+            if e & 1 == 1 {
+                acc *= &base;
+            }
+            e >>= 1;
+            if e > 0 {
+                base = base.square();
+            }
+        }
+        if n < 0 {
+            acc.recip()
+        } else {
+            acc
+        }
+    }
+    /// Nearest `f64` (for seeds, reports and charts only; never fed back at higher precision).
+    fn to_f64(&self) -> f64;
+    /// The larger of two values.
+    fn max_of(self, other: Self) -> Self {
+        if other > self {
+            other
+        } else {
+            self
+        }
+    }
+    /// The smaller of two values.
+    fn min_of(self, other: Self) -> Self {
+        if other < self {
+            other
+        } else {
+            self
+        }
+    }
+}
+
+/// A rounded real number type at a fixed or run-time precision.
+///
+/// Implementors: `f64` (53 bits), [`Dd`] (double-double, 106 bits, relative accuracy ≈ 2^-104 for
+/// every operation and function listed here), [`Mp`] (MPFR, 24 bits to [`MpPrec::MAX_BITS`],
+/// correctly rounded).
+///
+/// What a new backend must implement is listed in `docs/design.md`: the [`Field`] operations, the
+/// precision queries, `from_f64`/`parse`/`to_decimal`, conversion to and from `rug::Float`, and the
+/// elementary functions without default bodies below.
+pub trait Real: Field {
+    /// Significand bits of the precision `p` (53 for `f64`, 106 for [`Dd`], the MPFR precision).
+    fn bits(p: Self::Prec) -> u32;
+    /// Machine epsilon `2^(1 - bits)` at precision `p`: the unit every tolerance is built from.
+    fn epsilon(p: Self::Prec) -> Self {
+        Self::one(p).mul_pow2(1 - Self::bits(p) as i32)
+    }
+    /// `2^(-bits/n)`, rounded down in the exponent: ε^(1/n) up to a factor of 2 (√ε for n = 2).
+    fn epsilon_root(p: Self::Prec, n: u32) -> Self {
+        Self::one(p).mul_pow2(-((Self::bits(p) - 1) as i32 / n as i32))
+    }
+    /// Smallest positive normal number (guards divisions by tiny quantities).
+    fn min_positive(p: Self::Prec) -> Self;
+    /// π at precision `p`.
+    fn pi(p: Self::Prec) -> Self;
+    /// ln 2 at precision `p`.
+    fn ln2(p: Self::Prec) -> Self;
+    /// The `f64` value `x` exactly (for seeds and exactly representable test inputs).
+    fn from_f64(x: f64, p: Self::Prec) -> Self;
+    /// The decimal text `s` rounded at precision `p` (not via `f64`).
+    fn parse(s: &str, p: Self::Prec) -> Result<Self>;
+    /// Every significant digit of the working precision, in scientific notation.
+    fn to_decimal(&self) -> String;
+    /// The value as an MPFR number with at least `bits` bits (exact if `bits` suffices).
+    fn to_float(&self, bits: u32) -> rug::Float;
+    /// The MPFR number `x` rounded to precision `p`.
+    fn from_float(x: &rug::Float, p: Self::Prec) -> Self;
+    /// `self · 2^k`, exact barring overflow or underflow.
+    fn mul_pow2(self, k: i32) -> Self;
+    /// Neither NaN nor infinite.
+    fn is_finite(&self) -> bool;
+    /// NaN.
+    fn is_nan(&self) -> bool;
+    /// Largest integer not above `self`.
+    fn floor(self) -> Self;
+    /// Nearest integer, ties away from zero.
+    fn round(self) -> Self;
+    /// Square root (NaN for negative input).
+    fn sqrt(self) -> Self;
+    /// Real cube root.
+    fn cbrt(self) -> Self;
+    /// e^x.
+    fn exp(self) -> Self;
+    /// e^x − 1, accurate for small x.
+    fn exp_m1(self) -> Self;
+    /// Natural logarithm.
+    fn ln(self) -> Self;
+    /// ln(1 + x), accurate for small x.
+    fn ln_1p(self) -> Self;
+    /// Sine.
+    fn sin(self) -> Self;
+    /// Cosine.
+    fn cos(self) -> Self;
+    /// Sine and cosine together.
+    fn sin_cos(self) -> (Self, Self) {
+        (self.clone().sin(), self.cos())
+    }
+    /// Four-quadrant arctangent of `self / x`, in (−π, π].
+    fn atan2(self, x: &Self) -> Self;
+    /// Arctangent.
+    fn atan(self) -> Self {
+        let one = Self::one(self.prec());
+        self.atan2(&one)
+    }
+    /// Arcsine on [−1, 1].
+    fn asin(self) -> Self {
+        let p = self.prec();
+        let c = ((Self::one(p) - &self) * (Self::one(p) + &self)).sqrt();
+        self.atan2(&c)
+    }
+    /// Arccosine on [−1, 1].
+    fn acos(self) -> Self {
+        let p = self.prec();
+        let s = ((Self::one(p) - &self) * (Self::one(p) + &self)).sqrt();
+        s.atan2(&self)
+    }
+    /// Tangent.
+    fn tan(self) -> Self {
+        let (s, c) = self.sin_cos();
+        s / c
+    }
+    /// Hyperbolic sine, accurate near zero: (m + m/(m+1))/2 with m = e^|x| − 1 (all terms
+    /// positive, no cancellation), sign restored.
+    fn sinh(self) -> Self {
+        let neg = self.is_negative();
+        let m = self.abs().exp_m1();
+        let r = if m.is_finite() {
+            let p = m.prec();
+            let d = m.clone() / (m.clone() + Self::one(p));
+            (m + d).mul_pow2(-1)
+        } else {
+            m
+        };
+        if neg {
+            -r
+        } else {
+            r
+        }
+    }
+    /// Hyperbolic cosine.
+    fn cosh(self) -> Self {
+        let e = self.exp();
+        let p = e.prec();
+        (e.clone() + Self::one(p) / e).mul_pow2(-1)
+    }
+    /// Hyperbolic tangent, accurate near zero.
+    fn tanh(self) -> Self {
+        let p = self.prec();
+        // tanh x = m / (m + 2) with m = e^(2x) - 1; for large |x| use the sign.
+        let neg = self.is_negative();
+        let m = self.abs().mul_pow2(1).exp_m1();
+        let t = if m.is_finite() {
+            m.clone() / (m + Self::from_i64(2, p))
+        } else {
+            Self::one(p)
+        };
+        if neg {
+            -t
+        } else {
+            t
+        }
+    }
+    /// √(x² + y²) without undue overflow.
+    fn hypot(self, y: &Self) -> Self {
+        let a = self.abs();
+        let b = y.clone().abs();
+        let (big, small) = if a >= b { (a, b) } else { (b, a) };
+        if big.is_zero() {
+            return big;
+        }
+        let r = small / &big;
+        let p = r.prec();
+        big * (Self::one(p) + r.square()).sqrt()
+    }
+    /// `self^y` for real `y` (positive base).
+    fn powf(self, y: &Self) -> Self {
+        (self.ln() * y).exp()
+    }
+    /// `self * a + b`, rounded once where the backend can.
+    fn mul_add(self, a: &Self, b: &Self) -> Self {
+        self * a + b
+    }
+    /// The same value at another precision (rounded when narrowing).
+    fn with_prec(&self, p: Self::Prec) -> Self {
+        let bits = Self::bits(self.prec()).max(Self::bits(p)) + 64;
+        Self::from_float(&self.to_float(bits), p)
+    }
+}
+
+/// A run-time choice of backend and precision, as the CLI and studies take it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Precision {
+    /// IEEE double.
+    F64,
+    /// Double-double ([`Dd`]).
+    DoubleDouble,
+    /// MPFR with the given number of bits ([`Mp`]).
+    Mpfr(MpPrec),
+}
+
+impl Precision {
+    /// Parses `f64`, `dd` (or `double-double`) or a bit count such as `256`.
+    pub fn parse(s: &str) -> Result<Self> {
+        match s.trim().to_ascii_lowercase().as_str() {
+            "f64" | "double" | "53" => Ok(Precision::F64),
+            "dd" | "double-double" | "doubledouble" => Ok(Precision::DoubleDouble),
+            t => {
+                let bits: u64 = t.parse().map_err(|_| Error::Parse {
+                    text: s.to_string(),
+                    reason: "expected f64, dd or a number of bits",
+                })?;
+                Ok(Precision::Mpfr(MpPrec::new(bits)?))
+            }
+        }
+    }
+    /// Significand bits of this precision.
+    pub fn bits(&self) -> u32 {
+        match self {
+            Precision::F64 => 53,
+            Precision::DoubleDouble => 106,
+            Precision::Mpfr(p) => p.bits(),
+        }
+    }
+    /// A short label: `f64`, `dd`, `mpfr256`.
+    pub fn label(&self) -> String {
+        match self {
+            Precision::F64 => "f64".into(),
+            Precision::DoubleDouble => "dd".into(),
+            Precision::Mpfr(p) => format!("mpfr{}", p.bits()),
+        }
+    }
+}
+
+impl std::fmt::Display for Precision {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.label())
+    }
+}
+
+/// Runs a generic body at the backend a [`Precision`] selects.
+///
+/// `with_precision!(prec, T, p => body)` expands `body` three times, with `T` bound to `f64`,
+/// [`Dd`] or [`Mp`] and `p` to the matching precision token.
+#[macro_export]
+macro_rules! with_precision {
+    ($prec:expr, $T:ident, $p:ident => $body:expr) => {{
+        match $prec {
+            $crate::scalar::Precision::F64 => {
+                type $T = f64;
+                let $p: () = ();
+                $body
+            }
+            $crate::scalar::Precision::DoubleDouble => {
+                type $T = $crate::scalar::Dd;
+                let $p: () = ();
+                $body
+            }
+            $crate::scalar::Precision::Mpfr(mp_prec) => {
+                type $T = $crate::scalar::Mp;
+                let $p: $crate::scalar::MpPrec = mp_prec;
+                $body
+            }
+        }
+    }};
+}
+
+/// Checks that a value is finite, naming it in the error otherwise.
+pub fn check_finite<T: Real>(name: &'static str, x: &T) -> Result<()> {
+    if x.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::NotFinite {
+            name,
+            value: x.to_decimal(),
+        })
+    }
+}
+
+/// Short printing of a value for error messages (about 6 significant digits).
+pub fn short<T: Real>(x: &T) -> String {
+    let f = x.to_f64();
+    if f.is_finite() && f != 0.0 && (f.abs() > 1e300 || f.abs() < 1e-300) {
+        // Outside f64's comfortable range: print from the full decimal form.
+        let s = x.to_decimal();
+        return s;
+    }
+    format!("{f:.6e}")
+}
