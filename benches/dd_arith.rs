@@ -20,7 +20,11 @@ use twofloat::TwoFloat;
 const CHAIN: usize = 64;
 
 fn bench(c: &mut Criterion) {
-    let fma = if cfg!(target_feature = "fma") { "fma" } else { "nofma" };
+    let fma = if cfg!(target_feature = "fma") {
+        "fma"
+    } else {
+        "nofma"
+    };
     let mut g = c.benchmark_group(format!("dd_arith_{fma}"));
     let a = Dd::from_parts(1.000_000_1, 1.0e-17);
     let b = Dd::from_parts(0.999_999_9, -3.0e-18);

@@ -12,6 +12,7 @@
 //! |---|---|
 //! | [`scalar`] | the [`scalar::Field`] / [`scalar::Real`] traits, the backends, [`scalar::Complex`] |
 //! | [`numerics`] | elliptic integrals, quadrature, root finding, the series driver |
+//! | [`physics`] | material and speeds, the Rayleigh function and roots, the Green's function (sections 3, 6) |
 //!
 //! Conventions: the elliptic *parameter* is `m = k²` throughout [`numerics::elliptic`] (as in
 //! DLMF §19, mpmath and scipy); the paper's `k = b/a` is an axis ratio, never a modulus.
@@ -20,6 +21,7 @@
 
 pub mod error;
 pub mod numerics;
+pub mod physics;
 pub mod scalar;
 
 pub use error::{Error, Result};

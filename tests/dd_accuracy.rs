@@ -65,7 +65,13 @@ struct Stat {
 }
 impl Stat {
     fn new(name: &'static str) -> Stat {
-        Stat { name, worst: 0.0, sum: 0.0, n: 0, worst_arg: String::new() }
+        Stat {
+            name,
+            worst: 0.0,
+            sum: 0.0,
+            n: 0,
+            worst_arg: String::new(),
+        }
     }
     fn add(&mut self, e: f64, arg: impl Fn() -> String) {
         self.n += 1;
@@ -78,13 +84,20 @@ impl Stat {
     fn check(&self, bound_u: f64) {
         println!(
             "{:>6}: n = {:>6}, mean {:6.3} u, worst {:6.3} u (bound {bound_u} u) at {}",
-            self.name, self.n, self.sum / self.n as f64, self.worst, self.worst_arg
+            self.name,
+            self.n,
+            self.sum / self.n as f64,
+            self.worst,
+            self.worst_arg
         );
         assert!(self.n >= 10_000);
         assert!(
             self.worst <= bound_u,
             "{}: worst error {} u exceeds {} u at {}",
-            self.name, self.worst, bound_u, self.worst_arg
+            self.name,
+            self.worst,
+            bound_u,
+            self.worst_arg
         );
     }
 }
@@ -122,7 +135,9 @@ fn binary(
         let (x, y) = gen(&mut rng);
         let got = f(x, y);
         let r = reference(mp(&x), mp(&y));
-        st.add(rel_err_u(&got, &r), || format!("({}, {})", x.to_decimal(), y.to_decimal()));
+        st.add(rel_err_u(&got, &r), || {
+            format!("({}, {})", x.to_decimal(), y.to_decimal())
+        });
     }
     st.check(bound_u);
 }
@@ -134,42 +149,181 @@ fn pair(r: &mut Rng) -> (Dd, Dd) {
 #[test]
 fn add_sub_mul_div() {
     // Addition of same-sign operands (no cancellation beyond what the format represents).
-    binary("add", 1, |r| (r.dd_log(-5.0, 5.0, false), r.dd_log(-5.0, 5.0, false)), |a, b| a + b,
-        |a, b| Float::with_val(256, a + b), 4.0);
-    binary("sub", 2, pair, |a, b| a - b, |a, b| Float::with_val(256, a - b), 4.0);
-    binary("mul", 3, pair, |a, b| a * b, |a, b| Float::with_val(256, a * b), 4.0);
-    binary("div", 4, pair, |a, b| a / b, |a, b| Float::with_val(256, a / b), 4.0);
+    binary(
+        "add",
+        1,
+        |r| (r.dd_log(-5.0, 5.0, false), r.dd_log(-5.0, 5.0, false)),
+        |a, b| a + b,
+        |a, b| Float::with_val(256, a + b),
+        4.0,
+    );
+    binary(
+        "sub",
+        2,
+        pair,
+        |a, b| a - b,
+        |a, b| Float::with_val(256, a - b),
+        4.0,
+    );
+    binary(
+        "mul",
+        3,
+        pair,
+        |a, b| a * b,
+        |a, b| Float::with_val(256, a * b),
+        4.0,
+    );
+    binary(
+        "div",
+        4,
+        pair,
+        |a, b| a / b,
+        |a, b| Float::with_val(256, a / b),
+        4.0,
+    );
 }
 
 #[test]
 fn roots() {
-    unary("sqrt", 5, |r| r.dd_log(-100.0, 100.0, false), |x| x.sqrt(), |x| x.sqrt(), 4.0);
-    unary("cbrt", 6, |r| r.dd_log(-100.0, 100.0, true), |x| x.cbrt(), |x| x.cbrt(), 4.0);
+    unary(
+        "sqrt",
+        5,
+        |r| r.dd_log(-100.0, 100.0, false),
+        |x| x.sqrt(),
+        |x| x.sqrt(),
+        4.0,
+    );
+    unary(
+        "cbrt",
+        6,
+        |r| r.dd_log(-100.0, 100.0, true),
+        |x| x.cbrt(),
+        |x| x.cbrt(),
+        4.0,
+    );
 }
 
 #[test]
 fn exp_and_log() {
     // Below e^-670 the trailing word is subnormal: double-double itself has fewer bits there.
-    unary("exp", 7, |r| r.dd_in(-670.0, 709.0), |x| x.exp(), |x| x.exp(), 6.0);
-    unary("exp_m1", 8, |r| r.dd_log(-12.0, 1.5, true), |x| x.exp_m1(), |x| x.exp_m1(), 6.0);
-    unary("ln", 9, |r| r.dd_log(-300.0, 300.0, false), |x| x.ln(), |x| x.ln(), 6.0);
-    unary("ln~1", 10, |r| r.dd_in(0.5, 2.0), |x| x.ln(), |x| x.ln(), 6.0);
-    unary("ln_1p", 11, |r| r.dd_log(-12.0, 3.0, false), |x| x.ln_1p(), |x| x.ln_1p(), 6.0);
+    unary(
+        "exp",
+        7,
+        |r| r.dd_in(-670.0, 709.0),
+        |x| x.exp(),
+        |x| x.exp(),
+        6.0,
+    );
+    unary(
+        "exp_m1",
+        8,
+        |r| r.dd_log(-12.0, 1.5, true),
+        |x| x.exp_m1(),
+        |x| x.exp_m1(),
+        6.0,
+    );
+    unary(
+        "ln",
+        9,
+        |r| r.dd_log(-300.0, 300.0, false),
+        |x| x.ln(),
+        |x| x.ln(),
+        6.0,
+    );
+    unary(
+        "ln~1",
+        10,
+        |r| r.dd_in(0.5, 2.0),
+        |x| x.ln(),
+        |x| x.ln(),
+        6.0,
+    );
+    unary(
+        "ln_1p",
+        11,
+        |r| r.dd_log(-12.0, 3.0, false),
+        |x| x.ln_1p(),
+        |x| x.ln_1p(),
+        6.0,
+    );
 }
 
 #[test]
 fn trigonometric() {
-    unary("sin", 12, |r| r.dd_in(-100.0, 100.0), |x| x.sin(), |x| x.sin(), 6.0);
-    unary("cos", 13, |r| r.dd_in(-100.0, 100.0), |x| x.cos(), |x| x.cos(), 6.0);
-    unary("sin0", 14, |r| r.dd_log(-10.0, 0.0, true), |x| x.sin(), |x| x.sin(), 6.0);
-    binary("atan2", 15, pair, |y, x| y.atan2(&x), |y, x| y.atan2(&x), 6.0);
-    unary("asin", 16, |r| r.dd_in(-1.0, 1.0), |x| x.asin(), |x| x.asin(), 6.0);
-    unary("acos", 17, |r| r.dd_in(-1.0, 1.0), |x| x.acos(), |x| x.acos(), 6.0);
+    unary(
+        "sin",
+        12,
+        |r| r.dd_in(-100.0, 100.0),
+        |x| x.sin(),
+        |x| x.sin(),
+        6.0,
+    );
+    unary(
+        "cos",
+        13,
+        |r| r.dd_in(-100.0, 100.0),
+        |x| x.cos(),
+        |x| x.cos(),
+        6.0,
+    );
+    unary(
+        "sin0",
+        14,
+        |r| r.dd_log(-10.0, 0.0, true),
+        |x| x.sin(),
+        |x| x.sin(),
+        6.0,
+    );
+    binary(
+        "atan2",
+        15,
+        pair,
+        |y, x| y.atan2(&x),
+        |y, x| y.atan2(&x),
+        6.0,
+    );
+    unary(
+        "asin",
+        16,
+        |r| r.dd_in(-1.0, 1.0),
+        |x| x.asin(),
+        |x| x.asin(),
+        6.0,
+    );
+    unary(
+        "acos",
+        17,
+        |r| r.dd_in(-1.0, 1.0),
+        |x| x.acos(),
+        |x| x.acos(),
+        6.0,
+    );
 }
 
 #[test]
 fn hyperbolic() {
-    unary("tanh", 18, |r| r.dd_log(-8.0, 1.5, true), |x| x.tanh(), |x| x.tanh(), 6.0);
-    unary("sinh", 19, |r| r.dd_log(-8.0, 2.0, true), |x| x.sinh(), |x| x.sinh(), 6.0);
-    unary("cosh", 20, |r| r.dd_in(-200.0, 200.0), |x| x.cosh(), |x| x.cosh(), 6.0);
+    unary(
+        "tanh",
+        18,
+        |r| r.dd_log(-8.0, 1.5, true),
+        |x| x.tanh(),
+        |x| x.tanh(),
+        6.0,
+    );
+    unary(
+        "sinh",
+        19,
+        |r| r.dd_log(-8.0, 2.0, true),
+        |x| x.sinh(),
+        |x| x.sinh(),
+        6.0,
+    );
+    unary(
+        "cosh",
+        20,
+        |r| r.dd_in(-200.0, 200.0),
+        |x| x.cosh(),
+        |x| x.cosh(),
+        6.0,
+    );
 }

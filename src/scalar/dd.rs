@@ -589,6 +589,16 @@ impl Field for Dd {
 }
 
 impl Real for Dd {
+    type Wide = super::Mp;
+    fn wide_prec(_: ()) -> super::MpPrec {
+        super::MpPrec::DD_WIDE
+    }
+    fn to_wide(&self, pw: super::MpPrec) -> super::Mp {
+        super::Mp(self.to_float(pw.bits()))
+    }
+    fn from_wide(w: &super::Mp, _: ()) -> Dd {
+        Dd::from_float(&w.0, ())
+    }
     #[inline(always)]
     fn bits(_: ()) -> u32 {
         106

@@ -85,6 +85,17 @@ impl Field for f64 {
 }
 
 impl Real for f64 {
+    type Wide = super::Dd;
+    #[inline(always)]
+    fn wide_prec(_: ()) {}
+    #[inline(always)]
+    fn to_wide(&self, _: ()) -> super::Dd {
+        super::Dd::from_f64_exact(*self)
+    }
+    #[inline(always)]
+    fn from_wide(w: &super::Dd, _: ()) -> f64 {
+        w.hi() + w.lo()
+    }
     #[inline(always)]
     fn bits(_: ()) -> u32 {
         53

@@ -169,6 +169,15 @@ pub trait Field:
 /// precision queries, `from_f64`/`parse`/`to_decimal`, conversion to and from `rug::Float`, and the
 /// elementary functions without default bodies below.
 pub trait Real: Field {
+    /// A type with at least twice this precision, for computations that need guard digits
+    /// (a double root, a residual that cancels): `Dd` for `f64`, `Mp` for `Dd` and `Mp`.
+    type Wide: Real;
+    /// The precision of [`Real::Wide`] used to guard precision `p`: ≥ 2·bits(p) + 32 for MPFR.
+    fn wide_prec(p: Self::Prec) -> <Self::Wide as Field>::Prec;
+    /// This value at the wide precision `pw` (exact).
+    fn to_wide(&self, pw: <Self::Wide as Field>::Prec) -> Self::Wide;
+    /// A wide value rounded back to precision `p`.
+    fn from_wide(w: &Self::Wide, p: Self::Prec) -> Self;
     /// Significand bits of the precision `p` (53 for `f64`, 106 for [`Dd`], the MPFR precision).
     fn bits(p: Self::Prec) -> u32;
     /// Machine epsilon `2^(1 - bits)` at precision `p`: the unit every tolerance is built from.
@@ -401,18 +410,18 @@ pub fn check_finite<T: Real>(name: &'static str, x: &T) -> Result<()> {
     } else {
         Err(Error::NotFinite {
             name,
-            value: x.to_decimal(),
+            value: short(x),
         })
     }
 }
 
-/// Short printing of a value for error messages (about 6 significant digits).
+/// A value as error messages show it: the shortest decimal that identifies its nearest `f64`
+/// (so `0.7` prints as `0.7`), or every digit when it lies outside the `f64` range.
 pub fn short<T: Real>(x: &T) -> String {
     let f = x.to_f64();
-    if f.is_finite() && f != 0.0 && (f.abs() > 1e300 || f.abs() < 1e-300) {
-        // Outside f64's comfortable range: print from the full decimal form.
-        let s = x.to_decimal();
-        return s;
+    if f == 0.0 || !f.is_finite() || (f.abs() < 1e300 && f.abs() > 1e-300) {
+        format!("{f}")
+    } else {
+        x.to_decimal()
     }
-    format!("{f:.6e}")
 }

@@ -45,6 +45,9 @@ impl MpPrec {
     pub fn bits(self) -> u32 {
         self.0
     }
+    /// The wide precision guarding double-double: 2·106 + 32 bits.
+    pub(super) const DD_WIDE: MpPrec = MpPrec(2 * 106 + 32);
+
     /// This precision plus `g` guard bits (saturating at the maximum).
     pub fn with_guard(self, g: u32) -> MpPrec {
         MpPrec((self.0 + g).min(Self::MAX_BITS))
@@ -186,6 +189,16 @@ impl Field for Mp {
 }
 
 impl Real for Mp {
+    type Wide = Mp;
+    fn wide_prec(p: MpPrec) -> MpPrec {
+        MpPrec((2 * p.0 + 32).min(MpPrec::MAX_BITS))
+    }
+    fn to_wide(&self, pw: MpPrec) -> Mp {
+        Mp(Float::with_val(pw.0.max(self.0.prec()), &self.0))
+    }
+    fn from_wide(w: &Mp, p: MpPrec) -> Mp {
+        Mp(Float::with_val(p.0, &w.0))
+    }
     fn bits(p: MpPrec) -> u32 {
         p.0
     }

@@ -1,0 +1,108 @@
+//! The moving-load surface Green's function: Γ of (5), its regular part G of (44)–(45) and the
+//! normalised g = −πΓ whose Taylor series (35) starts at f0 = 1 − ν.
+//!
+//! Everything is evaluated through the rationalised form
+//!
+//! ```text
+//! Γ = √(1 − γx)·D / (π (x − m1)(x² − (m2 + m3)x + m2 m3)),   D = (2 − x)² + 4√((1 − γx)(1 − x)),
+//! x − m1 = −m1(1 − M_R²),   so   Γ = −G/(1 − M_R²),   G = √(1 − γx)·D / (π m1 (x² − s x + q)),
+//! ```
+//!
+//! with s = m2 + m3 = 8 − m1 and q = m2 m3 = 8/((1 − ν)m1) real for every ν. No term cancels:
+//! not as V → 0, where the printed (5) divides two vanishing quantities (R → 0), nor as
+//! V → c_R, where the pole is carried exactly by 1 − M_R² = (1 − M_R)(1 + M_R). Relative
+//! accuracy: a few ε for every 0 ≤ M_R < 1 (tests/green.rs).
+
+use super::material::{Material, Speed};
+use super::rayleigh::rayleigh_function_direct;
+use crate::scalar::Real;
+
+/// Constants of Γ and G for one material, precomputed at the working precision.
+#[derive(Clone, Debug)]
+pub struct GreenFunction<T: Real> {
+    gamma: T,
+    m1: T,
+    s: T,
+    q: T,
+    /// 1/(π m1).
+    inv_pi_m1: T,
+    pi: T,
+    one_minus_nu: T,
+}
+
+impl<T: Real> GreenFunction<T> {
+    /// The Green's function constants of `mat`.
+    pub fn new(mat: &Material<T>) -> Self {
+        let p = mat.nu().prec();
+        let pi = T::pi(p);
+        let r = mat.roots();
+        GreenFunction {
+            gamma: mat.gamma().clone(),
+            m1: r.m1.clone(),
+            s: r.sum23.clone(),
+            q: r.prod23.clone(),
+            inv_pi_m1: (pi.clone() * &r.m1).recip(),
+            pi,
+            one_minus_nu: mat.one_minus_nu().clone(),
+        }
+    }
+
+    /// G of (45) at t = (V'/c_R)² ∈ [0, 1], V' being the speed component normal to the ray
+    /// (V sin φ in (34)). Positive, and G(0) = (1 − ν)/π. Relative error a few ε.
+    #[inline]
+    pub fn g_regular(&self, t: &T) -> T {
+        let p = t.prec();
+        let one = T::one(p);
+        let x = self.m1.clone() * t;
+        let a = one.clone() - self.gamma.clone() * &x;
+        let b = one - &x;
+        let d = (T::from_i64(2, p) - &x).square() + (a.clone() * &b).sqrt().mul_i64(4);
+        let quad = x.clone() * (x - &self.s) + &self.q;
+        a.sqrt() * d * &self.inv_pi_m1 / quad
+    }
+
+    /// Γ(V) of (5) for the speed `v`, as −G/(1 − M_R²) (44). Negative; Γ(0) = −(1 − ν)/π.
+    pub fn gamma(&self, v: &Speed<T>) -> T {
+        -(self.g_regular(&v.mr2) / &v.one_minus_mr2)
+    }
+
+    /// g = −πΓ = π G/(1 − t) at t = (V'/c_R)², given also 1 − t (formed by the caller without
+    /// cancellation). g(0) = 1 − ν = f0 of the series (35).
+    #[inline]
+    pub fn g_normalised(&self, t: &T, one_minus_t: &T) -> T {
+        self.g_regular(t) * &self.pi / one_minus_t
+    }
+
+    /// Γ by (5)–(6) exactly as printed: M2²√(1 − M1²)/(π R). For comparison only: as V → 0
+    /// it divides two vanishing quantities and loses all digits; at V = 0 it is 0/0.
+    pub fn gamma_direct(&self, v: &Speed<T>) -> T {
+        let p = v.mr.prec();
+        let r = rayleigh_function_direct(&self.gamma, &v.m2sq);
+        v.m2sq.clone() * (T::one(p) - &v.m1sq).sqrt() / (self.pi.clone() * r)
+    }
+
+    /// The static value Γ(0) = −(1 − ν)/π.
+    pub fn gamma_static(&self) -> T {
+        -(self.one_minus_nu.clone() / &self.pi)
+    }
+
+    /// π at the working precision (shared with callers that normalise by it).
+    pub fn pi(&self) -> &T {
+        &self.pi
+    }
+}
+
+/// The stable Rayleigh function R(V) = x (x − m1)(x² − s x + q)/D of the rationalised form,
+/// accurate to a few ε for every 0 ≤ M_R < 1 (the printed (6) loses everything as V → 0).
+pub fn rayleigh_function<T: Real>(mat: &Material<T>, v: &Speed<T>) -> T {
+    let p = v.mr.prec();
+    let one = T::one(p);
+    let x = v.m2sq.clone();
+    let a = one.clone() - &v.m1sq;
+    let b = one - &x;
+    let d = (T::from_i64(2, p) - &x).square() + (a * b).sqrt().mul_i64(4);
+    let r = mat.roots();
+    let quad = x.clone() * (x.clone() - &r.sum23) + &r.prod23;
+    // x − m1 = −m1 (1 − M_R²).
+    -(x * &r.m1 * &v.one_minus_mr2 * quad / d)
+}

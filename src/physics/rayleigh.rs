@@ -1,0 +1,296 @@
+//! The Rayleigh function (6) and the roots of its rationalised cubic (section 6 of the paper).
+//!
+//! With x = M2² and γ = (c2/c1)², the Rayleigh function is
+//! R = (2 − x)² − 4√((1 − γx)(1 − x)). Multiplying by its conjugate
+//! D = (2 − x)² + 4√((1 − γx)(1 − x)) gives
+//!
+//! ```text
+//! R·D = (2 − x)⁴ − 16(1 − γx)(1 − x) = x·P(x),
+//! P(x) = x³ − 8x² + 8(3 − 2γ)x − 16(1 − γ) = (x − m1)(x − m2)(x − m3),
+//! ```
+//!
+//! so R = x(x − m1)(x − m2)(x − m3)/D. The paper prints the denominator as
+//! (2 − M2²)⁴ + 4√(...) — a misprint for (2 − M2²)² (see `docs/errata.md`). In terms of ν,
+//! (1 − ν)·P(x) = (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8, whose coefficients are formed with
+//! one rounding each; Vieta then gives m2 + m3 = 8 − m1 and m2·m3 = 8/((1 − ν)m1), which is all
+//! that G (45) needs.
+//!
+//! m1 = (c_R/c2)² ∈ (0, 1) is the Rayleigh root. The other two are real for ν below
+//! ν* ≈ 0.2631 (where the cubic's discriminant vanishes and they merge) and a complex-conjugate
+//! pair above it.
+//!
+//! Two closed forms ([`ClosedForm`]) and one default ([`RayleighRoots::new`]) are offered; their
+//! accuracy is charted in `docs/rayleigh.md`. The default seeds m1 in `f64`, polishes it by Halley
+//! steps on the cubic in the wide type (≥ twice the working precision), takes m2, m3 from the
+//! deflated quadratic there and rounds once: ≤ 4 ε relative for m1, and for m2, m3 relative to
+//! their modulus, over the whole range −1 < ν ≤ 1/2 including the merge point, where any
+//! working-precision method loses half its digits (the roots are a square-root function of the
+//! coefficients there).
+
+use crate::error::{Error, Result};
+use crate::scalar::{short, Complex, Real};
+
+/// The roots of the Rayleigh cubic: m1 = (c_R/c2)² and the two others.
+#[derive(Clone, Debug)]
+pub struct RayleighRoots<T: Real> {
+    /// The Rayleigh root m1 = (c_R/c2)² ∈ (0, 1).
+    pub m1: T,
+    /// The second root: the smaller real one for ν < ν*, the one with positive imaginary part
+    /// above.
+    pub m2: Complex<T>,
+    /// The third root: the larger real one, or the conjugate of m2.
+    pub m3: Complex<T>,
+    /// m2 + m3 = 8 − m1 (real in both regimes).
+    pub sum23: T,
+    /// m2·m3 = 8/((1 − ν) m1) (real in both regimes).
+    pub prod23: T,
+}
+
+/// A closed-form (Cardano) evaluation of the three roots at the working precision.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ClosedForm {
+    /// One formula for every ν: principal complex cube root C of −q/2 + √D and
+    /// t_k = ω^k C − p/(3 ω^k C), in the crate's [`Complex`] type.
+    ComplexCardano,
+    /// Real branches, in the style of Rahman & Barber: the trigonometric form
+    /// t_k = 2√(−p/3) cos((θ − 2πk)/3) when the discriminant allows three real roots, real
+    /// Cardano with the cancellation-free cube root otherwise.
+    RealBranches,
+}
+
+/// Coefficients (descending powers) of (1 − ν)·P(x) = (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8.
+pub fn cubic_coefficients<T: Real>(nu: &T) -> [T; 4] {
+    let p = nu.prec();
+    let one_m = T::one(p) - nu;
+    let two_m = T::from_i64(2, p) - nu;
+    [
+        one_m.clone(),
+        -(one_m.mul_i64(8)),
+        two_m.mul_i64(8),
+        T::from_i64(-8, p),
+    ]
+}
+
+/// The depressed cubic t³ + p t + q = 0 with x = t + 8/3: with w = 1/(1 − ν),
+/// p = 8w − 40/3 and q = 40w/3 − 448/27.
+pub fn depressed_cubic<T: Real>(nu: &T) -> (T, T) {
+    let pr = nu.prec();
+    let w = (T::one(pr) - nu).recip();
+    let pp = w.clone().mul_i64(8) - T::from_ratio(40, 3, pr);
+    let qq = w.mul_i64(40).div_i64(3) - T::from_ratio(448, 27, pr);
+    (pp, qq)
+}
+
+/// The discriminant quantity (q/2)² + (p/3)³: negative when the three roots are real.
+pub fn cardano_discriminant<T: Real>(nu: &T) -> T {
+    let (pp, qq) = depressed_cubic(nu);
+    qq.mul_pow2(-1).square() + pp.div_i64(3).powi(3)
+}
+
+/// R of (6) as printed: (2 − x)² − 4√((1 − γx)(1 − x)), x = M2² ≤ 1. Loses all relative
+/// accuracy as x → 0 (both terms tend to 4); see [`rayleigh_function`] for the stable form.
+pub fn rayleigh_function_direct<T: Real>(gamma: &T, x: &T) -> T {
+    let p = x.prec();
+    let one = T::one(p);
+    let a = one.clone() - gamma.clone() * x;
+    let b = one - x;
+    (T::from_i64(2, p) - x).square() - (a * b).sqrt().mul_i64(4)
+}
+
+impl<T: Real> RayleighRoots<T> {
+    /// The default: an `f64` seed, Halley polish of m1 in `T::Wide`, deflation, one rounding.
+    /// Accuracy ≤ 4 ε (checked over a dense ν grid in `tests/rayleigh.rs`).
+    pub fn new(nu: &T) -> Result<Self> {
+        let p = nu.prec();
+        let pw = T::wide_prec(p);
+        let nu_w = nu.to_wide(pw);
+        let seed = RayleighRoots::<f64>::closed_form(&nu.to_f64(), ClosedForm::RealBranches).m1;
+        let seed = if seed.is_finite() && seed > 0.0 && seed < 1.0 {
+            seed
+        } else {
+            0.9
+        };
+        let m1_w = polish_m1(&nu_w, <T::Wide as Real>::from_f64(seed, pw))?;
+        let wide = RayleighRoots::from_m1(&nu_w, m1_w);
+        Ok(RayleighRoots {
+            m1: T::from_wide(&wide.m1, p),
+            m2: Complex::new(T::from_wide(&wide.m2.re, p), T::from_wide(&wide.m2.im, p)),
+            m3: Complex::new(T::from_wide(&wide.m3.re, p), T::from_wide(&wide.m3.im, p)),
+            sum23: T::from_wide(&wide.sum23, p),
+            prod23: T::from_wide(&wide.prod23, p),
+        })
+    }
+
+    /// All three roots from m1 by deflation: m2 + m3 = 8 − m1, m2·m3 = 8/((1 − ν)m1).
+    fn from_m1(nu: &T, m1: T) -> Self {
+        let p = nu.prec();
+        let sum23 = T::from_i64(8, p) - &m1;
+        let prod23 = T::from_i64(8, p) / ((T::one(p) - nu) * &m1);
+        let half = sum23.clone().mul_pow2(-1);
+        let disc = half.square() - &prod23;
+        let (m2, m3) = if disc.is_negative() {
+            let im = (-disc).sqrt();
+            (
+                Complex::new(half.clone(), im.clone()),
+                Complex::new(half, -im),
+            )
+        } else {
+            // Larger root first, then the smaller one by the product (no cancellation).
+            let big = half + disc.sqrt();
+            let small = prod23.clone() / &big;
+            (Complex::from_real(small), Complex::from_real(big))
+        };
+        RayleighRoots {
+            m1,
+            m2,
+            m3,
+            sum23,
+            prod23,
+        }
+    }
+
+    /// The roots by a closed form at the working precision, without polishing (for the
+    /// stability study; prefer [`RayleighRoots::new`]).
+    pub fn closed_form(nu: &T, form: ClosedForm) -> Self {
+        let pr = nu.prec();
+        let (pp, qq) = depressed_cubic(nu);
+        let shift = T::from_ratio(8, 3, pr);
+        let mut roots: Vec<Complex<T>> = match form {
+            ClosedForm::ComplexCardano => {
+                let d = qq.clone().mul_pow2(-1).square() + pp.clone().div_i64(3).powi(3);
+                let sd = Complex::from_real(d).sqrt();
+                let mq2 = Complex::from_real(-(qq.mul_pow2(-1)));
+                let mut c = (mq2.clone() + &sd).cbrt();
+                if c.re.is_zero() && c.im.is_zero() {
+                    c = (mq2 - sd).cbrt();
+                }
+                let half = T::from_ratio(1, 2, pr);
+                let s3h = T::from_i64(3, pr).sqrt().mul_pow2(-1);
+                let omega = Complex::new(-half, s3h);
+                let p3 = Complex::from_real(pp.div_i64(3));
+                let mut ck = c;
+                let mut out = Vec::with_capacity(3);
+                for _ in 0..3 {
+                    let t = ck.clone() - p3.clone() / &ck;
+                    out.push(Complex::new(t.re + &shift, t.im));
+                    ck = ck * &omega;
+                }
+                out
+            }
+            ClosedForm::RealBranches => {
+                let d = qq.clone().mul_pow2(-1).square() + pp.clone().div_i64(3).powi(3);
+                if d.is_negative() {
+                    let r = (-(pp.div_i64(3))).sqrt();
+                    let one = T::one(pr);
+                    let mut c = (-(qq.mul_pow2(-1))) / r.powi(3);
+                    if c > one {
+                        c = one.clone();
+                    } else if c < -one.clone() {
+                        c = -one;
+                    }
+                    let theta = c.acos();
+                    let two_pi = T::pi(pr).mul_pow2(1);
+                    (0..3)
+                        .map(|k| {
+                            let ang = (theta.clone() - two_pi.clone().mul_i64(k)).div_i64(3);
+                            Complex::from_real(r.clone().mul_pow2(1) * ang.cos() + &shift)
+                        })
+                        .collect()
+                } else {
+                    // Cube root of the term without cancellation, the other from A·B = −p/3.
+                    let sd = d.sqrt();
+                    let w = if qq.is_negative() {
+                        -(qq.mul_pow2(-1)) + &sd
+                    } else {
+                        -(qq.mul_pow2(-1)) - &sd
+                    };
+                    let a = w.cbrt();
+                    let b = if a.is_zero() {
+                        T::zero(pr)
+                    } else {
+                        -(pp.div_i64(3)) / &a
+                    };
+                    let t1 = a.clone() + &b;
+                    let re = -(t1.clone().mul_pow2(-1)) + &shift;
+                    let im = T::from_i64(3, pr).sqrt().mul_pow2(-1) * (a - b).abs();
+                    vec![
+                        Complex::from_real(t1 + &shift),
+                        Complex::new(re.clone(), im.clone()),
+                        Complex::new(re, -im),
+                    ]
+                }
+            }
+        };
+        // m1 has the smallest real part; the others ascend (three real roots) or come as the
+        // pair with Im m2 > 0 (complex regime, decided by the sign of the discriminant).
+        roots.sort_by(|a, b| a.re.partial_cmp(&b.re).unwrap_or(std::cmp::Ordering::Equal));
+        let m3 = roots.pop().unwrap_or_else(|| Complex::zero(pr));
+        let m2 = roots.pop().unwrap_or_else(|| Complex::zero(pr));
+        let m1 = roots.pop().unwrap_or_else(|| Complex::zero(pr)).re;
+        let complex_pair = !cardano_discriminant(nu).is_negative();
+        let (m2, m3) = if complex_pair && m2.im.is_negative() {
+            (m3, m2)
+        } else {
+            (m2, m3)
+        };
+        let sum23 = m2.re.clone() + &m3.re;
+        let prod23 = (m2.clone() * &m3).re;
+        RayleighRoots {
+            m1,
+            m2,
+            m3,
+            sum23,
+            prod23,
+        }
+    }
+
+    /// The three roots as complex numbers, m1 first.
+    pub fn all(&self) -> [Complex<T>; 3] {
+        [
+            Complex::from_real(self.m1.clone()),
+            self.m2.clone(),
+            self.m3.clone(),
+        ]
+    }
+}
+
+/// Halley iteration for the Rayleigh root of (1 − ν)P(x) from `x`, in whatever precision `x`
+/// carries. Stops when the step falls below 4 ε|x| or stops shrinking; at most 64 steps.
+fn polish_m1<W: Real>(nu: &W, mut x: W) -> Result<W> {
+    let p = x.prec();
+    let [c3, c2, c1, c0] = cubic_coefficients(nu);
+    let tol = W::epsilon(p).mul_i64(4);
+    let mut last_step: Option<W> = None;
+    for it in 0..64 {
+        // P, P', P'' by Horner.
+        let f = ((c3.clone() * &x + &c2) * &x + &c1) * &x + &c0;
+        let d1 = (c3.clone().mul_i64(3) * &x + c2.clone().mul_i64(2)) * &x + &c1;
+        let d2 = c3.clone().mul_i64(6) * &x + c2.clone().mul_i64(2);
+        let den = d1.square().mul_i64(2) - f.clone() * &d2;
+        if den.is_zero() {
+            return Err(Error::NoConvergence {
+                what: "Halley polish of the Rayleigh root",
+                iterations: it,
+                reached: "zero denominator".into(),
+            });
+        }
+        let step = (f * &d1).mul_i64(2) / den;
+        x -= &step;
+        let size = step.abs();
+        if size <= tol.clone() * &x.clone().abs() {
+            return Ok(x);
+        }
+        if let Some(prev) = &last_step {
+            if size >= *prev {
+                // Rounding level reached: the step no longer shrinks.
+                return Ok(x);
+            }
+        }
+        last_step = Some(size);
+    }
+    Err(Error::NoConvergence {
+        what: "Halley polish of the Rayleigh root",
+        iterations: 64,
+        reached: last_step.map(|s| short(&s)).unwrap_or_default(),
+    })
+}
