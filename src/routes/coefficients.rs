@@ -1,0 +1,117 @@
+//! Taylor coefficients of the normalised Green's function, (35)–(36) of the paper, corrected.
+//!
+//! g = −πΓ as a function of x = M2² (the squared shear Mach number of the speed component V sin φ
+//! normal to the ray) satisfies, with the monic Rayleigh cubic P and D = (2 − x)² + 4√(…):
+//!
+//! ```text
+//! −P(x)·g(x) = √(1 − γx)(2 − x)² + 4(1 − γx)√(1 − x).
+//! ```
+//!
+//! Expanding the square roots by the binomial series √(1 − z) = Σ b_l z^l
+//! (b_0 = 1, b_l = −(2l − 3)!!/(2^l l!), i.e. b_{l+1} = b_l (2l − 1)/(2l + 2)) and matching powers
+//! gives, for g = Σ G_l x^l and any scale x0 with c_l = G_l x0^l,
+//!
+//! ```text
+//! c_l = (1 − ν)/8 · [ r_l − 8 x0² c_{l−2} + x0³ c_{l−3} ] + (2 − ν) x0 c_{l−1},
+//! r_l = 4u_l − 4x0 u_{l−1} + x0² u_{l−2} + 4v_l − 4γx0 v_{l−1},
+//! u_l = b_l (γ x0)^l,  v_l = b_l x0^l,
+//! ```
+//!
+//! (terms with negative index are zero). It starts at c_0 = 1 − ν and is the paper's (36) divided
+//! by M2² with x0 = M2²; the paper's printed f2 is wrong (27 for 67, `docs/errata.md` #2).
+//!
+//! * x0 = M2² gives the paper's f_n (coefficients of sin^{2n} φ).
+//! * x0 = 1 gives F_n (coefficients of x^n), exact in `rug::Rational` for rational ν.
+//! * x0 = m1 gives the scaled h_n = f_n / M_R^{2n}, which tend to a constant (the pole of g at
+//!   x = m1 dominates): they neither overflow nor underflow for any n (the f_n themselves decay like
+//!   M_R^{2n} and F_n grow like m1^{−n}, overflowing `f64` beyond n ≈ 2700).
+//!
+//! No factorial or double factorial is formed: each step costs about 25 field operations.
+//!
+//! **Stability.** The homogeneous part has characteristic roots x0/m1, x0/m2, x0/m3; the wanted
+//! solution is the dominant one (g has its nearest singularity at the simple pole x = m1), so the
+//! forward recurrence is stable: the relative rounding error of c_n stays a few ε (measured against
+//! the exact rational run in `tests/series_coefficients.rs`).
+
+use crate::scalar::Field;
+
+/// Generator of the Taylor coefficients c_n = G_n·x0^n of g = −πΓ (see the module docs).
+#[derive(Clone, Debug)]
+pub struct GreenSeries<F: Field> {
+    one_minus_nu_8: F,
+    two_minus_nu: F,
+    x0: F,
+    x0_2: F,
+    x0_3: F,
+    gx0: F,
+    /// c_{l−1}, c_{l−2}, c_{l−3}.
+    c: [F; 3],
+    /// u_l, u_{l−1}, u_{l−2} and v_l, v_{l−1} for the next l.
+    u: [F; 3],
+    v: [F; 2],
+    /// The next index l.
+    l: u64,
+}
+
+impl<F: Field> GreenSeries<F> {
+    /// The generator for Poisson's ratio `nu` and scale `x0` (validated by the caller:
+    /// −1 < ν ≤ 1/2, 0 ≤ x0 ≤ 1).
+    pub fn new(nu: &F, x0: F) -> Self {
+        let p = nu.prec();
+        let one = F::one(p);
+        let one_minus_nu = one.clone() - nu;
+        // γ = (1 − 2ν)/(2(1 − ν)).
+        let gamma = (one - nu.clone().mul_i64(2)) / one_minus_nu.clone().mul_i64(2);
+        let gx0 = gamma * &x0;
+        let zero = F::zero(p);
+        GreenSeries {
+            one_minus_nu_8: one_minus_nu.div_i64(8),
+            two_minus_nu: F::from_i64(2, p) - nu,
+            x0_2: x0.square(),
+            x0_3: x0.square() * &x0,
+            x0,
+            gx0,
+            c: [zero.clone(), zero.clone(), zero.clone()],
+            u: [F::one(p), zero.clone(), zero.clone()],
+            v: [F::one(p), zero],
+            l: 0,
+        }
+    }
+
+    /// The index of the coefficient the next call to [`GreenSeries::next_coefficient`] returns.
+    pub fn index(&self) -> u64 {
+        self.l
+    }
+
+    /// Returns c_l and advances to l + 1.
+    pub fn next_coefficient(&mut self) -> F {
+        let l = self.l;
+        let [u0, u1, u2] = &self.u;
+        let [v0, v1] = &self.v;
+        // r_l = 4u_l − 4x0 u_{l−1} + x0² u_{l−2} + 4v_l − 4γx0 v_{l−1}
+        let r = (u0.clone() + v0).mul_i64(4) - (self.x0.clone() * u1).mul_i64(4)
+            + self.x0_2.clone() * u2
+            - (self.gx0.clone() * v1).mul_i64(4);
+        let [c1, c2, c3] = &self.c;
+        let bracket = r - (self.x0_2.clone() * c2).mul_i64(8) + self.x0_3.clone() * c3;
+        let c = self.one_minus_nu_8.clone() * bracket + self.two_minus_nu.clone() * &self.x0 * c1;
+        // Shift the histories and advance the binomial terms: b_{l+1} = b_l (2l − 1)/(2l + 2).
+        let (num, den) = if l == 0 {
+            (-1i64, 2i64)
+        } else {
+            (2 * l as i64 - 1, 2 * l as i64 + 2)
+        };
+        let u_next = (self.u[0].clone() * &self.gx0).mul_i64(num).div_i64(den);
+        let v_next = (self.v[0].clone() * &self.x0).mul_i64(num).div_i64(den);
+        self.u = [u_next, self.u[0].clone(), self.u[1].clone()];
+        self.v = [v_next, self.v[0].clone()];
+        self.c = [c.clone(), self.c[0].clone(), self.c[1].clone()];
+        self.l += 1;
+        c
+    }
+
+    /// The first `n` coefficients c_0 … c_{n−1}.
+    pub fn take(mut self, n: usize) -> Vec<F> {
+        (0..n).map(|_| self.next_coefficient()).collect()
+    }
+}
