@@ -4,4 +4,5 @@
 //! not converge.
 
 pub mod quadrature;
+pub mod roots;
 mod sum;
