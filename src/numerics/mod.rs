@@ -5,4 +5,5 @@
 
 pub mod quadrature;
 pub mod roots;
+pub mod series;
 mod sum;
