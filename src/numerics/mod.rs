@@ -2,3 +2,8 @@
 //! series driver. Every routine is written once over [`crate::scalar::Real`], takes its
 //! tolerance from the working precision, bounds its work and returns a typed error when it does
 //! not converge.
+
+pub mod quadrature;
+pub mod roots;
+pub mod series;
+mod sum;

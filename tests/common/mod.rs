@@ -1,7 +1,8 @@
-//! Helpers shared by the integration tests: reference-data parsing and error measurement.
+//! Helpers shared by the integration tests: reference-data parsing, error measurement, and a
+//! macro running a generic check at every precision.
 #![allow(dead_code)]
 
-use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
+use moving_hertz::scalar::{mixed_precision_events, MpPrec, Real};
 use rug::Float;
 
 /// Bits used to hold reference values.
@@ -25,7 +26,7 @@ pub fn reference(s: &str) -> Float {
     )
 }
 
-/// |got − want| / |scale| in units of the working epsilon of `T` at precision `p`.
+/// |got − want| / |scale| in units of the working epsilon of `got`'s precision.
 pub fn err_eps<T: Real>(got: &T, want: &Float, scale: &Float) -> f64 {
     let g = got.to_float(REF_BITS);
     let d = Float::with_val(REF_BITS, &g - want);
@@ -34,9 +35,22 @@ pub fn err_eps<T: Real>(got: &T, want: &Float, scale: &Float) -> f64 {
     Float::with_val(64, rel / eps).to_f64()
 }
 
-/// Relative error in units of ε.
+/// Relative error against a high-precision reference, in units of ε.
 pub fn rel_eps<T: Real>(got: &T, want: &Float) -> f64 {
     err_eps(got, want, want)
+}
+
+/// `|got − want| / |want|` in units of the working ε when both are at the working precision
+/// (absolute error in ε if want = 0).
+pub fn rel_err_eps<T: Real>(got: &T, want: &T) -> f64 {
+    let p = want.prec();
+    let d = (got.clone() - want).abs();
+    let r = if want.is_zero() {
+        d
+    } else {
+        d / &want.clone().abs()
+    };
+    (r / &T::epsilon(p)).to_f64()
 }
 
 /// The MPFR precision token for `bits` bits.
@@ -44,15 +58,26 @@ pub fn mp(bits: u64) -> MpPrec {
     MpPrec::new(bits).expect("valid precision")
 }
 
-/// Runs a generic check at f64, double-double and MPFR at the given bit counts.
+/// Asserts that no MPFR operation in this test process mixed precisions.
+pub fn assert_no_mixing() {
+    assert_eq!(
+        mixed_precision_events(),
+        0,
+        "an MPFR operation mixed precisions"
+    );
+}
+
+/// Runs a generic check `f::<T>(p, label)` at f64, double-double and MPFR at the given bit
+/// counts (default 128, 256, 1024), then checks the mixed-precision counter.
 #[macro_export]
 macro_rules! at_all_precisions {
+    ($f:ident) => {
+        at_all_precisions!($f, [128, 256, 1024])
+    };
     ($f:ident, [$($bits:expr),*]) => {{
         $f::<f64>((), "f64");
         $f::<moving_hertz::scalar::Dd>((), "dd");
         $( $f::<moving_hertz::scalar::Mp>(common::mp($bits), concat!("mpfr", stringify!($bits))); )*
+        common::assert_no_mixing();
     }};
 }
-
-/// Keeps the imports used by some test binaries only.
-pub fn _types(_: Dd, _: Mp) {}
