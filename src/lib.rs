@@ -13,6 +13,7 @@
 //! | [`scalar`] | the [`scalar::Field`] / [`scalar::Real`] traits, the backends, [`scalar::Complex`] |
 //! | [`numerics`] | elliptic integrals, quadrature, root finding, the series driver |
 //! | [`physics`] | material and speeds, the Rayleigh function and roots, the Green's function (sections 3, 6) |
+//! | [`studies`] | convergence, stability and cost studies: data and charts |
 //! | [`routes`] | the series route (section 5) and the direct routes (sections 6–7) to I1, I2 |
 //!
 //! Conventions: the elliptic *parameter* is `m = k²` throughout [`numerics::elliptic`] (as in
@@ -25,5 +26,6 @@ pub mod numerics;
 pub mod physics;
 pub mod routes;
 pub mod scalar;
+pub mod studies;
 
 pub use error::{Error, Result};

@@ -7,7 +7,7 @@ mod common;
 use common::{read_csv, rel_eps};
 use moving_hertz::physics::Material;
 use moving_hertz::routes::GreenSeries;
-use moving_hertz::scalar::{decimal_to_rational, mixed_precision_events, Field, Real};
+use moving_hertz::scalar::{decimal_to_rational, mixed_precision_events, Real};
 use rug::{Float, Rational};
 
 fn exact_table() -> Vec<(Rational, Vec<Rational>)> {

@@ -4,6 +4,7 @@
 mod args;
 mod json;
 mod rayleigh;
+mod study;
 
 use args::Args;
 
@@ -15,6 +16,9 @@ USAGE: moving-hertz <COMMAND> [OPTIONS]
 COMMANDS:
   rayleigh --nu NU [--precision f64|dd|BITS] [--json]
         m1 = (c_R/c2)^2, c_R/c2 and the three roots of the Rayleigh cubic
+  study rayleigh [--out DIR]
+        stability of the closed-form Rayleigh roots against nu and precision
+        (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)
   help  this text
 
 Numbers are parsed from their decimal text at the working precision and printed with every
@@ -33,6 +37,12 @@ pub fn run(argv: &[String]) -> Result<(), String> {
             Ok(())
         }
         "rayleigh" => rayleigh::run(&Args::parse(cmd, rest, &["nu", "precision"], &["json"])?),
+        "study" => {
+            let Some(name) = rest.first() else {
+                return Err("`study` needs a study name (rayleigh)".into());
+            };
+            study::run(name, &Args::parse(cmd, &rest[1..], &["out"], &[])?)
+        }
         other => Err(format!(
             "unknown command `{other}` (try `moving-hertz help`)"
         )),

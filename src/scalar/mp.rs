@@ -41,6 +41,10 @@ impl MpPrec {
             Ok(MpPrec(bits as u32))
         }
     }
+    /// A precision of `bits` bits clamped into the supported range (for internal constants).
+    pub fn clamped(bits: u32) -> MpPrec {
+        MpPrec(bits.clamp(Self::MIN_BITS, Self::MAX_BITS))
+    }
     /// The number of bits.
     pub fn bits(self) -> u32 {
         self.0

@@ -1,0 +1,53 @@
+//! Studies: convergence, stability, cost and accuracy experiments whose data (CSV) and charts
+//! (SVG) are committed under `docs/`. Each study is a library function returning its tables, run
+//! by a `moving-hertz study …` command; only this layer writes files.
+
+pub mod rayleigh;
+pub mod svg;
+
+use std::io::Write;
+use std::path::Path;
+use std::time::Instant;
+
+/// Writes `rows` under a header line as CSV to `path`, creating parent directories.
+pub fn write_csv(path: &Path, header: &[&str], rows: &[Vec<String>]) -> std::io::Result<()> {
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
+    writeln!(f, "{}", header.join(","))?;
+    for r in rows {
+        writeln!(f, "{}", r.join(","))?;
+    }
+    f.flush()
+}
+
+/// Writes text (an SVG chart, a Markdown table) to `path`, creating parent directories.
+pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    std::fs::write(path, text)
+}
+
+/// Median wall time of `f` in nanoseconds, over enough repetitions to fill about `budget_ms`
+/// milliseconds (at least 3 runs). For the studies' cost axes only; the benches use criterion.
+pub fn median_ns<R>(budget_ms: f64, mut f: impl FnMut() -> R) -> f64 {
+    let t0 = Instant::now();
+    std::hint::black_box(f());
+    let first = t0.elapsed().as_nanos() as f64;
+    let reps = ((budget_ms * 1e6 / first.max(1.0)) as usize).clamp(3, 2001);
+    // Group very fast calls so that one timing spans at least ~2 µs.
+    let inner = ((2000.0 / first.max(1.0)).ceil() as usize).clamp(1, 10_000);
+    let mut samples: Vec<f64> = (0..reps.div_ceil(inner).max(3))
+        .map(|_| {
+            let t = Instant::now();
+            for _ in 0..inner {
+                std::hint::black_box(f());
+            }
+            t.elapsed().as_nanos() as f64 / inner as f64
+        })
+        .collect();
+    samples.sort_by(|a, b| a.total_cmp(b));
+    samples[samples.len() / 2]
+}

@@ -1,0 +1,298 @@
+//! Stability study of the Rayleigh roots: the closed forms against the polished default, as a
+//! function of ν, at f64, double-double and MPFR 128 and 256 bits.
+//!
+//! Every ν is a dyadic number, exact at every precision; the reference is the default method run
+//! at 640 bits. Errors are in units of the working ε: relative for m1, relative to the modulus for
+//! m2 and m3 (the worse of the two is reported).
+
+use super::svg::{Chart, Series, Style};
+use crate::physics::{ClosedForm, RayleighRoots};
+use crate::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use rug::Float;
+
+/// One measurement.
+#[derive(Clone, Debug)]
+pub struct RootError {
+    /// Poisson's ratio (exact dyadic value).
+    pub nu: f64,
+    /// Precision label.
+    pub precision: Precision,
+    /// `complex-cardano`, `real-branches` or `default`.
+    pub method: &'static str,
+    /// Relative error of m1 in ε.
+    pub m1: f64,
+    /// Worst error of m2, m3 relative to their modulus, in ε.
+    pub m23: f64,
+}
+
+/// The ν grid: uniform over (−1, 1/2] plus refinements near ν* ≈ 0.26308 (m2 = m3), ν = 2/5
+/// (where p = 0 in the depressed cubic) and both ends; all dyadic with 40 fractional bits.
+pub fn nu_grid() -> Vec<f64> {
+    let mut v: Vec<f64> = (1..=300).map(|j| -1.0 + 1.5 * j as f64 / 300.0).collect();
+    let nu_star = 0.263_082_064_883_363_6;
+    for k in 1..=40 {
+        let d = 10f64.powf(-(k as f64) * 0.35);
+        for c in [nu_star, 0.4] {
+            v.push(c + d);
+            v.push(c - d);
+        }
+        v.push(0.5 - d.min(0.4));
+        v.push(-1.0 + d.min(0.4));
+    }
+    let q = (1u64 << 40) as f64;
+    let mut v: Vec<f64> = v
+        .into_iter()
+        .map(|x| (x * q).round() / q)
+        .filter(|&x| x > -1.0 && x <= 0.5)
+        .collect();
+    v.sort_by(|a, b| a.total_cmp(b));
+    v.dedup();
+    v
+}
+
+fn errors<T: Real>(roots: &RayleighRoots<T>, reference: &RayleighRoots<Mp>) -> (f64, f64) {
+    let bits = 700;
+    let eps = T::epsilon(roots.m1.prec()).to_f64();
+    let m1r = reference.m1.to_float(bits);
+    let e1 = Float::with_val(bits, &roots.m1.to_float(bits) - &m1r) / &m1r;
+    let mut e23: f64 = 0.0;
+    for (got, want) in [(&roots.m2, &reference.m2), (&roots.m3, &reference.m3)] {
+        let modulus = want.abs().to_float(bits);
+        let dr = Float::with_val(bits, &got.re.to_float(bits) - &want.re.to_float(bits));
+        let di = Float::with_val(bits, &got.im.to_float(bits) - &want.im.to_float(bits));
+        let d = Float::with_val(bits, dr.hypot(&di)) / &modulus;
+        e23 = e23.max(d.to_f64() / eps);
+    }
+    (e1.to_f64().abs() / eps, e23)
+}
+
+fn measure_at<T: Real>(p: T::Prec, label: Precision, nus: &[f64], out: &mut Vec<RootError>) {
+    let pr = MpPrec::clamped(640);
+    for &nu in nus {
+        let Ok(reference) = RayleighRoots::<Mp>::new(&Mp::from_f64(nu, pr)) else {
+            continue;
+        };
+        let nu_t = T::from_f64(nu, p);
+        let mut push = |method, r: &RayleighRoots<T>| {
+            let (m1, m23) = errors(r, &reference);
+            out.push(RootError {
+                nu,
+                precision: label,
+                method,
+                m1,
+                m23,
+            });
+        };
+        push(
+            "complex-cardano",
+            &RayleighRoots::closed_form(&nu_t, ClosedForm::ComplexCardano),
+        );
+        push(
+            "real-branches",
+            &RayleighRoots::closed_form(&nu_t, ClosedForm::RealBranches),
+        );
+        if let Ok(d) = RayleighRoots::new(&nu_t) {
+            push("default", &d);
+        }
+    }
+}
+
+/// Runs the study over `nus` at f64, double-double, MPFR 128 and 256 bits.
+pub fn run(nus: &[f64]) -> Vec<RootError> {
+    let mut out = Vec::new();
+    measure_at::<f64>((), Precision::F64, nus, &mut out);
+    measure_at::<Dd>((), Precision::DoubleDouble, nus, &mut out);
+    for bits in [128u64, 256] {
+        let p = MpPrec::clamped(bits as u32);
+        measure_at::<Mp>(p, Precision::Mpfr(p), nus, &mut out);
+    }
+    out
+}
+
+/// Charts: one per precision, error (ε, log scale) against ν, for each method and root group.
+pub fn charts(rows: &[RootError]) -> Vec<(String, String)> {
+    let mut precs: Vec<Precision> = Vec::new();
+    for r in rows {
+        if !precs.contains(&r.precision) {
+            precs.push(r.precision);
+        }
+    }
+    precs
+        .into_iter()
+        .map(|prec| {
+            let mut chart = Chart::new(
+                format!(
+                    "Rayleigh roots at {}: error against ν (0 plotted as 0.01 ε)",
+                    prec.label()
+                ),
+                "Poisson's ratio ν",
+                "error / ε (m1 relative; m2, m3 relative to |m|)",
+            )
+            .log(false, true);
+            chart.y_range = Some((1e-2, 1e17));
+            for method in ["complex-cardano", "real-branches", "default"] {
+                for (which, pick) in [("m1", 0usize), ("m2,m3", 1)] {
+                    let pts = rows
+                        .iter()
+                        .filter(|r| r.precision == prec && r.method == method)
+                        .map(|r| (r.nu, if pick == 0 { r.m1 } else { r.m23 }.max(1e-2)))
+                        .collect();
+                    let style = if method == "default" {
+                        Style::Line
+                    } else {
+                        Style::Markers
+                    };
+                    chart.push(Series::new(format!("{method} {which}"), pts, style));
+                }
+            }
+            (
+                format!("rayleigh_stability_{}.svg", prec.label()),
+                chart.to_svg(),
+            )
+        })
+        .collect()
+}
+
+/// Two close-ups, log-log against the distance to the special point: m2, m3 near the merge ν*
+/// (real-branch closed form against the default), and m1 near ν = 2/5 (complex Cardano).
+pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
+    let nu_star = 0.263_082_064_883_363_6;
+    let mut merge = Chart::new(
+        "m2, m3 near the merge point ν* ≈ 0.26308 (real-branch closed form vs default)",
+        "|ν − ν*|",
+        "error of m2, m3 / ε (relative to |m|)",
+    )
+    .log(true, true);
+    let mut p0 = Chart::new(
+        "m1 near ν = 2/5, where the depressed cubic's p vanishes (complex Cardano vs default)",
+        "|ν − 2/5|",
+        "relative error of m1 / ε",
+    )
+    .log(true, true);
+    merge.y_range = Some((1e-2, 1e8));
+    p0.y_range = Some((1e-2, 1e17));
+    let mut precs: Vec<Precision> = Vec::new();
+    for r in rows {
+        if !precs.contains(&r.precision) {
+            precs.push(r.precision);
+        }
+    }
+    for prec in &precs {
+        let near = |c: f64, method: &str, pick_m1: bool| -> Vec<(f64, f64)> {
+            let mut v: Vec<(f64, f64)> = rows
+                .iter()
+                .filter(|r| r.precision == *prec && r.method == method && (r.nu - c).abs() < 0.05)
+                .map(|r| {
+                    (
+                        (r.nu - c).abs(),
+                        if pick_m1 { r.m1 } else { r.m23 }.max(1e-2),
+                    )
+                })
+                .collect();
+            v.sort_by(|a, b| a.0.total_cmp(&b.0));
+            v
+        };
+        merge.push(Series::new(
+            format!("real-branches {}", prec.label()),
+            near(nu_star, "real-branches", false),
+            Style::LineMarkers,
+        ));
+        p0.push(Series::new(
+            format!("complex-cardano {}", prec.label()),
+            near(0.4, "complex-cardano", true),
+            Style::LineMarkers,
+        ));
+    }
+    for prec in &precs {
+        let near = |c: f64, pick_m1: bool| -> Vec<(f64, f64)> {
+            let mut v: Vec<(f64, f64)> = rows
+                .iter()
+                .filter(|r| {
+                    r.precision == *prec && r.method == "default" && (r.nu - c).abs() < 0.05
+                })
+                .map(|r| {
+                    (
+                        (r.nu - c).abs(),
+                        if pick_m1 { r.m1 } else { r.m23 }.max(1e-2),
+                    )
+                })
+                .collect();
+            v.sort_by(|a, b| a.0.total_cmp(&b.0));
+            v
+        };
+        merge.push(Series::new(
+            format!("default {}", prec.label()),
+            near(nu_star, false),
+            Style::Dashed,
+        ));
+        p0.push(Series::new(
+            format!("default {}", prec.label()),
+            near(0.4, true),
+            Style::Dashed,
+        ));
+    }
+    vec![
+        ("rayleigh_near_merge.svg".to_string(), merge.to_svg()),
+        ("rayleigh_near_p0.svg".to_string(), p0.to_svg()),
+    ]
+}
+
+/// The worst error per (precision, method, root group, ν region), as Markdown table rows.
+pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
+    let regions: [(&str, fn(f64) -> bool); 4] = [
+        ("whole range", |_| true),
+        ("dist(ν, ν*) < 1e-3", |nu| {
+            (nu - 0.263_082_064_883_363_6).abs() < 1e-3
+        }),
+        ("dist(ν, 0.4) < 1e-3", |nu| (nu - 0.4).abs() < 1e-3),
+        ("ν < −0.99 or ν > 0.499", |nu| {
+            !(-0.99..=0.499).contains(&nu)
+        }),
+    ];
+    let mut out = Vec::new();
+    let mut precs: Vec<Precision> = Vec::new();
+    for r in rows {
+        if !precs.contains(&r.precision) {
+            precs.push(r.precision);
+        }
+    }
+    for prec in precs {
+        for method in ["complex-cardano", "real-branches", "default"] {
+            let mut cells = [
+                prec.label(),
+                method.to_string(),
+                String::new(),
+                String::new(),
+                String::new(),
+                String::new(),
+            ];
+            for (k, (_, inside)) in regions.iter().enumerate() {
+                let sel: Vec<&RootError> = rows
+                    .iter()
+                    .filter(|r| r.precision == prec && r.method == method && inside(r.nu))
+                    .collect();
+                let w1 = sel.iter().map(|r| r.m1).fold(0.0, f64::max);
+                let w23 = sel.iter().map(|r| r.m23).fold(0.0, f64::max);
+                cells[2 + k] = format!("{} / {}", fmt_eps(w1), fmt_eps(w23));
+            }
+            out.push(cells);
+        }
+    }
+    out
+}
+
+/// Region names for [`summary`]'s columns 3–6.
+pub const SUMMARY_REGIONS: [&str; 4] = [
+    "whole range",
+    "dist(ν, ν*) < 1e-3",
+    "dist(ν, 0.4) < 1e-3",
+    "ν < −0.99 or ν > 0.499",
+];
+
+fn fmt_eps(e: f64) -> String {
+    if e < 10.0 {
+        format!("{e:.1}")
+    } else {
+        format!("{e:.1e}")
+    }
+}

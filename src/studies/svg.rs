@@ -1,0 +1,580 @@
+//! A small SVG chart writer for the studies: line and scatter charts with linear or log axes,
+//! labelled axes, grid, legend; and heat maps with a colour bar. No dependency: the charts are
+//! plain SVG 1.1 text.
+
+use std::fmt::Write;
+
+/// How a series is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// A polyline through the points.
+    Line,
+    /// Markers only.
+    Markers,
+    /// A polyline with markers.
+    LineMarkers,
+    /// A dashed polyline (reference curves).
+    Dashed,
+}
+
+/// One data series.
+#[derive(Clone, Debug)]
+pub struct Series {
+    /// Legend text.
+    pub label: String,
+    /// The points (non-finite points, and non-positive ones on a log axis, are skipped and break
+    /// the line).
+    pub points: Vec<(f64, f64)>,
+    /// Drawing style.
+    pub style: Style,
+}
+
+impl Series {
+    /// A series with the given label, points and style.
+    pub fn new(label: impl Into<String>, points: Vec<(f64, f64)>, style: Style) -> Series {
+        Series {
+            label: label.into(),
+            points,
+            style,
+        }
+    }
+}
+
+/// A 2-D chart.
+#[derive(Clone, Debug)]
+pub struct Chart {
+    /// Title above the plot.
+    pub title: String,
+    /// Horizontal axis label (with units).
+    pub x_label: String,
+    /// Vertical axis label (with units).
+    pub y_label: String,
+    /// Logarithmic horizontal axis.
+    pub x_log: bool,
+    /// Logarithmic vertical axis.
+    pub y_log: bool,
+    /// Fixed horizontal range (otherwise from the data).
+    pub x_range: Option<(f64, f64)>,
+    /// Fixed vertical range (otherwise from the data).
+    pub y_range: Option<(f64, f64)>,
+    /// The series.
+    pub series: Vec<Series>,
+    /// Width in pixels.
+    pub width: f64,
+    /// Height in pixels.
+    pub height: f64,
+}
+
+const PALETTE: [&str; 10] = [
+    "#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf",
+    "#7f7f7f", "#bcbd22",
+];
+
+impl Chart {
+    /// An empty chart with a title and axis labels, linear axes, 760×480 px.
+    pub fn new(
+        title: impl Into<String>,
+        x_label: impl Into<String>,
+        y_label: impl Into<String>,
+    ) -> Chart {
+        Chart {
+            title: title.into(),
+            x_label: x_label.into(),
+            y_label: y_label.into(),
+            x_log: false,
+            y_log: false,
+            x_range: None,
+            y_range: None,
+            series: Vec::new(),
+            width: 760.0,
+            height: 480.0,
+        }
+    }
+    /// Sets log scales.
+    pub fn log(mut self, x: bool, y: bool) -> Chart {
+        self.x_log = x;
+        self.y_log = y;
+        self
+    }
+    /// Adds a series.
+    pub fn with(mut self, s: Series) -> Chart {
+        self.series.push(s);
+        self
+    }
+    /// Adds a series in place.
+    pub fn push(&mut self, s: Series) {
+        self.series.push(s);
+    }
+
+    fn usable(&self, x: f64, y: f64) -> bool {
+        x.is_finite() && y.is_finite() && (!self.x_log || x > 0.0) && (!self.y_log || y > 0.0)
+    }
+
+    fn data_range(&self, axis_x: bool) -> (f64, f64) {
+        let mut lo = f64::INFINITY;
+        let mut hi = f64::NEG_INFINITY;
+        for s in &self.series {
+            for &(x, y) in &s.points {
+                if self.usable(x, y) {
+                    let v = if axis_x { x } else { y };
+                    lo = lo.min(v);
+                    hi = hi.max(v);
+                }
+            }
+        }
+        if !lo.is_finite() {
+            return (0.0, 1.0);
+        }
+        if lo == hi {
+            let d = if lo == 0.0 { 1.0 } else { lo.abs() * 0.1 };
+            return (lo - d, hi + d);
+        }
+        (lo, hi)
+    }
+
+    /// Renders the chart as an SVG document.
+    pub fn to_svg(&self) -> String {
+        let (w, h) = (self.width, self.height);
+        let (ml, mr, mt, mb) = (78.0, 190.0, 40.0, 58.0);
+        let (pw, ph) = (w - ml - mr, h - mt - mb);
+        let xr = self.x_range.unwrap_or_else(|| self.data_range(true));
+        let yr = self.y_range.unwrap_or_else(|| self.data_range(false));
+        let xa = Axis::new(xr, self.x_log);
+        let ya = Axis::new(yr, self.y_log);
+        let px = |x: f64| ml + pw * xa.frac(x);
+        let py = |y: f64| mt + ph * (1.0 - ya.frac(y));
+        let mut o = String::new();
+        let _ = write!(
+            o,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="Helvetica, Arial, sans-serif" font-size="12">"#
+        );
+        let _ = write!(o, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
+        let _ = write!(
+            o,
+            r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
+            ml + pw / 2.0,
+            esc(&self.title)
+        );
+        // Grid and ticks.
+        for (v, label) in xa.ticks() {
+            let x = px(v);
+            let _ = write!(
+                o,
+                r##"<line x1="{x:.1}" y1="{mt}" x2="{x:.1}" y2="{:.1}" stroke="#e6e6e6"/>"##,
+                mt + ph
+            );
+            let _ = write!(
+                o,
+                r#"<text x="{x:.1}" y="{:.1}" text-anchor="middle">{}</text>"#,
+                mt + ph + 16.0,
+                esc(&label)
+            );
+        }
+        for (v, label) in ya.ticks() {
+            let y = py(v);
+            let _ = write!(
+                o,
+                r##"<line x1="{ml}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#e6e6e6"/>"##,
+                ml + pw
+            );
+            let _ = write!(
+                o,
+                r#"<text x="{:.1}" y="{:.1}" text-anchor="end">{}</text>"#,
+                ml - 6.0,
+                y + 4.0,
+                esc(&label)
+            );
+        }
+        let _ = write!(
+            o,
+            r#"<rect x="{ml}" y="{mt}" width="{pw}" height="{ph}" fill="none" stroke="black"/>"#
+        );
+        let _ = write!(
+            o,
+            r#"<text x="{:.1}" y="{:.1}" text-anchor="middle" font-size="13">{}</text>"#,
+            ml + pw / 2.0,
+            h - 14.0,
+            esc(&self.x_label)
+        );
+        let _ = write!(
+            o,
+            r#"<text transform="translate(18,{:.1}) rotate(-90)" text-anchor="middle" font-size="13">{}</text>"#,
+            mt + ph / 2.0,
+            esc(&self.y_label)
+        );
+        // Series, clipped to the plot area.
+        let _ = write!(
+            o,
+            r#"<clipPath id="plot"><rect x="{ml}" y="{mt}" width="{pw}" height="{ph}"/></clipPath><g clip-path="url(#plot)">"#
+        );
+        for (i, s) in self.series.iter().enumerate() {
+            let c = PALETTE[i % PALETTE.len()];
+            if s.style != Style::Markers {
+                let dash = if s.style == Style::Dashed {
+                    r#" stroke-dasharray="6,4""#
+                } else {
+                    ""
+                };
+                let mut path = String::new();
+                let mut pen_up = true;
+                for &(x, y) in &s.points {
+                    if !self.usable(x, y) {
+                        pen_up = true;
+                        continue;
+                    }
+                    let _ = write!(
+                        path,
+                        "{}{:.2},{:.2} ",
+                        if pen_up { "M" } else { "L" },
+                        px(x),
+                        py(y)
+                    );
+                    pen_up = false;
+                }
+                let _ = write!(
+                    o,
+                    r#"<path d="{path}" fill="none" stroke="{c}" stroke-width="1.8"{dash}/>"#
+                );
+            }
+            if matches!(s.style, Style::Markers | Style::LineMarkers) {
+                for &(x, y) in &s.points {
+                    if self.usable(x, y) {
+                        let _ = write!(o, "{}", marker(i, px(x), py(y), c));
+                    }
+                }
+            }
+        }
+        o.push_str("</g>");
+        // Legend.
+        let lx = ml + pw + 14.0;
+        for (i, s) in self.series.iter().enumerate() {
+            let c = PALETTE[i % PALETTE.len()];
+            let y = mt + 10.0 + 18.0 * i as f64;
+            if s.style != Style::Markers {
+                let dash = if s.style == Style::Dashed {
+                    r#" stroke-dasharray="6,4""#
+                } else {
+                    ""
+                };
+                let _ = write!(
+                    o,
+                    r#"<line x1="{lx}" y1="{y}" x2="{}" y2="{y}" stroke="{c}" stroke-width="1.8"{dash}/>"#,
+                    lx + 22.0
+                );
+            }
+            if matches!(s.style, Style::Markers | Style::LineMarkers) {
+                let _ = write!(o, "{}", marker(i, lx + 11.0, y, c));
+            }
+            let _ = write!(
+                o,
+                r#"<text x="{}" y="{}">{}</text>"#,
+                lx + 28.0,
+                y + 4.0,
+                esc(&s.label)
+            );
+        }
+        o.push_str("</svg>\n");
+        o
+    }
+}
+
+/// A heat map: a value per cell of a grid, coloured on a scale, with a colour bar.
+#[derive(Clone, Debug)]
+pub struct Heatmap {
+    /// Title above the map.
+    pub title: String,
+    /// Horizontal axis label.
+    pub x_label: String,
+    /// Vertical axis label.
+    pub y_label: String,
+    /// Colour-bar label.
+    pub z_label: String,
+    /// Cell centres along x (ascending).
+    pub xs: Vec<f64>,
+    /// Cell centres along y (ascending).
+    pub ys: Vec<f64>,
+    /// Values, `z[j][i]` at (xs[i], ys[j]); NaN cells are drawn grey.
+    pub z: Vec<Vec<f64>>,
+    /// Log scale on x.
+    pub x_log: bool,
+    /// Log scale on y.
+    pub y_log: bool,
+    /// Colour scale range.
+    pub z_range: (f64, f64),
+}
+
+impl Heatmap {
+    /// Renders the map as an SVG document (760×480 px).
+    pub fn to_svg(&self) -> String {
+        let (w, h) = (760.0, 480.0);
+        let (ml, mr, mt, mb) = (78.0, 120.0, 40.0, 58.0);
+        let (pw, ph) = (w - ml - mr, h - mt - mb);
+        let edges = |c: &[f64], log: bool| -> Vec<f64> {
+            let t: Vec<f64> = c.iter().map(|&v| if log { v.log10() } else { v }).collect();
+            let n = t.len();
+            let mut e = Vec::with_capacity(n + 1);
+            if n == 1 {
+                return vec![t[0] - 0.5, t[0] + 0.5];
+            }
+            e.push(t[0] - (t[1] - t[0]) / 2.0);
+            for i in 0..n - 1 {
+                e.push((t[i] + t[i + 1]) / 2.0);
+            }
+            e.push(t[n - 1] + (t[n - 1] - t[n - 2]) / 2.0);
+            e
+        };
+        let ex = edges(&self.xs, self.x_log);
+        let ey = edges(&self.ys, self.y_log);
+        let (x0, x1) = (ex[0], *ex.last().unwrap_or(&1.0));
+        let (y0, y1) = (ey[0], *ey.last().unwrap_or(&1.0));
+        let px = |t: f64| ml + pw * (t - x0) / (x1 - x0);
+        let py = |t: f64| mt + ph * (1.0 - (t - y0) / (y1 - y0));
+        let mut o = String::new();
+        let _ = write!(
+            o,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="Helvetica, Arial, sans-serif" font-size="12"><rect width="{w}" height="{h}" fill="white"/>"#
+        );
+        let _ = write!(
+            o,
+            r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
+            ml + pw / 2.0,
+            esc(&self.title)
+        );
+        for (j, row) in self.z.iter().enumerate() {
+            for (i, &v) in row.iter().enumerate() {
+                if i + 1 >= ex.len() || j + 1 >= ey.len() {
+                    continue;
+                }
+                let (xa, xb) = (px(ex[i]), px(ex[i + 1]));
+                let (ya, yb) = (py(ey[j + 1]), py(ey[j]));
+                let fill = if v.is_finite() {
+                    colour(v, self.z_range)
+                } else {
+                    "#bdbdbd".to_string()
+                };
+                let _ = write!(
+                    o,
+                    r#"<rect x="{:.2}" y="{:.2}" width="{:.2}" height="{:.2}" fill="{fill}"/>"#,
+                    xa,
+                    ya,
+                    (xb - xa).abs() + 0.3,
+                    (yb - ya).abs() + 0.3
+                );
+            }
+        }
+        let _ = write!(
+            o,
+            r#"<rect x="{ml}" y="{mt}" width="{pw}" height="{ph}" fill="none" stroke="black"/>"#
+        );
+        for (v, label) in Axis::new(
+            if self.x_log {
+                (10f64.powf(x0), 10f64.powf(x1))
+            } else {
+                (x0, x1)
+            },
+            self.x_log,
+        )
+        .ticks()
+        {
+            let t = if self.x_log { v.log10() } else { v };
+            let x = px(t);
+            let _ = write!(
+                o,
+                r#"<line x1="{x:.1}" y1="{:.1}" x2="{x:.1}" y2="{:.1}" stroke="black"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{}</text>"#,
+                mt + ph,
+                mt + ph + 5.0,
+                mt + ph + 18.0,
+                esc(&label)
+            );
+        }
+        for (v, label) in Axis::new(
+            if self.y_log {
+                (10f64.powf(y0), 10f64.powf(y1))
+            } else {
+                (y0, y1)
+            },
+            self.y_log,
+        )
+        .ticks()
+        {
+            let t = if self.y_log { v.log10() } else { v };
+            let y = py(t);
+            let _ = write!(
+                o,
+                r#"<line x1="{:.1}" y1="{y:.1}" x2="{ml}" y2="{y:.1}" stroke="black"/><text x="{:.1}" y="{:.1}" text-anchor="end">{}</text>"#,
+                ml - 5.0,
+                ml - 7.0,
+                y + 4.0,
+                esc(&label)
+            );
+        }
+        let _ = write!(
+            o,
+            r#"<text x="{:.1}" y="{:.1}" text-anchor="middle" font-size="13">{}</text>"#,
+            ml + pw / 2.0,
+            h - 14.0,
+            esc(&self.x_label)
+        );
+        let _ = write!(
+            o,
+            r#"<text transform="translate(18,{:.1}) rotate(-90)" text-anchor="middle" font-size="13">{}</text>"#,
+            mt + ph / 2.0,
+            esc(&self.y_label)
+        );
+        // Colour bar.
+        let bx = ml + pw + 24.0;
+        let n = 50;
+        for k in 0..n {
+            let v =
+                self.z_range.0 + (self.z_range.1 - self.z_range.0) * (k as f64 + 0.5) / n as f64;
+            let y = mt + ph * (1.0 - (k + 1) as f64 / n as f64);
+            let _ = write!(
+                o,
+                r#"<rect x="{bx}" y="{y:.2}" width="18" height="{:.2}" fill="{}"/>"#,
+                ph / n as f64 + 0.3,
+                colour(v, self.z_range)
+            );
+        }
+        let _ = write!(
+            o,
+            r#"<rect x="{bx}" y="{mt}" width="18" height="{ph}" fill="none" stroke="black"/>"#
+        );
+        for (v, label) in Axis::new(self.z_range, false).ticks() {
+            let y = mt + ph * (1.0 - (v - self.z_range.0) / (self.z_range.1 - self.z_range.0));
+            let _ = write!(
+                o,
+                r#"<text x="{:.1}" y="{:.1}">{}</text>"#,
+                bx + 22.0,
+                y + 4.0,
+                esc(&label)
+            );
+        }
+        let _ = write!(
+            o,
+            r#"<text transform="translate({:.1},{:.1}) rotate(-90)" text-anchor="middle">{}</text>"#,
+            bx + 70.0,
+            mt + ph / 2.0,
+            esc(&self.z_label)
+        );
+        o.push_str("</svg>\n");
+        o
+    }
+}
+
+/// A perceptually ordered colour (viridis-like) for `v` in `range`.
+fn colour(v: f64, range: (f64, f64)) -> String {
+    const STOPS: [(f64, f64, f64); 6] = [
+        (68.0, 1.0, 84.0),
+        (65.0, 68.0, 135.0),
+        (42.0, 120.0, 142.0),
+        (34.0, 168.0, 132.0),
+        (122.0, 209.0, 81.0),
+        (253.0, 231.0, 37.0),
+    ];
+    let t = ((v - range.0) / (range.1 - range.0)).clamp(0.0, 1.0) * (STOPS.len() - 1) as f64;
+    let i = (t.floor() as usize).min(STOPS.len() - 2);
+    let f = t - i as f64;
+    let (a, b) = (STOPS[i], STOPS[i + 1]);
+    format!(
+        "rgb({},{},{})",
+        (a.0 + f * (b.0 - a.0)).round(),
+        (a.1 + f * (b.1 - a.1)).round(),
+        (a.2 + f * (b.2 - a.2)).round()
+    )
+}
+
+fn marker(i: usize, x: f64, y: f64, c: &str) -> String {
+    match i % 3 {
+        0 => format!(r#"<circle cx="{x:.2}" cy="{y:.2}" r="3.2" fill="{c}"/>"#),
+        1 => format!(
+            r#"<rect x="{:.2}" y="{:.2}" width="6" height="6" fill="{c}"/>"#,
+            x - 3.0,
+            y - 3.0
+        ),
+        _ => format!(
+            r#"<path d="M{:.2},{:.2} L{:.2},{:.2} L{:.2},{:.2} Z" fill="{c}"/>"#,
+            x,
+            y - 4.0,
+            x - 3.6,
+            y + 3.0,
+            x + 3.6,
+            y + 3.0
+        ),
+    }
+}
+
+fn esc(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// A linear or logarithmic axis over a range.
+struct Axis {
+    lo: f64,
+    hi: f64,
+    log: bool,
+}
+
+impl Axis {
+    fn new((lo, hi): (f64, f64), log: bool) -> Axis {
+        if log {
+            let (l, h) = (
+                lo.max(1e-300).log10().floor(),
+                hi.max(1e-300).log10().ceil(),
+            );
+            let h = if h <= l { l + 1.0 } else { h };
+            Axis { lo: l, hi: h, log }
+        } else {
+            let span = hi - lo;
+            let pad = if span > 0.0 { span * 0.04 } else { 1.0 };
+            Axis {
+                lo: lo - pad,
+                hi: hi + pad,
+                log,
+            }
+        }
+    }
+    fn frac(&self, v: f64) -> f64 {
+        let t = if self.log { v.log10() } else { v };
+        (t - self.lo) / (self.hi - self.lo)
+    }
+    fn ticks(&self) -> Vec<(f64, String)> {
+        if self.log {
+            let span = (self.hi - self.lo) as i64;
+            let step = ((span as f64) / 10.0).ceil().max(1.0) as i64;
+            (self.lo as i64..=self.hi as i64)
+                .filter(|e| (e - self.lo as i64) % step == 0)
+                .map(|e| (10f64.powi(e as i32), format!("1e{e}")))
+                .collect()
+        } else {
+            let span = self.hi - self.lo;
+            let raw = span / 8.0;
+            let mag = 10f64.powf(raw.log10().floor());
+            let step = [1.0, 2.0, 2.5, 5.0, 10.0]
+                .iter()
+                .map(|m| m * mag)
+                .find(|s| *s >= raw)
+                .unwrap_or(10.0 * mag);
+            let first = (self.lo / step).ceil() as i64;
+            let last = (self.hi / step).floor() as i64;
+            (first..=last)
+                .map(|k| {
+                    let v = k as f64 * step;
+                    (v, fmt_tick(v, step))
+                })
+                .collect()
+        }
+    }
+}
+
+fn fmt_tick(v: f64, step: f64) -> String {
+    if v == 0.0 {
+        return "0".into();
+    }
+    if v.abs() >= 1e5 || v.abs() < 1e-3 {
+        return format!("{v:.1e}");
+    }
+    let decimals = (-step.log10().floor()).max(0.0) as usize;
+    format!("{v:.decimals$}")
+}
