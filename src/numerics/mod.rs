@@ -2,3 +2,4 @@
 //! series driver. Every routine is written once over [`crate::scalar::Real`], takes its
 //! tolerance from the working precision, bounds its work and returns a typed error when it does
 //! not converge.
+pub mod elliptic;
