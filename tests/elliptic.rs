@@ -36,7 +36,12 @@ fn rows(text: &str) -> Vec<Vec<&str>> {
 fn input<T: Real>(s: &str, p: T::Prec) -> T {
     let x = T::parse(s, p).expect("input parses");
     let exact = Float::with_val(4096, Float::parse(s).expect("decimal"));
-    assert_eq!(x.to_float(4096), exact, "input {s} is not exact at {} bits", T::bits(p));
+    assert_eq!(
+        x.to_float(4096),
+        exact,
+        "input {s} is not exact at {} bits",
+        T::bits(p)
+    );
     x
 }
 
@@ -78,7 +83,9 @@ fn eval<T: Real>(f: &str, a: &T, phi: Option<&T>) -> Result<T> {
 fn sweep<T: Real>(p: T::Prec) -> BTreeMap<String, (f64, f64, usize, String)> {
     let mut stats: BTreeMap<String, (f64, f64, usize, String)> = BTreeMap::new();
     let mut record = |name: &str, e: f64, at: String| {
-        let s = stats.entry(name.to_string()).or_insert((0.0, 0.0, 0, String::new()));
+        let s = stats
+            .entry(name.to_string())
+            .or_insert((0.0, 0.0, 0, String::new()));
         if e > s.0 {
             s.0 = e;
             s.3 = at;
@@ -91,10 +98,18 @@ fn sweep<T: Real>(p: T::Prec) -> BTreeMap<String, (f64, f64, usize, String)> {
         let phi: Option<T> = (!r[2].is_empty()).then(|| input(r[2], p));
         let got = eval(r[0], &a, phi.as_ref())
             .unwrap_or_else(|e| panic!("{}({}, {}) failed: {e}", r[0], r[1], r[2]));
-        record(r[0], err_eps(&got, r[3]), format!("arg={} phi={}", r[1], r[2]));
+        record(
+            r[0],
+            err_eps(&got, r[3]),
+            format!("arg={} phi={}", r[1], r[2]),
+        );
     }
     for r in rows(EXTRA) {
-        let v: Vec<T> = r[1..5].iter().filter(|s| !s.is_empty()).map(|s| input(s, p)).collect();
+        let v: Vec<T> = r[1..5]
+            .iter()
+            .filter(|s| !s.is_empty())
+            .map(|s| input(s, p))
+            .collect();
         let got = match r[0] {
             "carlson_rf" => carlson_rf(&v[0], &v[1], &v[2]),
             "carlson_rd" => carlson_rd(&v[0], &v[1], &v[2]),
@@ -121,12 +136,18 @@ fn sweep<T: Real>(p: T::Prec) -> BTreeMap<String, (f64, f64, usize, String)> {
 /// Asserted bound (in ε) on the worst error of every function, per backend.
 fn check<T: Real>(p: T::Prec, label: &str, bound: f64) {
     let stats = sweep::<T>(p);
-    println!("\n{label}: worst / mean relative error in ε = 2^(1 - {})", T::bits(p));
+    println!(
+        "\n{label}: worst / mean relative error in ε = 2^(1 - {})",
+        T::bits(p)
+    );
     for (f, (worst, mean, n, at)) in &stats {
         println!("  {f:<20} {worst:7.2} {mean:6.2}  ({n} values; worst at {at})");
     }
     for (f, (worst, _, _, at)) in &stats {
-        assert!(*worst <= bound, "{label} {f}: error {worst} ε > {bound} ε at {at}");
+        assert!(
+            *worst <= bound,
+            "{label} {f}: error {worst} ε > {bound} ε at {at}"
+        );
     }
 }
 
@@ -157,7 +178,13 @@ fn reference_mpfr_8192() {
         let got = eval(r[0], &a, phi.as_ref()).expect("8192-bit value");
         let e = err_eps(&got, r[3]);
         println!("mpfr8192 {}({}, {}): {e:.2} ε", r[0], r[1], r[2]);
-        assert!(e <= 8.0, "8192 bits: {}({}, {}) error {e} ε", r[0], r[1], r[2]);
+        assert!(
+            e <= 8.0,
+            "8192 bits: {}({}, {}) error {e} ε",
+            r[0],
+            r[1],
+            r[2]
+        );
     }
     assert_eq!(mixed_precision_events(), 0);
 }
@@ -197,8 +224,16 @@ fn legendre<T: Real>(p: T::Prec, label: &str) -> f64 {
             e * &k1 - mc.clone() * ellipd_mc(&m).expect("D'") * &k
         };
         let err = ((rearranged - &half_pi) / &half_pi / &eps).abs().to_f64();
-        assert!(err_direct <= 8.0, "{label}: Legendre (direct) at m = {}: {err_direct} ε", m.to_f64());
-        assert!(err <= 8.0, "{label}: Legendre at m = {}: {err} ε", m.to_f64());
+        assert!(
+            err_direct <= 8.0,
+            "{label}: Legendre (direct) at m = {}: {err_direct} ε",
+            m.to_f64()
+        );
+        assert!(
+            err <= 8.0,
+            "{label}: Legendre at m = {}: {err} ε",
+            m.to_f64()
+        );
         worst = worst.max(err).max(err_direct);
         n += 1;
     }
@@ -249,7 +284,11 @@ fn cross<T: Real>(p: T::Prec, label: &str) {
             rel(&e2, &e),
         ];
         let worst = errs.iter().cloned().fold(0.0, f64::max);
-        assert!(worst <= 8.0, "{label}: cross-check at mc = {}: {errs:?}", mc.to_f64());
+        assert!(
+            worst <= 8.0,
+            "{label}: cross-check at mc = {}: {errs:?}",
+            mc.to_f64()
+        );
     }
 }
 
@@ -269,15 +308,25 @@ fn precision_ladder() {
     for bits in [64u64, 200, 600] {
         let (p, q) = (mp(bits), mp(2 * bits));
         let eps = Mp::epsilon(p);
-        for (phi, mc) in [("-7.5", "1e-30"), ("100.25", "1000000000001"), ("1.5", "0.75")] {
+        for (phi, mc) in [
+            ("-7.5", "1e-30"),
+            ("100.25", "1000000000001"),
+            ("1.5", "0.75"),
+        ] {
             let f1 = ellipf_mc(&Mp::parse(phi, p).unwrap(), &Mp::parse(mc, p).unwrap()).unwrap();
             let f2 = ellipf_mc(&Mp::parse(phi, q).unwrap(), &Mp::parse(mc, q).unwrap()).unwrap();
-            let e1 = ellipe_inc_mc(&Mp::parse(phi, p).unwrap(), &Mp::parse(mc, p).unwrap()).unwrap();
-            let e2 = ellipe_inc_mc(&Mp::parse(phi, q).unwrap(), &Mp::parse(mc, q).unwrap()).unwrap();
+            let e1 =
+                ellipe_inc_mc(&Mp::parse(phi, p).unwrap(), &Mp::parse(mc, p).unwrap()).unwrap();
+            let e2 =
+                ellipe_inc_mc(&Mp::parse(phi, q).unwrap(), &Mp::parse(mc, q).unwrap()).unwrap();
             for (a, b) in [(f1, f2), (e1, e2)] {
                 let d = (a.with_prec(q) - &b) / &b;
                 let d = d.with_prec(p) / &eps;
-                assert!(d.abs().to_f64() <= 8.0, "{bits} vs {}: phi={phi} mc={mc}", 2 * bits);
+                assert!(
+                    d.abs().to_f64() <= 8.0,
+                    "{bits} vs {}: phi={phi} mc={mc}",
+                    2 * bits
+                );
             }
         }
     }
@@ -336,7 +385,11 @@ fn bad_inputs<T: Real>(p: T::Prec, nan: T, inf: T) {
 #[test]
 fn bad_inputs_give_typed_errors() {
     bad_inputs::<f64>((), f64::NAN, f64::INFINITY);
-    bad_inputs::<Dd>((), Dd::from_f64_exact(f64::NAN), Dd::from_f64_exact(f64::INFINITY));
+    bad_inputs::<Dd>(
+        (),
+        Dd::from_f64_exact(f64::NAN),
+        Dd::from_f64_exact(f64::INFINITY),
+    );
     let p = mp(100);
     bad_inputs::<Mp>(p, Mp::from_f64(f64::NAN, p), Mp::from_f64(f64::INFINITY, p));
     assert_eq!(mixed_precision_events(), 0);
