@@ -1,11 +1,13 @@
 //! Cost of the elliptic integrals per precision: K and E at m = 0.7 (m-form) and at
-//! m = 1 − 10⁻¹² (mc-form, mc = 10⁻¹²), plus the incomplete F and E at φ = 1.25, m = 0.7, at
-//! f64, double-double and MPFR with 64, 128, 256 and 1024 bits.
+//! m = 1 − 10⁻¹² (mc-form, mc = 10⁻¹²), K and E together (`ellipke_mc`), and the incomplete
+//! F and E at φ = 1.25, m = 0.7, at f64, double-double and MPFR with 64, 128, 256 and 1024 bits.
 //!
 //! Run: `cargo bench --bench precision_cost -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use moving_hertz::numerics::elliptic::{ellipe, ellipe_inc, ellipe_mc, ellipf, ellipk, ellipk_mc};
+use moving_hertz::numerics::elliptic::{
+    ellipe, ellipe_inc, ellipe_mc, ellipf, ellipk, ellipk_mc, ellipke_mc,
+};
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
 
 fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
@@ -20,6 +22,9 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
     });
     g.bench_function("ellipe_mc/mc=1e-12", |b| {
         b.iter(|| ellipe_mc(black_box(&mc)))
+    });
+    g.bench_function("ellipke_mc/mc=1e-12", |b| {
+        b.iter(|| ellipke_mc(black_box(&mc)))
     });
     g.bench_function("ellipf/phi=1.25,m=0.7", |b| {
         b.iter(|| ellipf(black_box(&phi), black_box(&m)))

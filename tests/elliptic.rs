@@ -425,3 +425,50 @@ fn no_mixed_precision() {
     cel(&x("0.5"), &x("-2"), &x("1"), &x("3")).unwrap();
     assert_eq!(mixed_precision_events(), 0);
 }
+
+/// Extreme arguments: a finite value or a typed error, never a panic, NaN or ∞; the values that
+/// have a simple asymptotic form are checked against it.
+#[test]
+fn extreme_arguments() {
+    let ok = |r: Result<f64>, what: &str| match r {
+        Ok(v) => assert!(v.is_finite(), "{what}: {v}"),
+        Err(e) => println!("{what}: {e}"),
+    };
+    for mc in [1e-300, 1e-100, 1e100, 1e300] {
+        ok(ellipk_mc(&mc), &format!("K(mc={mc:e})"));
+        ok(ellipe_mc(&mc), &format!("E(mc={mc:e})"));
+        ok(ellipb_mc(&mc), &format!("B(mc={mc:e})"));
+        ok(ellipd_mc(&mc), &format!("D(mc={mc:e})"));
+        for phi in [1e-300, 0.5, std::f64::consts::FRAC_PI_2, 3.0, 1e10, 1e300] {
+            ok(ellipf_mc(&phi, &mc), &format!("F({phi:e}|mc={mc:e})"));
+            ok(ellipe_inc_mc(&phi, &mc), &format!("E({phi:e}|mc={mc:e})"));
+        }
+    }
+    for (x, y, z) in [
+        (1e-300, 1e-300, 1.0),
+        (0.0, 1e-300, 1e300),
+        (1e300, 1e300, 1e-300),
+    ] {
+        ok(carlson_rf(&x, &y, &z), &format!("R_F({x:e}, {y:e}, {z:e})"));
+        ok(carlson_rd(&x, &y, &z), &format!("R_D({x:e}, {y:e}, {z:e})"));
+    }
+    for p in [1e-300, 1e300, -1e-300, -1e300] {
+        ok(cel(&0.5, &p, &1.0, &1.0), &format!("cel(0.5, {p:e}, 1, 1)"));
+    }
+    // K(mc) ~ ln(4/√mc) as mc → 0; F(φ | 1 − 10⁻³⁰⁰) at φ = 1.5: atanh(sin φ).
+    let k = ellipk_mc(&1e-300f64).unwrap();
+    assert!((k - (4.0f64.ln() + 150.0 * 10f64.ln())).abs() < 1e-13 * k);
+    let f = ellipf_mc(&1.5f64, &1e-300).unwrap();
+    assert!((f - 1.5f64.sin().atanh()).abs() < 4.0 * f64::EPSILON * f);
+    // MPFR far outside the f64 exponent range.
+    let p = mp(128);
+    let tiny = Mp::parse("1e-1000000", p).unwrap();
+    let k = ellipk_mc(&tiny).unwrap();
+    let expect = (Mp::from_i64(4, p) / tiny.clone().sqrt()).ln();
+    assert!(((k - &expect) / &expect).abs().to_f64() < 1e-30);
+    // R_F(x, x, 1) = atanh(√(1 − x))/√(1 − x) ≈ ln(4/x)/2: duplication from a ratio 10⁻¹⁰⁰⁰⁰⁰⁰.
+    let rf = carlson_rf(&tiny, &tiny, &Mp::one(p)).unwrap();
+    let expect = (Mp::from_i64(4, p) / &tiny).ln().mul_pow2(-1);
+    assert!(((rf - &expect) / &expect).abs().to_f64() < 1e-30);
+    assert_eq!(mixed_precision_events(), 0);
+}
