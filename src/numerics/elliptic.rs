@@ -32,7 +32,7 @@
 //!
 //! Worst relative error in units of ε = 2^(1 − bits) of the working precision, measured by
 //! `tests/elliptic.rs` against mpmath at 380 digits (`tools/gen_elliptic.py`) over exactly
-//! representable inputs: m from −10¹² to 1 − 2⁻⁵², mc from 2⁻¹⁰⁰ to 10¹², φ from 2⁻² to −10⁶
+//! representable inputs: m from −10¹² to 1 − 2⁻⁵², mc from 2⁻¹⁰⁰ to 10¹², |φ| from 1/4 to 10⁶
 //! including both f64 neighbours of π/2 (the test asserts ≤ 8 ε, 16 ε for double-double):
 //!
 //! | function | f64 | dd | mpfr64 | mpfr128 | mpfr256 | mpfr1024 |
