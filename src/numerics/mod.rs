@@ -3,6 +3,7 @@
 //! tolerance from the working precision, bounds its work and returns a typed error when it does
 //! not converge.
 
+pub mod elliptic;
 pub mod quadrature;
 pub mod roots;
 pub mod series;

@@ -140,12 +140,15 @@ impl Real for f64 {
     }
     #[inline(always)]
     fn mul_pow2(self, k: i32) -> f64 {
-        if (-1000..=1000).contains(&k) {
+        // Exact scaling by 2^k in at most two multiplications by normal powers of two (no
+        // recursion, so it inlines).
+        if (-1022..=1023).contains(&k) {
             self * f64::from_bits(((1023 + k) as u64) << 52)
         } else {
-            // Two steps to stay within the normal range of the factor.
+            let k = k.clamp(-2044, 2046);
             let h = k / 2;
-            self.mul_pow2(h).mul_pow2(k - h)
+            self * f64::from_bits(((1023 + h) as u64) << 52)
+                * f64::from_bits(((1023 + (k - h)) as u64) << 52)
         }
     }
     #[inline(always)]

@@ -1,0 +1,53 @@
+#!/usr/bin/env python3
+"""Markdown tables of criterion medians for docs/performance.md.
+
+Run after   cargo bench --bench precision_cost -- --warm-up-time 1 --measurement-time 3
+      and   cargo bench --bench generic_cost -- --warm-up-time 1 --measurement-time 3
+Reads target/criterion/<group>/<bench>/new/estimates.json (median point estimates).
+"""
+
+import json
+import os
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "target", "criterion")
+PRECISIONS = ["f64", "dd", "mpfr64", "mpfr128", "mpfr256", "mpfr1024"]
+FUNCS = ["ellipk_m=0.7", "ellipe_m=0.7", "ellipk_mc_mc=1e-12", "ellipe_mc_mc=1e-12",
+         "ellipke_mc_mc=1e-12", "ellipf_phi=1.25,m=0.7", "ellipe_inc_phi=1.25,m=0.7"]
+
+
+def median_ns(*path):
+    with open(os.path.join(ROOT, *path, "new", "estimates.json")) as fh:
+        return json.load(fh)["median"]["point_estimate"]
+
+
+def fmt(ns):
+    if ns < 1e3:
+        return f"{ns:.1f} ns"
+    if ns < 1e6:
+        return f"{ns / 1e3:.2f} µs"
+    return f"{ns / 1e6:.2f} ms"
+
+
+def main():
+    print("| function | " + " | ".join(PRECISIONS) + " |")
+    print("|---" * (len(PRECISIONS) + 1) + "|")
+    for f in FUNCS:
+        base = median_ns("f64", f)
+        cells = []
+        for p in PRECISIONS:
+            t = median_ns(p, f)
+            cells.append(fmt(t) if p == "f64" else f"{fmt(t)} (×{t / base:.0f})")
+        print(f"| `{f.replace('_m=', '` m=').replace('_mc=', '` mc=').replace('_phi=', '` φ=')} | "
+              + " | ".join(cells) + " |")
+    print()
+    print("| case | generic over `T: Real` at f64 | hand-written f64 | ratio |")
+    print("|---|---|---|---|")
+    for kind, a, b in [("kernel", "generic", "hand"), ("ellipk_mc", "library", "hand")]:
+        for case in ["mc=0.3", "mc=1e-12"]:
+            g = median_ns("generic_cost", f"{kind}_{a}_{case}")
+            h = median_ns("generic_cost", f"{kind}_{b}_{case}")
+            print(f"| {kind} ({a}), {case} | {fmt(g)} | {fmt(h)} | {g / h:.2f} |")
+
+
+if __name__ == "__main__":
+    main()
