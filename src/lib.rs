@@ -29,3 +29,8 @@ pub mod scalar;
 pub mod studies;
 
 pub use error::{Error, Result};
+
+/// The README's library example, compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

@@ -61,7 +61,7 @@ use rug::Float;
 fn domain<T: Real>(name: &'static str, x: &T, bound: &'static str) -> Error {
     Error::Domain {
         name,
-        value: x.to_decimal(),
+        value: crate::scalar::short(x),
         bound,
     }
 }

@@ -393,7 +393,7 @@ fn setup<T: Real>(points: &[T], tol: &T) -> Result<(Vec<(T, T)>, bool)> {
     if tol.is_negative() {
         return Err(Error::Domain {
             name: "quadrature tolerance",
-            value: tol.to_decimal(),
+            value: crate::scalar::short(tol),
             bound: "tol >= 0",
         });
     }
@@ -421,7 +421,7 @@ fn setup<T: Real>(points: &[T], tol: &T) -> Result<(Vec<(T, T)>, bool)> {
 fn not_finite<T: Real>(v: &T) -> Error {
     Error::NotFinite {
         name: "integrand",
-        value: v.to_decimal(),
+        value: crate::scalar::short(v),
     }
 }
 

@@ -39,7 +39,7 @@ fn effective_tol<T: Real>(tol: &T) -> Result<T> {
     if tol.is_negative() {
         return Err(Error::Domain {
             name: "root tolerance",
-            value: tol.to_decimal(),
+            value: crate::scalar::short(tol),
             bound: "tol >= 0",
         });
     }

@@ -38,7 +38,7 @@ fn check_tol<T: Real>(rel_tol: &T) -> Result<()> {
     if rel_tol.is_negative() {
         return Err(Error::Domain {
             name: "series tolerance",
-            value: rel_tol.to_decimal(),
+            value: crate::scalar::short(rel_tol),
             bound: "rel_tol >= 0",
         });
     }
