@@ -34,3 +34,9 @@ pub use error::{Error, Result};
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
+
+/// The traits and types most programs need: `use moving_hertz::prelude::*;`.
+pub mod prelude {
+    pub use crate::error::{Error, Result};
+    pub use crate::scalar::{Complex, Dd, Field, Mp, MpPrec, Precision, Real};
+}

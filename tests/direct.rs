@@ -1,0 +1,154 @@
+//! The direct route (sections 6–7): quadrature of (46)–(47), the subtracted form (48) with S by
+//! (53), against independent references (tools/gen_integrals.py: mpmath quadrature of (34) with
+//! Γ from (5)–(6) as printed, 40 digits), the static limit (43) and each other.
+
+mod common;
+
+use common::{read_csv, reference, rel_eps};
+use moving_hertz::numerics::elliptic::{ellipd_mc, ellipke_mc};
+use moving_hertz::physics::Material;
+use moving_hertz::prelude::*;
+use moving_hertz::routes::{direct, AxisRatio, Integrals};
+
+struct Case {
+    nu: String,
+    mr: String,
+    k: String,
+    i1: rug::Float,
+    i2: rug::Float,
+}
+
+fn cases() -> Vec<Case> {
+    read_csv("integrals_mpmath.csv")
+        .into_iter()
+        .filter(|r| r[0] == "I")
+        .map(|r| Case {
+            nu: r[1].clone(),
+            mr: r[2].clone(),
+            k: r[3].clone(),
+            i1: reference(&r[4]),
+            i2: reference(&r[5]),
+        })
+        .collect()
+}
+
+fn setup<T: Real>(
+    c: &Case,
+    p: T::Prec,
+) -> (Material<T>, moving_hertz::physics::Speed<T>, AxisRatio<T>) {
+    let mat = Material::new(T::parse(&c.nu, p).unwrap()).unwrap();
+    let sp = mat.speed(T::parse(&c.mr, p).unwrap()).unwrap();
+    let ax = AxisRatio::new(T::parse(&c.k, p).unwrap()).unwrap();
+    (mat, sp, ax)
+}
+
+/// Checks a result against the reference: error ≤ `bound` ε, and within the reported estimate
+/// (plus the rounding of the reference comparison itself).
+fn check<T: Real>(r: &Integrals<T>, c: &Case, bound: f64, label: &str) -> f64 {
+    let e1 = rel_eps(&r.i1, &c.i1);
+    let e2 = rel_eps(&r.i2, &c.i2);
+    let est = (r.error_estimate.clone() / T::epsilon(r.i1.prec())).to_f64();
+    let worst = e1.max(e2);
+    assert!(
+        worst <= bound,
+        "{label} {:?} nu={} M_R={} k={}: errors {e1:.2} {e2:.2} eps",
+        r.method,
+        c.nu,
+        c.mr,
+        c.k
+    );
+    assert!(
+        worst <= est + 1.0,
+        "{label} {:?} nu={} M_R={} k={}: error {worst:.2} eps exceeds estimate {est:.2} eps",
+        r.method,
+        c.nu,
+        c.mr,
+        c.k
+    );
+    worst
+}
+
+fn against_reference<T: Real>(p: T::Prec, label: &str) {
+    let (mut wq, mut ws) = (0.0f64, 0.0f64);
+    for c in cases() {
+        let (mat, sp, ax) = setup::<T>(&c, p);
+        let zero = T::zero(p);
+        let q = direct::quadrature(&mat, &sp, &ax, &zero).expect("quadrature");
+        wq = wq.max(check(&q, &c, 16.0, label));
+        if ax.k <= T::one(p) {
+            let s = direct::subtracted(&mat, &sp, &ax, &zero).expect("subtracted");
+            ws = ws.max(check(&s, &c, 16.0, label));
+        }
+    }
+    println!("{label}: worst error quadrature {wq:.2} eps, subtracted {ws:.2} eps");
+}
+
+#[test]
+fn direct_routes_match_mpmath() {
+    at_all_precisions!(against_reference, [128]);
+}
+
+/// (43): at M_R = 0, I1 = 2(1 − ν)(E/k² − K)/e² and I2 = 2(1 − ν)(K − E)/e². Written without
+/// cancellation with D(e²) = (K − E)/e²: I2 = 2(1 − ν) D and I1 = 2(1 − ν)(E/k² − D)
+/// (the two forms of I1 are equal since e² + k² = 1).
+fn static_limit<T: Real>(p: T::Prec, label: &str) {
+    for (nu, k) in [
+        ("0.25", "0.5"),
+        ("0", "0.001"),
+        ("0.5", "0.9"),
+        ("-0.75", "0.25"),
+    ] {
+        let mat = Material::new(T::parse(nu, p).unwrap()).unwrap();
+        let sp = mat.speed(T::zero(p)).unwrap();
+        let ax = AxisRatio::new(T::parse(k, p).unwrap()).unwrap();
+        let r = direct::quadrature(&mat, &sp, &ax, &T::zero(p)).unwrap();
+        let two_f0 = mat.one_minus_nu().clone().mul_i64(2);
+        let d = ellipd_mc(&ax.k2).unwrap();
+        let (_, ee) = ellipke_mc(&ax.k2).unwrap();
+        let i1 = two_f0.clone() * (ee / &ax.k2 - &d);
+        let i2 = two_f0 * d;
+        let e1 = rel_eps(&r.i1, &i1.to_float(400));
+        let e2 = rel_eps(&r.i2, &i2.to_float(400));
+        assert!(
+            e1.max(e2) <= 16.0,
+            "{label}: static limit nu={nu} k={k}: {e1} {e2} eps"
+        );
+    }
+}
+
+#[test]
+fn static_limit_is_classical_hertz() {
+    at_all_precisions!(static_limit, [256]);
+}
+
+/// (53) for S against mpmath's quadrature of (49), and (52) for S1 against our quadrature.
+fn s_closed_form<T: Real>(p: T::Prec, label: &str) {
+    for r in read_csv("integrals_mpmath.csv")
+        .into_iter()
+        .filter(|r| r[0] == "S")
+    {
+        let mat = Material::new(T::parse("0.25", p).unwrap()).unwrap();
+        let sp = mat.speed(T::parse(&r[2], p).unwrap()).unwrap();
+        let ax = AxisRatio::new(T::parse(&r[3], p).unwrap()).unwrap();
+        let s = direct::s_closed_form(&sp, &ax).unwrap();
+        let e = rel_eps(&s, &reference(&r[4]));
+        assert!(e <= 16.0, "{label}: S at M_R={} k={}: {e} eps", r[2], r[3]);
+    }
+}
+
+#[test]
+fn closed_form_53_for_s() {
+    at_all_precisions!(s_closed_form, [128]);
+}
+
+#[test]
+fn bad_axis_ratio_is_a_typed_error() {
+    for k in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(AxisRatio::new(k).is_err(), "k = {k}");
+    }
+    let sp = Material::new(0.25).unwrap().speed(0.5).unwrap();
+    assert!(matches!(
+        direct::s_closed_form(&sp, &AxisRatio::new(2.0).unwrap()),
+        Err(Error::Domain { .. })
+    ));
+}
