@@ -12,6 +12,7 @@
 //! with Δ² = 1 − e² sin²α = cos²α + k² sin²α, e² = 1 − k² (negative when k > 1), so that in the
 //! static limit I1 = 2(1 − ν)(E/k² − K)/e² and I2 = 2(1 − ν)(K − E)/e² (43), and A1/B1 = I2/I1 (33).
 
+pub mod asymptotic;
 pub mod coefficients;
 pub mod direct;
 
