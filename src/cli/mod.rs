@@ -2,6 +2,7 @@
 //! Nothing in the library depends on this module.
 
 mod args;
+mod integrals;
 mod json;
 mod rayleigh;
 mod study;
@@ -16,6 +17,10 @@ USAGE: moving-hertz <COMMAND> [OPTIONS]
 COMMANDS:
   rayleigh --nu NU [--precision f64|dd|BITS] [--json]
         m1 = (c_R/c2)^2, c_R/c2 and the three roots of the Rayleigh cubic
+  integrals --nu NU --speed MR --k K [--precision f64|dd|BITS | --tol TOL]
+            [--method auto|series|quadrature|subtracted] [--json]
+        I1, I2 of (34) in the normalisation of (37), with an error estimate; with --tol
+        (and no --precision) the lowest precision reaching TOL is chosen
   study rayleigh [--out DIR]
         stability of the closed-form Rayleigh roots against nu and precision
         (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)
@@ -36,6 +41,12 @@ pub fn run(argv: &[String]) -> Result<(), String> {
             println!("{HELP}");
             Ok(())
         }
+        "integrals" => integrals::run(&Args::parse(
+            cmd,
+            rest,
+            &["nu", "speed", "k", "precision", "method", "tol"],
+            &["json"],
+        )?),
         "rayleigh" => rayleigh::run(&Args::parse(cmd, rest, &["nu", "precision"], &["json"])?),
         "study" => {
             let Some(name) = rest.first() else {

@@ -165,10 +165,21 @@ impl<T: Real> DirectSetup<T> {
     }
 }
 
-/// Quadrature tolerance and work limits for the direct route.
-fn limits() -> Limits {
+/// Work limits for the direct route: the Gauss–Legendre rule size follows the accuracy asked
+/// for (about bits/4 + 8 nodes per half panel, bits = min(working bits, log2(1/tol))), so that a
+/// loose tolerance costs fewer evaluations.
+fn limits<T: Real>(tol: &T) -> Limits {
+    let p = tol.prec();
+    let work_bits = T::bits(p) as f64;
+    let t = tol.to_f64();
+    let bits = if t > 0.0 {
+        (-t.log2()).clamp(8.0, work_bits)
+    } else {
+        work_bits
+    };
     Limits {
         max_evals: 2_000_000,
+        gauss_nodes: ((bits / 4.0) as usize + 8).min(1024),
         ..Limits::default()
     }
 }
@@ -203,7 +214,8 @@ fn integrate_halves<T: Real>(
     let rp = s.breakpoints(&s.right_scales());
     // Each of the four pieces to tol/4 relative to itself; pieces are positive except the
     // subtracted one, whose accuracy is judged against the whole I2 below.
-    let q = |f: &dyn Fn(&T) -> T, pts: &[T]| integrate(f, pts, &tol.clone().div_i64(4), limits());
+    let lim = limits(tol);
+    let q = |f: &dyn Fn(&T) -> T, pts: &[T]| integrate(f, pts, &tol.clone().div_i64(4), lim);
     let i1l = q(&|w: &T| s.left(w) * w.square(), &lp)?;
     let i1r = q(&|v: &T| s.right(v), &rp)?;
     let (i2l, i2r) = if subtract {
