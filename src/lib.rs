@@ -21,6 +21,7 @@
 
 #![warn(missing_docs)]
 
+pub mod contact;
 pub mod error;
 pub mod numerics;
 pub mod physics;

@@ -8,3 +8,4 @@ pub mod quadrature;
 pub mod roots;
 pub mod series;
 mod sum;
+pub mod vquad;

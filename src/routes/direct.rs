@@ -329,3 +329,98 @@ pub fn subtracted<T: Real>(
     let sing = s.two_pi.clone() * &g0 * s_closed_form(speed, axes)?;
     integrate_halves(&s, true, tol, Method::Subtracted, Some(sing))
 }
+
+/// The five integrals the contact solution needs, at one (material, speed, axis ratio), in the
+/// normalisation of (37): I1, I2 (34), J0 = ∫_0^π g(V sin φ)/(k² cos²φ + sin²φ)^{1/2} dφ (the
+/// integral of (28)₁/(32) for the approach d0), and ∂I1/∂k, ∂I2/∂k (differentiated under the
+/// integral sign: ∂/∂k (cos²α + k² sin²α)^{−3/2} = −3k sin²α (…)^{−5/2}).
+#[derive(Clone, Debug)]
+pub struct ContactIntegrals<T: Real> {
+    /// I1.
+    pub i1: T,
+    /// I2.
+    pub i2: T,
+    /// J0.
+    pub j0: T,
+    /// ∂I1/∂k.
+    pub di1_dk: T,
+    /// ∂I2/∂k.
+    pub di2_dk: T,
+    /// The largest relative error estimate of the five.
+    pub error_estimate: T,
+    /// Integrand evaluations (each serving all five).
+    pub work: usize,
+}
+
+/// [`ContactIntegrals`] by adaptive vector quadrature in the variables of the module docs (one
+/// evaluation of G per node serves all five integrals); relative tolerance `tol` (0: the
+/// precision's floor). Accuracy as [`quadrature`].
+pub fn contact_integrals<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axes: &AxisRatio<T>,
+    tol: &T,
+) -> Result<ContactIntegrals<T>> {
+    use crate::numerics::vquad::integrate_vec;
+    let s = DirectSetup::new(mat, speed, axes);
+    let p = tol.prec();
+    let lim = limits(tol);
+    let three_k = s.k.clone().mul_i64(3);
+    let left = |w: &T| -> [T; 5] {
+        let one = T::one(p);
+        let w2 = w.square();
+        let opw2 = one.clone() + &w2;
+        let t = s.mr2.clone() / &opw2;
+        let f = s.two_pi.clone() * s.green.g_regular(&t) * opw2.sqrt() / (s.eps2.clone() + &w2);
+        let a = one + s.k2.clone() * &w2;
+        let sa = a.clone().sqrt();
+        let j0 = f.clone() / &sa;
+        let i2 = j0.clone() / &a;
+        let i1 = i2.clone() * &w2;
+        let d = -(three_k.clone() * &w2 / &a);
+        [i1.clone(), i2.clone(), j0, i1 * &d, i2 * d]
+    };
+    let right = |v: &T| -> [T; 5] {
+        let one = T::one(p);
+        let v2 = v.square();
+        let opv2 = one.clone() + &v2;
+        let t = s.mr2.clone() * &v2 / &opv2;
+        let f =
+            s.two_pi.clone() * s.green.g_regular(&t) * opv2.sqrt() / (one + s.eps2.clone() * &v2);
+        let b = v2.clone() + &s.k2;
+        let sb = b.clone().sqrt();
+        let j0 = f.clone() / &sb;
+        let i1 = j0.clone() / &b;
+        let i2 = i1.clone() * &v2;
+        let d = -(three_k.clone() / &b);
+        [i1.clone(), i2.clone(), j0, i1 * &d, i2 * d]
+    };
+    let t4 = tol.clone().div_i64(4);
+    let l = integrate_vec(left, &s.breakpoints(&s.left_scales()), &t4, lim)?;
+    let r = integrate_vec(right, &s.breakpoints(&s.right_scales()), &t4, lim)?;
+    let v: [T; 5] = std::array::from_fn(|c| l.values[c].clone() + &r.values[c]);
+    let mut est = T::zero(p);
+    for c in 0..5 {
+        let e = (l.errors[c].clone() + &r.errors[c]) / &v[c].clone().abs();
+        est = est.max_of(e);
+    }
+    for (c, x) in v.iter().enumerate() {
+        if !x.is_finite() || (c < 3 && !x.is_positive()) {
+            return Err(Error::NoConvergence {
+                what: "contact integrals",
+                iterations: l.evaluations + r.evaluations,
+                reached: short(x),
+            });
+        }
+    }
+    let [i1, i2, j0, di1_dk, di2_dk] = v;
+    Ok(ContactIntegrals {
+        i1,
+        i2,
+        j0,
+        di1_dk,
+        di2_dk,
+        error_estimate: est + &T::epsilon(p).mul_i64(8),
+        work: l.evaluations + r.evaluations,
+    })
+}

@@ -1,0 +1,249 @@
+//! The contact solution: the static limit against classical Hertz (Johnson, Contact Mechanics
+//! §4.2, E* = 2μ/(1 − ν)); the convolution (7) of the computed pressure with the moving Green's
+//! function reproduces d0 − A1x² − B1y² inside the contact (≤ 1e-10 relative at f64) and leaves a
+//! positive gap outside (the Signorini conditions (1)); the ellipse's monotonicity and its
+//! lengthening along the motion with speed; the precision ladder; typed errors.
+
+mod common;
+
+use common::rel_eps;
+use moving_hertz::contact::{convolution, solve_contact, solve_ellipse, Loading, MajorAxis};
+use moving_hertz::numerics::elliptic::{ellipb_mc, ellipd_mc, ellipke_mc};
+use moving_hertz::numerics::roots::brent;
+use moving_hertz::physics::Material;
+use moving_hertz::prelude::*;
+
+/// Johnson §4.2 for a > b (x along a): with e² = 1 − b²/a²,
+/// A = p0 b (K − E)/(E* e² a²), B = p0 b ((a/b)² E − K)/(E* e² a²), d0 = p0 b K/E*,
+/// P = (2/3)π p0 a b. Solved here for (a, b, p0, d0) from (P, R1 > R2, E*).
+fn johnson<T: Real>(p: T::Prec, load: &T, r1: &T, r2: &T, estar: &T) -> (T, T, T, T) {
+    let one = T::one(p);
+    let a_curv = (r1.clone().mul_i64(2)).recip();
+    let b_curv = (r2.clone().mul_i64(2)).recip();
+    let target = a_curv.clone() / &b_curv;
+    // A/B = (K − E)/((a/b)²E − K) as a function of mc = b²/a² ∈ (0, 1), written without
+    // cancellation: K − E = m·D(m), E/mc − K = m·B(m)/mc, so A/B = mc·D/B.
+    let f = |mc: &T| mc.clone() * ellipd_mc(mc).unwrap() / ellipb_mc(mc).unwrap() - &target;
+    let tiny = T::epsilon(p);
+    let mc = brent(f, &tiny, &(one.clone() - &tiny), &T::zero(p), 400)
+        .unwrap()
+        .root;
+    let (kk, ee) = ellipke_mc(&mc).unwrap();
+    let e2 = one - &mc;
+    let pi = T::pi(p);
+    // a³ = 3P(K − E)/(2π A E* e²).
+    let a3 = load.clone().mul_i64(3) * (kk.clone() - &ee)
+        / (pi.clone().mul_i64(2) * &a_curv * estar * &e2);
+    let a = a3.cbrt();
+    let b = a.clone() * mc.sqrt();
+    let p0 = load.clone().mul_i64(3) / (pi.mul_i64(2) * &a * &b);
+    let d0 = p0.clone() * &b * kk / estar;
+    (a, b, p0, d0)
+}
+
+fn static_limit<T: Real>(p: T::Prec, label: &str) {
+    for (nu, r1, r2) in [
+        ("0.25", "2", "1"),
+        ("0", "10", "0.1"),
+        ("0.5", "1.5", "1"),
+        ("-0.5", "300", "0.001"),
+    ] {
+        let mat = Material::new(T::parse(nu, p).unwrap()).unwrap();
+        let sp = mat.speed(T::zero(p)).unwrap();
+        let (r1, r2) = (T::parse(r1, p).unwrap(), T::parse(r2, p).unwrap());
+        let mu = T::parse("3.5", p).unwrap();
+        let load = T::parse("0.75", p).unwrap();
+        let sol =
+            solve_contact(&mat, &sp, &r1, &r2, &Loading::Load(load.clone()), &mu, None).unwrap();
+        let estar = mu.clone().mul_i64(2) / mat.one_minus_nu();
+        let (a, b, p0, d0) = johnson(p, &load, &r1, &r2, &estar);
+        for (name, got, want) in [
+            ("a", &sol.a, &a),
+            ("b", &sol.b, &b),
+            ("p0", &sol.p0, &p0),
+            ("d0", &sol.d0, &d0),
+        ] {
+            let e = rel_eps(got, &want.to_float(400));
+            assert!(e <= 64.0, "{label} nu={nu}: {name} off by {e} eps");
+        }
+        // And the approach-driven solve gives back the load.
+        let sol2 = solve_contact(
+            &mat,
+            &sp,
+            &r1,
+            &r2,
+            &Loading::Approach(sol.d0.clone()),
+            &mu,
+            None,
+        )
+        .unwrap();
+        let e = rel_eps(&sol2.load, &load.to_float(400));
+        assert!(e <= 64.0, "{label} nu={nu}: load from d0 off by {e} eps");
+    }
+}
+
+#[test]
+fn static_limit_is_johnson_hertz() {
+    at_all_precisions!(static_limit, [256]);
+}
+
+/// Inside: the convolution equals d0 − A1x² − B1y² to 1e-10 (measured ~1e-15); outside: the gap
+/// u_z − (d0 − A1x² − B1y²) is positive; the pressure is positive inside.
+#[test]
+fn convolution_reproduces_the_punch_and_signorini_holds() {
+    let mut worst: f64 = 0.0;
+    for (nu, mr, r1, r2) in [
+        (0.25, 0.0, 2.0, 1.0),
+        (0.0, 0.5, 1.0, 1.0),
+        (0.4, 0.9, 5.0, 1.0),
+        (-0.5, 0.99, 1.0, 3.0),
+        (0.2, 0.999, 1.0, 2.0),
+        (0.5, 0.9, 0.5, 4.0),
+    ] {
+        let mat = Material::new(nu).unwrap();
+        let sp = mat.speed(mr).unwrap();
+        let sol = solve_contact(&mat, &sp, &r1, &r2, &Loading::Load(2.0), &1.5, None).unwrap();
+        let (a, b) = (sol.a, sol.b);
+        let inside = [
+            (0.0, 0.0),
+            (0.5 * a, 0.0),
+            (0.0, -0.6 * b),
+            (-0.4 * a, 0.5 * b),
+            (0.7 * a, 0.7 * b),
+        ];
+        for (x, y) in inside {
+            assert!(sol.inside(&x, &y) && sol.pressure(&x, &y) > 0.0);
+            let u = convolution::displacement(&sol, &mat, &sp, &x, &y, &1e-13).unwrap();
+            let poly = sol.displacement_in_contact(&x, &y).unwrap();
+            let rel = ((u - poly) / sol.d0).abs();
+            worst = worst.max(rel);
+            assert!(
+                rel <= 1e-10,
+                "nu={nu} M_R={mr} at ({x},{y}): convolution {u} vs {poly}, rel {rel:e}"
+            );
+        }
+        let outside = [
+            (1.2 * a, 0.0),
+            (-1.05 * a, 0.0),
+            (0.0, 1.1 * b),
+            (0.0, -2.0 * b),
+            (0.9 * a, 0.9 * b),
+            (3.0 * a, -1.0 * b),
+        ];
+        for (x, y) in outside {
+            assert!(!sol.inside(&x, &y) && sol.pressure(&x, &y) == 0.0);
+            let u = convolution::displacement(&sol, &mat, &sp, &x, &y, &1e-12).unwrap();
+            let punch = sol.d0 - sol.a1 * x * x - sol.b1 * y * y;
+            assert!(
+                u - punch > 0.0,
+                "nu={nu} M_R={mr} at ({x},{y}): gap {} is not positive",
+                u - punch
+            );
+        }
+    }
+    println!("worst relative mismatch inside the contact: {worst:.2e}");
+}
+
+/// F(k) = ln(I2/I1) increases with k (so the root is unique), and at fixed A1/B1 the contact
+/// lengthens along the motion (k = b/a falls) as the speed rises.
+#[test]
+fn ellipse_is_unique_and_lengthens_with_speed() {
+    for nu in [-0.9, 0.0, 0.25, 0.5] {
+        let mat = Material::new(nu).unwrap();
+        for ratio in [1e-6, 0.01, 0.3, 1.0, 3.0, 1e6] {
+            let mut prev_k = f64::INFINITY;
+            for mr in [0.0, 0.3, 0.6, 0.9, 0.99, 0.9999] {
+                let sp = mat.speed(mr).unwrap();
+                let s = solve_ellipse(&mat, &sp, &ratio, None).unwrap();
+                assert!(
+                    s.k < prev_k,
+                    "nu={nu} ratio={ratio} M_R={mr}: k {} did not fall below {prev_k}",
+                    s.k
+                );
+                let ci = &s.integrals;
+                assert!(
+                    ci.di2_dk / ci.i2 - ci.di1_dk / ci.i1 > 0.0,
+                    "F not increasing"
+                );
+                let expect = if s.k <= 1.0 {
+                    MajorAxis::Along
+                } else {
+                    MajorAxis::Across
+                };
+                assert_eq!(s.major, expect);
+                prev_k = s.k;
+            }
+        }
+    }
+}
+
+/// The ladder: the f64 root seeds Newton at double-double and 256 bits, which converges in at
+/// most 4 evaluations to the same root a seedless high-precision solve finds.
+fn ladder<T: Real>(p: T::Prec, label: &str) {
+    for (nu, mr, ratio) in [
+        ("0.2", "0.9", "0.3"),
+        ("0.35", "0.999", "1e-3"),
+        ("-0.25", "0.5", "20"),
+    ] {
+        let mat64 = Material::new(nu.parse::<f64>().unwrap()).unwrap();
+        let seed = solve_ellipse(
+            &mat64,
+            &mat64.speed(mr.parse::<f64>().unwrap()).unwrap(),
+            &ratio.parse::<f64>().unwrap(),
+            None,
+        )
+        .unwrap()
+        .k;
+        let mat = Material::new(T::parse(nu, p).unwrap()).unwrap();
+        let sp = mat.speed(T::parse(mr, p).unwrap()).unwrap();
+        let r = T::parse(ratio, p).unwrap();
+        let s = solve_ellipse(&mat, &sp, &r, Some(&T::from_f64(seed, p))).unwrap();
+        assert!(
+            s.iterations <= 4,
+            "{label}: {} iterations from the f64 seed",
+            s.iterations
+        );
+        let cold = solve_ellipse(&mat, &sp, &r, None).unwrap();
+        let e = rel_eps(&s.k, &cold.k.to_float(T::bits(p) + 64));
+        assert!(
+            e <= 16.0,
+            "{label}: seeded and cold roots differ by {e} eps"
+        );
+        let est = (s.error_estimate.clone() / T::epsilon(p)).to_f64();
+        assert!(est <= 64.0, "{label}: error estimate {est} eps");
+    }
+}
+
+#[test]
+fn precision_ladder_from_f64() {
+    ladder::<Dd>((), "dd");
+    ladder::<Mp>(common::mp(256), "mpfr256");
+}
+
+#[test]
+fn bad_inputs_are_typed_errors() {
+    let mat = Material::new(0.25).unwrap();
+    let sp = mat.speed(0.5).unwrap();
+    for (r1, r2, l, mu) in [
+        (0.0, 1.0, 1.0, 1.0),
+        (1.0, -1.0, 1.0, 1.0),
+        (1.0, 1.0, 0.0, 1.0),
+        (1.0, 1.0, 1.0, 0.0),
+        (f64::NAN, 1.0, 1.0, 1.0),
+        (1.0, 1.0, f64::INFINITY, 1.0),
+    ] {
+        let r = solve_contact(&mat, &sp, &r1, &r2, &Loading::Load(l), &mu, None);
+        assert!(
+            matches!(r, Err(Error::Domain { .. }) | Err(Error::NotFinite { .. })),
+            "{r1} {r2} {l} {mu}"
+        );
+    }
+    assert!(matches!(
+        solve_ellipse(&mat, &sp, &-1.0, None),
+        Err(Error::Domain { .. })
+    ));
+    assert!(matches!(
+        solve_ellipse(&mat, &sp, &f64::NAN, None),
+        Err(Error::NotFinite { .. })
+    ));
+}
