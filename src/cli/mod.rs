@@ -2,6 +2,7 @@
 //! Nothing in the library depends on this module.
 
 mod args;
+mod contact;
 mod integrals;
 mod json;
 mod rayleigh;
@@ -21,6 +22,13 @@ COMMANDS:
             [--method auto|series|quadrature|subtracted] [--json]
         I1, I2 of (34) in the normalisation of (37), with an error estimate; with --tol
         (and no --precision) the lowest precision reaching TOL is chosen
+  ellipse --nu NU --speed MR --ratio A1_OVER_B1 [--precision ...] [--method auto|quadrature]
+          [--repeat N] [--json]
+        the contact ellipse's axis ratio k = b/a (a along the motion) and eccentricity for
+        the curvature ratio A1/B1 = R2/R1 (R1 along the motion, R2 across)
+  contact --nu NU --speed MR --r-along R1 --r-across R2 (--load P | --approach D0)
+          --shear-modulus MU [--precision ...] [--json]
+        the full moving-punch Hertz solution: a, b, k, e, p0, d0, load
   study rayleigh [--out DIR]
         stability of the closed-form Rayleigh roots against nu and precision
         (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)
@@ -45,6 +53,27 @@ pub fn run(argv: &[String]) -> Result<(), String> {
             cmd,
             rest,
             &["nu", "speed", "k", "precision", "method", "tol"],
+            &["json"],
+        )?),
+        "ellipse" => contact::ellipse(&Args::parse(
+            cmd,
+            rest,
+            &["nu", "speed", "ratio", "precision", "method", "repeat"],
+            &["json"],
+        )?),
+        "contact" => contact::contact(&Args::parse(
+            cmd,
+            rest,
+            &[
+                "nu",
+                "speed",
+                "r-along",
+                "r-across",
+                "load",
+                "approach",
+                "shear-modulus",
+                "precision",
+            ],
             &["json"],
         )?),
         "rayleigh" => rayleigh::run(&Args::parse(cmd, rest, &["nu", "precision"], &["json"])?),

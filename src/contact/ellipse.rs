@@ -207,3 +207,25 @@ fn finish<T: Real>(
         iterations,
     }
 }
+
+/// The precision ladder: solves at `f64` first (inputs rounded to `f64`) and refines the root at
+/// the working precision of `T` by Newton from that seed — a few high-precision evaluations of the
+/// integrals instead of a search. For `T = f64` this is [`solve_ellipse`].
+pub fn solve_ellipse_ladder<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    ratio: &T,
+) -> Result<EllipseShape<T>> {
+    check_ratio(ratio)?;
+    let p = ratio.prec();
+    if T::bits(p) <= 53 {
+        return solve_ellipse(mat, speed, ratio, None);
+    }
+    let mat64 = Material::new(mat.nu().to_f64())?;
+    let mr = speed.mr.to_f64().min(1.0 - f64::EPSILON);
+    let seed = Material::speed(&mat64, mr)
+        .and_then(|sp| solve_ellipse(&mat64, &sp, &ratio.to_f64(), None))
+        .map(|s| T::from_f64(s.k, p))
+        .ok();
+    solve_ellipse(mat, speed, ratio, seed.as_ref())
+}

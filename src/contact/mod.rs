@@ -10,5 +10,5 @@ pub mod convolution;
 pub mod ellipse;
 pub mod solution;
 
-pub use ellipse::{solve_ellipse, EllipseShape, MajorAxis};
+pub use ellipse::{solve_ellipse, solve_ellipse_ladder, EllipseShape, MajorAxis};
 pub use solution::{solve_contact, ContactSolution, Loading};

@@ -18,7 +18,7 @@
 //! In the static limit these are Johnson's (Contact Mechanics §4.2) with E* = 2μ/(1 − ν):
 //! A1 = p0 b (K − E)/(E* e² a²), d0 = p0 b K/E* (tested to a few ε in `tests/contact.rs`).
 
-use super::ellipse::{solve_ellipse, EllipseShape};
+use super::ellipse::{solve_ellipse, solve_ellipse_ladder, EllipseShape};
 use crate::error::{Error, Result};
 use crate::physics::{Material, Speed};
 use crate::scalar::{check_finite, short, Real};
@@ -69,7 +69,7 @@ fn positive<T: Real>(name: &'static str, x: &T) -> Result<()> {
 
 /// Solves the moving-punch Hertz problem: radii of curvature `r_along` (R1) and `r_across`
 /// (R2), the load or the approach, shear modulus `mu`, for `mat` at `speed`; `seed` is an
-/// optional starting k (the precision ladder). Accuracy: the ellipse's error estimate propagates
+/// optional starting k (without one, above `f64` the precision ladder supplies it). Accuracy: the ellipse's error estimate propagates
 /// to a, b, p0 with factors of order one; every result carries `shape.error_estimate`.
 pub fn solve_contact<T: Real>(
     mat: &Material<T>,
@@ -91,7 +91,10 @@ pub fn solve_contact<T: Real>(
     let a1 = r_along.clone().mul_pow2(1).recip();
     let b1 = r_across.clone().mul_pow2(1).recip();
     let ratio = r_across.clone() / r_along;
-    let shape = solve_ellipse(mat, speed, &ratio, seed)?;
+    let shape = match seed {
+        Some(s) => solve_ellipse(mat, speed, &ratio, Some(s))?,
+        None => solve_ellipse_ladder(mat, speed, &ratio)?,
+    };
     let ci = &shape.integrals;
     let k = shape.k.clone();
     let pi = T::pi(p);

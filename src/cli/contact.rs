@@ -1,0 +1,126 @@
+//! `moving-hertz ellipse` and `moving-hertz contact`: the contact ellipse's shape (33) and the
+//! full moving-punch Hertz solution.
+
+use super::args::Args;
+use super::json::{s, Json};
+use moving_hertz::contact::{solve_contact, solve_ellipse_ladder, Loading};
+use moving_hertz::physics::Material;
+use moving_hertz::scalar::{Field, Real};
+use moving_hertz::with_precision;
+use std::time::Instant;
+
+fn parse<T: Real>(name: &str, text: &str, p: T::Prec) -> Result<T, String> {
+    T::parse(text, p).map_err(|e| format!("--{name}: {e}"))
+}
+
+pub fn ellipse(args: &Args) -> Result<(), String> {
+    let prec = args.precision()?;
+    let json = args.flag("json");
+    match args.optional("method").unwrap_or("auto") {
+        "auto" | "quadrature" => {}
+        other => {
+            return Err(format!(
+                "--method {other}: the ellipse solve uses auto or quadrature"
+            ))
+        }
+    }
+    let repeat: usize = match args.optional("repeat") {
+        Some(r) => r
+            .parse()
+            .map_err(|_| format!("--repeat: cannot parse {r:?}"))?,
+        None => 0,
+    };
+    with_precision!(prec, T, p => {
+        let nu = parse::<T>("nu", args.required("nu")?, p)?;
+        let mr = parse::<T>("speed", args.required("speed")?, p)?;
+        let ratio = parse::<T>("ratio", args.required("ratio")?, p)?;
+        let mat = Material::new(nu).map_err(|e| e.to_string())?;
+        let sp = mat.speed(mr).map_err(|e| e.to_string())?;
+        let sol = solve_ellipse_ladder(&mat, &sp, &ratio).map_err(|e| e.to_string())?;
+        let mut times: Vec<f64> = (0..repeat)
+            .map(|_| {
+                let t = Instant::now();
+                let r = solve_ellipse_ladder(&mat, &sp, &ratio);
+                let ns = t.elapsed().as_nanos() as f64;
+                std::hint::black_box(r.is_ok());
+                ns
+            })
+            .collect();
+        times.sort_by(|a, b| a.total_cmp(b));
+        let ci = &sol.integrals;
+        if json {
+            let mut fields = vec![
+                ("k".into(), s(sol.k.to_decimal())),
+                ("e".into(), s(sol.e.to_decimal())),
+                ("I1".into(), s(ci.i1.to_decimal())),
+                ("I2".into(), s(ci.i2.to_decimal())),
+                ("method".into(), s("quadrature")),
+                ("precision".into(), s(prec.label())),
+                ("error_estimate".into(), s(format!("{:.3e}", sol.error_estimate.to_f64()))),
+                ("major_axis".into(), s(sol.major.label())),
+            ];
+            if !times.is_empty() {
+                fields.push(("median_ns".into(), s(format!("{:.0}", times[times.len() / 2]))));
+                fields.push(("min_ns".into(), s(format!("{:.0}", times[0]))));
+            }
+            println!("{}", Json::Obj(fields).render());
+        } else {
+            println!("contact ellipse for A1/B1 = R2/R1 = {} at M_R = {}, nu = {}", ratio.to_decimal(), sp.mr.to_decimal(), mat.nu().to_decimal());
+            println!("k = b/a (across/along the motion) = {}", sol.k.to_decimal());
+            println!("eccentricity e = {}  (major axis {} the motion)", sol.e.to_decimal(), sol.major.label());
+            println!("I1 = {}", ci.i1.to_decimal());
+            println!("I2 = {}", ci.i2.to_decimal());
+            println!("relative error estimate of k: {:.2e}; {} Newton steps at {}", sol.error_estimate.to_f64(), sol.iterations, prec.label());
+            if !times.is_empty() {
+                println!("time per solve over {} runs: median {:.0} ns, min {:.0} ns", times.len(), times[times.len() / 2], times[0]);
+            }
+        }
+        Ok(())
+    })
+}
+
+pub fn contact(args: &Args) -> Result<(), String> {
+    let prec = args.precision()?;
+    let json = args.flag("json");
+    with_precision!(prec, T, p => {
+        let nu = parse::<T>("nu", args.required("nu")?, p)?;
+        let mr = parse::<T>("speed", args.required("speed")?, p)?;
+        let r1 = parse::<T>("r-along", args.required("r-along")?, p)?;
+        let r2 = parse::<T>("r-across", args.required("r-across")?, p)?;
+        let mu = parse::<T>("shear-modulus", args.required("shear-modulus")?, p)?;
+        let loading = match (args.optional("load"), args.optional("approach")) {
+            (Some(l), None) => Loading::Load(parse::<T>("load", l, p)?),
+            (None, Some(d)) => Loading::Approach(parse::<T>("approach", d, p)?),
+            _ => return Err("`contact` needs exactly one of --load P or --approach D0".into()),
+        };
+        let mat = Material::new(nu).map_err(|e| e.to_string())?;
+        let sp = mat.speed(mr).map_err(|e| e.to_string())?;
+        let sol = solve_contact(&mat, &sp, &r1, &r2, &loading, &mu, None).map_err(|e| e.to_string())?;
+        if json {
+            let obj = Json::Obj(vec![
+                ("a".into(), s(sol.a.to_decimal())),
+                ("b".into(), s(sol.b.to_decimal())),
+                ("k".into(), s(sol.shape.k.to_decimal())),
+                ("e".into(), s(sol.shape.e.to_decimal())),
+                ("p0".into(), s(sol.p0.to_decimal())),
+                ("d0".into(), s(sol.d0.to_decimal())),
+                ("load".into(), s(sol.load.to_decimal())),
+                ("precision".into(), s(prec.label())),
+                ("error_estimate".into(), s(format!("{:.3e}", sol.shape.error_estimate.to_f64()))),
+            ]);
+            println!("{}", obj.render());
+        } else {
+            println!("moving rigid punch on an elastic half-space, nu = {}, M_R = V/c_R = {}", mat.nu().to_decimal(), sp.mr.to_decimal());
+            println!("(units: as given; SI inputs give SI outputs: m, Pa, N)");
+            println!("semi-axis along the motion  a  = {}", sol.a.to_decimal());
+            println!("semi-axis across the motion b  = {}", sol.b.to_decimal());
+            println!("axis ratio k = b/a             = {}", sol.shape.k.to_decimal());
+            println!("eccentricity e                 = {}  (major axis {} the motion)", sol.shape.e.to_decimal(), sol.shape.major.label());
+            println!("central pressure p0            = {}", sol.p0.to_decimal());
+            println!("approach d0                    = {}", sol.d0.to_decimal());
+            println!("load P                         = {}", sol.load.to_decimal());
+            println!("relative error estimate (k): {:.2e} at {}", sol.shape.error_estimate.to_f64(), prec.label());
+        }
+        Ok(())
+    })
+}
