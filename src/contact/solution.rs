@@ -116,6 +116,36 @@ pub fn solve_contact<T: Real>(
     let b = k.clone() * &a;
     let p0 = load.clone().mul_i64(3) / (pi.mul_i64(2) * &a * &b);
     let d0 = p0.clone() * &b * &ci.j0 / &four_mu;
+    // Inputs at the edge of the format (a radius of 1e-320, a load of 1e300) can overflow or
+    // underflow the scaling even though each is valid: report it rather than return ∞ or 0.
+    for (name, v) in [
+        ("curvature A1 = 1/(2 R1)", &a1),
+        ("curvature B1 = 1/(2 R2)", &b1),
+        (
+            "semi-axis a (overflow or underflow: rescale the inputs)",
+            &a,
+        ),
+        (
+            "semi-axis b (overflow or underflow: rescale the inputs)",
+            &b,
+        ),
+        (
+            "central pressure p0 (overflow or underflow: rescale the inputs)",
+            &p0,
+        ),
+        (
+            "approach d0 (overflow or underflow: rescale the inputs)",
+            &d0,
+        ),
+        ("load P (overflow or underflow: rescale the inputs)", &load),
+    ] {
+        if !v.is_finite() || !v.is_positive() {
+            return Err(Error::NotFinite {
+                name,
+                value: short(v),
+            });
+        }
+    }
     Ok(ContactSolution {
         shape,
         a,

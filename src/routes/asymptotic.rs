@@ -75,7 +75,7 @@ impl<T: Real> I2Asymptotics<T> {
         let mut pts = vec![T::zero(p)];
         if axes.k < one {
             let mut x = axes.k.clone().mul_pow2(-4);
-            while x < one {
+            while x < one && x.is_positive() {
                 pts.push(x.clone());
                 x = x.mul_pow2(2);
             }

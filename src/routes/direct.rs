@@ -140,7 +140,7 @@ impl<T: Real> DirectSetup<T> {
             }
             // s/4^j down to s/16, s·4^j up to 1.
             let mut x = s.clone().mul_pow2(-4);
-            while x < one {
+            while x < one && x.is_positive() {
                 pts.push(x.clone());
                 x = x.mul_pow2(2);
             }

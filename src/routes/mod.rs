@@ -48,12 +48,23 @@ impl<T: Real> AxisRatio<T> {
         }
         let p = k.prec();
         let one = T::one(p);
+        let k2 = k.square();
+        // k² and 1/k² must be normal numbers of the working precision (the integrals scale
+        // like 1/k² and k).
+        let tiny = T::min_positive(p);
+        if !(k2.is_finite()
+            && k2 >= tiny
+            && k2.clone().recip().is_finite()
+            && k2.clone().recip() >= tiny)
+        {
+            return Err(Error::Domain {
+                name: "axis ratio k = b/a",
+                value: short(&k),
+                bound: "(0, inf) with k^2 and 1/k^2 normal numbers of the working precision",
+            });
+        }
         let e2 = (one.clone() - &k) * (one + &k);
-        Ok(AxisRatio {
-            k2: k.square(),
-            k,
-            e2,
-        })
+        Ok(AxisRatio { k2, k, e2 })
     }
 }
 

@@ -1,0 +1,134 @@
+//! Property test: the public entry points, fed random `f64` inputs with the extremes mixed in
+//! (NaN, ±∞, ±0, subnormals, huge and tiny values, the ends of every range), never panic and
+//! never return NaN: either a finite result or a typed error.
+
+use moving_hertz::contact::{solve_contact, solve_ellipse, Loading};
+use moving_hertz::physics::{GreenFunction, Material};
+use moving_hertz::routes::choose::{self, Inputs, MethodRequest};
+use moving_hertz::routes::{direct, AxisRatio};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E3779B97F4A7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58476D1CE4E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D049BB133111EB);
+        z ^ (z >> 31)
+    }
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    /// A value for a parameter whose valid range is [lo, hi]: mostly inside, often at or just
+    /// beyond the ends, sometimes pathological.
+    fn value(&mut self, lo: f64, hi: f64) -> f64 {
+        let specials = [
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            5e-324,
+            f64::MAX,
+            -f64::MAX,
+            1e-300,
+            1e300,
+            lo,
+            hi,
+            lo - f64::EPSILON * lo.abs().max(1.0),
+            hi + f64::EPSILON * hi.abs().max(1.0),
+            hi - f64::EPSILON * hi.abs().max(1.0),
+            1.0 - 1e-12,
+            1e-6,
+            1e6,
+        ];
+        match self.next() % 4 {
+            0 => specials[(self.next() % specials.len() as u64) as usize],
+            1 => lo + (hi - lo) * self.unit(),
+            2 => {
+                10f64.powf(-12.0 + 24.0 * self.unit())
+                    * if self.next() % 5 == 0 { -1.0 } else { 1.0 }
+            }
+            _ => lo + (hi - lo) * self.unit().powi(8),
+        }
+    }
+}
+
+fn finite_or_err<T>(what: &str, r: moving_hertz::Result<T>, values: impl Fn(&T) -> Vec<f64>) {
+    if let Ok(v) = r {
+        for x in values(&v) {
+            assert!(x.is_finite(), "{what}: returned a non-finite value {x}");
+        }
+    }
+}
+
+#[test]
+fn random_inputs_never_panic_nor_return_nan() {
+    let mut rng = Rng(2026);
+    let mut ok = 0usize;
+    for case in 0..400 {
+        let nu = rng.value(-1.0, 0.5);
+        let mr = rng.value(0.0, 1.0);
+        let k = rng.value(1e-6, 1e6);
+        let ratio = rng.value(1e-6, 1e6);
+        let r1 = rng.value(1e-3, 1e3);
+        let mu = rng.value(1e-3, 1e12);
+        let load = rng.value(1e-3, 1e6);
+        eprintln!("case {case}: nu={nu:e} M_R={mr:e} k={k:e} ratio={ratio:e} R1={r1:e} mu={mu:e} P={load:e}");
+        let run = AssertUnwindSafe(|| {
+            finite_or_err("material", Material::new(nu), |m| vec![*m.m1(), *m.gamma()]);
+            let Ok(mat) = Material::new(nu) else { return 0 };
+            let Ok(sp) = mat.speed(mr) else { return 0 };
+            let g = GreenFunction::new(&mat);
+            assert!(g.gamma(&sp).is_finite());
+            if let Ok(ax) = AxisRatio::new(k) {
+                finite_or_err(
+                    "quadrature",
+                    direct::quadrature(&mat, &sp, &ax, &0.0),
+                    |r| vec![r.i1, r.i2, r.error_estimate],
+                );
+            }
+            finite_or_err("ellipse", solve_ellipse(&mat, &sp, &ratio, None), |s| {
+                vec![s.k, s.e, s.error_estimate]
+            });
+            finite_or_err(
+                "contact",
+                solve_contact(
+                    &mat,
+                    &sp,
+                    &r1,
+                    &(r1 * ratio),
+                    &Loading::Load(load),
+                    &mu,
+                    None,
+                ),
+                |s| vec![s.a, s.b, s.p0, s.d0, s.load],
+            );
+            1
+        });
+        match catch_unwind(run) {
+            Ok(n) => ok += n,
+            Err(_) => panic!("case {case}: panicked for nu={nu:e} M_R={mr:e} k={k:e} ratio={ratio:e} R1={r1:e} mu={mu:e} P={load:e}"),
+        }
+        // The automatic route, from exact inputs.
+        if let Ok(inputs) = Inputs::from_f64(nu, mr, k) {
+            let tol = 10f64.powf(-3.0 - 30.0 * rng.unit());
+            let r = catch_unwind(AssertUnwindSafe(|| {
+                choose::integrals(&inputs, tol, MethodRequest::Auto)
+            }));
+            match r {
+                Ok(Ok(a)) => {
+                    assert!(a.i1.is_finite() && a.i2.is_finite() && a.error_estimate <= tol)
+                }
+                Ok(Err(_)) => {}
+                Err(_) => panic!(
+                    "case {case}: choose::integrals panicked for nu={nu:e} M_R={mr:e} k={k:e}"
+                ),
+            }
+        }
+    }
+    // Enough valid cases went through the whole chain.
+    assert!(ok > 60, "only {ok} cases reached the solvers");
+}
