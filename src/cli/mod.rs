@@ -31,6 +31,8 @@ COMMANDS:
         the full moving-punch Hertz solution: a, b, k, e, p0, d0, load
   study rayleigh [--out DIR]
         stability of the closed-form Rayleigh roots against nu and precision
+  study integrals [--out DIR]
+        accuracy against cost of every method x precision for I1, I2 as M_R -> 1
         (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)
   help  this text
 

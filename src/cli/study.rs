@@ -2,14 +2,17 @@
 //! under `docs/` (or `--out DIR`).
 
 use super::args::Args;
-use moving_hertz::studies::{self, rayleigh};
+use moving_hertz::studies::{self, integrals, rayleigh};
 use std::path::PathBuf;
 
 pub fn run(name: &str, args: &Args) -> Result<(), String> {
     let out = PathBuf::from(args.optional("out").unwrap_or("docs"));
     match name {
         "rayleigh" => study_rayleigh(&out),
-        other => Err(format!("unknown study `{other}` (available: rayleigh)")),
+        "integrals" => study_integrals(&out),
+        other => Err(format!(
+            "unknown study `{other}` (available: rayleigh, integrals)"
+        )),
     }
 }
 
@@ -61,6 +64,75 @@ fn study_rayleigh(out: &std::path::Path) -> Result<(), String> {
     println!("{md}");
     println!(
         "wrote {} and charts under {}",
+        data.display(),
+        out.join("figures").display()
+    );
+    Ok(())
+}
+
+fn study_integrals(out: &std::path::Path) -> Result<(), String> {
+    let (nu, k) = ("0.2", "0.3");
+    let rows = integrals::run(nu, k, 60.0, |mr| eprintln!("integrals: M_R = {mr} ..."))
+        .map_err(|e| e.to_string())?;
+    let csv: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            vec![
+                r.mr.clone(),
+                r.method.label().to_string(),
+                r.precision.label(),
+                format!("{:.3e}", r.error),
+                format!("{:.3e}", r.estimate),
+                format!("{:.1}", r.time_ns),
+                r.work.to_string(),
+                r.failure.clone().unwrap_or_default().replace(',', ";"),
+            ]
+        })
+        .collect();
+    let data = out.join("data/integrals_study.csv");
+    studies::write_csv(
+        &data,
+        &[
+            "mr",
+            "method",
+            "precision",
+            "rel_error",
+            "error_estimate",
+            "time_ns",
+            "work",
+            "failure",
+        ],
+        &csv,
+    )
+    .map_err(io)?;
+    for (name, svg) in integrals::charts(&rows) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    println!("| M_R | method | precision | rel. error | estimate | time | work |");
+    println!("|---|---|---|---|---|---|---|");
+    for r in &rows {
+        match &r.failure {
+            None => println!(
+                "| {} | {} | {} | {:.1e} | {:.1e} | {:.3} µs | {} |",
+                r.mr,
+                r.method.label(),
+                r.precision.label(),
+                r.error,
+                r.estimate,
+                r.time_ns / 1e3,
+                r.work
+            ),
+            Some(f) => println!(
+                "| {} | {} | {} | failed: {} | | | |",
+                r.mr,
+                r.method.label(),
+                r.precision.label(),
+                f
+            ),
+        }
+    }
+    println!(
+        "wrote {} and charts under {} (nu = {nu}, k = {k})",
         data.display(),
         out.join("figures").display()
     );
