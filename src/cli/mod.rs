@@ -3,8 +3,10 @@
 
 mod args;
 mod contact;
+mod fig2;
 mod integrals;
 mod json;
+mod progress;
 mod rayleigh;
 mod study;
 
@@ -16,6 +18,9 @@ moving-hertz — Hertz contact of a rigid punch sliding at sub-Rayleigh speed
 USAGE: moving-hertz <COMMAND> [OPTIONS]
 
 COMMANDS:
+  fig2 [--nu NU] [--precision f64|dd|BITS] [--out DIR]
+        the paper's Fig. 2: eccentricity of the contact ellipse against A1/B1 for several
+        speeds, and against the speed for several A1/B1 (CSV in DIR/data, SVG in DIR/figures)
   rayleigh --nu NU [--precision f64|dd|BITS] [--json]
         m1 = (c_R/c2)^2, c_R/c2 and the three roots of the Rayleigh cubic
   integrals --nu NU --speed MR --k K [--precision f64|dd|BITS | --tol TOL]
@@ -57,6 +62,7 @@ pub fn run(argv: &[String]) -> Result<(), String> {
             &["nu", "speed", "k", "precision", "method", "tol"],
             &["json"],
         )?),
+        "fig2" => fig2::run(&Args::parse(cmd, rest, &["nu", "precision", "out"], &[])?),
         "ellipse" => contact::ellipse(&Args::parse(
             cmd,
             rest,

@@ -2,6 +2,7 @@
 //! (SVG) are committed under `docs/`. Each study is a library function returning its tables, run
 //! by a `moving-hertz study …` command; only this layer writes files.
 
+pub mod fig2;
 pub mod integrals;
 pub mod rayleigh;
 pub mod svg;
