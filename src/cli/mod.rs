@@ -36,6 +36,8 @@ COMMANDS:
         the full moving-punch Hertz solution: a, b, k, e, p0, d0, load
   study rayleigh [--out DIR]
         stability of the closed-form Rayleigh roots against nu and precision
+  study poisson [--out DIR]
+        how much Poisson's ratio changes e, k and a (the paper's 'about 2%' claim)
   study integrals [--out DIR]
         accuracy against cost of every method x precision for I1, I2 as M_R -> 1
         (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)

@@ -2,7 +2,8 @@
 //! under `docs/` (or `--out DIR`).
 
 use super::args::Args;
-use moving_hertz::studies::{self, integrals, rayleigh};
+use super::progress::Progress;
+use moving_hertz::studies::{self, integrals, poisson, rayleigh};
 use std::path::PathBuf;
 
 pub fn run(name: &str, args: &Args) -> Result<(), String> {
@@ -10,8 +11,9 @@ pub fn run(name: &str, args: &Args) -> Result<(), String> {
     match name {
         "rayleigh" => study_rayleigh(&out),
         "integrals" => study_integrals(&out),
+        "poisson" => study_poisson(&out),
         other => Err(format!(
-            "unknown study `{other}` (available: rayleigh, integrals)"
+            "unknown study `{other}` (available: rayleigh, integrals, poisson)"
         )),
     }
 }
@@ -136,5 +138,72 @@ fn study_integrals(out: &std::path::Path) -> Result<(), String> {
         data.display(),
         out.join("figures").display()
     );
+    Ok(())
+}
+
+fn study_poisson(out: &std::path::Path) -> Result<(), String> {
+    let total = poisson::nu_grid().len() * poisson::SPEEDS.len() * poisson::ratio_grid().len();
+    let mut bar = Progress::new("poisson", total);
+    let pts = poisson::run(|| bar.tick()).map_err(|e| e.to_string())?;
+    bar.finish();
+    let csv: Vec<Vec<String>> = pts
+        .iter()
+        .map(|q| {
+            vec![
+                format!("{}", q.nu),
+                format!("{}", q.mr),
+                format!("{:.6}", q.ratio),
+                format!("{:.16e}", q.e),
+                format!("{:.16e}", q.k),
+                format!("{:.16e}", q.a),
+                format!("{:.16e}", q.a_rel),
+            ]
+        })
+        .collect();
+    let data = out.join("data/poisson_study.csv");
+    studies::write_csv(
+        &data,
+        &[
+            "nu",
+            "M_R",
+            "A1_over_B1",
+            "e",
+            "k",
+            "a_for_P_mu_R1_1",
+            "a_over_static_a",
+        ],
+        &csv,
+    )
+    .map_err(io)?;
+    for (name, svg) in poisson::charts(&pts) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    println!(
+        "Largest deviation from nu = 0.2 (max over A1/B1 in [0.01, 1]), in %: e absolute (x100),"
+    );
+    println!("k and a(M_R)/a(0) relative:");
+    println!("| M_R | e, 0<=nu<=1/2 | e, all nu | k, 0<=nu<=1/2 | k, all nu | a/a0, 0<=nu<=1/2 | a/a0, all nu |");
+    println!("|---|---|---|---|---|---|---|");
+    use poisson::Deviation::{Absolute, Relative};
+    let fs: [(poisson::Deviation, fn(&poisson::Point) -> f64); 3] = [
+        (Absolute, |q| q.e),
+        (Relative, |q| q.k),
+        (Relative, |q| q.a_rel),
+    ];
+    for mr in poisson::SPEEDS {
+        let mut cells = Vec::new();
+        for (how, f) in fs {
+            for range in [(0.0, 0.5), (-0.99, 0.5)] {
+                let w = poisson::spread(&pts, range, how, f)
+                    .iter()
+                    .filter(|(m, _, _)| *m == mr)
+                    .map(|(_, _, w)| *w)
+                    .fold(0.0f64, f64::max);
+                cells.push(format!("{:.3}", 100.0 * w));
+            }
+        }
+        println!("| {mr} | {} |", cells.join(" | "));
+    }
+    println!("wrote {} and figures/poisson_*.svg", data.display());
     Ok(())
 }
