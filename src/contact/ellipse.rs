@@ -147,7 +147,8 @@ pub fn solve_ellipse<T: Real>(
             None
         };
         let next = match (&lo, &hi, newton) {
-            (Some(l), Some(h), Some(n)) if n > *l && n < *h => n,
+            // Inside the closed bracket (a converged step may land on its end).
+            (Some(l), Some(h), Some(n)) if n >= *l && n <= *h => n,
             (Some(l), Some(h), _) => (l.clone() + h).mul_pow2(-1),
             (_, _, Some(n)) => {
                 // Unbracketed: limit the step to a factor e² in k.
