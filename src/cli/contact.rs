@@ -3,7 +3,8 @@
 
 use super::args::Args;
 use super::json::{s, Json};
-use moving_hertz::contact::{solve_contact, solve_ellipse_ladder, Loading};
+use moving_hertz::contact::ellipse::{solve_ellipse_with, EllipseMethod};
+use moving_hertz::contact::{solve_contact, Loading};
 use moving_hertz::physics::Material;
 use moving_hertz::scalar::{Field, Real};
 use moving_hertz::with_precision;
@@ -36,11 +37,11 @@ pub fn ellipse(args: &Args) -> Result<(), String> {
         let ratio = parse::<T>("ratio", args.required("ratio")?, p)?;
         let mat = Material::new(nu).map_err(|e| e.to_string())?;
         let sp = mat.speed(mr).map_err(|e| e.to_string())?;
-        let sol = solve_ellipse_ladder(&mat, &sp, &ratio).map_err(|e| e.to_string())?;
+        let sol = solve_ellipse_with(&mat, &sp, &ratio, method).map_err(|e| e.to_string())?;
         let mut times: Vec<f64> = (0..repeat)
             .map(|_| {
                 let t = Instant::now();
-                let r = solve_ellipse_ladder(&mat, &sp, &ratio);
+                let r = solve_ellipse_with(&mat, &sp, &ratio, method);
                 let ns = t.elapsed().as_nanos() as f64;
                 std::hint::black_box(r.is_ok());
                 ns
@@ -54,7 +55,7 @@ pub fn ellipse(args: &Args) -> Result<(), String> {
                 ("e".into(), s(sol.e.to_decimal())),
                 ("I1".into(), s(ci.i1.to_decimal())),
                 ("I2".into(), s(ci.i2.to_decimal())),
-                ("method".into(), s("quadrature")),
+                ("method".into(), s(method.resolve().label())),
                 ("precision".into(), s(prec.label())),
                 ("error_estimate".into(), s(format!("{:.3e}", sol.error_estimate.to_f64()))),
                 ("major_axis".into(), s(sol.major.label())),

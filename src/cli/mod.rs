@@ -38,6 +38,8 @@ COMMANDS:
         stability of the closed-form Rayleigh roots against nu and precision
   study poisson [--out DIR]
         how much Poisson's ratio changes e, k and a (the paper's 'about 2%' claim)
+  study pareto [--out DIR]
+        accuracy against time of the ellipse solve for each method x precision
   study integrals [--out DIR]
         accuracy against cost of every method x precision for I1, I2 as M_R -> 1
         (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)

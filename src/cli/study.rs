@@ -3,7 +3,8 @@
 
 use super::args::Args;
 use super::progress::Progress;
-use moving_hertz::studies::{self, integrals, poisson, rayleigh};
+use moving_hertz::contact::ellipse::EllipseMethod;
+use moving_hertz::studies::{self, integrals, pareto, poisson, rayleigh};
 use std::path::PathBuf;
 
 pub fn run(name: &str, args: &Args) -> Result<(), String> {
@@ -12,8 +13,9 @@ pub fn run(name: &str, args: &Args) -> Result<(), String> {
         "rayleigh" => study_rayleigh(&out),
         "integrals" => study_integrals(&out),
         "poisson" => study_poisson(&out),
+        "pareto" => study_pareto(&out),
         other => Err(format!(
-            "unknown study `{other}` (available: rayleigh, integrals, poisson)"
+            "unknown study `{other}` (available: rayleigh, integrals, poisson, pareto)"
         )),
     }
 }
@@ -205,5 +207,68 @@ fn study_poisson(out: &std::path::Path) -> Result<(), String> {
         println!("| {mr} | {} |", cells.join(" | "));
     }
     println!("wrote {} and figures/poisson_*.svg", data.display());
+    Ok(())
+}
+
+fn study_pareto(out: &std::path::Path) -> Result<(), String> {
+    let methods = [EllipseMethod::Quadrature];
+    let rows = pareto::run(&methods, 200.0, |what| eprintln!("pareto: {what} ..."))
+        .map_err(|e| e.to_string())?;
+    let csv: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            vec![
+                format!("{}", r.mr),
+                r.method.label().to_string(),
+                r.precision.label(),
+                r.precision.bits().to_string(),
+                format!("{:.3e}", r.error),
+                format!("{:.3e}", r.estimate),
+                format!("{:.1}", r.time_ns),
+                r.failure.clone().unwrap_or_default().replace(',', ";"),
+            ]
+        })
+        .collect();
+    let data = out.join("data/pareto_ellipse.csv");
+    studies::write_csv(
+        &data,
+        &[
+            "mr",
+            "method",
+            "precision",
+            "bits",
+            "k_rel_error",
+            "error_estimate",
+            "time_ns",
+            "failure",
+        ],
+        &csv,
+    )
+    .map_err(io)?;
+    for (name, svg) in pareto::charts(&rows, &methods) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    println!("| M_R | method | precision | error of k | estimate | time per solve |");
+    println!("|---|---|---|---|---|---|");
+    for r in &rows {
+        match &r.failure {
+            None => println!(
+                "| {} | {} | {} | {:.1e} | {:.1e} | {:.3} ms |",
+                r.mr,
+                r.method.label(),
+                r.precision.label(),
+                r.error,
+                r.estimate,
+                r.time_ns / 1e6
+            ),
+            Some(f) => println!(
+                "| {} | {} | {} | failed: {f} | | |",
+                r.mr,
+                r.method.label(),
+                r.precision.label()
+            ),
+        }
+    }
+    println!("wrote {} and figures/pareto_*.svg", data.display());
     Ok(())
 }

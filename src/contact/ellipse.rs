@@ -100,18 +100,79 @@ fn static_seed(ratio: f64) -> f64 {
     (0.5 * (lo + hi)).exp()
 }
 
+/// How the integrals inside the ellipse solve are evaluated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum EllipseMethod {
+    /// The cheapest available for the inputs.
+    Auto,
+    /// Adaptive vector quadrature of (46)–(47) and their k-derivatives
+    /// ([`crate::routes::direct::contact_integrals`]).
+    Quadrature,
+}
+
+impl EllipseMethod {
+    /// `auto` or `quadrature`.
+    pub fn label(&self) -> &'static str {
+        match self {
+            EllipseMethod::Auto => "auto",
+            EllipseMethod::Quadrature => "quadrature",
+        }
+    }
+    /// Parses a label.
+    pub fn parse(s: &str) -> Result<EllipseMethod> {
+        match s {
+            "auto" => Ok(EllipseMethod::Auto),
+            "quadrature" => Ok(EllipseMethod::Quadrature),
+            _ => Err(Error::Parse {
+                text: s.to_string(),
+                reason: "expected auto or quadrature",
+            }),
+        }
+    }
+    /// The concrete method `Auto` stands for.
+    pub fn resolve(self) -> EllipseMethod {
+        match self {
+            EllipseMethod::Auto => EllipseMethod::Quadrature,
+            m => m,
+        }
+    }
+}
+
+/// The integrals and k-derivatives at one axis ratio by `method`.
+fn evaluate<T: Real>(
+    method: EllipseMethod,
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axes: &AxisRatio<T>,
+) -> Result<ContactIntegrals<T>> {
+    match method.resolve() {
+        _ => contact_integrals(mat, speed, axes, &T::zero(axes.k.prec())),
+    }
+}
+
 /// Solves (33) for the axis ratio at the working precision of `ratio`, optionally from a seed
-/// (the precision ladder: an `f64` root converted to `T`). Accuracy: k to a few ε times the
-/// conditioning |d ln k/d ln(A1/B1)| (≈ 1/2 for small k), with an error estimate.
+/// (the precision ladder: an `f64` root converted to `T`), with the integrals by
+/// [`EllipseMethod::Auto`]. Accuracy: k to a few ε times the conditioning
+/// |d ln k/d ln(A1/B1)| (≈ 1/2 for small k), with an error estimate.
 pub fn solve_ellipse<T: Real>(
     mat: &Material<T>,
     speed: &Speed<T>,
     ratio: &T,
     seed: Option<&T>,
 ) -> Result<EllipseShape<T>> {
+    solve_ellipse_seeded(mat, speed, ratio, seed, EllipseMethod::Auto)
+}
+
+/// [`solve_ellipse`] with a chosen method for the integrals.
+pub fn solve_ellipse_seeded<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    ratio: &T,
+    seed: Option<&T>,
+    method: EllipseMethod,
+) -> Result<EllipseShape<T>> {
     check_ratio(ratio)?;
     let p = ratio.prec();
-    let tol_int = T::zero(p);
     let target = ratio.clone().ln();
     let k0 = match seed {
         Some(s) if s.is_positive() && s.is_finite() => s.clone(),
@@ -119,7 +180,7 @@ pub fn solve_ellipse<T: Real>(
     };
     let eval = |lnk: &T| -> Result<(T, T, ContactIntegrals<T>)> {
         let ax = AxisRatio::new(lnk.clone().exp())?;
-        let ci = contact_integrals(mat, speed, &ax, &tol_int)?;
+        let ci = evaluate(method, mat, speed, &ax)?;
         let f = ci.i2.clone().ln() - ci.i1.clone().ln() - &target;
         let df = ax.k.clone() * (ci.di2_dk.clone() / &ci.i2 - ci.di1_dk.clone() / &ci.i1);
         Ok((f, df, ci))
@@ -217,16 +278,27 @@ pub fn solve_ellipse_ladder<T: Real>(
     speed: &Speed<T>,
     ratio: &T,
 ) -> Result<EllipseShape<T>> {
+    solve_ellipse_with(mat, speed, ratio, EllipseMethod::Auto)
+}
+
+/// The precision ladder with a chosen method for the integrals (the `f64` seed uses the same
+/// method).
+pub fn solve_ellipse_with<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    ratio: &T,
+    method: EllipseMethod,
+) -> Result<EllipseShape<T>> {
     check_ratio(ratio)?;
     let p = ratio.prec();
     if T::bits(p) <= 53 {
-        return solve_ellipse(mat, speed, ratio, None);
+        return solve_ellipse_seeded(mat, speed, ratio, None, method);
     }
     let mat64 = Material::new(mat.nu().to_f64())?;
     let mr = speed.mr.to_f64().min(1.0 - f64::EPSILON);
     let seed = Material::speed(&mat64, mr)
-        .and_then(|sp| solve_ellipse(&mat64, &sp, &ratio.to_f64(), None))
+        .and_then(|sp| solve_ellipse_seeded(&mat64, &sp, &ratio.to_f64(), None, method))
         .map(|s| T::from_f64(s.k, p))
         .ok();
-    solve_ellipse(mat, speed, ratio, seed.as_ref())
+    solve_ellipse_seeded(mat, speed, ratio, seed.as_ref(), method)
 }

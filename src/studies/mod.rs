@@ -4,6 +4,7 @@
 
 pub mod fig2;
 pub mod integrals;
+pub mod pareto;
 pub mod poisson;
 pub mod rayleigh;
 pub mod svg;
