@@ -17,14 +17,8 @@ fn parse<T: Real>(name: &str, text: &str, p: T::Prec) -> Result<T, String> {
 pub fn ellipse(args: &Args) -> Result<(), String> {
     let prec = args.precision()?;
     let json = args.flag("json");
-    match args.optional("method").unwrap_or("auto") {
-        "auto" | "quadrature" => {}
-        other => {
-            return Err(format!(
-                "--method {other}: the ellipse solve uses auto or quadrature"
-            ))
-        }
-    }
+    let method = EllipseMethod::parse(args.optional("method").unwrap_or("auto"))
+        .map_err(|e| format!("--method: {e}"))?;
     let repeat: usize = match args.optional("repeat") {
         Some(r) => r
             .parse()
