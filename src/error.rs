@@ -110,7 +110,7 @@ impl fmt::Display for Error {
                     "{what} did not converge within the cap of {cap} terms (last term relative size {reached})"
                 ),
             },
-            Error::Parse { text, reason } => write!(f, "cannot parse {text:?} as a number: {reason}"),
+            Error::Parse { text, reason } => write!(f, "cannot parse {text:?}: {reason}"),
             Error::Unreachable {
                 what,
                 tolerance,
