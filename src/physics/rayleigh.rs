@@ -88,7 +88,7 @@ pub fn cardano_discriminant<T: Real>(nu: &T) -> T {
 }
 
 /// R of (6) as printed: (2 − x)² − 4√((1 − γx)(1 − x)), x = M2² ≤ 1. Loses all relative
-/// accuracy as x → 0 (both terms tend to 4); see [`rayleigh_function`] for the stable form.
+/// accuracy as x → 0 (both terms tend to 4); see [`crate::physics::rayleigh_function`] for the stable form.
 pub fn rayleigh_function_direct<T: Real>(gamma: &T, x: &T) -> T {
     let p = x.prec();
     let one = T::one(p);
