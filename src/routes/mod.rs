@@ -13,6 +13,8 @@
 //! static limit I1 = 2(1 − ν)(E/k² − K)/e² and I2 = 2(1 − ν)(K − E)/e² (43), and A1/B1 = I2/I1 (33).
 
 pub mod coefficients;
+mod guard;
+pub mod moments;
 
 pub use coefficients::GreenSeries;
 
