@@ -115,3 +115,48 @@ impl<F: Field> GreenSeries<F> {
         (0..n).map(|_| self.next_coefficient()).collect()
     }
 }
+
+/// The coefficients f_n = h_n·M_R^{2n} of g(V cos α) = Σ f_n cos^{2n}α ((35) with sin φ = cos α),
+/// generated progressively from the scaled h_n = f_n/M_R^{2n} (the run of [`GreenSeries`] with
+/// x0 = m1): no factorial, no overflow; f_n underflows only where M_R^{2n} itself does.
+///
+/// Accuracy: the relative error of h_n grows at most linearly, ≤ (n + 4) ε (the recurrence is
+/// stable, `tests/series_coefficients.rs`); the power M_R^{2n} adds n roundings. The series route
+/// runs it with ⌈2 log₂ n⌉ + 12 guard bits.
+///
+/// The h_n decrease monotonically from h_0 = 1 − ν to their limit H = πG(1) > 0 (G of (45) at the
+/// Rayleigh speed; h_n are the partial sums of the Taylor coefficients of πG(t), t = x/m1):
+/// checked for ν on a grid of (−1, 1/2] in `tests/series_route.rs`, and used by the tail bound
+/// of the series route.
+#[derive(Clone, Debug)]
+pub struct SpeedCoefficients<F: Field> {
+    gen: GreenSeries<F>,
+    mr2: F,
+    pow: F,
+}
+
+impl<F: Field> SpeedCoefficients<F> {
+    /// The generator for Poisson's ratio `nu`, the Rayleigh root `m1` = (c_R/c2)² and
+    /// `mr2` = M_R² (validated by the caller: −1 < ν ≤ 1/2, 0 ≤ M_R² < 1).
+    pub fn new(nu: &F, m1: F, mr2: F) -> Self {
+        let p = nu.prec();
+        SpeedCoefficients {
+            gen: GreenSeries::new(nu, m1),
+            mr2,
+            pow: F::one(p),
+        }
+    }
+
+    /// The index n of the pair the next call returns.
+    pub fn index(&self) -> u64 {
+        self.gen.index()
+    }
+
+    /// (h_n, f_n) and advance to n + 1.
+    pub fn next_pair(&mut self) -> (F, F) {
+        let h = self.gen.next_coefficient();
+        let f = h.clone() * &self.pow;
+        self.pow *= &self.mr2;
+        (h, f)
+    }
+}

@@ -15,8 +15,9 @@
 pub mod coefficients;
 mod guard;
 pub mod moments;
+pub mod series;
 
-pub use coefficients::GreenSeries;
+pub use coefficients::{GreenSeries, SpeedCoefficients};
 
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, short, Real};
