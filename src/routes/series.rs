@@ -33,7 +33,7 @@ use super::moments::{plan, table_at, MAX_INDEX};
 use super::{AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
 use crate::numerics::series::sum_series_with_tail;
-use crate::physics::{GreenFunction, Material, Speed};
+use crate::physics::{Material, Speed};
 use crate::scalar::{short, Real};
 
 /// Default cap on the number of series terms.
@@ -181,13 +181,10 @@ impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
         let mr = up(&self.speed.mr);
         let k = up(&self.axis.k);
         let mc = k.square();
-        let mat = Material::new(nu.clone())?;
-        let m1 = mat.m1().clone();
+        let m1 = polish_m1(&nu, up(self.mat.m1()));
         let mr2 = mr.square();
         let one_minus_mr2 = (one.clone() - &mr) * (one.clone() + &mr);
-        // H = lim h_n = πG(1).
-        let green = GreenFunction::new(&mat);
-        let h_lim = green.g_regular(&one) * green.pi();
+        let h_lim = green_limit(&nu, &m1);
         let tab = table_at(&mc, n + 1, self.method)?;
         let mut coef = SpeedCoefficients::new(&nu, m1, mr2.clone());
         let mut f = Vec::with_capacity(n + 1);
@@ -196,11 +193,13 @@ impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
         let geo = mr2 / &one_minus_mr2;
         for _ in 0..=n {
             let (h, fj) = coef.next_pair();
-            let b = h.clone().abs().max_of(h_lim.clone().abs());
-            ratio.push(if h.is_zero() {
+            // h_n ≥ H > 0 (h decreases to H): the factor is 1; otherwise H/|h_n|.
+            ratio.push(if h >= h_lim {
                 geo.clone()
+            } else if h.is_zero() {
+                h_lim.clone().abs() * &geo
             } else {
-                b / h.abs() * &geo
+                h_lim.clone().abs() / h.abs() * &geo
             });
             f.push(fj);
         }
@@ -235,4 +234,39 @@ impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
             work: s1.terms.max(s2.terms),
         }))
     }
+}
+
+/// The Rayleigh root m1 at the guarded precision: two Newton steps on the cubic
+/// (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8 from the working-precision root (within 4 ε of it, so
+/// each step squares the relative error; m1 is a simple root, well separated from m2, m3 > 1).
+fn polish_m1<W: Real>(nu: &W, m1: W) -> W {
+    let p = nu.prec();
+    let a = W::one(p) - nu;
+    let (c2, c1) = (a.clone().mul_i64(-8), (W::from_i64(2, p) - nu).mul_i64(8));
+    let mut x = m1;
+    for _ in 0..2 {
+        // P and P' by Horner.
+        let pv = ((a.clone() * &x + &c2) * &x + &c1) * &x - W::from_i64(8, p);
+        let dv = (a.clone().mul_i64(3) * &x + c2.clone().mul_i64(2)) * &x + &c1;
+        if dv.is_zero() {
+            break;
+        }
+        x -= pv / dv;
+    }
+    x
+}
+
+/// H = lim h_n = πG(1) = √(1 − γm1)·D(m1) / (m1 (m1 − m2)(m1 − m3)) with
+/// D = (2 − m1)² + 4√((1 − γm1)(1 − m1)) and (m1 − m2)(m1 − m3) = 2m1² − 8m1 + 8/((1 − ν)m1)
+/// (Vieta). Positive; all terms well conditioned.
+fn green_limit<W: Real>(nu: &W, m1: &W) -> W {
+    let p = nu.prec();
+    let one = W::one(p);
+    let omn = one.clone() - nu;
+    let gamma = (one.clone() - nu.clone().mul_i64(2)) / omn.clone().mul_i64(2);
+    let a = one.clone() - gamma * m1;
+    let b = one - m1;
+    let d = (W::from_i64(2, p) - m1).square() + (a.clone() * &b).sqrt().mul_i64(4);
+    let quad = (m1.square().mul_i64(2) - m1.clone().mul_i64(8)) + W::from_i64(8, p) / (omn * m1);
+    a.sqrt() * d / (m1.clone() * quad)
 }
