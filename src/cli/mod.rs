@@ -16,8 +16,10 @@ USAGE: moving-hertz <COMMAND> [OPTIONS]
 COMMANDS:
   rayleigh --nu NU [--precision f64|dd|BITS] [--json]
         m1 = (c_R/c2)^2, c_R/c2 and the three roots of the Rayleigh cubic
-  study rayleigh [--out DIR]
-        stability of the closed-form Rayleigh roots against nu and precision
+  study rayleigh|series|recursion [--out DIR]
+        rayleigh: stability of the closed-form Rayleigh roots against nu and precision;
+        series: terms and time of the series (37) against M_R per target accuracy;
+        recursion: error growth of the forward recursion (40), bits lost in the K, E basis
         (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)
   help  this text
 
@@ -39,7 +41,7 @@ pub fn run(argv: &[String]) -> Result<(), String> {
         "rayleigh" => rayleigh::run(&Args::parse(cmd, rest, &["nu", "precision"], &["json"])?),
         "study" => {
             let Some(name) = rest.first() else {
-                return Err("`study` needs a study name (rayleigh)".into());
+                return Err("`study` needs a study name (rayleigh, series, recursion)".into());
             };
             study::run(name, &Args::parse(cmd, &rest[1..], &["out"], &[])?)
         }

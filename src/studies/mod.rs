@@ -3,6 +3,7 @@
 //! by a `moving-hertz study …` command; only this layer writes files.
 
 pub mod rayleigh;
+pub mod series;
 pub mod svg;
 
 use std::io::Write;
