@@ -253,6 +253,10 @@ fn study_recursion(out: &std::path::Path) -> Result<(), String> {
     }
     studies::write_text(&out.join("data/recursion_summary.md"), &md).map_err(io)?;
     println!("{md}");
-    println!("wrote CSV under {} and charts under {}", out.join("data").display(), out.join("figures").display());
+    println!(
+        "wrote CSV under {} and charts under {}",
+        out.join("data").display(),
+        out.join("figures").display()
+    );
     Ok(())
 }

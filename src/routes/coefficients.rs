@@ -51,6 +51,8 @@ pub struct GreenSeries<F: Field> {
     v: [F; 2],
     /// The next index l.
     l: u64,
+    /// Binomial terms u_l, v_l below this magnitude are set to zero ([`GreenSeries::flush_below`]).
+    flush: Option<F>,
 }
 
 impl<F: Field> GreenSeries<F> {
@@ -75,7 +77,19 @@ impl<F: Field> GreenSeries<F> {
             u: [F::one(p), zero.clone(), zero.clone()],
             v: [F::one(p), zero],
             l: 0,
+            flush: None,
         }
+    }
+
+    /// Sets the binomial-series terms u_l = b_l(γx0)^l, v_l = b_l x0^l to zero once they fall
+    /// below `tiny` (> 0). They enter each c_l additively with a weight below 5, so the change in
+    /// c_l is at most 5·`tiny` per step; with `tiny` far below ε·|c| it is invisible, and it stops
+    /// u_l, v_l (which decay like (γx0)^l and x0^l) from wandering through the subnormal range of
+    /// `f64` and double-double, where each operation costs a hundred times more. Not for exact
+    /// (`Rational`) runs.
+    pub fn flush_below(mut self, tiny: F) -> Self {
+        self.flush = Some(tiny.abs());
+        self
     }
 
     /// The index of the coefficient the next call to [`GreenSeries::next_coefficient`] returns.
@@ -101,8 +115,17 @@ impl<F: Field> GreenSeries<F> {
         } else {
             (2 * l as i64 - 1, 2 * l as i64 + 2)
         };
-        let u_next = (self.u[0].clone() * &self.gx0).mul_i64(num).div_i64(den);
-        let v_next = (self.v[0].clone() * &self.x0).mul_i64(num).div_i64(den);
+        let mut u_next = (self.u[0].clone() * &self.gx0).mul_i64(num).div_i64(den);
+        let mut v_next = (self.v[0].clone() * &self.x0).mul_i64(num).div_i64(den);
+        if let Some(tiny) = &self.flush {
+            let zero = F::zero(tiny.prec());
+            if u_next.clone().abs() < *tiny {
+                u_next = zero.clone();
+            }
+            if v_next.clone().abs() < *tiny {
+                v_next = zero;
+            }
+        }
         self.u = [u_next, self.u[0].clone(), self.u[1].clone()];
         self.v = [v_next, self.v[0].clone()];
         self.c = [c.clone(), self.c[0].clone(), self.c[1].clone()];
@@ -150,6 +173,12 @@ impl<F: Field> SpeedCoefficients<F> {
     /// The index n of the pair the next call returns.
     pub fn index(&self) -> u64 {
         self.gen.index()
+    }
+
+    /// See [`GreenSeries::flush_below`].
+    pub fn flush_below(mut self, tiny: F) -> Self {
+        self.gen = self.gen.flush_below(tiny);
+        self
     }
 
     /// (h_n, f_n) and advance to n + 1.

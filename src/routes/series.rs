@@ -186,7 +186,9 @@ impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
         let one_minus_mr2 = (one.clone() - &mr) * (one.clone() + &mr);
         let h_lim = green_limit(&nu, &m1);
         let tab = table_at(&mc, n + 1, self.method)?;
-        let mut coef = SpeedCoefficients::new(&nu, m1, mr2.clone());
+        // Binomial terms below ε·2⁻³⁰ (of the guarded precision) cannot change h_n ≥ H ≈ 0.2.
+        let tiny = W::epsilon(pw).mul_pow2(-30);
+        let mut coef = SpeedCoefficients::new(&nu, m1, mr2.clone()).flush_below(tiny);
         let mut f = Vec::with_capacity(n + 1);
         let mut ratio = Vec::with_capacity(n + 1);
         // Tail factor after term j: (max(h_j, H)/h_j)·M_R²/(1 − M_R²).

@@ -172,9 +172,7 @@ pub fn terms_charts(rows: &[TermsRow]) -> Vec<(String, String)> {
         let label = series_label(target, prec);
         terms.push(Series::new(
             label.clone(),
-            sel.iter()
-                .map(|r| (1.0 - r.mr, r.terms as f64))
-                .collect(),
+            sel.iter().map(|r| (1.0 - r.mr, r.terms as f64)).collect(),
             Style::LineMarkers,
         ));
         if !seen_tol.contains(&target.to_bits()) {
@@ -189,9 +187,7 @@ pub fn terms_charts(rows: &[TermsRow]) -> Vec<(String, String)> {
         }
         time.push(Series::new(
             label,
-            sel.iter()
-                .map(|r| (1.0 - r.mr, r.time_ns / 1e3))
-                .collect(),
+            sel.iter().map(|r| (1.0 - r.mr, r.time_ns / 1e3)).collect(),
             Style::LineMarkers,
         ));
     }
