@@ -189,8 +189,16 @@ fn study_recursion(out: &std::path::Path) -> Result<(), String> {
             1.0 - g.mc,
             g.predicted,
             g.precision.label(),
-            opt(g.measured_l),
-            opt(g.measured_m),
+            opt(if g.predicted > 0.0 {
+                g.measured_l
+            } else {
+                f64::NAN
+            }),
+            opt(if g.predicted > 0.0 {
+                g.measured_m
+            } else {
+                f64::NAN
+            }),
             loss,
             pred,
             g.worst_eps,
