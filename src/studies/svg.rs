@@ -293,7 +293,7 @@ pub struct Heatmap {
     pub xs: Vec<f64>,
     /// Cell centres along y (ascending).
     pub ys: Vec<f64>,
-    /// Values, `z[j][i]` at (xs[i], ys[j]); NaN cells are drawn grey.
+    /// Values, `z[j][i]` at `(xs[i], ys[j])`; NaN cells are drawn grey.
     pub z: Vec<Vec<f64>>,
     /// Log scale on x.
     pub x_log: bool,
