@@ -281,4 +281,17 @@ fn typed_errors() {
         moments_with(&Dd::from_f64(3.0, ()), 3, MomentMethod::BackwardGauss, 0),
         Err(Error::Domain { .. })
     ));
+    // Top-value series that would run for minutes are refused at once, with an estimate.
+    let t0 = std::time::Instant::now();
+    match moments_with(&1e12f64, 10, MomentMethod::BackwardPfaff, 0) {
+        Err(Error::TermCap {
+            needed: Some(n), ..
+        }) => assert!(n > 1e13 as u64, "{n}"),
+        other => panic!("expected TermCap, got {other:?}"),
+    }
+    assert!(matches!(
+        moments_with(&(2.0 - 1e-9), 0, MomentMethod::BackwardGauss, 0),
+        Err(Error::TermCap { .. })
+    ));
+    assert!(t0.elapsed().as_secs_f64() < 2.0);
 }

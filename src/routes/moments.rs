@@ -408,8 +408,9 @@ pub(crate) fn table_at<W: Real>(mc: &W, top: usize, method: MomentMethod) -> Res
     }
 }
 
-/// W_n = ∫_0^{π/2} cos^{2n}α dα = (π/2)·C(2n, n)/4^n, rounded once (the binomial is exact).
-pub fn wallis<W: Real>(n: usize, p: W::Prec) -> W {
+/// W_n = ∫_0^{π/2} cos^{2n}α dα = (π/2)·C(2n, n)/4^n, rounded once (the binomial is exact);
+/// n ≤ [`MAX_INDEX`] + 1 (checked by the callers).
+pub(crate) fn wallis<W: Real>(n: usize, p: W::Prec) -> W {
     let bits = W::bits(p) + 32;
     let c = Integer::from(Integer::binomial_u(2 * n as u32, n as u32));
     let mut f = Float::with_val(bits, &c) * Float::with_val(bits, Constant::Pi);
@@ -456,10 +457,26 @@ fn hyper_sum<W: Real>(
     Ok((s.sum, s.terms))
 }
 
+/// Fails at once with [`Error::TermCap`] when a top-value series of `bits` bits at term ratio
+/// `rho` (asymptotically) would need more than [`MAX_TOP_TERMS`] terms.
+fn check_top_terms(rho: f64, bits: u32) -> Result<()> {
+    let need = (bits as f64 + 8.0) / -rho.log2();
+    if need.is_finite() && need <= MAX_TOP_TERMS as f64 {
+        return Ok(());
+    }
+    Err(Error::TermCap {
+        what: "top-value series of L_n, M_n",
+        cap: MAX_TOP_TERMS,
+        needed: (need.is_finite() && need < 1e18).then(|| need.ceil() as u64),
+        reached: "not started".into(),
+    })
+}
+
 /// (M_n, L_n, terms) by the series of `method` at the working precision.
 fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result<(W, W, usize)> {
     let p = e2.prec();
     let one = W::one(p);
+    let bits = W::bits(p);
     let wn = wallis::<W>(n, p);
     let ni = n as i64;
     match method {
@@ -471,6 +488,9 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
                     value: short(e2),
                     bound: "|e^2| < 1",
                 });
+            }
+            if gauss_terms(e2.to_f64(), n, bits) as usize >= MAX_TOP_TERMS {
+                check_top_terms(a.to_f64(), bits)?;
             }
             // Term ratios e²(2j+1)²/(4(j+1)(n+1+j)) and e²(2j+3)(2j+1)/(4(j+1)(n+1+j)),
             // both at most |e²|.
@@ -498,6 +518,13 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
             }
             let t = -(e2.clone() / mc);
             let a = t.clone().abs();
+            // |t| = |e²|/k² < 1 here; 1 − |t| = 1/k² for e² < 0, computed without cancellation.
+            let rho = if e2.is_negative() {
+                -(-(mc.clone().recip().to_f64())).ln_1p() / std::f64::consts::LN_2
+            } else {
+                -a.to_f64().log2()
+            };
+            check_top_terms(2f64.powf(-rho), bits)?;
             // Ratios t(2j+1)(2n+2j+1)/(4(j+1)(n+j+1)) ≤ |t| and
             // t(2j+3)(2n+2j+1)/(4(j+1)(n+j+1)) ≤ |t|(2j+3)/(2j+2) (decreasing in j).
             let (sm, jm) = hyper_sum(
