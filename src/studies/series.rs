@@ -315,11 +315,12 @@ fn forward_at<T: Real>(
     let mut fit_m = Vec::new();
     let mut total_loss_n = None;
     let mut worst: f64 = 0.0;
-    for n in 0..=n_max {
-        let el = rel_err(&tab.l()[n], &refs[n].0);
-        let em = rel_err(&tab.m()[n], &refs[n].1);
+    for (n, (rl, rm)) in refs.iter().enumerate() {
+        let el = rel_err(&tab.l()[n], rl);
+        let em = rel_err(&tab.m()[n], rm);
         worst = worst.max(el / eps);
-        if total_loss_n.is_none() && !(el < 1.0) {
+        // NaN (a non-finite result) counts as total loss too.
+        if total_loss_n.is_none() && (el >= 1.0 || el.is_nan()) {
             total_loss_n = Some(n);
         }
         let window = |x: f64| x >= eps * 1024.0 && x <= 1.0 / 1024.0;
