@@ -4,10 +4,14 @@
 Run after   cargo bench --bench precision_cost -- --warm-up-time 1 --measurement-time 3
       and   cargo bench --bench generic_cost -- --warm-up-time 1 --measurement-time 3
 Reads target/criterion/<group>/<bench>/new/estimates.json (median point estimates).
+
+`python3 tools/bench_table.py series` prints instead the table of the series bench
+(after `cargo bench --bench series -- --warm-up-time 1 --measurement-time 2`).
 """
 
 import json
 import os
+import sys
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "target", "criterion")
 PRECISIONS = ["f64", "dd", "mpfr64", "mpfr128", "mpfr256", "mpfr1024"]
@@ -49,5 +53,32 @@ def main():
             print(f"| {kind} ({a}), {case} | {fmt(g)} | {fmt(h)} | {g / h:.2f} |")
 
 
+SERIES_PRECISIONS = ["f64", "dd", "mpfr128", "mpfr256"]
+SERIES_BENCHES = [
+    ("f_n_n=100", "f_0 … f_100 (35)–(36)"),
+    ("f_n_n=1000", "f_0 … f_1000"),
+    ("moments_n=1000,k2=0.25", "M_n, L_n, D_n, n ≤ 1000, k² = 1/4 (forward)"),
+    ("moments_n=1000,k2=0.75", "M_n, L_n, D_n, n ≤ 1000, k² = 3/4 (backward, ₂F₁ in e²)"),
+    ("moments_n=1000,k2=4", "M_n, L_n, D_n, n ≤ 1000, k² = 4 (backward, cos² expansion)"),
+    ("integrals_M_R=0.5", "I1 and I2 by (37), M_R = 0.5"),
+    ("integrals_M_R=0.9", "I1 and I2 by (37), M_R = 0.9"),
+]
+
+
+def series_table():
+    print("| benchmark | " + " | ".join(SERIES_PRECISIONS) + " |")
+    print("|---" * (len(SERIES_PRECISIONS) + 1) + "|")
+    for key, label in SERIES_BENCHES:
+        base = median_ns("series-f64", key)
+        cells = []
+        for p in SERIES_PRECISIONS:
+            t = median_ns("series-" + p, key)
+            cells.append(fmt(t) if p == "f64" else f"{fmt(t)} (×{t / base:.0f})")
+        print(f"| {label} | " + " | ".join(cells) + " |")
+
+
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:] == ["series"]:
+        series_table()
+    else:
+        main()

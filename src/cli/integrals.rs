@@ -37,7 +37,11 @@ pub fn run(args: &Args) -> Result<(), String> {
         (tol, _) => {
             let prec = args.precision()?;
             let method = match request {
-                MethodRequest::Auto => choose::choose_method(&inputs),
+                MethodRequest::Auto => choose::choose_method(
+                    &inputs,
+                    tol.unwrap_or_else(|| 2f64.powi(1 - prec.bits() as i32))
+                        .max(1e-300),
+                ),
                 MethodRequest::Fixed(m) => m,
             };
             with_precision!(prec, T, p => {

@@ -34,8 +34,10 @@ COMMANDS:
   contact --nu NU --speed MR --r-along R1 --r-across R2 (--load P | --approach D0)
           --shear-modulus MU [--precision ...] [--json]
         the full moving-punch Hertz solution: a, b, k, e, p0, d0, load
-  study rayleigh [--out DIR]
-        stability of the closed-form Rayleigh roots against nu and precision
+  study rayleigh|series|recursion [--out DIR]
+        rayleigh: stability of the closed-form Rayleigh roots against nu and precision;
+        series: terms and time of the series (37) against M_R per target accuracy;
+        recursion: error growth of the forward recursion (40), bits lost in the K, E basis
   study poisson [--out DIR]
         how much Poisson's ratio changes e, k and a (the paper's 'about 2%' claim)
   study pareto [--out DIR]
@@ -91,7 +93,7 @@ pub fn run(argv: &[String]) -> Result<(), String> {
         "rayleigh" => rayleigh::run(&Args::parse(cmd, rest, &["nu", "precision"], &["json"])?),
         "study" => {
             let Some(name) = rest.first() else {
-                return Err("`study` needs a study name (rayleigh)".into());
+                return Err("`study` needs a study name (rayleigh, series, recursion)".into());
             };
             study::run(name, &Args::parse(cmd, &rest[1..], &["out"], &[])?)
         }

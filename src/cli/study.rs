@@ -4,7 +4,7 @@
 use super::args::Args;
 use super::progress::Progress;
 use moving_hertz::contact::ellipse::EllipseMethod;
-use moving_hertz::studies::{self, integrals, pareto, poisson, rayleigh};
+use moving_hertz::studies::{self, integrals, pareto, poisson, rayleigh, series};
 use std::path::PathBuf;
 
 pub fn run(name: &str, args: &Args) -> Result<(), String> {
@@ -14,8 +14,10 @@ pub fn run(name: &str, args: &Args) -> Result<(), String> {
         "integrals" => study_integrals(&out),
         "poisson" => study_poisson(&out),
         "pareto" => study_pareto(&out),
+        "series" => study_series(&out),
+        "recursion" => study_recursion(&out),
         other => Err(format!(
-            "unknown study `{other}` (available: rayleigh, integrals, poisson, pareto)"
+            "unknown study `{other}` (available: rayleigh, series, recursion, integrals, poisson, pareto)"
         )),
     }
 }
@@ -270,5 +272,203 @@ fn study_pareto(out: &std::path::Path) -> Result<(), String> {
         }
     }
     println!("wrote {} and figures/pareto_*.svg", data.display());
+    Ok(())
+}
+
+fn study_series(out: &std::path::Path) -> Result<(), String> {
+    let speeds = series::speed_grid();
+    eprintln!(
+        "series (37): terms and time at {} speeds x {} targets (about a minute) ...",
+        speeds.len(),
+        series::targets().len()
+    );
+    let rows = series::terms_study(&speeds, 20.0).map_err(|e| e.to_string())?;
+    let csv: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| {
+            vec![
+                format!("{}", r.mr),
+                format!("{:e}", r.target),
+                r.precision.label(),
+                r.terms.to_string(),
+                r.estimate.to_string(),
+                format!("{:.0}", r.time_ns),
+                format!("{:.3e}", r.error),
+                format!("{:.3e}", r.error_estimate),
+            ]
+        })
+        .collect();
+    let data = out.join("data/series_terms.csv");
+    studies::write_csv(
+        &data,
+        &[
+            "M_R",
+            "target",
+            "precision",
+            "terms",
+            "terms_estimate",
+            "time_ns",
+            "error",
+            "error_estimate",
+        ],
+        &csv,
+    )
+    .map_err(io)?;
+    for (name, svg) in series::terms_charts(&rows) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    let mut md = String::from(
+        "| M_R | target | precision | terms | estimate | time | error reached | error estimate |\n|---|---|---|---|---|---|---|---|\n",
+    );
+    for r in &rows {
+        let time = if r.time_ns.is_nan() {
+            "—".to_string()
+        } else if r.time_ns < 1e6 {
+            format!("{:.1} µs", r.time_ns / 1e3)
+        } else {
+            format!("{:.1} ms", r.time_ns / 1e6)
+        };
+        md.push_str(&format!(
+            "| {} | {:.0e} | {} | {} | {} | {} | {:.1e} | {:.1e} |\n",
+            r.mr,
+            r.target,
+            r.precision.label(),
+            r.terms,
+            r.estimate,
+            time,
+            r.error,
+            r.error_estimate
+        ));
+    }
+    studies::write_text(&out.join("data/series_summary.md"), &md).map_err(io)?;
+    println!("{md}");
+    println!(
+        "wrote {} and charts under {}",
+        data.display(),
+        out.join("figures").display()
+    );
+    Ok(())
+}
+
+fn study_recursion(out: &std::path::Path) -> Result<(), String> {
+    eprintln!("forward recursion (40) against the exact form at 4 precisions ...");
+    let (points, growth) = series::forward_study().map_err(|e| e.to_string())?;
+    let csv: Vec<Vec<String>> = points
+        .iter()
+        .map(|p| {
+            vec![
+                format!("{}", p.mc),
+                p.precision.label(),
+                p.n.to_string(),
+                format!("{:.3e}", p.err_l),
+                format!("{:.3e}", p.err_m),
+            ]
+        })
+        .collect();
+    studies::write_csv(
+        &out.join("data/recursion_forward.csv"),
+        &["k2", "precision", "n", "rel_err_L", "rel_err_M"],
+        &csv,
+    )
+    .map_err(io)?;
+    let opt = |x: f64| {
+        if x.is_nan() {
+            "—".to_string()
+        } else {
+            format!("{x:.4}")
+        }
+    };
+    let mut md = String::from(
+        "| k² | e² | predicted bits/step | precision | measured bits/step (L) | (M) | total loss at n (L) | predicted n | worst error (ε) | n studied |\n|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    let mut gcsv = Vec::new();
+    for g in &growth {
+        let loss = g.total_loss_n.map_or("—".to_string(), |n| n.to_string());
+        let pred = g
+            .predicted_loss_n
+            .map_or("—".to_string(), |n| format!("{n:.0}"));
+        md.push_str(&format!(
+            "| {} | {} | {:.4} | {} | {} | {} | {} | {} | {:.2e} | {} |\n",
+            g.mc,
+            1.0 - g.mc,
+            g.predicted,
+            g.precision.label(),
+            opt(if g.predicted > 0.0 {
+                g.measured_l
+            } else {
+                f64::NAN
+            }),
+            opt(if g.predicted > 0.0 {
+                g.measured_m
+            } else {
+                f64::NAN
+            }),
+            loss,
+            pred,
+            g.worst_eps,
+            g.n_max
+        ));
+        gcsv.push(vec![
+            format!("{}", g.mc),
+            g.precision.label(),
+            format!("{:.6}", g.predicted),
+            format!("{:.6}", g.measured_l),
+            format!("{:.6}", g.measured_m),
+            loss,
+            pred,
+            format!("{:.3e}", g.worst_eps),
+            g.n_max.to_string(),
+        ]);
+    }
+    studies::write_csv(
+        &out.join("data/recursion_growth.csv"),
+        &[
+            "k2",
+            "precision",
+            "predicted_bits_per_step",
+            "measured_L",
+            "measured_M",
+            "total_loss_n",
+            "predicted_total_loss_n",
+            "worst_err_eps",
+            "n_max",
+        ],
+        &gcsv,
+    )
+    .map_err(io)?;
+    for (name, svg) in series::forward_charts(&points, &growth) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    eprintln!("bits lost in the K, E basis over (n, e) and (n, k) ...");
+    for k_side in [false, true] {
+        let map = series::condition_map(k_side).map_err(|e| e.to_string())?;
+        let mut rows = Vec::new();
+        for (i, x) in map.params.iter().enumerate() {
+            for (j, n) in map.ns.iter().enumerate() {
+                rows.push(vec![
+                    format!("{x:.6}"),
+                    n.to_string(),
+                    format!("{:.3}", map.bits_l[i][j]),
+                    format!("{:.3}", map.bits_m[i][j]),
+                ]);
+            }
+        }
+        let (param, file) = if k_side {
+            ("k_minus_1", "data/recursion_bits_lost_k.csv")
+        } else {
+            ("e", "data/recursion_bits_lost_e.csv")
+        };
+        studies::write_csv(&out.join(file), &[param, "n", "bits_L", "bits_M"], &rows)
+            .map_err(io)?;
+        let (name, svg) = series::condition_chart(&map, k_side);
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    studies::write_text(&out.join("data/recursion_summary.md"), &md).map_err(io)?;
+    println!("{md}");
+    println!(
+        "wrote CSV under {} and charts under {}",
+        out.join("data").display(),
+        out.join("figures").display()
+    );
     Ok(())
 }

@@ -329,6 +329,15 @@ pub fn ellipd<T: Real>(m: &T) -> Result<T> {
     ellipd_mc(&mc_of_m(m, true)?)
 }
 
+/// B(m) and D(m) together from `mc = 1 − m > 0`, in one `cel` iteration (see [`ellipb_mc`],
+/// [`ellipd_mc`]; each a few ε). Every complete integral of the paper's (42) follows from the
+/// pair without cancellation: K = B + D, E = B + mc·D, E/mc = B/mc + D.
+pub fn ellipbd_mc<T: Real>(mc: &T) -> Result<(T, T)> {
+    check_mc(mc, true)?;
+    let [b, d] = bd_mc(mc)?;
+    Ok((finite_out("B(m)", b)?, finite_out("D(m)", d)?))
+}
+
 // ---------------------------------------------------------------------------------------------
 // Carlson's symmetric integrals
 // ---------------------------------------------------------------------------------------------

@@ -51,6 +51,8 @@ pub struct GreenSeries<F: Field> {
     v: [F; 2],
     /// The next index l.
     l: u64,
+    /// Binomial terms u_l, v_l below this magnitude are set to zero ([`GreenSeries::flush_below`]).
+    flush: Option<F>,
 }
 
 impl<F: Field> GreenSeries<F> {
@@ -75,7 +77,19 @@ impl<F: Field> GreenSeries<F> {
             u: [F::one(p), zero.clone(), zero.clone()],
             v: [F::one(p), zero],
             l: 0,
+            flush: None,
         }
+    }
+
+    /// Sets the binomial-series terms u_l = b_l(γx0)^l, v_l = b_l x0^l to zero once they fall
+    /// below `tiny` (> 0). They enter each c_l additively with a weight below 5, so the change in
+    /// c_l is at most 5·`tiny` per step; with `tiny` far below ε·|c| it is invisible, and it stops
+    /// u_l, v_l (which decay like (γx0)^l and x0^l) from wandering through the subnormal range of
+    /// `f64` and double-double, where each operation costs a hundred times more. Not for exact
+    /// (`Rational`) runs.
+    pub fn flush_below(mut self, tiny: F) -> Self {
+        self.flush = Some(tiny.abs());
+        self
     }
 
     /// The index of the coefficient the next call to [`GreenSeries::next_coefficient`] returns.
@@ -101,8 +115,17 @@ impl<F: Field> GreenSeries<F> {
         } else {
             (2 * l as i64 - 1, 2 * l as i64 + 2)
         };
-        let u_next = (self.u[0].clone() * &self.gx0).mul_i64(num).div_i64(den);
-        let v_next = (self.v[0].clone() * &self.x0).mul_i64(num).div_i64(den);
+        let mut u_next = (self.u[0].clone() * &self.gx0).mul_i64(num).div_i64(den);
+        let mut v_next = (self.v[0].clone() * &self.x0).mul_i64(num).div_i64(den);
+        if let Some(tiny) = &self.flush {
+            let zero = F::zero(tiny.prec());
+            if u_next.clone().abs() < *tiny {
+                u_next = zero.clone();
+            }
+            if v_next.clone().abs() < *tiny {
+                v_next = zero;
+            }
+        }
         self.u = [u_next, self.u[0].clone(), self.u[1].clone()];
         self.v = [v_next, self.v[0].clone()];
         self.c = [c.clone(), self.c[0].clone(), self.c[1].clone()];
@@ -113,5 +136,56 @@ impl<F: Field> GreenSeries<F> {
     /// The first `n` coefficients c_0 … c_{n−1}.
     pub fn take(mut self, n: usize) -> Vec<F> {
         (0..n).map(|_| self.next_coefficient()).collect()
+    }
+}
+
+/// The coefficients f_n = h_n·M_R^{2n} of g(V cos α) = Σ f_n cos^{2n}α ((35) with sin φ = cos α),
+/// generated progressively from the scaled h_n = f_n/M_R^{2n} (the run of [`GreenSeries`] with
+/// x0 = m1): no factorial, no overflow; f_n underflows only where M_R^{2n} itself does.
+///
+/// Accuracy: the relative error of h_n grows at most linearly, ≤ (n + 4) ε (the recurrence is
+/// stable, `tests/series_coefficients.rs`); the power M_R^{2n} adds n roundings. The series route
+/// runs it with ⌈2 log₂ n⌉ + 12 guard bits.
+///
+/// The h_n decrease monotonically from h_0 = 1 − ν to their limit H = πG(1) > 0 (G of (45) at the
+/// Rayleigh speed; h_n are the partial sums of the Taylor coefficients of πG(t), t = x/m1):
+/// checked for ν on a grid of (−1, 1/2] in `tests/series_route.rs`, and used by the tail bound
+/// of the series route.
+#[derive(Clone, Debug)]
+pub struct SpeedCoefficients<F: Field> {
+    gen: GreenSeries<F>,
+    mr2: F,
+    pow: F,
+}
+
+impl<F: Field> SpeedCoefficients<F> {
+    /// The generator for Poisson's ratio `nu`, the Rayleigh root `m1` = (c_R/c2)² and
+    /// `mr2` = M_R² (validated by the caller: −1 < ν ≤ 1/2, 0 ≤ M_R² < 1).
+    pub fn new(nu: &F, m1: F, mr2: F) -> Self {
+        let p = nu.prec();
+        SpeedCoefficients {
+            gen: GreenSeries::new(nu, m1),
+            mr2,
+            pow: F::one(p),
+        }
+    }
+
+    /// The index n of the pair the next call returns.
+    pub fn index(&self) -> u64 {
+        self.gen.index()
+    }
+
+    /// See [`GreenSeries::flush_below`].
+    pub fn flush_below(mut self, tiny: F) -> Self {
+        self.gen = self.gen.flush_below(tiny);
+        self
+    }
+
+    /// (h_n, f_n) and advance to n + 1.
+    pub fn next_pair(&mut self) -> (F, F) {
+        let h = self.gen.next_coefficient();
+        let f = h.clone() * &self.pow;
+        self.pow *= &self.mr2;
+        (h, f)
     }
 }

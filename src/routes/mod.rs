@@ -11,13 +11,20 @@
 //!
 //! with Δ² = 1 − e² sin²α = cos²α + k² sin²α, e² = 1 − k² (negative when k > 1), so that in the
 //! static limit I1 = 2(1 − ν)(E/k² − K)/e² and I2 = 2(1 − ν)(K − E)/e² (43), and A1/B1 = I2/I1 (33).
+//! (The paper's (35) expands −πΓ, not Γ: `docs/errata.md` #3.)
+//!
+//! The series route: [`coefficients`] (f_n of (35)–(36)), [`moments`] (L_n, M_n of (39)–(42)),
+//! [`series`] (I1, I2 by (37) with truncation control); findings in `docs/series.md`.
 
 pub mod asymptotic;
 pub mod choose;
 pub mod coefficients;
 pub mod direct;
+mod guard;
+pub mod moments;
+pub mod series;
 
-pub use coefficients::GreenSeries;
+pub use coefficients::{GreenSeries, SpeedCoefficients};
 
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, short, Real};

@@ -7,6 +7,7 @@ pub mod integrals;
 pub mod pareto;
 pub mod poisson;
 pub mod rayleigh;
+pub mod series;
 pub mod svg;
 
 use std::io::Write;

@@ -377,6 +377,9 @@ impl Heatmap {
         .ticks()
         {
             let t = if self.x_log { v.log10() } else { v };
+            if t < x0.min(x1) - 1e-9 || t > x0.max(x1) + 1e-9 {
+                continue;
+            }
             let x = px(t);
             let _ = write!(
                 o,
@@ -398,6 +401,9 @@ impl Heatmap {
         .ticks()
         {
             let t = if self.y_log { v.log10() } else { v };
+            if t < y0.min(y1) - 1e-9 || t > y0.max(y1) + 1e-9 {
+                continue;
+            }
             let y = py(t);
             let _ = write!(
                 o,

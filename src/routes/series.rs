@@ -1,0 +1,274 @@
+//! The series route of section 5: I1 and I2 by (37),
+//!
+//! ```text
+//! I1 = 2 Σ f_n D_n,   D_n = L_n − L_{n+1} = ∫cos^{2n}α sin²α/Δ³ dα,     I2 = 2 Σ f_n L_{n+1},
+//! ```
+//!
+//! in the normalisation of (37) (π times the paper's (34), `docs/errata.md` #3), with f_n the
+//! coefficients of g = −πΓ (35)–(36) ([`SpeedCoefficients`]) and the moments of
+//! [`super::moments`].
+//!
+//! **Truncation control.** With h_n = f_n/M_R^{2n} decreasing to H = πG(1) > 0 and the moments
+//! decreasing in n, every term is positive and, after the term of index n,
+//!
+//! ```text
+//! Σ_{j>n} f_j D_j ≤ max(h_n, H)·D_n·Σ_{j>n} M_R^{2j} = t_n · (max(h_n, H)/h_n) · M_R²/(1 − M_R²)
+//! ```
+//!
+//! (likewise for I2 with L_{n+1}). The sum stops when both bounds are below the tolerance
+//! (default ε/4 of the working precision) times the partial sums. The number of terms needed is
+//! about ln(2 tol (1 − M_R²)/M_R²)/ln M_R² — 26 at f64 and M_R = 1/2, ≈ 2·10⁴ at M_R = 0.999:
+//! beyond the cap ([`SeriesOptions::max_terms`], default 10⁵) the route returns
+//! [`Error::TermCap`] with that estimate instead of working for minutes.
+//!
+//! **Precision.** Everything (the Rayleigh root, h_n, the powers, the moments, the sums) runs at
+//! the working precision plus the guard bits of the moment [`plan`] (2⌈log₂ N⌉ + 12 and more where
+//! the moments need it), then rounds once: the result is within about ε of the working precision
+//! plus the tail bound (`tests/series_route.rs`: ≤ 2 ε measured against quadrature of (46)–(47) at
+//! higher precision and against the static limit (43)).
+
+use super::coefficients::SpeedCoefficients;
+use super::guard::{run_guarded, GuardedJob};
+use super::moments::{plan, table_at, MAX_INDEX};
+use super::{AxisRatio, Integrals, Method};
+use crate::error::{Error, Result};
+use crate::numerics::series::sum_series_with_tail;
+use crate::physics::{Material, Speed};
+use crate::scalar::{short, Real};
+
+/// Default cap on the number of series terms.
+pub const DEFAULT_MAX_TERMS: usize = 100_000;
+
+/// Options of the series route.
+#[derive(Clone, Debug)]
+pub struct SeriesOptions<T> {
+    /// Relative tolerance on the truncation of each sum; `None`: ε/4 of the working precision.
+    /// Values below ε/8 are raised to ε/8 (rounding dominates there).
+    pub rel_tol: Option<T>,
+    /// Cap on the number of terms (≤ 10⁶).
+    pub max_terms: usize,
+}
+
+impl<T> Default for SeriesOptions<T> {
+    fn default() -> Self {
+        SeriesOptions {
+            rel_tol: None,
+            max_terms: DEFAULT_MAX_TERMS,
+        }
+    }
+}
+
+/// Terms the series needs for relative tolerance `tol` at M_R² = `q` (an over-estimate: it
+/// assumes D_n, L_{n+1} do not decrease and h_n = h_0). 1 at q = 0.
+pub fn terms_estimate(q: f64, tol: f64) -> u64 {
+    if q <= 0.0 {
+        return 1;
+    }
+    let n = (2.0 * tol * (1.0 - q) / q).ln() / q.ln();
+    if n.is_finite() && n > 0.0 {
+        (n.ceil() as u64).saturating_add(2)
+    } else if n.is_finite() {
+        2
+    } else {
+        u64::MAX
+    }
+}
+
+/// I1 and I2 by the series (37) for the material `mat`, speed `speed` and axis ratio `axis`,
+/// with truncation and precision control as in the module docs.
+///
+/// Accuracy: relative error ≤ the returned `error_estimate` = tail bound + ε (measured ≤ 2 ε at
+/// f64, double-double, 128 and 256 bits for M_R ≤ 0.9 and k from 0.01 to 100).
+/// Work: `work` = the number of terms n + 1, each about 60 operations at the guarded precision;
+/// one cel and one Rayleigh root.
+///
+/// Errors: [`Error::TermCap`] (with the estimated number of terms needed) when the terms needed
+/// exceed `opts.max_terms`; [`Error::Domain`] for a cap above 10⁶ or a negative tolerance;
+/// errors of the moments and the Rayleigh roots.
+pub fn integrals<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axis: &AxisRatio<T>,
+    opts: &SeriesOptions<T>,
+) -> Result<Integrals<T>> {
+    let p = axis.k.prec();
+    let eps = T::epsilon(p);
+    let tol = match &opts.rel_tol {
+        Some(t) => {
+            crate::scalar::check_finite("series tolerance", t)?;
+            if t.is_negative() {
+                return Err(Error::Domain {
+                    name: "series tolerance",
+                    value: short(t),
+                    bound: "rel_tol >= 0",
+                });
+            }
+            t.clone().max_of(eps.clone().div_i64(8))
+        }
+        None => eps.clone().div_i64(4),
+    };
+    if opts.max_terms > MAX_INDEX || opts.max_terms == 0 {
+        return Err(Error::Domain {
+            name: "max_terms (series route)",
+            value: opts.max_terms.to_string(),
+            bound: "1 <= max_terms <= 1000000",
+        });
+    }
+    let q = speed.mr2.to_f64();
+    let tol_f = tol.to_f64();
+    let est = terms_estimate(q, tol_f);
+    let cap = opts.max_terms;
+    if est > (cap as u64).saturating_mul(3) / 2 {
+        return Err(Error::TermCap {
+            what: "series (37) for I1, I2",
+            cap,
+            needed: Some(est),
+            reached: format!("{:.1e}", q.powf(cap as f64) / (1.0 - q)),
+        });
+    }
+    let mut n_max = (est as usize).clamp(2, cap);
+    loop {
+        let pl = plan(axis.k2.to_f64(), n_max, T::bits(p));
+        let out = run_guarded(
+            p,
+            pl.guard_bits,
+            SeriesJob {
+                mat,
+                speed,
+                axis,
+                tol: &tol,
+                n_max,
+                method: pl.method,
+            },
+        )?;
+        match out {
+            Some(r) => return Ok(r),
+            None if n_max >= cap => {
+                return Err(Error::TermCap {
+                    what: "series (37) for I1, I2",
+                    cap,
+                    needed: Some(est.max(cap as u64 + 1)),
+                    reached: "tail bound above tolerance".into(),
+                })
+            }
+            None => n_max = (2 * n_max).min(cap),
+        }
+    }
+}
+
+struct SeriesJob<'a, T: Real> {
+    mat: &'a Material<T>,
+    speed: &'a Speed<T>,
+    axis: &'a AxisRatio<T>,
+    tol: &'a T,
+    n_max: usize,
+    method: super::moments::MomentMethod,
+}
+
+impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
+    /// `None` when the table to `n_max` was too short for the tolerance.
+    type Output = Option<Integrals<T>>;
+
+    fn run<W: Real>(
+        self,
+        pw: W::Prec,
+        up: &dyn Fn(&T) -> W,
+        down: &dyn Fn(&W) -> T,
+    ) -> Result<Option<Integrals<T>>> {
+        let n = self.n_max;
+        let one = W::one(pw);
+        let nu = up(self.mat.nu());
+        let mr = up(&self.speed.mr);
+        let k = up(&self.axis.k);
+        let mc = k.square();
+        let m1 = polish_m1(&nu, up(self.mat.m1()));
+        let mr2 = mr.square();
+        let one_minus_mr2 = (one.clone() - &mr) * (one.clone() + &mr);
+        let h_lim = green_limit(&nu, &m1);
+        let tab = table_at(&mc, n + 1, self.method)?;
+        // Binomial terms below ε·2⁻³⁰ (of the guarded precision) cannot change h_n ≥ H ≈ 0.2.
+        let tiny = W::epsilon(pw).mul_pow2(-30);
+        let mut coef = SpeedCoefficients::new(&nu, m1, mr2.clone()).flush_below(tiny);
+        let mut f = Vec::with_capacity(n + 1);
+        let mut ratio = Vec::with_capacity(n + 1);
+        // Tail factor after term j: (max(h_j, H)/h_j)·M_R²/(1 − M_R²).
+        let geo = mr2 / &one_minus_mr2;
+        for _ in 0..=n {
+            let (h, fj) = coef.next_pair();
+            // h_n ≥ H > 0 (h decreases to H): the factor is 1; otherwise H/|h_n|.
+            ratio.push(if h >= h_lim {
+                geo.clone()
+            } else if h.is_zero() {
+                h_lim.clone().abs() * &geo
+            } else {
+                h_lim.clone().abs() / h.abs() * &geo
+            });
+            f.push(fj);
+        }
+        let d: Vec<W> = (0..=n).map(|j| tab.d(j, &mc)).collect();
+        let tol = up(self.tol);
+        let sum = |terms: Vec<W>| {
+            sum_series_with_tail(
+                |j| terms[j].clone(),
+                |j, t, _| t.clone().abs() * &ratio[j],
+                pw,
+                &tol,
+                n + 1,
+            )
+        };
+        let s1 = sum((0..=n).map(|j| f[j].clone() * &d[j]).collect());
+        let s2 = sum((0..=n).map(|j| f[j].clone() * &tab.l[j + 1]).collect());
+        let (s1, s2) = match (s1, s2) {
+            (Ok(a), Ok(b)) => (a, b),
+            (Err(Error::TermCap { .. }), _) | (_, Err(Error::TermCap { .. })) => return Ok(None),
+            (Err(e), _) | (_, Err(e)) => return Err(e),
+        };
+        if s1.last_rel > tol || s2.last_rel > tol {
+            return Ok(None);
+        }
+        let eps = T::epsilon(self.axis.k.prec());
+        let tail = s1.last_rel.max_of(s2.last_rel);
+        Ok(Some(Integrals {
+            i1: down(&s1.sum.mul_i64(2)),
+            i2: down(&s2.sum.mul_i64(2)),
+            error_estimate: down(&tail) + eps,
+            method: Method::Series,
+            work: s1.terms.max(s2.terms),
+        }))
+    }
+}
+
+/// The Rayleigh root m1 at the guarded precision: two Newton steps on the cubic
+/// (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8 from the working-precision root (within 4 ε of it, so
+/// each step squares the relative error; m1 is a simple root, well separated from m2, m3 > 1).
+fn polish_m1<W: Real>(nu: &W, m1: W) -> W {
+    let p = nu.prec();
+    let a = W::one(p) - nu;
+    let (c2, c1) = (a.clone().mul_i64(-8), (W::from_i64(2, p) - nu).mul_i64(8));
+    let mut x = m1;
+    for _ in 0..2 {
+        // P and P' by Horner.
+        let pv = ((a.clone() * &x + &c2) * &x + &c1) * &x - W::from_i64(8, p);
+        let dv = (a.clone().mul_i64(3) * &x + c2.clone().mul_i64(2)) * &x + &c1;
+        if dv.is_zero() {
+            break;
+        }
+        x -= pv / dv;
+    }
+    x
+}
+
+/// H = lim h_n = πG(1) = √(1 − γm1)·D(m1) / (m1 (m1 − m2)(m1 − m3)) with
+/// D = (2 − m1)² + 4√((1 − γm1)(1 − m1)) and (m1 − m2)(m1 − m3) = 2m1² − 8m1 + 8/((1 − ν)m1)
+/// (Vieta). Positive; all terms well conditioned.
+fn green_limit<W: Real>(nu: &W, m1: &W) -> W {
+    let p = nu.prec();
+    let one = W::one(p);
+    let omn = one.clone() - nu;
+    let gamma = (one.clone() - nu.clone().mul_i64(2)) / omn.clone().mul_i64(2);
+    let a = one.clone() - gamma * m1;
+    let b = one - m1;
+    let d = (W::from_i64(2, p) - m1).square() + (a.clone() * &b).sqrt().mul_i64(4);
+    let quad = (m1.square().mul_i64(2) - m1.clone().mul_i64(8)) + W::from_i64(8, p) / (omn * m1);
+    a.sqrt() * d / (m1.clone() * quad)
+}

@@ -1,0 +1,569 @@
+//! Studies of the series route of section 5 (`moving-hertz study series`,
+//! `moving-hertz study recursion`):
+//!
+//! * [`terms_study`]: the number of terms the series (37) needs against M_R for target accuracies
+//!   10⁻⁸, 10⁻¹⁵ (f64), 10⁻³⁰ (double-double, MPFR 128) and 10⁻⁷⁰ (MPFR 256), the time per
+//!   evaluation, and the error reached against a 420-bit reference;
+//! * [`forward_study`]: the relative error of the paper's forward recursion (40) in L_n, M_n
+//!   against n at f64, double-double, 128 and 256 bits, measured against the exact form
+//!   α_n K + β_n E, and the measured growth rate against the predicted log₂|k²/e²| bits per step;
+//! * [`condition_map`]: the bits lost by any evaluation in the K, E basis, log₂ of
+//!   (|α_n|K + |β_n|E)/L_n, over (n, e) and (n, k > 1).
+//!
+//! Inputs are dyadic (exact at every precision), so one reference serves all precisions.
+
+use super::median_ns;
+use super::svg::{Chart, Heatmap, Series, Style};
+use crate::error::Result;
+use crate::numerics::elliptic::ellipke_mc;
+use crate::physics::Material;
+use crate::routes::moments::{ke_condition_bits, moments_with, KeForm, MomentMethod};
+use crate::routes::series::{integrals, terms_estimate, SeriesOptions};
+use crate::routes::AxisRatio;
+use crate::scalar::{Field, Mp, MpPrec, Precision, Real};
+use rug::Float;
+
+// ---------------------------------------------------------------------------------------------
+// Terms needed and cost against M_R
+// ---------------------------------------------------------------------------------------------
+
+/// The speeds of the terms study: j/16 for j = 0 … 15 and 1 − 2^-k for k = 5 … 10 (dyadic).
+pub fn speed_grid() -> Vec<f64> {
+    let mut v: Vec<f64> = (0..16).map(|j| j as f64 / 16.0).collect();
+    v.extend((5..=10).map(|k| 1.0 - 2f64.powi(-k)));
+    v
+}
+
+/// The targets of the terms study and the precision each is run at: the lowest precision whose
+/// ε is below the target.
+pub fn targets() -> Vec<(f64, Precision)> {
+    let mp = |b: u32| Precision::Mpfr(MpPrec::clamped(b));
+    vec![
+        (1e-8, Precision::F64),
+        (1e-15, Precision::F64),
+        (1e-30, Precision::DoubleDouble),
+        (1e-30, mp(128)),
+        (1e-70, mp(256)),
+    ]
+}
+
+/// Poisson's ratio and axis ratio of the terms study (k = 1/2: e² = 3/4, forward moments).
+pub const TERMS_NU: f64 = 0.25;
+/// See [`TERMS_NU`].
+pub const TERMS_K: f64 = 0.5;
+
+/// One evaluation of the terms study.
+#[derive(Clone, Debug)]
+pub struct TermsRow {
+    /// M_R.
+    pub mr: f64,
+    /// Target relative accuracy (the route's `rel_tol`).
+    pub target: f64,
+    /// Precision.
+    pub precision: Precision,
+    /// Terms summed (0 when the route refused: term cap).
+    pub terms: usize,
+    /// [`terms_estimate`] for the target.
+    pub estimate: u64,
+    /// Median time per evaluation of I1 and I2, ns.
+    pub time_ns: f64,
+    /// Larger relative error of I1, I2 against the reference.
+    pub error: f64,
+    /// The route's error estimate.
+    pub error_estimate: f64,
+}
+
+/// I1, I2 by the series at 420 bits with tolerance 10⁻¹⁰⁰ (the reference of the terms study).
+fn reference(mr: f64) -> Result<(Float, Float)> {
+    let p = MpPrec::clamped(420);
+    let mat = Material::new(Mp::from_f64(TERMS_NU, p))?;
+    let speed = mat.speed(Mp::from_f64(mr, p))?;
+    let axis = AxisRatio::new(Mp::from_f64(TERMS_K, p))?;
+    let opts = SeriesOptions {
+        rel_tol: Some(Mp::parse("1e-100", p)?),
+        max_terms: 300_000,
+    };
+    let r = integrals(&mat, &speed, &axis, &opts)?;
+    Ok((r.i1.to_float(420), r.i2.to_float(420)))
+}
+
+fn rel_err<T: Real>(got: &T, want: &Float) -> f64 {
+    let d = Float::with_val(440, &got.to_float(440) - want);
+    Float::with_val(64, d / want).abs().to_f64()
+}
+
+fn terms_at<T: Real>(
+    p: T::Prec,
+    prec: Precision,
+    target: f64,
+    mr: f64,
+    refs: &(Float, Float),
+    budget_ms: f64,
+) -> Result<TermsRow> {
+    let mat = Material::new(T::from_f64(TERMS_NU, p))?;
+    let speed = mat.speed(T::from_f64(mr, p))?;
+    let axis = AxisRatio::new(T::from_f64(TERMS_K, p))?;
+    let opts = SeriesOptions {
+        rel_tol: Some(T::parse(&format!("{target:e}"), p)?),
+        max_terms: crate::routes::series::DEFAULT_MAX_TERMS,
+    };
+    let estimate = terms_estimate(mr * mr, target);
+    let mut row = TermsRow {
+        mr,
+        target,
+        precision: prec,
+        terms: 0,
+        estimate,
+        time_ns: f64::NAN,
+        error: f64::NAN,
+        error_estimate: f64::NAN,
+    };
+    match integrals(&mat, &speed, &axis, &opts) {
+        Ok(r) => {
+            row.terms = r.work;
+            row.error = rel_err(&r.i1, &refs.0).max(rel_err(&r.i2, &refs.1));
+            row.error_estimate = r.error_estimate.to_f64();
+            row.time_ns = median_ns(budget_ms, || integrals(&mat, &speed, &axis, &opts));
+        }
+        Err(crate::Error::TermCap { .. }) => {}
+        Err(e) => return Err(e),
+    }
+    Ok(row)
+}
+
+/// Runs the terms study over `speeds` (see [`speed_grid`]) for every target of [`targets`],
+/// timing each evaluation for about `budget_ms` ms.
+pub fn terms_study(speeds: &[f64], budget_ms: f64) -> Result<Vec<TermsRow>> {
+    let mut out = Vec::new();
+    for &mr in speeds {
+        let refs = reference(mr)?;
+        for (target, prec) in targets() {
+            let row = crate::with_precision!(prec, T, p => terms_at::<T>(p, prec, target, mr, &refs, budget_ms))?;
+            out.push(row);
+        }
+    }
+    Ok(out)
+}
+
+fn series_label(target: f64, prec: Precision) -> String {
+    format!("{target:.0e} at {}", prec.label())
+}
+
+/// Charts of the terms study: terms needed and time per evaluation against 1 − M_R (log-log).
+pub fn terms_charts(rows: &[TermsRow]) -> Vec<(String, String)> {
+    let mut terms = Chart::new(
+        "Series (37): terms needed for I1, I2 (ν = 1/4, k = 1/2)",
+        "1 − M_R (M_R = V/c_R; log scale)",
+        "terms summed (log scale)",
+    )
+    .log(true, true);
+    let mut time = Chart::new(
+        "Series (37): time per evaluation of I1 and I2 (ν = 1/4, k = 1/2)",
+        "1 − M_R (M_R = V/c_R; log scale)",
+        "median time per evaluation, µs (log scale)",
+    )
+    .log(true, true);
+    let mut seen_tol: Vec<u64> = Vec::new();
+    for (target, prec) in targets() {
+        let sel: Vec<&TermsRow> = rows
+            .iter()
+            .filter(|r| r.target == target && r.precision == prec && r.terms > 0)
+            .collect();
+        let label = series_label(target, prec);
+        terms.push(Series::new(
+            label.clone(),
+            sel.iter().map(|r| (1.0 - r.mr, r.terms as f64)).collect(),
+            Style::LineMarkers,
+        ));
+        if !seen_tol.contains(&target.to_bits()) {
+            seen_tol.push(target.to_bits());
+            terms.push(Series::new(
+                format!("estimate, {target:.0e}"),
+                sel.iter()
+                    .map(|r| (1.0 - r.mr, r.estimate as f64))
+                    .collect(),
+                Style::Dashed,
+            ));
+        }
+        time.push(Series::new(
+            label,
+            sel.iter().map(|r| (1.0 - r.mr, r.time_ns / 1e3)).collect(),
+            Style::LineMarkers,
+        ));
+    }
+    vec![
+        ("series_terms.svg".into(), terms.to_svg()),
+        ("series_time.svg".into(), time.to_svg()),
+    ]
+}
+
+// ---------------------------------------------------------------------------------------------
+// The forward recursion against the exact form
+// ---------------------------------------------------------------------------------------------
+
+/// k² values of the forward study (dyadic): e² = 15/16, 3/4 (stable), 1/2 (neutral), 7/16, 1/4,
+/// 1/16, 1/256 (|r| = k²/e² = 9/7 … 255) and k² = 2, 16, 256 (e² < 0, r = 2, 16/15, 256/255).
+pub const FORWARD_MC: [f64; 10] = [
+    0.0625, 0.25, 0.5, 0.5625, 0.75, 0.9375, 0.99609375, 2.0, 16.0, 256.0,
+];
+
+/// Largest n of the forward study.
+pub const FORWARD_N: usize = 10_000;
+
+/// |r| = |k²/e²|, the modulus of the parasitic characteristic root of (40).
+pub fn parasitic_root(mc: f64) -> f64 {
+    mc / (1.0 - mc).abs()
+}
+
+/// Predicted growth of the forward recursion's relative error: log₂ max(1, |k²/e²|) bits per step.
+pub fn predicted_bits_per_step(mc: f64) -> f64 {
+    parasitic_root(mc).log2().max(0.0)
+}
+
+/// One sampled point of the forward study.
+#[derive(Clone, Debug)]
+pub struct ForwardPoint {
+    /// k².
+    pub mc: f64,
+    /// Precision.
+    pub precision: Precision,
+    /// n.
+    pub n: usize,
+    /// Relative error of L_n.
+    pub err_l: f64,
+    /// Relative error of M_n.
+    pub err_m: f64,
+}
+
+/// The growth summary of one (k², precision).
+#[derive(Clone, Debug)]
+pub struct Growth {
+    /// k².
+    pub mc: f64,
+    /// Precision.
+    pub precision: Precision,
+    /// Predicted bits lost per step, log₂ max(1, |k²/e²|).
+    pub predicted: f64,
+    /// Measured bits per step of the L_n error (least-squares slope of log₂ error over the
+    /// points with 2¹⁰ ε ≤ error ≤ 2⁻¹⁰), NaN when fewer than 3 such points.
+    pub measured_l: f64,
+    /// The same for M_n.
+    pub measured_m: f64,
+    /// First n with relative error ≥ 1 in L_n (total loss), if any.
+    pub total_loss_n: Option<usize>,
+    /// Predicted total-loss index (bits − 1)/predicted.
+    pub predicted_loss_n: Option<f64>,
+    /// Largest L_n error in ε over the whole range (for the stable cases).
+    pub worst_eps: f64,
+    /// Last n studied.
+    pub n_max: usize,
+}
+
+/// The n range of the forward study for `mc`: up to 10⁴, or about 60 steps past where 256 bits
+/// are predicted to be lost.
+fn forward_n_max(mc: f64) -> usize {
+    let lam = predicted_bits_per_step(mc);
+    if lam <= 0.0 {
+        FORWARD_N
+    } else {
+        ((300.0 / lam).ceil() as usize + 60).min(FORWARD_N)
+    }
+}
+
+/// The sample of n: every n up to 64, then about 150 log-spaced values.
+fn sample(n_max: usize) -> Vec<usize> {
+    let mut v: Vec<usize> = (0..=n_max.min(64)).collect();
+    let mut x = 64.0f64;
+    while (x as usize) < n_max {
+        x *= 1.04;
+        v.push((x as usize).min(n_max));
+    }
+    v.dedup();
+    v
+}
+
+/// Reference L_n, M_n (n ≤ n_max) from the exact form α_n K + β_n E with the coefficients run
+/// at `bits` bits (≥ 256 + bits lost + 96, so its own rounding is far below 2⁻²⁵⁶).
+fn exact_form_reference(mc: f64, n_max: usize, bits: u32) -> Result<Vec<(Float, Float)>> {
+    let p = MpPrec::clamped(bits);
+    let x = Mp::from_f64(mc, p);
+    let (k, e) = ellipke_mc(&x)?;
+    let mut form = KeForm::new(x)?;
+    Ok((0..=n_max)
+        .map(|_| {
+            let t = form.next_term();
+            let l = t.l.0 * &k + t.l.1 * &e;
+            let m = t.m.0 * &k + t.m.1 * &e;
+            (l.to_float(bits), m.to_float(bits))
+        })
+        .collect())
+}
+
+fn forward_at<T: Real>(
+    p: T::Prec,
+    prec: Precision,
+    mc: f64,
+    refs: &[(Float, Float)],
+    ns: &[usize],
+    out: &mut Vec<ForwardPoint>,
+) -> Result<Growth> {
+    let n_max = refs.len() - 1;
+    let tab = moments_with(&T::from_f64(mc, p), n_max, MomentMethod::Forward, 0)?;
+    let eps = T::epsilon(p).to_f64();
+    let bits = T::bits(p) as f64;
+    let mut fit_l = Vec::new();
+    let mut fit_m = Vec::new();
+    let mut total_loss_n = None;
+    let mut worst: f64 = 0.0;
+    for (n, (rl, rm)) in refs.iter().enumerate() {
+        let el = rel_err(&tab.l()[n], rl);
+        let em = rel_err(&tab.m()[n], rm);
+        worst = worst.max(el / eps);
+        // NaN (a non-finite result) counts as total loss too.
+        if total_loss_n.is_none() && (el >= 1.0 || el.is_nan()) {
+            total_loss_n = Some(n);
+        }
+        let window = |x: f64| x >= eps * 1024.0 && x <= 1.0 / 1024.0;
+        if window(el) {
+            fit_l.push((n as f64, el.log2()));
+        }
+        if window(em) {
+            fit_m.push((n as f64, em.log2()));
+        }
+        if ns.binary_search(&n).is_ok() {
+            out.push(ForwardPoint {
+                mc,
+                precision: prec,
+                n,
+                err_l: el,
+                err_m: em,
+            });
+        }
+    }
+    let lam = predicted_bits_per_step(mc);
+    Ok(Growth {
+        mc,
+        precision: prec,
+        predicted: lam,
+        measured_l: slope(&fit_l),
+        measured_m: slope(&fit_m),
+        total_loss_n,
+        predicted_loss_n: (lam > 0.0).then(|| (bits - 1.0) / lam),
+        worst_eps: worst,
+        n_max,
+    })
+}
+
+/// Least-squares slope of the points (NaN for fewer than 3).
+fn slope(pts: &[(f64, f64)]) -> f64 {
+    if pts.len() < 3 {
+        return f64::NAN;
+    }
+    let n = pts.len() as f64;
+    let mx = pts.iter().map(|p| p.0).sum::<f64>() / n;
+    let my = pts.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx) * (p.0 - mx)).sum();
+    sxy / sxx
+}
+
+/// The precisions of the recursion study.
+pub fn recursion_precisions() -> Vec<Precision> {
+    vec![
+        Precision::F64,
+        Precision::DoubleDouble,
+        Precision::Mpfr(MpPrec::clamped(128)),
+        Precision::Mpfr(MpPrec::clamped(256)),
+    ]
+}
+
+/// Runs the forward study for every k² of [`FORWARD_MC`] at every precision of
+/// [`recursion_precisions`]: sampled errors and growth summaries.
+pub fn forward_study() -> Result<(Vec<ForwardPoint>, Vec<Growth>)> {
+    let mut points = Vec::new();
+    let mut growth = Vec::new();
+    for &mc in FORWARD_MC.iter() {
+        let n_max = forward_n_max(mc);
+        let lam = predicted_bits_per_step(mc);
+        let bits = 256 + (lam * n_max as f64).ceil() as u32 + 96;
+        let refs = exact_form_reference(mc, n_max, bits)?;
+        let ns = sample(n_max);
+        for prec in recursion_precisions() {
+            let g = crate::with_precision!(prec, T, p => forward_at::<T>(p, prec, mc, &refs, &ns, &mut points))?;
+            growth.push(g);
+        }
+    }
+    Ok((points, growth))
+}
+
+fn mc_label(mc: f64) -> String {
+    let e2 = 1.0 - mc;
+    if mc <= 1.0 {
+        format!("e²={e2}")
+    } else {
+        format!("k={:.3}", mc.sqrt())
+    }
+}
+
+/// Charts of the forward study: one per precision, relative error of L_n against n (log-log,
+/// errors clipped to [ε/1000, 1000]); and measured against predicted growth.
+pub fn forward_charts(points: &[ForwardPoint], growth: &[Growth]) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for prec in recursion_precisions() {
+        let eps = 2f64.powi(1 - prec.bits() as i32);
+        let (lo, hi) = (eps / 1000.0, 1000.0);
+        let mut chart = Chart::new(
+            format!(
+                "Forward recursion (40) at {}: relative error of L_n (vs exact form)",
+                prec.label()
+            ),
+            "n (log scale)",
+            "relative error of L_n (log scale, clipped)",
+        )
+        .log(true, true);
+        chart.y_range = Some((lo, hi));
+        chart.x_range = Some((1.0, FORWARD_N as f64));
+        for &mc in FORWARD_MC.iter() {
+            let pts = points
+                .iter()
+                .filter(|p| p.precision == prec && p.mc == mc && p.n > 0)
+                .map(|p| (p.n as f64, p.err_l.clamp(lo, hi)))
+                .collect();
+            chart.push(Series::new(
+                format!("{}, |r|={:.3}", mc_label(mc), parasitic_root(mc)),
+                pts,
+                Style::Line,
+            ));
+        }
+        out.push((
+            format!("recursion_forward_{}.svg", prec.label()),
+            chart.to_svg(),
+        ));
+    }
+    let mut g = Chart::new(
+        "Forward recursion: measured against predicted error growth",
+        "predicted log₂|k²/e²|, bits per step (log scale)",
+        "measured slope of log₂(error of L_n), bits per step (log scale)",
+    )
+    .log(true, true);
+    for prec in recursion_precisions() {
+        let pts = growth
+            .iter()
+            .filter(|r| r.precision == prec && r.predicted > 0.0)
+            .map(|r| (r.predicted, r.measured_l))
+            .collect();
+        g.push(Series::new(prec.label(), pts, Style::Markers));
+    }
+    let lo = growth
+        .iter()
+        .filter(|r| r.predicted > 0.0)
+        .map(|r| r.predicted)
+        .fold(f64::INFINITY, f64::min);
+    let hi = growth.iter().map(|r| r.predicted).fold(0.0, f64::max);
+    g.push(Series::new(
+        "measured = predicted",
+        vec![(lo / 1.5, lo / 1.5), (hi * 1.5, hi * 1.5)],
+        Style::Dashed,
+    ));
+    out.push(("recursion_growth.svg".into(), g.to_svg()));
+    out
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bits lost in the K, E basis
+// ---------------------------------------------------------------------------------------------
+
+/// The condition map: bits lost in L_n and M_n over a grid.
+#[derive(Clone, Debug)]
+pub struct ConditionMap {
+    /// The parameter of each row (e, or k − 1).
+    pub params: Vec<f64>,
+    /// The n of each column.
+    pub ns: Vec<usize>,
+    /// log₂ κ of L_n: `bits_l[row][col]`.
+    pub bits_l: Vec<Vec<f64>>,
+    /// log₂ κ of M_n.
+    pub bits_m: Vec<Vec<f64>>,
+}
+
+/// The n columns of the maps: 1 … 10⁴, 33 log-spaced values.
+pub fn map_columns() -> Vec<usize> {
+    let mut v: Vec<usize> = (0..=32)
+        .map(|j| 10f64.powf(j as f64 / 8.0).round() as usize)
+        .collect();
+    v.dedup();
+    v
+}
+
+/// Rows: e = 0.02 … 0.98 (step 0.024) for `k_side = false`; k − 1 = 10^(j/6) for
+/// j = −18 … 18 (k from 1.001 to 1001) for `k_side = true`.
+pub fn map_rows(k_side: bool) -> Vec<f64> {
+    if k_side {
+        (-18..=18).map(|j| 10f64.powf(j as f64 / 6.0)).collect()
+    } else {
+        (0..=40).map(|j| 0.02 + 0.024 * j as f64).collect()
+    }
+}
+
+/// Computes the map over `map_rows(k_side)` × [`map_columns`] at 64-bit MPFR.
+pub fn condition_map(k_side: bool) -> Result<ConditionMap> {
+    let p = MpPrec::clamped(64);
+    let params = map_rows(k_side);
+    let ns = map_columns();
+    let n_max = *ns.last().unwrap_or(&1);
+    let mut bits_l = Vec::new();
+    let mut bits_m = Vec::new();
+    for &x in &params {
+        let mc = if k_side {
+            (Mp::from_f64(x, p) + Mp::one(p)).square()
+        } else {
+            let e = Mp::from_f64(x, p);
+            Mp::one(p) - e.square()
+        };
+        let b = ke_condition_bits(&mc, n_max)?;
+        bits_l.push(ns.iter().map(|&n| b[n].0.max(0.0)).collect());
+        bits_m.push(ns.iter().map(|&n| b[n].1.max(0.0)).collect());
+    }
+    Ok(ConditionMap {
+        params,
+        ns,
+        bits_l,
+        bits_m,
+    })
+}
+
+/// The heat map of bits lost in L_n (colour capped at 256 bits).
+pub fn condition_chart(map: &ConditionMap, k_side: bool) -> (String, String) {
+    let h = Heatmap {
+        title: if k_side {
+            "Bits lost in the K, E basis: log₂((|α_n|K + |β_n|E)/L_n), k > 1".into()
+        } else {
+            "Bits lost in the K, E basis: log₂((|α_n|K + |β_n|E)/L_n), 0 < e < 1".into()
+        },
+        x_label: "n (log scale)".into(),
+        y_label: if k_side {
+            "k − 1, k = b/a > 1 (log scale; e² = 1 − k² < 0)".into()
+        } else {
+            "eccentricity e = √(1 − k²)".into()
+        },
+        z_label: "bits lost (colour capped at 256)".into(),
+        xs: map.ns.iter().map(|&n| n as f64).collect(),
+        ys: map.params.clone(),
+        z: map
+            .bits_l
+            .iter()
+            .map(|r| r.iter().map(|v| v.min(256.0)).collect())
+            .collect(),
+        x_log: true,
+        y_log: k_side,
+        z_range: (0.0, 256.0),
+    };
+    (
+        if k_side {
+            "recursion_bits_lost_k.svg".into()
+        } else {
+            "recursion_bits_lost_e.svg".into()
+        },
+        h.to_svg(),
+    )
+}
