@@ -40,6 +40,8 @@ COMMANDS:
         recursion: error growth of the forward recursion (40), bits lost in the K, E basis
   study poisson [--out DIR]
         how much Poisson's ratio changes e, k and a (the paper's 'about 2%' claim)
+  study stability [--out DIR]
+        maps of the digits each method delivers at f64 and double-double
   study pareto [--out DIR]
         accuracy against time of the ellipse solve for each method x precision
   study integrals [--out DIR]

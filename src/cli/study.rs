@@ -4,7 +4,7 @@
 use super::args::Args;
 use super::progress::Progress;
 use moving_hertz::contact::ellipse::EllipseMethod;
-use moving_hertz::studies::{self, integrals, pareto, poisson, rayleigh, series};
+use moving_hertz::studies::{self, integrals, pareto, poisson, rayleigh, series, stability};
 use std::path::PathBuf;
 
 pub fn run(name: &str, args: &Args) -> Result<(), String> {
@@ -16,8 +16,9 @@ pub fn run(name: &str, args: &Args) -> Result<(), String> {
         "pareto" => study_pareto(&out),
         "series" => study_series(&out),
         "recursion" => study_recursion(&out),
+        "stability" => study_stability(&out),
         other => Err(format!(
-            "unknown study `{other}` (available: rayleigh, series, recursion, integrals, poisson, pareto)"
+            "unknown study `{other}` (available: rayleigh, series, recursion, integrals, poisson, pareto, stability)"
         )),
     }
 }
@@ -470,5 +471,33 @@ fn study_recursion(out: &std::path::Path) -> Result<(), String> {
         out.join("data").display(),
         out.join("figures").display()
     );
+    Ok(())
+}
+
+fn study_stability(out: &std::path::Path) -> Result<(), String> {
+    let mut bar = Progress::new("stability maps", stability::cells());
+    let maps = stability::run(|| bar.tick());
+    bar.finish();
+    for m in &maps {
+        studies::write_csv(
+            &out.join(format!("data/{}.csv", m.name)),
+            &["x", "y", "digits"],
+            &m.rows(),
+        )
+        .map_err(io)?;
+        studies::write_text(&out.join(format!("figures/{}.svg", m.name)), &m.to_svg())
+            .map_err(io)?;
+        let all: Vec<f64> = m.z.iter().flatten().cloned().collect();
+        let min = all.iter().cloned().fold(f64::INFINITY, f64::min);
+        let full = all.iter().filter(|&&d| d >= m.full - 1.0).count();
+        println!(
+            "{}: min {:.1} digits, {} of {} cells within a digit of full ({:.1})",
+            m.name,
+            min,
+            full,
+            all.len(),
+            m.full
+        );
+    }
     Ok(())
 }

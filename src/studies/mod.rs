@@ -8,6 +8,7 @@ pub mod pareto;
 pub mod poisson;
 pub mod rayleigh;
 pub mod series;
+pub mod stability;
 pub mod svg;
 
 use std::io::Write;
