@@ -16,6 +16,7 @@ pub mod asymptotic;
 pub mod choose;
 pub mod coefficients;
 pub mod direct;
+pub mod fast;
 
 pub use coefficients::GreenSeries;
 
