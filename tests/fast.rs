@@ -307,3 +307,26 @@ fn rule_sizes_follow_the_precision() {
         last = s.nodes();
     }
 }
+
+/// The method choice runs the fast route for `subtracted` when its bound meets the tolerance,
+/// the adaptive (48) otherwise (and for k outside [2^−40, 1]).
+#[test]
+fn choose_runs_the_fast_route_when_it_suffices() {
+    use moving_hertz::routes::choose::{self, Inputs, MethodRequest};
+    let nodes = RuleSizes::for_bits(53).nodes();
+    let inputs = Inputs::parse("0.25", "0.99", "0.1").unwrap();
+    assert_eq!(choose::choose_method(&inputs), Method::Subtracted);
+    let r = choose::run_at::<f64>(&inputs, (), Method::Subtracted, 1e-12).unwrap();
+    assert_eq!(r.work, nodes);
+    // 1e-15 is below the fast route's 16ε bound at f64: the adaptive route answers.
+    let r = choose::run_at::<f64>(&inputs, (), Method::Subtracted, 1e-15).unwrap();
+    assert_ne!(r.work, nodes);
+    let a = choose::integrals(&inputs, 1e-10, MethodRequest::Auto).unwrap();
+    assert_eq!(
+        (a.method, a.precision, a.work),
+        (Method::Subtracted, Precision::F64, nodes)
+    );
+    // k > 1: the plain adaptive quadrature.
+    let wide = Inputs::parse("0.25", "0.99", "3").unwrap();
+    assert_eq!(choose::choose_method(&wide), Method::Quadrature);
+}
