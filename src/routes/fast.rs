@@ -47,9 +47,10 @@
 //!
 //! The remainder vanishes like σ^J at v = 0, which damps the peak of the weight: 12 nodes and
 //! J = 8 give ≤ 2·10⁻¹⁶ for every k ≤ 1 (the hardest k are 0.1–0.9, where the peak is neither
-//! resolved nor negligible). The Taylor coefficients come from the recurrence (36) (as in
-//! [`crate::routes::coefficients`], scale x0 = c), composed with y = σ/(1 + σ) and
-//! (1 + σ)^{−1/2}. The polynomial's integrals are formed by expanding P about the branch point,
+//! resolved nor negligible). The Taylor coefficients come from the rationalised form of b
+//! (binomial series of its two square roots divided by a cubic, 14 operations a coefficient;
+//! checked against the recurrence (36) composed with σ/(1 + σ) in the unit tests). The
+//! polynomial's integrals are formed by expanding P about the branch point,
 //! P = P(−k²) + (σ + k²)Q(σ) (synthetic division), so that only the moments
 //! N_j = ∫ v^{2j}(v² + k²)^{−1/2} dv enter, with N_0 = asinh(1/k) and the upward recurrence
 //! N_j = (√(1 + k²) − (2j − 1)k² N_{j−1})/(2j) (stable: each step multiplies the inherited error by
@@ -89,9 +90,10 @@
 //! domain; [`FastRule::bound_eps`] = 16 is the a-priori bound on the relative error of I1 and I2
 //! in units of ε, checked against the adaptive route at 400 bits over ν ∈ {−0.9, 0, 0.25, 0.5},
 //! M_R ∈ {0, 0.3, 0.7, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {10⁻⁶, 10⁻⁴, 0.01, 0.1, 0.3, 0.5, 0.7, 1}
-//! (`tests/fast.rs`): worst 3.2ε at `f64` (7·10⁻¹⁶), 4.8ε at double-double, 1.9ε and 2.8ε at
-//! MPFR 128 and 256 bits. The derivatives: worst 36ε at `f64`, 53ε at double-double (near k = 1,
-//! M_R = 0, where the closed forms cancel most), 1.6ε at MPFR 128 bits.
+//! (`tests/fast.rs`): worst 2.8ε at `f64` (6·10⁻¹⁶), 5.5ε at double-double, 1.9ε and 2.8ε at
+//! MPFR 128 and 256 bits. The derivatives: worst 47ε at `f64` (10⁻¹⁴), 53ε at double-double
+//! (near k = 1, M_R = 0, where the closed forms of the (σ + k²)^{−5/2} moments cancel most; no
+//! guard precision is spent on them below MPFR), 2.3ε at MPFR 128 bits.
 
 use super::{AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
@@ -217,9 +219,6 @@ pub struct FastRule<T: Real> {
     right: Half<T>,
     /// The binomial coefficients β_l of √(1 − z) = Σ β_l z^l, l < J.
     sqrt_binomial: Vec<T>,
-    /// 2·(−1)^{j−l}·(l + 1/2)_{j−l}/(j − l)!, row j = 0..J, column l = 0..=j, packed by rows:
-    /// the coefficients of σ^j in 2 y^l (1 + σ)^{−1/2}, y = σ/(1 + σ).
-    compose: Vec<T>,
     /// 1/(2j) and (2j − 1)/(2j) for j = 1..=J (index j − 1): the N_j recurrence.
     inv_2j: Vec<T>,
     ratio_2j: Vec<T>,
@@ -302,22 +301,6 @@ impl<T: Real> FastRule<T> {
             sqrt_binomial.push(beta.clone());
             beta = beta.mul_i64(2 * l - 1).div_i64(2 * l + 2);
         }
-        // Coefficient of σ^m in (1 + σ)^{−l−1/2}: (−1)^m (l + 1/2)_m / m!, by
-        // e_{m+1} = −e_m (2l + 2m + 1)/(2m + 2); times 2.
-        let mut table = vec![vec![T::zero(p); j_max]; j_max];
-        for l in 0..j_max {
-            let mut e = T::from_i64(2, p);
-            for m in 0..j_max - l {
-                table[l + m][l] = e.clone();
-                let (a, b) = (2 * (l + m) as i64 + 1, 2 * m as i64 + 2);
-                e = -(e.mul_i64(a).div_i64(b));
-            }
-        }
-        let compose = table
-            .into_iter()
-            .enumerate()
-            .flat_map(|(j, row)| row.into_iter().take(j + 1))
-            .collect();
         let inv_2j = (1..=j_max as i64)
             .map(|j| T::from_ratio(1, 2 * j, p))
             .collect();
@@ -330,7 +313,6 @@ impl<T: Real> FastRule<T> {
             left,
             right,
             sqrt_binomial,
-            compose,
             inv_2j,
             ratio_2j,
             bound_eps: bound_eps_for(T::bits(p)),
@@ -356,7 +338,7 @@ impl<T: Real> FastRule<T> {
 }
 
 /// The a-priori error bound in ε for the default sizes: 16ε at every precision. Measured over
-/// the test grid (`tests/fast.rs`): at most 3.2ε at `f64`, 4.8ε at double-double, 1.9ε and 2.8ε at
+/// the test grid (`tests/fast.rs`): at most 2.8ε at `f64`, 5.5ε at double-double, 1.9ε and 2.8ε at
 /// MPFR 128 and 256 bits (1.4ε at 512 bits on a sub-grid); the truncation error of the default
 /// rules is below 1ε everywhere on the domain (module docs), the rest is rounding.
 fn bound_eps_for(_bits: u32) -> u32 {
@@ -402,25 +384,27 @@ impl<T: Real> SpeedConsts<T> {
         let a1 = one.clone() - gamma.clone() * &c;
         let d2 = one.clone() - &c;
         let eps2 = speed.one_minus_mr2.clone();
-        let eps = eps2.clone().sqrt();
-        let at = one.clone().atan2(&eps);
-        let pole_t = at.clone() / &eps;
-        let pole_1 = one.clone() - eps * at;
-        // a(−ε²) with M_R factored out: p = M², p − γc = M²(1 − γm1), s + δ² = M²(1 − m1), so
-        // a0 u0^{3/2} = (2/m1) M √(1 − γm1) [(2 − m1)² + 4√((1 − γm1)(1 − m1))]/(m1² − S m1 + q).
-        let g1 = one.clone() - gamma * &m1;
-        let b1 = one.clone() - &m1;
-        let two_m1 = T::from_i64(2, p) - &m1;
-        let d1 = two_m1.square() + (g1.clone() * &b1).sqrt().mul_i64(4);
-        let q1 = m1.clone() * (m1.clone() - &s23) + &q;
         // The pole is subtracted only when it is near the interval (ε ≤ 1/2, i.e. M_R ≥ √3/2);
         // farther out the plain rule converges as fast, and for M_R → 0, k → 1 the pole at
         // w = iε would meet the branch point of u^{−3/2} at w = i/k, where a0 is unbounded.
         let near = eps2.clone().mul_i64(4) <= one;
-        let g0 = if near {
-            two_over_m1.clone() * &speed.mr * g1.sqrt() * d1 / q1
+        let (g0, pole_t, pole_1) = if near {
+            let eps = eps2.clone().sqrt();
+            let at = one.clone().atan2(&eps);
+            let pole_t = at.clone() / &eps;
+            let pole_1 = one.clone() - eps * at;
+            // a(−ε²) with M_R factored out: p = M², p − γc = M²(1 − γm1),
+            // s + δ² = M²(1 − m1), so a0 u0^{3/2} =
+            // (2/m1) M √(1 − γm1) [(2 − m1)² + 4√((1 − γm1)(1 − m1))]/(m1² − S m1 + q).
+            let g1 = one.clone() - gamma * &m1;
+            let b1 = one.clone() - &m1;
+            let two_m1 = T::from_i64(2, p) - &m1;
+            let d1 = two_m1.square() + (g1.clone() * &b1).sqrt().mul_i64(4);
+            let q1 = m1.clone() * (m1.clone() - &s23) + &q;
+            let g0 = two_over_m1.clone() * &speed.mr * g1.sqrt() * d1 / q1;
+            (g0, pole_t, pole_1)
         } else {
-            T::zero(p)
+            (T::zero(p), T::zero(p), T::zero(p))
         };
         SpeedConsts {
             c2: c.square(),
@@ -439,59 +423,65 @@ impl<T: Real> SpeedConsts<T> {
     }
 }
 
-/// The Taylor coefficients c_l (l < J) of g(x) = Σ c_l (x/x0)^l by the recurrence (36) with
-/// scale x0 (as [`crate::routes::coefficients::GreenSeries`], with the binomial coefficients of
-/// √(1 − z) taken from the rule instead of recomputed), then b_j (j < J) of
-/// b(σ) = 2 g(x0 σ/(1 + σ))/√(1 + σ) = 2 Σ_l c_l σ^l (1 + σ)^{−l−1/2}.
-fn taylor_b<T: Real>(mat: &Material<T>, x0: &T, rule: &FastRule<T>, out: &mut [T]) {
+/// The Taylor coefficients b_j (j < J) of b(σ) at σ = 0, from its rationalised form
+/// b = (2/m1) N(σ)/(Q'(σ)(1 + ε²σ)) with
+/// N = (2 + (2 − c)σ)² √(1 + (1 − γc)σ) + 4(1 + σ)(1 + (1 − γc)σ) √(1 + δ²σ): the binomial series
+/// of the two square roots (coefficients β_l(−a)^l, β_l those of √(1 − z)) multiplied by the
+/// quadratics, then divided by the cubic d0 + d1σ + d2σ² + d3σ³ = Q'(σ)(1 + ε²σ) term by term,
+/// b_j = ((2/m1)N_j − d1 b_{j−1} − d2 b_{j−2} − d3 b_{j−3})/d0. The roots of the cubic are
+/// σ = −1/ε² and σ = m/(c − m) for the Rayleigh roots m = m2, m3, all of modulus ≥ 1 (equality only
+/// at M_R = 0, a triple root at −1), so the division is stable (errors grow at most like j² at
+/// M_R = 0). About 14 operations a coefficient; the value at σ = 0 is b_0 = 2(1 − ν).
+fn taylor_b<T: Real>(sc: &SpeedConsts<T>, rule: &FastRule<T>, out: &mut [T]) {
     let j_max = out.len();
     if j_max == 0 {
         return;
     }
-    let p = x0.prec();
-    let nu = mat.nu();
-    let one_minus_nu_8 = mat.one_minus_nu().clone() * T::from_ratio(1, 8, p);
-    let two_minus_nu = T::from_i64(2, p) - nu;
-    let x0_2 = x0.square();
-    let x0_3 = x0_2.clone() * x0;
-    let gx0 = mat.gamma().clone() * x0;
+    let p = sc.c.prec();
     let zero = T::zero(p);
-    // c_l = (1 − ν)/8 [r_l − 8x0² c_{l−2} + x0³ c_{l−3}] + (2 − ν) x0 c_{l−1},
-    // r_l = 4u_l − 4x0 u_{l−1} + x0² u_{l−2} + 4v_l − 4γx0 v_{l−1}, u_l = β_l (γx0)^l, v_l = β_l x0^l.
-    let (mut u, mut v) = (
-        [T::one(p), zero.clone(), zero.clone()],
-        [T::one(p), zero.clone()],
-    );
-    let mut cc = [zero.clone(), zero.clone(), zero.clone()];
-    let (mut pg, mut px) = (T::one(p), T::one(p));
-    for (l, out_l) in out.iter_mut().enumerate() {
-        let r = (u[0].clone() + &v[0]).mul_i64(4) - (x0.clone() * &u[1]).mul_i64(4)
-            + x0_2.clone() * &u[2]
-            - (gx0.clone() * &v[1]).mul_i64(4);
-        let bracket = r - (x0_2.clone() * &cc[1]).mul_i64(8) + x0_3.clone() * &cc[2];
-        let cl = one_minus_nu_8.clone() * bracket + two_minus_nu.clone() * x0 * &cc[0];
-        // Store c_l in out[l] for now; composed below.
-        *out_l = cl.clone();
-        cc = [cl, cc[0].clone(), cc[1].clone()];
-        if l + 1 < j_max {
-            pg *= &gx0;
-            px *= x0;
-            let beta = &rule.sqrt_binomial[l + 1];
-            let un = beta.clone() * &pg;
-            let vn = beta.clone() * &px;
-            u = [un, u[0].clone(), u[1].clone()];
-            v = [vn, v[0].clone()];
-        }
-    }
-    // b_j = Σ_{l ≤ j} compose[j][l] c_l, from the top row down so that out[l] (l < j) are still
-    // the c_l when row j is formed.
-    for j in (0..j_max).rev() {
-        let row = &rule.compose[j * (j + 1) / 2..j * (j + 1) / 2 + j + 1];
-        let mut acc = row[0].clone() * &out[0];
-        for (e, c) in row[1..].iter().zip(&out[1..=j]) {
-            acc += e.clone() * c;
-        }
-        out[j] = acc;
+    let four = T::from_i64(4, p);
+    // Numerator quadratics: (2 + e1σ)² = 4 + 4e1σ + e1²σ², 4(1 + σ)(1 + a1σ) = 4 + 4(1 + a1)σ + 4a1σ².
+    let e1 = T::from_i64(2, p) - &sc.c;
+    let na = [four.clone(), e1.clone().mul_i64(4), e1.square()];
+    let nb = [
+        four,
+        (T::one(p) + &sc.a1).mul_i64(4),
+        sc.a1.clone().mul_i64(4),
+    ];
+    // Denominator: Q'(σ) = q + (2q − Sc)σ + (c² − Sc + q)σ², times (1 + ε²σ).
+    let q0 = sc.q.clone();
+    let q1 = sc.q.clone().mul_i64(2) - &sc.sc;
+    let q2 = sc.c2.clone() - &sc.sc + &sc.q;
+    let inv_d0 = q0.clone().recip();
+    let g = [
+        (q1.clone() + sc.eps2.clone() * &q0) * &inv_d0,
+        (q2.clone() + sc.eps2.clone() * &q1) * &inv_d0,
+        sc.eps2.clone() * &q2 * &inv_d0,
+    ];
+    let f = sc.two_over_m1.clone() * inv_d0;
+    let (minus_a1, minus_d2) = (-sc.a1.clone(), -sc.d2.clone());
+    let (mut pa, mut pb) = (T::one(p), T::one(p));
+    // Histories: α_{j−1}, α_{j−2}; B_{j−1}, B_{j−2}; b_{j−1}, b_{j−2}, b_{j−3}.
+    let (mut al, mut bl) = ([zero.clone(), zero.clone()], [zero.clone(), zero.clone()]);
+    let mut bh = [zero.clone(), zero.clone(), zero];
+    for (j, out_j) in out.iter_mut().enumerate() {
+        let beta = &rule.sqrt_binomial[j];
+        let a = beta.clone() * &pa;
+        let b = beta.clone() * &pb;
+        let n = na[0].clone() * &a
+            + na[1].clone() * &al[0]
+            + na[2].clone() * &al[1]
+            + nb[0].clone() * &b
+            + nb[1].clone() * &bl[0]
+            + nb[2].clone() * &bl[1];
+        let bj = f.clone() * n
+            - &(g[0].clone() * &bh[0] + g[1].clone() * &bh[1] + g[2].clone() * &bh[2]);
+        *out_j = bj.clone();
+        pa *= &minus_a1;
+        pb *= &minus_d2;
+        al = [a, al[0].clone()];
+        bl = [b, bl[0].clone()];
+        bh = [bj, bh[0].clone(), bh[1].clone()];
     }
 }
 
@@ -638,7 +628,9 @@ enum Buf<T, const N: usize> {
 impl<T: Real, const N: usize> Buf<T, N> {
     #[inline(always)]
     fn zeros(n: usize, p: T::Prec) -> Self {
-        if n <= N && T::bits(p) <= 106 {
+        if n == 0 {
+            Buf::Heap(Vec::new())
+        } else if n <= N && T::bits(p) <= 106 {
             Buf::Inline(std::array::from_fn(|_| T::zero(p)), n)
         } else {
             Buf::Heap(vec![T::zero(p); n])
@@ -667,12 +659,28 @@ impl<T, const N: usize> std::ops::DerefMut for Buf<T, N> {
     }
 }
 
-/// Σ wᵢ xᵢ: in order at `f64` (at most 20 terms), pairwise above (error ~log₂ n ε instead of
-/// n ε for the 40 to 400 terms of the higher-precision rules).
+/// Σ wᵢ xᵢ: with four interleaved partial sums at `f64` (at most 20 terms; the independent
+/// chains overlap in the processor), pairwise above (error ~log₂ n ε instead of n ε for the 40
+/// to 400 terms of the higher-precision rules).
 fn dot<T: Real>(w: &[T], x: &[T]) -> T {
     let n = w.len().min(x.len());
     let p = w[0].prec();
-    if n <= 8 || T::bits(p) <= 53 {
+    if T::bits(p) <= 53 {
+        let zero = T::zero(p);
+        let mut acc = [zero.clone(), zero.clone(), zero.clone(), zero];
+        let (wc, xc) = (w[..n].chunks_exact(4), x[..n].chunks_exact(4));
+        let (wr, xr) = (wc.remainder(), xc.remainder());
+        for (a, b) in wc.zip(xc) {
+            for j in 0..4 {
+                acc[j] += a[j].clone() * &b[j];
+            }
+        }
+        for (j, (a, b)) in wr.iter().zip(xr).enumerate() {
+            acc[j] += a.clone() * b;
+        }
+        let [a0, a1, a2, a3] = acc;
+        (a0 + &a1) + &(a2 + &a3)
+    } else if n <= 8 {
         let mut acc = T::zero(p);
         for (a, b) in w[..n].iter().zip(&x[..n]) {
             acc += a.clone() * b;
@@ -941,7 +949,7 @@ fn one_shot<T: Real, const N: usize>(
     let kc = KConsts::new(&sc, axes);
     let (nl, nr) = (rule.left.len(), rule.right.len());
     let mut b = Buf::<T, N>::zeros(rule.sizes.taylor, p);
-    taylor_b(mat, &sc.c, rule, &mut b);
+    taylor_b(&sc, rule, &mut b);
     let mut left = Buf::<T, N>::zeros(nl, p);
     let mut left_dk = Buf::<T, N>::zeros(if dk { nl } else { 0 }, p);
     let mut right = Buf::<T, N>::zeros(nr, p);
@@ -971,9 +979,9 @@ fn run<T: Real>(
         .left
         .len()
         .max(rule.right.len())
-        .max(rule.sizes.taylor + 1);
-    if n <= 24 {
-        one_shot::<T, 24>(mat, speed, axes, rule, dk)
+        .max(3 * rule.sizes.taylor + 1);
+    if n <= 32 {
+        one_shot::<T, 32>(mat, speed, axes, rule, dk)
     } else {
         one_shot::<T, 48>(mat, speed, axes, rule, dk)
     }
@@ -997,7 +1005,9 @@ pub fn integrals<T: Real>(
 }
 
 /// I1, I2 (as [`integrals`]) and dI1/dk, dI2/dk, differentiated under the integral sign on the
-/// same nodes (see the module docs), to about the same relative accuracy.
+/// same nodes (see the module docs). The derivatives' relative error is not bounded by the
+/// reported estimate (which is for I1, I2): measured ≤ 47ε at `f64`, ≤ 53ε at double-double
+/// (near k = 1, M_R = 0), ≤ 3ε at MPFR; tested ≤ 128ε. Cost: about 15 % more than [`integrals`].
 pub fn integrals_with_dk<T: Real>(
     mat: &Material<T>,
     speed: &Speed<T>,
@@ -1055,7 +1065,7 @@ impl<T: Real> FastSetup<T> {
         let rule = FastRule::<T>::get(p)?;
         let sc = SpeedConsts::new(mat, speed);
         let mut b = vec![T::zero(p); rule.sizes.taylor];
-        taylor_b(mat, &sc.c, &rule, &mut b);
+        taylor_b(&sc, &rule, &mut b);
         let one = T::one(p);
         let l = &rule.left;
         let n = l.len();
@@ -1117,9 +1127,9 @@ impl<T: Real> FastSetup<T> {
             .left_l
             .len()
             .max(self.right_r.len())
-            .max(self.b.len() + 1);
-        if n <= 24 {
-            self.eval::<24>(axes, dk)
+            .max(3 * self.b.len() + 1);
+        if n <= 32 {
+            self.eval::<32>(axes, dk)
         } else {
             self.eval::<48>(axes, dk)
         }
@@ -1197,26 +1207,29 @@ mod tests {
     use crate::scalar::{Mp, MpPrec};
     use rug::Rational;
 
-    /// b_j exactly: c_l from the recurrence (36) in rationals (`GreenSeries`), composed with
-    /// the binomial series of (1 + σ)^{−l−1/2}; with each b_j, the sum of the moduli of its terms
-    /// (the scale of its rounding error).
-    fn exact_b(nu: &Rational, x0: &Rational, j_max: usize) -> Vec<(Rational, f64)> {
-        let c = GreenSeries::new(nu, x0.clone()).take(j_max);
+    /// b_j by an independent route at 512 bits: the coefficients c_l of g (recurrence (36),
+    /// `GreenSeries`, scale x0 = c) composed with y = σ/(1 + σ) and (1 + σ)^{−1/2}:
+    /// b = 2 Σ_l c_l σ^l (1 + σ)^{−l−1/2}. With each b_j, the sum of the moduli of its terms.
+    fn composed_b(nu: f64, mr: f64, j_max: usize) -> Vec<(rug::Float, f64)> {
+        let p = MpPrec::new(512).unwrap();
+        let mat = Material::new(Mp::from_f64(nu, p)).unwrap();
+        let sp = mat.speed(Mp::from_f64(mr, p)).unwrap();
+        let c = GreenSeries::new(mat.nu(), sp.m2sq.clone()).take(j_max);
         (0..j_max)
             .map(|j| {
-                let mut sum = Rational::from(0);
+                let mut sum = Mp::zero(p);
                 let mut scale = 0.0;
                 for (l, cl) in c.iter().enumerate().take(j + 1) {
-                    // (−1)^m (l + 1/2)_m / m!, m = j − l.
+                    // 2 (−1)^m (l + 1/2)_m / m!, m = j − l.
                     let mut e = Rational::from(2);
                     for m in 0..(j - l) {
                         e *= Rational::from((-(2 * (l + m) as i64 + 1), 2 * m as i64 + 2));
                     }
-                    let t = e * cl;
+                    let t = Mp::from_float(&rug::Float::with_val(600, &e), p) * cl;
                     scale += t.to_f64().abs();
                     sum += t;
                 }
-                (sum, scale)
+                (sum.to_float(512), scale)
             })
             .collect()
     }
@@ -1224,27 +1237,28 @@ mod tests {
     fn check_taylor<T: Real>(p: T::Prec, tol_eps: f64) {
         let rule = FastRule::<T>::get(p).unwrap();
         let j_max = rule.sizes().taylor;
-        for (nu, x0) in [((1, 4), (5, 8)), ((-9, 10), (3, 4)), ((1, 2), (29, 32))] {
-            let nu_r = Rational::from(nu);
-            let x0_r = Rational::from(x0);
-            let exact = exact_b(&nu_r, &x0_r, j_max);
-            let mat = Material::new(T::from_ratio(nu.0, nu.1, p)).unwrap();
+        for (nu, mr) in [(0.25, 0.625), (-0.9, 0.99), (0.5, 0.0), (0.5, 0.999)] {
+            let want = composed_b(nu, mr, j_max);
+            let mat = Material::new(T::from_f64(nu, p)).unwrap();
+            let sp = mat.speed(T::from_f64(mr, p)).unwrap();
+            let sc = SpeedConsts::new(&mat, &sp);
             let mut b = vec![T::zero(p); j_max];
-            taylor_b(&mat, &T::from_ratio(x0.0, x0.1, p), &rule, &mut b);
+            taylor_b(&sc, &rule, &mut b);
             // b_j may cancel (which does not matter: the same polynomial is subtracted at the
-            // nodes and integrated exactly); its error is measured against its terms.
+            // nodes and integrated exactly); its error is measured against its terms, and may
+            // grow like j² (the triple root of the divisor at M_R = 0).
             let eps = T::epsilon(p).to_f64();
-            for (j, (got, (want, scale))) in b.iter().zip(&exact).enumerate() {
-                let w = rug::Float::with_val(600, want);
-                let d = rug::Float::with_val(600, got.to_float(600) - &w);
+            for (j, (got, (w, scale))) in b.iter().zip(&want).enumerate() {
+                let d = rug::Float::with_val(600, got.to_float(600) - w);
                 let e = d.abs().to_f64() / scale / eps;
-                assert!(e <= tol_eps, "nu={nu:?} x0={x0:?} b_{j}: {e:.1} eps");
+                let tol = tol_eps * (1 + j * j) as f64;
+                assert!(e <= tol, "nu={nu} M_R={mr} b_{j}: {e:.1} eps");
             }
         }
     }
 
     #[test]
-    fn taylor_coefficients_match_exact_recurrence() {
+    fn taylor_coefficients_match_the_recurrence_36() {
         check_taylor::<f64>((), 16.0);
         check_taylor::<Dd>((), 16.0);
         check_taylor::<Mp>(MpPrec::new(256).unwrap(), 16.0);
