@@ -44,7 +44,7 @@ fn cache() -> &'static Cache {
 /// The key holds a hash of the precision token; the stored rule's own token is compared on every
 /// hit, so a hash collision costs a rebuild, never a rule at the wrong precision. `build` runs
 /// outside the lock (two threads may both build a rule; the first one stored wins).
-fn cached<R, P>(
+pub(crate) fn cached<R, P>(
     index: usize,
     p: P,
     prec_of: impl Fn(&R) -> P,

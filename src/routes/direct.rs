@@ -424,3 +424,19 @@ pub fn contact_integrals<T: Real>(
         work: l.evaluations + r.evaluations,
     })
 }
+
+/// I1, I2 by the fast fixed-rule route of [`crate::routes::fast`]: the singular parts of
+/// (46)–(47) subtracted and integrated in closed form (the Rayleigh pole at α = 0, the peak of
+/// Δ⁻³ at α = π/2 through Taylor terms of the regular factor), the rest by Gauss–Legendre rules
+/// whose sizes follow the working precision. Reported as [`Method::Subtracted`].
+///
+/// Domain: 2^−40 ≤ k ≤ 1 (else [`Error::Domain`]; [`quadrature`] covers every k). Accuracy:
+/// relative error of I1 and I2 ≤ 16ε (the reported `error_estimate`), measured ≤ 5ε at `f64`,
+/// double-double and MPFR. Work: 32 evaluations of G at `f64` (about 0.25 µs), no allocation.
+pub fn fast<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axes: &AxisRatio<T>,
+) -> Result<Integrals<T>> {
+    super::fast::integrals(mat, speed, axes)
+}

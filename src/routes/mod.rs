@@ -20,6 +20,7 @@ pub mod asymptotic;
 pub mod choose;
 pub mod coefficients;
 pub mod direct;
+pub mod fast;
 mod guard;
 pub mod moments;
 pub mod series;

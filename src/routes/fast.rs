@@ -1,0 +1,1304 @@
+//! The fast route: I1, I2 of (34) (normalisation of (37)) and their derivatives with respect to
+//! the axis ratio k, by fixed Gauss–Legendre rules after the two near singularities of (46)–(47)
+//! have been taken out in closed form. No adaptivity, no trigonometric function at a node, node
+//! counts fixed by the working precision; at `f64` and double-double no allocation per call.
+//!
+//! **Variables.** As in [`crate::routes::direct`]: the quarter α ∈ [0, π/2] is split at π/4,
+//! the left half written in w = tan α, s = w², the right half in v = cot α, σ = v². With
+//! ε² = 1 − M_R², c = m1 M_R² (= M2², the squared shear Mach number), δ² = 1 − c and u = 1 + k²s,
+//!
+//! ```text
+//! left:  I2_L = ∫_0^1 A(w)/(s + ε²) dw,   I1_L = ∫_0^1 s A(w)/(s + ε²) dw,
+//!        A(w) = a(s) = 2π G(M_R²/(1 + s)) √(1 + s) / u^{3/2};
+//! right: I1_R = ∫_0^1 b(σ) (σ + k²)^{−3/2} dv,   I2_R = ∫_0^1 σ b(σ) (σ + k²)^{−3/2} dv,
+//!        b(σ) = 2π G(M_R² σ/(1 + σ)) √(1 + σ)/(1 + ε²σ) = 2 g(c σ/(1 + σ)) / √(1 + σ),
+//! ```
+//!
+//! g = πG/(1 − t) being the normalised Green's function of (35). I1 = I1_L + I1_R,
+//! I2 = I2_L + I2_R.
+//!
+//! **Left half: the Rayleigh pole.** 1/(s + ε²) has its poles at w = ±iε, which is where t = 1
+//! (the pole of (47) that makes I2 ~ 1/ε as M_R → 1). With a0 = a(−ε²),
+//!
+//! ```text
+//! I2_L = a0 · atan(1/ε)/ε + ∫_0^1 (a(s) − a0)/(s + ε²) dw,
+//! I1_L = a0 · (1 − ε atan(1/ε)) + ∫_0^1 s (a(s) − a0)/(s + ε²) dw,
+//! a0 = 2π G(1) M_R (1 − k²ε²)^{−3/2},
+//! ```
+//!
+//! and the integrands left are analytic near [0, 1]: their nearest singularity is the branch
+//! point of G where t = 1/m1 (√(1 − x) = 0), at w = ±iδ, δ ≥ √(1 − m1) ≈ 0.30 (ν = 1/2, M_R → 1),
+//! so one Gauss–Legendre rule on [0, 1] in w converges geometrically, uniformly in M_R, at
+//! 2.3 bits a node in the worst case: 20 nodes at `f64`. The pole is subtracted only when it is
+//! near, ε ≤ 1/2 (M_R ≥ √3/2; then k²ε² ≤ 1/4); farther out the plain rule converges as fast, and
+//! as M_R → 0, k → 1 the pole at iε would meet the branch point of u^{−3/2} at i/k, where a0 is
+//! unbounded. The difference a(s) − a0 is formed directly: its cancellation near s = 0 costs an
+//! absolute error ε·a/(s + ε²) at a node, the rounding error of the integrand itself.
+//!
+//! **Right half: the k-peak.** The weight (σ + k²)^{−3/2} has branch points at v = ±ik, near the
+//! end v = 0 when k is small, while b is analytic in |σ| < 1 (its nearest singularity is
+//! √(1 + σ) at σ = −1). The Taylor polynomial P = Σ_{j<J} b_j σ^j of b at σ = 0 is subtracted at
+//! the nodes and integrated against the weight exactly:
+//!
+//! ```text
+//! I1_R = ∫_0^1 P(σ)(σ + k²)^{−3/2} dv + ∫_0^1 r(σ)(σ + k²)^{−3/2} dv,   r = b − P,
+//! I2_R = ∫_0^1 σ P(σ)(σ + k²)^{−3/2} dv + ∫_0^1 σ r(σ)(σ + k²)^{−3/2} dv.
+//! ```
+//!
+//! The remainder vanishes like σ^J at v = 0, which damps the peak of the weight: 12 nodes and
+//! J = 8 give ≤ 2·10⁻¹⁶ for every k ≤ 1 (the hardest k are 0.1–0.9, where the peak is neither
+//! resolved nor negligible). The Taylor coefficients come from the rationalised form of b
+//! (binomial series of its two square roots divided by a cubic, 14 operations a coefficient;
+//! checked against the recurrence (36) composed with σ/(1 + σ) in the unit tests). The
+//! polynomial's integrals are formed by expanding P about the branch point,
+//! P = P(−k²) + (σ + k²)Q(σ) (synthetic division), so that only the moments
+//! N_j = ∫ v^{2j}(v² + k²)^{−1/2} dv enter, with N_0 = asinh(1/k) and the upward recurrence
+//! N_j = (√(1 + k²) − (2j − 1)k² N_{j−1})/(2j) (stable: each step multiplies the inherited error by
+//! (2j − 1)k²/(2j) < 1), and M_0 = ∫(v² + k²)^{−3/2} dv = 1/(k²√(1 + k²)):
+//!
+//! ```text
+//! ∫ P W3 = P(−k²) M_0 + Σ q_i N_i,   ∫ σ P W3 = −k² P(−k²) M_0 + P(−k²) N_0 + Σ q_i N_{i+1}.
+//! ```
+//!
+//! Near k = 1 these sums cancel like √J·log J (P(−1) grows like √J); at `f64` and double-double
+//! (J = 8, 14) that costs under 2ε, above double-double they are formed at the guard precision
+//! [`Real::Wide`] and rounded once.
+//!
+//! **Derivatives.** ∂/∂k is taken under the integral sign on the same nodes (G is evaluated once
+//! per node): ∂u^{−3/2}/∂k = −3ksu^{−5/2} on the left, whose pole (value 3kε²a0/(1 − k²ε²)) is
+//! subtracted the same way, and ∂(σ + k²)^{−3/2}/∂k = −3k(σ + k²)^{−5/2} on the right, where
+//! ∫ P W5 = P(−k²) P_0 + ∫ Q W3 and ∫ σ P W5 = −k² P(−k²) P_0 + P(−k²) M_0 + ∫ σ Q W3 with
+//! P_0 = ∫(v² + k²)^{−5/2} dv = (2 + 3k²)/(3k⁴(1 + k²)^{3/2}).
+//!
+//! **Cost per node.** G is evaluated in a form with the factors 1/(1 + s) cleared,
+//! G(t)√(1 + s)·2π = (2/m1)·√(p − γc)·D'/Q' with p = 1 + s, D' = (2p − c)² + 4p√((p − γc)(s + δ²))
+//! and Q' = c² − (m2 + m3)c p + m2m3 p², so that a left node costs two square roots and one
+//! division, a right node three and one, and about 25 multiplications and additions. The node
+//! loops carry no dependence from one node to the next (the weighted sums are taken afterwards),
+//! so that at `f64` the compiler vectorises them (two nodes per SSE2 instruction).
+//!
+//! **Many k.** [`FastSetup`] keeps the k-independent part (G at every node, the Taylor
+//! coefficients): each further k costs one square root and one division per node.
+//!
+//! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 2^−40 ≤ k ≤ 1. For k > 1 the peak of Δ⁻³ (width 1/k)
+//! moves to α = 0, on top of the Rayleigh pole, and b's expansion would have to be about w = 0
+//! where G's branch point limits its radius to δ²; this route does not handle it and returns
+//! [`Error::Domain`] (callers fall back to the adaptive [`crate::routes::direct::quadrature`]).
+//!
+//! **Accuracy.** The node counts are fixed functions of the working precision
+//! ([`RuleSizes::for_bits`]), chosen so that the truncation error is below 1ε over the whole
+//! domain; [`FastRule::bound_eps`] = 16 is the a-priori bound on the relative error of I1 and I2
+//! in units of ε, checked against the adaptive route at 400 bits over ν ∈ {−0.9, 0, 0.25, 0.5},
+//! M_R ∈ {0, 0.3, 0.7, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {10⁻⁶, 10⁻⁴, 0.01, 0.1, 0.3, 0.5, 0.7, 1}
+//! (`tests/fast.rs`): worst 2.8ε at `f64` (6·10⁻¹⁶), 5.5ε at double-double, 1.9ε and 2.8ε at
+//! MPFR 128 and 256 bits. The derivatives: worst 47ε at `f64` (10⁻¹⁴), 53ε at double-double
+//! (near k = 1, M_R = 0, where the closed forms of the (σ + k²)^{−5/2} moments cancel most; no
+//! guard precision is spent on them below MPFR), 2.3ε at MPFR 128 bits.
+
+use super::{AxisRatio, Integrals, Method};
+use crate::error::{Error, Result};
+use crate::numerics::quadrature::{cached, GaussLegendre};
+use crate::physics::{Material, Speed};
+use crate::scalar::{short, Dd, Field, Real};
+use std::any::{Any, TypeId};
+use std::ops::Deref;
+use std::sync::{Arc, OnceLock};
+
+// ---------------------------------------------------------------------------------------------
+// Rule sizes and the per-precision rule
+
+/// The sizes of the fixed rules of the fast route.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct RuleSizes {
+    /// Gauss–Legendre nodes on the left half (w = tan α ∈ [0, 1]).
+    pub left: usize,
+    /// Gauss–Legendre nodes on the right half (v = cot α ∈ [0, 1]).
+    pub right: usize,
+    /// Taylor terms J of b(σ) subtracted on the right half.
+    pub taylor: usize,
+}
+
+impl RuleSizes {
+    /// The sizes for a working precision of `bits` bits, chosen so that the truncation error of
+    /// each half is below 1ε (measured convergence: the left half gains 2.3 bits a node in its
+    /// worst case, ν = 1/2 and M_R → 1; the right half about 4 bits a node with J ≈ 0.13·bits
+    /// Taylor terms, worst for k between 0.1 and 0.9).
+    ///
+    /// 53 bits (`f64`): 20, 12, J = 8; 106 bits (double-double): 44, 26, J = 14; otherwise
+    /// ⌈0.433·bits⌉ − 2, ⌈0.24·bits⌉ + 1, J = ⌈0.13·bits⌉ (256 bits: 109, 63, 34).
+    pub fn for_bits(bits: u32) -> RuleSizes {
+        let b = bits.max(24) as usize;
+        match b {
+            53 => RuleSizes {
+                left: 20,
+                right: 12,
+                taylor: 8,
+            },
+            106 => RuleSizes {
+                left: 44,
+                right: 26,
+                taylor: 14,
+            },
+            _ => RuleSizes {
+                left: (b * 433).div_ceil(1000) - 2,
+                right: (b * 24).div_ceil(100) + 1,
+                taylor: (b * 13).div_ceil(100),
+            },
+        }
+    }
+
+    /// Integrand evaluations per call (G is evaluated once per node).
+    pub fn nodes(&self) -> usize {
+        self.left + self.right
+    }
+}
+
+/// The nodes of one half on [0, 1] with the node-only quantities the integrands use.
+#[derive(Debug)]
+struct Half<T> {
+    /// s = node² (w² on the left, σ = v² on the right).
+    s: Vec<T>,
+    /// p = 1 + s, 2p, 4p.
+    p: Vec<T>,
+    two_p: Vec<T>,
+    four_p: Vec<T>,
+    /// The weight ω and ω·s.
+    w: Vec<T>,
+    ws: Vec<T>,
+}
+
+impl<T: Real> Half<T> {
+    /// The rule on [0, 1] from the symmetric n-point Gauss–Legendre rule on [−1, 1]: nodes
+    /// (1 ± x)/2, weights ω/2.
+    fn new(n: usize, p: T::Prec) -> Result<Self> {
+        let gl = GaussLegendre::<T>::get(n, p)?;
+        let one = T::one(p);
+        let half = T::from_ratio(1, 2, p);
+        let mut pts: Vec<(T, T)> = Vec::with_capacity(n);
+        for (x, w) in gl.nodes().iter().zip(gl.weights()) {
+            let hw = w.clone() * &half;
+            if x.is_zero() {
+                pts.push((half.clone(), hw));
+            } else {
+                pts.push(((one.clone() - x) * &half, hw.clone()));
+                pts.push(((one.clone() + x) * &half, hw));
+            }
+        }
+        pts.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+        let s: Vec<T> = pts.iter().map(|(x, _)| x.square()).collect();
+        let pp: Vec<T> = s.iter().map(|s| one.clone() + s).collect();
+        let two_p: Vec<T> = pp.iter().map(|x| x.clone().mul_i64(2)).collect();
+        let four_p: Vec<T> = pp.iter().map(|x| x.clone().mul_i64(4)).collect();
+        let w: Vec<T> = pts.into_iter().map(|(_, w)| w).collect();
+        let ws: Vec<T> = w.iter().zip(&s).map(|(w, s)| w.clone() * s).collect();
+        Ok(Half {
+            s,
+            p: pp,
+            two_p,
+            four_p,
+            w,
+            ws,
+        })
+    }
+
+    fn len(&self) -> usize {
+        self.s.len()
+    }
+}
+
+/// The fixed rules of the fast route at one precision: nodes and weights on [0, 1] for both
+/// halves, with the node-only quantities precomputed, and the exact rational constants of the
+/// Taylor coefficients of b and of the moment recurrences. Built once per precision and cached
+/// (a static slot for `f64` and double-double, so that a call takes no lock; the shared rule
+/// cache for MPFR).
+#[derive(Debug)]
+pub struct FastRule<T: Real> {
+    prec: T::Prec,
+    sizes: RuleSizes,
+    left: Half<T>,
+    right: Half<T>,
+    /// The binomial coefficients β_l of √(1 − z) = Σ β_l z^l, l < J.
+    sqrt_binomial: Vec<T>,
+    /// 1/(2j) and (2j − 1)/(2j) for j = 1..=J (index j − 1): the N_j recurrence.
+    inv_2j: Vec<T>,
+    ratio_2j: Vec<T>,
+    bound_eps: u32,
+}
+
+/// A borrowed or shared [`FastRule`].
+pub enum RuleRef<T: Real + 'static> {
+    /// A rule in a static slot (`f64`, double-double).
+    Static(&'static FastRule<T>),
+    /// A rule from the shared cache (MPFR).
+    Shared(Arc<FastRule<T>>),
+}
+
+impl<T: Real> Deref for RuleRef<T> {
+    type Target = FastRule<T>;
+    fn deref(&self) -> &FastRule<T> {
+        match self {
+            RuleRef::Static(r) => r,
+            RuleRef::Shared(r) => r,
+        }
+    }
+}
+
+type Slot<T> = OnceLock<Result<FastRule<T>>>;
+
+/// The static slot of a fixed-precision type, if `T` is one.
+fn static_slot<T: Real>() -> Option<&'static Slot<T>> {
+    static F64: Slot<f64> = OnceLock::new();
+    static DD: Slot<Dd> = OnceLock::new();
+    let any: &'static dyn Any = if TypeId::of::<T>() == TypeId::of::<f64>() {
+        &F64
+    } else if TypeId::of::<T>() == TypeId::of::<Dd>() {
+        &DD
+    } else {
+        return None;
+    };
+    any.downcast_ref::<Slot<T>>()
+}
+
+impl<T: Real> FastRule<T> {
+    /// The rule for precision `p` with the sizes of [`RuleSizes::for_bits`], built on first use
+    /// and cached for the life of the process.
+    pub fn get(p: T::Prec) -> Result<RuleRef<T>> {
+        if let Some(slot) = static_slot::<T>() {
+            return match slot.get_or_init(|| Self::build(Self::default_sizes(p), p)) {
+                Ok(r) => Ok(RuleRef::Static(r)),
+                Err(e) => Err(e.clone()),
+            };
+        }
+        cached(
+            0,
+            p,
+            |r: &Self| r.prec,
+            || Self::build(Self::default_sizes(p), p),
+        )
+        .map(RuleRef::Shared)
+    }
+
+    fn default_sizes(p: T::Prec) -> RuleSizes {
+        RuleSizes::for_bits(T::bits(p))
+    }
+
+    /// A rule with explicit sizes (not cached): for convergence studies and calibration.
+    pub fn build(sizes: RuleSizes, p: T::Prec) -> Result<Self> {
+        if sizes.left == 0 || sizes.right == 0 {
+            return Err(Error::Domain {
+                name: "fast route node count",
+                value: format!("{}/{}", sizes.left, sizes.right),
+                bound: ">= 1",
+            });
+        }
+        let left = Half::new(sizes.left, p)?;
+        let right = Half::new(sizes.right, p)?;
+        let j_max = sizes.taylor;
+        // β_0 = 1, β_{l+1} = β_l (2l − 1)/(2l + 2).
+        let mut sqrt_binomial = Vec::with_capacity(j_max);
+        let mut beta = T::one(p);
+        for l in 0..j_max as i64 {
+            sqrt_binomial.push(beta.clone());
+            beta = beta.mul_i64(2 * l - 1).div_i64(2 * l + 2);
+        }
+        let inv_2j = (1..=j_max as i64)
+            .map(|j| T::from_ratio(1, 2 * j, p))
+            .collect();
+        let ratio_2j = (1..=j_max as i64)
+            .map(|j| T::from_ratio(2 * j - 1, 2 * j, p))
+            .collect();
+        Ok(FastRule {
+            prec: p,
+            sizes,
+            left,
+            right,
+            sqrt_binomial,
+            inv_2j,
+            ratio_2j,
+            bound_eps: bound_eps_for(T::bits(p)),
+        })
+    }
+
+    /// The sizes of this rule.
+    pub fn sizes(&self) -> RuleSizes {
+        self.sizes
+    }
+
+    /// The precision of this rule.
+    pub fn prec(&self) -> T::Prec {
+        self.prec
+    }
+
+    /// The a-priori bound on the relative error of I1 and I2, in units of ε of the working
+    /// precision, valid on the whole domain of the route for the default sizes (calibrated in
+    /// `tests/fast.rs`; see the module docs).
+    pub fn bound_eps(&self) -> u32 {
+        self.bound_eps
+    }
+}
+
+/// The a-priori error bound in ε for the default sizes: 16ε at every precision. Measured over
+/// the test grid (`tests/fast.rs`): at most 2.8ε at `f64`, 5.5ε at double-double, 1.9ε and 2.8ε at
+/// MPFR 128 and 256 bits (1.4ε at 512 bits on a sub-grid); the truncation error of the default
+/// rules is below 1ε everywhere on the domain (module docs), the rest is rounding.
+fn bound_eps_for(_bits: u32) -> u32 {
+    16
+}
+
+// ---------------------------------------------------------------------------------------------
+// Constants of one (material, speed)
+
+/// Constants that depend on the material and the speed but not on k.
+#[derive(Clone, Debug)]
+struct SpeedConsts<T: Real> {
+    /// 2/m1.
+    two_over_m1: T,
+    /// c = m1 M_R², c², (m2 + m3)·c, m2 + m3, m2 m3.
+    c: T,
+    c2: T,
+    sc: T,
+    s23: T,
+    q: T,
+    /// 1 − γc and δ² = 1 − c.
+    a1: T,
+    d2: T,
+    /// ε², and the closed-form pole integrals atan(1/ε)/ε and 1 − ε atan(1/ε).
+    eps2: T,
+    pole_t: T,
+    pole_1: T,
+    /// 2π G(1) M_R = a0 (1 − k²ε²)^{3/2}.
+    g0: T,
+}
+
+impl<T: Real> SpeedConsts<T> {
+    fn new(mat: &Material<T>, speed: &Speed<T>) -> Self {
+        let p = speed.mr.prec();
+        let one = T::one(p);
+        let roots = mat.roots();
+        let m1 = roots.m1.clone();
+        let gamma = mat.gamma().clone();
+        let c = speed.m2sq.clone();
+        let s23 = roots.sum23.clone();
+        let q = roots.prod23.clone();
+        let two_over_m1 = T::from_i64(2, p) / &m1;
+        let a1 = one.clone() - gamma.clone() * &c;
+        let d2 = one.clone() - &c;
+        let eps2 = speed.one_minus_mr2.clone();
+        // The pole is subtracted only when it is near the interval (ε ≤ 1/2, i.e. M_R ≥ √3/2);
+        // farther out the plain rule converges as fast, and for M_R → 0, k → 1 the pole at
+        // w = iε would meet the branch point of u^{−3/2} at w = i/k, where a0 is unbounded.
+        let near = eps2.clone().mul_i64(4) <= one;
+        let (g0, pole_t, pole_1) = if near {
+            let eps = eps2.clone().sqrt();
+            let at = one.clone().atan2(&eps);
+            let pole_t = at.clone() / &eps;
+            let pole_1 = one.clone() - eps * at;
+            // a(−ε²) with M_R factored out: p = M², p − γc = M²(1 − γm1),
+            // s + δ² = M²(1 − m1), so a0 u0^{3/2} =
+            // (2/m1) M √(1 − γm1) [(2 − m1)² + 4√((1 − γm1)(1 − m1))]/(m1² − S m1 + q).
+            let g1 = one.clone() - gamma * &m1;
+            let b1 = one.clone() - &m1;
+            let two_m1 = T::from_i64(2, p) - &m1;
+            let d1 = two_m1.square() + (g1.clone() * &b1).sqrt().mul_i64(4);
+            let q1 = m1.clone() * (m1.clone() - &s23) + &q;
+            let g0 = two_over_m1.clone() * &speed.mr * g1.sqrt() * d1 / q1;
+            (g0, pole_t, pole_1)
+        } else {
+            (T::zero(p), T::zero(p), T::zero(p))
+        };
+        SpeedConsts {
+            c2: c.square(),
+            sc: s23.clone() * &c,
+            two_over_m1,
+            c,
+            s23,
+            q,
+            a1,
+            d2,
+            eps2,
+            pole_t,
+            pole_1,
+            g0,
+        }
+    }
+}
+
+/// The Taylor coefficients b_j (j < J) of b(σ) at σ = 0, from its rationalised form
+/// b = (2/m1) N(σ)/(Q'(σ)(1 + ε²σ)) with
+/// N = (2 + (2 − c)σ)² √(1 + (1 − γc)σ) + 4(1 + σ)(1 + (1 − γc)σ) √(1 + δ²σ): the binomial series
+/// of the two square roots (coefficients β_l(−a)^l, β_l those of √(1 − z)) multiplied by the
+/// quadratics, then divided by the cubic d0 + d1σ + d2σ² + d3σ³ = Q'(σ)(1 + ε²σ) term by term,
+/// b_j = ((2/m1)N_j − d1 b_{j−1} − d2 b_{j−2} − d3 b_{j−3})/d0. The roots of the cubic are
+/// σ = −1/ε² and σ = m/(c − m) for the Rayleigh roots m = m2, m3, all of modulus ≥ 1 (equality only
+/// at M_R = 0, a triple root at −1), so the division is stable (errors grow at most like j² at
+/// M_R = 0). About 14 operations a coefficient; the value at σ = 0 is b_0 = 2(1 − ν).
+fn taylor_b<T: Real>(sc: &SpeedConsts<T>, rule: &FastRule<T>, out: &mut [T]) {
+    let j_max = out.len();
+    if j_max == 0 {
+        return;
+    }
+    let p = sc.c.prec();
+    let zero = T::zero(p);
+    let four = T::from_i64(4, p);
+    // Numerator quadratics: (2 + e1σ)² = 4 + 4e1σ + e1²σ², 4(1 + σ)(1 + a1σ) = 4 + 4(1 + a1)σ + 4a1σ².
+    let e1 = T::from_i64(2, p) - &sc.c;
+    let na = [four.clone(), e1.clone().mul_i64(4), e1.square()];
+    let nb = [
+        four,
+        (T::one(p) + &sc.a1).mul_i64(4),
+        sc.a1.clone().mul_i64(4),
+    ];
+    // Denominator: Q'(σ) = q + (2q − Sc)σ + (c² − Sc + q)σ², times (1 + ε²σ).
+    let q0 = sc.q.clone();
+    let q1 = sc.q.clone().mul_i64(2) - &sc.sc;
+    let q2 = sc.c2.clone() - &sc.sc + &sc.q;
+    let inv_d0 = q0.clone().recip();
+    let g = [
+        (q1.clone() + sc.eps2.clone() * &q0) * &inv_d0,
+        (q2.clone() + sc.eps2.clone() * &q1) * &inv_d0,
+        sc.eps2.clone() * &q2 * &inv_d0,
+    ];
+    let f = sc.two_over_m1.clone() * inv_d0;
+    let (minus_a1, minus_d2) = (-sc.a1.clone(), -sc.d2.clone());
+    let (mut pa, mut pb) = (T::one(p), T::one(p));
+    // Histories: α_{j−1}, α_{j−2}; B_{j−1}, B_{j−2}; b_{j−1}, b_{j−2}, b_{j−3}.
+    let (mut al, mut bl) = ([zero.clone(), zero.clone()], [zero.clone(), zero.clone()]);
+    let mut bh = [zero.clone(), zero.clone(), zero];
+    for (j, out_j) in out.iter_mut().enumerate() {
+        let beta = &rule.sqrt_binomial[j];
+        let a = beta.clone() * &pa;
+        let b = beta.clone() * &pb;
+        let n = na[0].clone() * &a
+            + na[1].clone() * &al[0]
+            + na[2].clone() * &al[1]
+            + nb[0].clone() * &b
+            + nb[1].clone() * &bl[0]
+            + nb[2].clone() * &bl[1];
+        let bj = f.clone() * n
+            - &(g[0].clone() * &bh[0] + g[1].clone() * &bh[1] + g[2].clone() * &bh[2]);
+        *out_j = bj.clone();
+        pa *= &minus_a1;
+        pb *= &minus_d2;
+        al = [a, al[0].clone()];
+        bl = [b, bl[0].clone()];
+        bh = [bj, bh[0].clone(), bh[1].clone()];
+    }
+}
+
+/// The moments N_j = ∫_0^1 v^{2j}(v² + k²)^{−1/2} dv (j = 0..n.len()) by the upward recurrence
+/// N_0 = asinh(1/k), N_j = (√(1 + k²) − (2j − 1)k² N_{j−1})/(2j) (each step multiplies the
+/// inherited error by (2j − 1)k²/(2j) < 1), and the closed forms M_0 = ∫(v² + k²)^{−3/2} dv =
+/// 1/(k²√(1 + k²)), P_0 = ∫(v² + k²)^{−5/2} dv = (2 + 3k²)/(3k⁴(1 + k²)^{3/2}), returned as
+/// (M_0, P_0).
+fn moments<T: Real>(k: &T, k2: &T, inv_2j: &[T], ratio_2j: &[T], n: &mut [T]) -> (T, T) {
+    let p = k.prec();
+    let one = T::one(p);
+    let opk2 = one.clone() + k2;
+    let r1 = opk2.clone().sqrt();
+    let m0 = (k2.clone() * &r1).recip();
+    // N_0 = asinh(1/k) = ln((1 + √(1 + k²))/k).
+    let mut nj = ((one + &r1) / k).ln();
+    for j in 0..n.len() {
+        if j > 0 {
+            nj = r1.clone() * &inv_2j[j - 1] - k2.clone() * &ratio_2j[j - 1] * &nj;
+        }
+        n[j] = nj.clone();
+    }
+    // P_0 = M_0 (2 + 3k²)/(3k²(1 + k²)).
+    let p0 = m0.clone() * (T::from_i64(2, p) + k2.clone().mul_i64(3)) / (opk2 * k2).mul_i64(3);
+    (m0, p0)
+}
+
+/// Synthetic division by σ − x0: P(σ) = P(x0) + (σ − x0) Q(σ) for P = Σ b_j σ^j; writes the
+/// coefficients of Q (ascending, `q.len() = b.len() − 1`) and returns P(x0).
+fn synthetic_division<T: Real>(b: &[T], x0: &T, q: &mut [T]) -> T {
+    let Some((last, rest)) = b.split_last() else {
+        return T::zero(x0.prec());
+    };
+    let mut acc = last.clone();
+    for i in (0..rest.len()).rev() {
+        q[i] = acc.clone();
+        acc = acc * x0 + &rest[i];
+    }
+    acc
+}
+
+/// ∫_0^1 P(σ)(σ + k²)^{−3/2} dv and ∫_0^1 σ P(σ)(σ + k²)^{−3/2} dv for the polynomial
+/// P = Σ_{j<J} b_j σ^j, exactly: expanded about the branch point, P = P(−k²) + (σ + k²) Q(σ),
+/// they are P(−k²) M_0 + Σ q_i N_i and −k² P(−k²) M_0 + P(−k²) N_0 + Σ q_i N_{i+1}. Only the
+/// stable N_j enter (the M_j = N_{j−1} − k² M_{j−1} recurrence is neutral at k = 1 and would
+/// accumulate J² ε there). `q` is scratch of length J − 1.
+fn poly_moments<T: Real>(b: &[T], k2: &T, n: &[T], m0: &T, q: &mut [T]) -> (T, T, T) {
+    let p = k2.prec();
+    if b.is_empty() {
+        return (T::zero(p), T::zero(p), T::zero(p));
+    }
+    let x0 = -k2.clone();
+    let pv = synthetic_division(b, &x0, q);
+    let mut s1 = pv.clone() * m0;
+    let mut s2 = pv.clone() * &n[0] - (k2.clone() * &pv) * m0;
+    for (i, qi) in q.iter().enumerate() {
+        s1 += qi.clone() * &n[i];
+        s2 += qi.clone() * &n[i + 1];
+    }
+    (s1, s2, pv)
+}
+
+/// The closed-form parts of the right half: ∫ P W3, ∫ σ P W3 and, when `dk`, ∫ P W5, ∫ σ P W5
+/// (P the subtracted Taylor polynomial, W_m = (σ + k²)^{−m/2}, integrals over v ∈ [0, 1]).
+/// With P = P(−k²) + (σ + k²) Q: ∫ P W5 = P(−k²) P_0 + ∫ Q W3 and
+/// ∫ σ P W5 = −k² P(−k²) P_0 + P(−k²) M_0 + ∫ σ Q W3. `scratch` holds 3J values.
+fn right_closed_forms<T: Real>(
+    b: &[T],
+    k: &T,
+    k2: &T,
+    inv_2j: &[T],
+    ratio_2j: &[T],
+    dk: bool,
+    scratch: &mut [T],
+) -> [T; 4] {
+    let p = k.prec();
+    let j_max = b.len();
+    let (n, rest) = scratch.split_at_mut(j_max + 1);
+    let (q, rest) = rest.split_at_mut(j_max.saturating_sub(1));
+    let q2 = &mut rest[..j_max.saturating_sub(2)];
+    let (m0, p0) = moments(k, k2, inv_2j, ratio_2j, n);
+    let (s1, s2, pv) = poly_moments(b, k2, n, &m0, q);
+    if !dk {
+        return [s1, s2, T::zero(p), T::zero(p)];
+    }
+    let (t1, t2, _) = poly_moments(q, k2, n, &m0, q2);
+    let kpv = k2.clone() * &pv;
+    let d1 = pv.clone() * &p0 + &t1;
+    let d2 = pv * &m0 - &(kpv * &p0) + &t2;
+    [s1, s2, d1, d2]
+}
+
+/// [`right_closed_forms`] at the working precision, or, above double-double, at the guard
+/// precision [`Real::Wide`] (≥ 2·bits + 32) and rounded once: the expansion of P about the
+/// branch point −k² cancels like √J·log J when k → 1 (P(−1) and the quotient grow like √J while
+/// the integrals stay O(1)), about 15ε at 256 bits (J = 34) in working precision. At `f64` and
+/// double-double (J = 8, 14) the cancellation costs under 2ε and no guard precision is used.
+fn right_closed_forms_guarded<T: Real, const N: usize>(
+    rule: &FastRule<T>,
+    b: &[T],
+    kc: &KConsts<T>,
+    dk: bool,
+) -> [T; 4] {
+    let p = rule.prec;
+    let j_max = b.len();
+    let len = 3 * j_max + 1;
+    if T::bits(p) <= 106 {
+        let mut scratch = Buf::<T, N>::zeros(len, p);
+        return right_closed_forms(
+            b,
+            &kc.k,
+            &kc.k2,
+            &rule.inv_2j,
+            &rule.ratio_2j,
+            dk,
+            &mut scratch,
+        );
+    }
+    let pw = T::wide_prec(p);
+    let kw = kc.k.to_wide(pw);
+    let k2w = kw.square();
+    let bw: Vec<T::Wide> = b.iter().map(|x| x.to_wide(pw)).collect();
+    let inv: Vec<T::Wide> = (1..=j_max as i64)
+        .map(|j| T::Wide::from_ratio(1, 2 * j, pw))
+        .collect();
+    let ratio: Vec<T::Wide> = (1..=j_max as i64)
+        .map(|j| T::Wide::from_ratio(2 * j - 1, 2 * j, pw))
+        .collect();
+    let mut scratch = vec![T::Wide::zero(pw); len];
+    let r = right_closed_forms(&bw, &kw, &k2w, &inv, &ratio, dk, &mut scratch);
+    r.map(|x| T::from_wide(&x, p))
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scratch buffers: on the stack for f64 and double-double, on the heap for MPFR.
+
+/// A slice of `n` values: inline (capacity `N`) for `f64` and double-double, on the heap for
+/// MPFR (whose values allocate anyway) and for counts above `N`.
+enum Buf<T, const N: usize> {
+    Inline([T; N], usize),
+    Heap(Vec<T>),
+}
+
+impl<T: Real, const N: usize> Buf<T, N> {
+    #[inline(always)]
+    fn zeros(n: usize, p: T::Prec) -> Self {
+        if n == 0 {
+            Buf::Heap(Vec::new())
+        } else if n <= N && T::bits(p) <= 106 {
+            Buf::Inline(std::array::from_fn(|_| T::zero(p)), n)
+        } else {
+            Buf::Heap(vec![T::zero(p); n])
+        }
+    }
+}
+
+impl<T, const N: usize> Deref for Buf<T, N> {
+    type Target = [T];
+    #[inline(always)]
+    fn deref(&self) -> &[T] {
+        match self {
+            Buf::Inline(a, n) => &a[..*n],
+            Buf::Heap(v) => v,
+        }
+    }
+}
+
+impl<T, const N: usize> std::ops::DerefMut for Buf<T, N> {
+    #[inline(always)]
+    fn deref_mut(&mut self) -> &mut [T] {
+        match self {
+            Buf::Inline(a, n) => &mut a[..*n],
+            Buf::Heap(v) => v,
+        }
+    }
+}
+
+/// Σ wᵢ xᵢ: with four interleaved partial sums at `f64` (at most 20 terms; the independent
+/// chains overlap in the processor), pairwise above (error ~log₂ n ε instead of n ε for the 40
+/// to 400 terms of the higher-precision rules).
+fn dot<T: Real>(w: &[T], x: &[T]) -> T {
+    let n = w.len().min(x.len());
+    let p = w[0].prec();
+    if T::bits(p) <= 53 {
+        let zero = T::zero(p);
+        let mut acc = [zero.clone(), zero.clone(), zero.clone(), zero];
+        let (wc, xc) = (w[..n].chunks_exact(4), x[..n].chunks_exact(4));
+        let (wr, xr) = (wc.remainder(), xc.remainder());
+        for (a, b) in wc.zip(xc) {
+            for j in 0..4 {
+                acc[j] += a[j].clone() * &b[j];
+            }
+        }
+        for (j, (a, b)) in wr.iter().zip(xr).enumerate() {
+            acc[j] += a.clone() * b;
+        }
+        let [a0, a1, a2, a3] = acc;
+        (a0 + &a1) + &(a2 + &a3)
+    } else if n <= 8 {
+        let mut acc = T::zero(p);
+        for (a, b) in w[..n].iter().zip(&x[..n]) {
+            acc += a.clone() * b;
+        }
+        acc
+    } else {
+        let h = n / 2;
+        dot(&w[..h], &x[..h]) + dot(&w[h..n], &x[h..n])
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The result and the k-dependent constants
+
+/// I1, I2 with their derivatives with respect to the axis ratio k (for Newton's method on the
+/// ellipse equation (33)).
+#[derive(Clone, Debug)]
+pub struct IntegralsDk<T: Real> {
+    /// I1, I2, the error estimate (relative, for I1 and I2), the method and the work.
+    pub integrals: Integrals<T>,
+    /// dI1/dk.
+    pub di1_dk: T,
+    /// dI2/dk.
+    pub di2_dk: T,
+}
+
+/// The k-dependent constants shared by both evaluation paths.
+struct KConsts<T: Real> {
+    k: T,
+    k2: T,
+    /// a0 = g0 (1 − k²ε²)^{−3/2}, and e0 = ε² a0/(1 − k²ε²) (the pole value of the k-derivative
+    /// of the left integrand, divided by 3k).
+    a0: T,
+    e0: T,
+}
+
+/// The domain of the route in k: [2^−40, 1].
+fn check_axes<T: Real>(axes: &AxisRatio<T>) -> Result<()> {
+    let p = axes.k.prec();
+    if axes.k > T::one(p) || axes.k < T::from_ratio(1, 1 << 40, p) {
+        return Err(Error::Domain {
+            name: "axis ratio k for the fast route",
+            value: short(&axes.k),
+            bound: "[2^-40, 1]",
+        });
+    }
+    Ok(())
+}
+
+impl<T: Real> KConsts<T> {
+    fn new(sc: &SpeedConsts<T>, axes: &AxisRatio<T>) -> Self {
+        let p = axes.k.prec();
+        let (a0, e0) = if sc.g0.is_zero() {
+            (T::zero(p), T::zero(p))
+        } else {
+            // u0 = 1 − k²ε² ≥ 3/4 here (k ≤ 1, ε² ≤ 1/4).
+            let u0 = T::one(p) - axes.k2.clone() * &sc.eps2;
+            let su0 = u0.clone().sqrt();
+            let a0 = sc.g0.clone() / (u0.clone() * &su0);
+            let e0 = sc.eps2.clone() * &a0 / &u0;
+            (a0, e0)
+        };
+        KConsts {
+            k: axes.k.clone(),
+            k2: axes.k2.clone(),
+            a0,
+            e0,
+        }
+    }
+}
+
+/// The node values of the two halves, weighted sums still to be taken: R and R' on the left,
+/// r W3 and r W5 on the right (see the module docs).
+struct NodeValues<'a, T> {
+    left: &'a [T],
+    left_dk: &'a [T],
+    right: &'a [T],
+    right_dk: &'a [T],
+}
+
+/// Weighted sums of the node values, with the closed-form parts: the pole integrals on the left,
+/// the moments of the Taylor polynomial on the right.
+fn combine<T: Real, const N: usize>(
+    rule: &FastRule<T>,
+    sc: &SpeedConsts<T>,
+    kc: &KConsts<T>,
+    b: &[T],
+    v: &NodeValues<'_, T>,
+    dk: bool,
+) -> Result<IntegralsDk<T>> {
+    let p = rule.prec;
+    let (l, r) = (&rule.left, &rule.right);
+    // Left: I2_L = a0 atan(1/ε)/ε + Σω R, I1_L = a0 (1 − ε atan(1/ε)) + Σωs R.
+    let i2l = kc.a0.clone() * &sc.pole_t + &dot(&l.w, v.left);
+    let i1l = kc.a0.clone() * &sc.pole_1 + &dot(&l.ws, v.left);
+    // Right: ∫ P W3 + Σω r W3, ∫ σ P W3 + Σωσ r W3 (P the Taylor polynomial).
+    let [s1, s2, sd1, sd2] = right_closed_forms_guarded::<T, N>(rule, b, kc, dk);
+    let i1r = dot(&r.w, v.right) + &s1;
+    let i2r = dot(&r.ws, v.right) + &s2;
+    let i1 = i1l + &i1r;
+    let i2 = i2l + &i2r;
+    for (what, x) in [("fast route: I1", &i1), ("fast route: I2", &i2)] {
+        if !x.is_finite() || !x.is_positive() {
+            return Err(Error::NoConvergence {
+                what,
+                iterations: 0,
+                reached: short(x),
+            });
+        }
+    }
+    let (di1, di2) = if dk {
+        // Left: dI2_L = 3k (e0 atan(1/ε)/ε − Σω R'), dI1_L = 3k (e0 (1 − ε atan(1/ε)) − Σωs R').
+        let three_k = kc.k.clone().mul_i64(3);
+        let d2l = (kc.e0.clone() * &sc.pole_t - &dot(&l.w, v.left_dk)) * &three_k;
+        let d1l = (kc.e0.clone() * &sc.pole_1 - &dot(&l.ws, v.left_dk)) * &three_k;
+        // Right: dI_R = −3k (∫ P W5 + Σω r W5) (and with σ).
+        let s1 = dot(&r.w, v.right_dk) + &sd1;
+        let s2 = dot(&r.ws, v.right_dk) + &sd2;
+        (d1l - &(s1 * &three_k), d2l - &(s2 * &three_k))
+    } else {
+        (T::zero(p), T::zero(p))
+    };
+    Ok(IntegralsDk {
+        integrals: Integrals {
+            i1,
+            i2,
+            error_estimate: T::epsilon(p).mul_i64(rule.bound_eps as i64),
+            method: Method::Subtracted,
+            work: rule.sizes.nodes(),
+        },
+        di1_dk: di1,
+        di2_dk: di2,
+    })
+}
+
+// ---------------------------------------------------------------------------------------------
+// One-shot evaluation: every node quantity computed once, k included. The loops carry no
+// dependence from one node to the next (sums are taken afterwards), so that at f64 they compile
+// to straight-line code the processor overlaps (and the compiler may vectorise).
+
+/// Left node values R = (a(s) − a0)/(s + ε²) and, when `dk`, R' = (s a(s)/u + ε² a0/u0)/(s + ε²),
+/// with a(s) = (2/m1) D' √((p − γc)u)/(Q' u²) (module docs): two square roots and one
+/// division per node.
+fn left_values<T: Real>(
+    h: &Half<T>,
+    sc: &SpeedConsts<T>,
+    kc: &KConsts<T>,
+    out: &mut [T],
+    out_dk: &mut [T],
+) {
+    let one = T::one(sc.c.prec());
+    let n = h.len();
+    let nodes = h.s[..n]
+        .iter()
+        .zip(&h.p[..n])
+        .zip(&h.two_p[..n])
+        .zip(&h.four_p[..n]);
+    // N = (2/m1) D' √(e1 u), Q'u², h = s + ε².
+    let node = |s: &T, pp: &T, twop: &T, fourp: &T| {
+        let e1 = s.clone() + &sc.a1;
+        let e2 = s.clone() + &sc.d2;
+        let sq1 = (e1.clone() * e2).sqrt();
+        let t = twop.clone() - &sc.c;
+        let dd = t.square() + fourp.clone() * sq1;
+        let qq = (sc.q.clone() * pp - &sc.sc) * pp + &sc.c2;
+        let u = one.clone() + kc.k2.clone() * s;
+        let nn = sc.two_over_m1.clone() * dd * (e1 * &u).sqrt();
+        let hh = s.clone() + &sc.eps2;
+        let qu2 = qq * &u * &u;
+        (nn, qu2, u, hh)
+    };
+    if out_dk.is_empty() {
+        for ((((s, pp), twop), fourp), r) in nodes.zip(out.iter_mut()) {
+            let (nn, qu2, _, hh) = node(s, pp, twop, fourp);
+            *r = (nn - kc.a0.clone() * &qu2) / (qu2 * hh);
+        }
+    } else {
+        for (((((s, pp), twop), fourp), r), dr) in nodes.zip(out.iter_mut()).zip(out_dk.iter_mut())
+        {
+            let (nn, qu2, u, hh) = node(s, pp, twop, fourp);
+            // inv = 1/(Q' u³ h): A/u = N h inv, R = (N − a0 Q'u²) u inv, 1/h = Q'u³ inv.
+            let qu3 = qu2.clone() * &u;
+            let inv = (qu3.clone() * &hh).recip();
+            *r = (nn.clone() - kc.a0.clone() * &qu2) * &u * &inv;
+            let au = nn * hh * &inv;
+            *dr = (s.clone() * au + &kc.e0) * qu3 * inv;
+        }
+    }
+}
+
+/// Right node values r W3 = (b(σ) − Σ_{j<J} b_j σ^j)(σ + k²)^{−3/2} and, when `dk`,
+/// r W5 = r W3/(σ + k²), with b(σ) = (2/m1)√(1 + (1 − γc)σ) D'/(Q'(1 + ε²σ)) (module docs).
+/// `out` must hold the Taylor polynomial at the nodes on entry.
+fn right_values<T: Real>(
+    h: &Half<T>,
+    sc: &SpeedConsts<T>,
+    kc: &KConsts<T>,
+    out: &mut [T],
+    out_dk: &mut [T],
+) {
+    let one = T::one(sc.c.prec());
+    let n = h.len();
+    let nodes = h.s[..n]
+        .iter()
+        .zip(&h.p[..n])
+        .zip(&h.two_p[..n])
+        .zip(&h.four_p[..n]);
+    // b(σ) = N_b/E, W3 = 1/(hq √hq): r W3 = (N_b − poly·E)/(E hq √hq), 1/hq = E √hq inv.
+    let node = |sg: &T, pp: &T, twop: &T, fourp: &T| {
+        let cs = sc.c.clone() * sg;
+        let f1 = one.clone() + sc.a1.clone() * sg;
+        let f2 = one.clone() + sc.d2.clone() * sg;
+        let sq1 = (f1.clone() * f2).sqrt();
+        let t = twop.clone() - &cs;
+        let dd = t.square() + fourp.clone() * sq1;
+        let qq = (sc.q.clone() * pp - sc.s23.clone() * &cs) * pp + cs.square();
+        let e = qq * (one.clone() + sc.eps2.clone() * sg);
+        let nb = sc.two_over_m1.clone() * f1.sqrt() * dd;
+        let hq = sg.clone() + &kc.k2;
+        let sh = hq.clone().sqrt();
+        let inv = (e.clone() * &hq * &sh).recip();
+        (nb, e, sh, inv)
+    };
+    if out_dk.is_empty() {
+        for ((((sg, pp), twop), fourp), r) in nodes.zip(out.iter_mut()) {
+            let (nb, e, _, inv) = node(sg, pp, twop, fourp);
+            *r = (nb - r.clone() * &e) * inv;
+        }
+    } else {
+        for (((((sg, pp), twop), fourp), r), dr) in nodes.zip(out.iter_mut()).zip(out_dk.iter_mut())
+        {
+            let (nb, e, sh, inv) = node(sg, pp, twop, fourp);
+            let rw3 = (nb - r.clone() * &e) * &inv;
+            *dr = rw3.clone() * inv * e * sh;
+            *r = rw3;
+        }
+    }
+}
+
+/// The Taylor polynomial Σ_{j<J} b_j σ^j at every node (Horner, one pass per coefficient so that
+/// the inner loop runs over the nodes).
+fn taylor_poly<T: Real>(b: &[T], s: &[T], out: &mut [T]) {
+    let Some((last, rest)) = b.split_last() else {
+        return;
+    };
+    for o in out.iter_mut() {
+        *o = last.clone();
+    }
+    for bj in rest.iter().rev() {
+        for (o, x) in out.iter_mut().zip(s) {
+            *o = o.clone() * x + bj;
+        }
+    }
+}
+
+fn one_shot<T: Real, const N: usize>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axes: &AxisRatio<T>,
+    rule: &FastRule<T>,
+    dk: bool,
+) -> Result<IntegralsDk<T>> {
+    check_axes(axes)?;
+    let p = rule.prec;
+    let sc = SpeedConsts::new(mat, speed);
+    let kc = KConsts::new(&sc, axes);
+    let (nl, nr) = (rule.left.len(), rule.right.len());
+    let mut b = Buf::<T, N>::zeros(rule.sizes.taylor, p);
+    taylor_b(&sc, rule, &mut b);
+    let mut left = Buf::<T, N>::zeros(nl, p);
+    let mut left_dk = Buf::<T, N>::zeros(if dk { nl } else { 0 }, p);
+    let mut right = Buf::<T, N>::zeros(nr, p);
+    let mut right_dk = Buf::<T, N>::zeros(if dk { nr } else { 0 }, p);
+    left_values(&rule.left, &sc, &kc, &mut left, &mut left_dk);
+    taylor_poly(&b, &rule.right.s, &mut right);
+    right_values(&rule.right, &sc, &kc, &mut right, &mut right_dk);
+    let v = NodeValues {
+        left: &left,
+        left_dk: &left_dk,
+        right: &right,
+        right_dk: &right_dk,
+    };
+    combine::<T, N>(rule, &sc, &kc, &b, &v, dk)
+}
+
+/// [`one_shot`] with inline buffers sized for the rule: 24 values at `f64`, 48 at
+/// double-double (heap buffers beyond, and for MPFR).
+fn run<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axes: &AxisRatio<T>,
+    rule: &FastRule<T>,
+    dk: bool,
+) -> Result<IntegralsDk<T>> {
+    let n = rule
+        .left
+        .len()
+        .max(rule.right.len())
+        .max(3 * rule.sizes.taylor + 1);
+    if n <= 32 {
+        one_shot::<T, 32>(mat, speed, axes, rule, dk)
+    } else {
+        one_shot::<T, 48>(mat, speed, axes, rule, dk)
+    }
+}
+
+/// I1, I2 of (34) in the normalisation of (37) by the fast route (see the module docs), with
+/// the default rule of the working precision.
+///
+/// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 2^−40 ≤ k ≤ 1, else [`Error::Domain`]. Accuracy: relative
+/// error of I1 and I2 below [`FastRule::bound_eps`]·ε, reported as `error_estimate` (at `f64`
+/// 32ε ≈ 7e-15; measured ≤ 4ε). Work: [`RuleSizes::nodes`] evaluations of G (32 at `f64`), no
+/// allocation at `f64` and double-double once the rule is built. The method reported is
+/// [`Method::Subtracted`] (a fixed-rule form of the singularity-subtracted quadrature).
+pub fn integrals<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axes: &AxisRatio<T>,
+) -> Result<Integrals<T>> {
+    let rule = FastRule::<T>::get(axes.k.prec())?;
+    run(mat, speed, axes, &rule, false).map(|r| r.integrals)
+}
+
+/// I1, I2 (as [`integrals`]) and dI1/dk, dI2/dk, differentiated under the integral sign on the
+/// same nodes (see the module docs). The derivatives' relative error is not bounded by the
+/// reported estimate (which is for I1, I2): measured ≤ 47ε at `f64`, ≤ 53ε at double-double
+/// (near k = 1, M_R = 0), ≤ 3ε at MPFR; tested ≤ 128ε. Cost: about 15 % more than [`integrals`].
+pub fn integrals_with_dk<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axes: &AxisRatio<T>,
+) -> Result<IntegralsDk<T>> {
+    let rule = FastRule::<T>::get(axes.k.prec())?;
+    run(mat, speed, axes, &rule, true)
+}
+
+/// As [`integrals_with_dk`] with an explicit rule (from [`FastRule::build`]): for convergence
+/// studies. The reported `error_estimate` is the default rule's bound and does not apply to
+/// smaller rules.
+pub fn integrals_with_rule<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    axes: &AxisRatio<T>,
+    rule: &FastRule<T>,
+) -> Result<IntegralsDk<T>> {
+    run(mat, speed, axes, rule, true)
+}
+
+// ---------------------------------------------------------------------------------------------
+// The k-independent part, kept for many axis ratios
+
+/// The part of the fast route that does not depend on the axis ratio k, for one material and
+/// speed: G at every node (as the factors below), the Taylor coefficients of b and the right
+/// remainders. Each further k then costs one square root and one division per node and the
+/// closed forms (one logarithm): the evaluation Newton's method on the ellipse equation (33)
+/// repeats. Results agree with [`integrals_with_dk`] to a few ε (the same rule, the factors
+/// grouped differently) and carry the same error bound.
+#[derive(Debug)]
+pub struct FastSetup<T: Real + 'static> {
+    rule: RuleRef<T>,
+    sc: SpeedConsts<T>,
+    b: Vec<T>,
+    /// Left: L = (2/m1) D' √(p − γc) (so that a(s) = L/(Q' u^{3/2})), Q', 1/(s + ε²).
+    left_l: Vec<T>,
+    left_q: Vec<T>,
+    left_ih: Vec<T>,
+    /// Right: r = b(σ) − Σ_{j<J} b_j σ^j.
+    right_r: Vec<T>,
+}
+
+impl<T: Real> std::fmt::Debug for RuleRef<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "RuleRef({:?})", self.sizes)
+    }
+}
+
+impl<T: Real> FastSetup<T> {
+    /// Precomputes the k-independent part for `mat` and `speed` with the default rule of the
+    /// working precision (cost about that of one [`integrals`] call).
+    pub fn new(mat: &Material<T>, speed: &Speed<T>) -> Result<Self> {
+        let p = speed.mr.prec();
+        let rule = FastRule::<T>::get(p)?;
+        let sc = SpeedConsts::new(mat, speed);
+        let mut b = vec![T::zero(p); rule.sizes.taylor];
+        taylor_b(&sc, &rule, &mut b);
+        let one = T::one(p);
+        let l = &rule.left;
+        let n = l.len();
+        let (mut left_l, mut left_q, mut left_ih) = (
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+            Vec::with_capacity(n),
+        );
+        for i in 0..n {
+            let (s, pp) = (&l.s[i], &l.p[i]);
+            let e1 = s.clone() + &sc.a1;
+            let e2 = s.clone() + &sc.d2;
+            let sq1 = (e1.clone() * e2).sqrt();
+            let t = l.two_p[i].clone() - &sc.c;
+            let dd = t.square() + l.four_p[i].clone() * sq1;
+            left_q.push((sc.q.clone() * pp - &sc.sc) * pp + &sc.c2);
+            left_l.push(sc.two_over_m1.clone() * dd * e1.sqrt());
+            left_ih.push((s.clone() + &sc.eps2).recip());
+        }
+        let r = &rule.right;
+        let mut right_r = vec![T::zero(p); r.len()];
+        taylor_poly(&b, &r.s, &mut right_r);
+        for (i, ri) in right_r.iter_mut().enumerate() {
+            let (sg, pp) = (&r.s[i], &r.p[i]);
+            let cs = sc.c.clone() * sg;
+            let f1 = one.clone() + sc.a1.clone() * sg;
+            let f2 = one.clone() + sc.d2.clone() * sg;
+            let sq1 = (f1.clone() * f2).sqrt();
+            let t = r.two_p[i].clone() - &cs;
+            let dd = t.square() + r.four_p[i].clone() * sq1;
+            let qq = (sc.q.clone() * pp - sc.s23.clone() * &cs) * pp + cs.square();
+            let e = qq * (one.clone() + sc.eps2.clone() * sg);
+            let bi = sc.two_over_m1.clone() * f1.sqrt() * dd / e;
+            *ri = bi - &*ri;
+        }
+        Ok(FastSetup {
+            rule,
+            sc,
+            b,
+            left_l,
+            left_q,
+            left_ih,
+            right_r,
+        })
+    }
+
+    /// I1, I2 at the axis ratio `axes` (same domain and accuracy as [`integrals`]).
+    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Integrals<T>> {
+        self.run(axes, false).map(|r| r.integrals)
+    }
+
+    /// I1, I2, dI1/dk, dI2/dk at the axis ratio `axes` (as [`integrals_with_dk`]).
+    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<IntegralsDk<T>> {
+        self.run(axes, true)
+    }
+
+    fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<IntegralsDk<T>> {
+        let n = self
+            .left_l
+            .len()
+            .max(self.right_r.len())
+            .max(3 * self.b.len() + 1);
+        if n <= 32 {
+            self.eval::<32>(axes, dk)
+        } else {
+            self.eval::<48>(axes, dk)
+        }
+    }
+
+    fn eval<const N: usize>(&self, axes: &AxisRatio<T>, dk: bool) -> Result<IntegralsDk<T>> {
+        check_axes(axes)?;
+        let rule = &*self.rule;
+        let p = rule.prec;
+        let kc = KConsts::new(&self.sc, axes);
+        let one = T::one(p);
+        let (nl, nr) = (rule.left.len(), rule.right.len());
+        let mut left = Buf::<T, N>::zeros(nl, p);
+        let mut left_dk = Buf::<T, N>::zeros(if dk { nl } else { 0 }, p);
+        let mut right = Buf::<T, N>::zeros(nr, p);
+        let mut right_dk = Buf::<T, N>::zeros(if dk { nr } else { 0 }, p);
+        let ls = &rule.left.s[..nl];
+        let lnodes = ls
+            .iter()
+            .zip(&self.left_l[..nl])
+            .zip(&self.left_q[..nl])
+            .zip(&self.left_ih[..nl]);
+        if dk {
+            for ((((s, l), q), ih), (r, dr)) in lnodes.zip(left.iter_mut().zip(left_dk.iter_mut()))
+            {
+                // a = L/(Q u √u); inv = 1/(Q u² √u): a = L u inv, a/u = L inv.
+                let u = one.clone() + kc.k2.clone() * s;
+                let su = u.clone().sqrt();
+                let inv = (q.clone() * &u * &u * su).recip();
+                let au = l.clone() * inv;
+                let a = au.clone() * u;
+                *r = (a - &kc.a0) * ih;
+                *dr = (s.clone() * au + &kc.e0) * ih;
+            }
+        } else {
+            for ((((s, l), q), ih), r) in lnodes.zip(left.iter_mut()) {
+                let u = one.clone() + kc.k2.clone() * s;
+                let su = u.clone().sqrt();
+                let a = l.clone() / (q.clone() * &u * su);
+                *r = (a - &kc.a0) * ih;
+            }
+        }
+        let rnodes = rule.right.s[..nr].iter().zip(&self.right_r[..nr]);
+        if dk {
+            for ((sg, rr), (o, od)) in rnodes.zip(right.iter_mut().zip(right_dk.iter_mut())) {
+                // W3 = 1/(hq √hq), 1/hq = W3 √hq.
+                let hq = sg.clone() + &kc.k2;
+                let sh = hq.clone().sqrt();
+                let w3 = (hq * &sh).recip();
+                let rw3 = rr.clone() * &w3;
+                *od = rw3.clone() * w3 * sh;
+                *o = rw3;
+            }
+        } else {
+            for ((sg, rr), o) in rnodes.zip(right.iter_mut()) {
+                let hq = sg.clone() + &kc.k2;
+                let sh = hq.clone().sqrt();
+                *o = rr.clone() / (hq * sh);
+            }
+        }
+        let v = NodeValues {
+            left: &left,
+            left_dk: &left_dk,
+            right: &right,
+            right_dk: &right_dk,
+        };
+        combine::<T, N>(rule, &self.sc, &kc, &self.b, &v, dk)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::routes::coefficients::GreenSeries;
+    use crate::scalar::{Mp, MpPrec};
+    use rug::Rational;
+
+    /// b_j by an independent route at 512 bits: the coefficients c_l of g (recurrence (36),
+    /// `GreenSeries`, scale x0 = c) composed with y = σ/(1 + σ) and (1 + σ)^{−1/2}:
+    /// b = 2 Σ_l c_l σ^l (1 + σ)^{−l−1/2}. With each b_j, the sum of the moduli of its terms.
+    fn composed_b(nu: f64, mr: f64, j_max: usize) -> Vec<(rug::Float, f64)> {
+        let p = MpPrec::new(512).unwrap();
+        let mat = Material::new(Mp::from_f64(nu, p)).unwrap();
+        let sp = mat.speed(Mp::from_f64(mr, p)).unwrap();
+        let c = GreenSeries::new(mat.nu(), sp.m2sq.clone()).take(j_max);
+        (0..j_max)
+            .map(|j| {
+                let mut sum = Mp::zero(p);
+                let mut scale = 0.0;
+                for (l, cl) in c.iter().enumerate().take(j + 1) {
+                    // 2 (−1)^m (l + 1/2)_m / m!, m = j − l.
+                    let mut e = Rational::from(2);
+                    for m in 0..(j - l) {
+                        e *= Rational::from((-(2 * (l + m) as i64 + 1), 2 * m as i64 + 2));
+                    }
+                    let t = Mp::from_float(&rug::Float::with_val(600, &e), p) * cl;
+                    scale += t.to_f64().abs();
+                    sum += t;
+                }
+                (sum.to_float(512), scale)
+            })
+            .collect()
+    }
+
+    fn check_taylor<T: Real>(p: T::Prec, tol_eps: f64) {
+        let rule = FastRule::<T>::get(p).unwrap();
+        let j_max = rule.sizes().taylor;
+        for (nu, mr) in [(0.25, 0.625), (-0.9, 0.99), (0.5, 0.0), (0.5, 0.999)] {
+            let want = composed_b(nu, mr, j_max);
+            let mat = Material::new(T::from_f64(nu, p)).unwrap();
+            let sp = mat.speed(T::from_f64(mr, p)).unwrap();
+            let sc = SpeedConsts::new(&mat, &sp);
+            let mut b = vec![T::zero(p); j_max];
+            taylor_b(&sc, &rule, &mut b);
+            // b_j may cancel (which does not matter: the same polynomial is subtracted at the
+            // nodes and integrated exactly); its error is measured against its terms, and may
+            // grow like j² (the triple root of the divisor at M_R = 0).
+            let eps = T::epsilon(p).to_f64();
+            for (j, (got, (w, scale))) in b.iter().zip(&want).enumerate() {
+                let d = rug::Float::with_val(600, got.to_float(600) - w);
+                let e = d.abs().to_f64() / scale / eps;
+                let tol = tol_eps * (1 + j * j) as f64;
+                assert!(e <= tol, "nu={nu} M_R={mr} b_{j}: {e:.1} eps");
+            }
+        }
+    }
+
+    #[test]
+    fn taylor_coefficients_match_the_recurrence_36() {
+        check_taylor::<f64>((), 16.0);
+        check_taylor::<Dd>((), 16.0);
+        check_taylor::<Mp>(MpPrec::new(256).unwrap(), 16.0);
+    }
+
+    #[test]
+    fn moments_match_quadrature() {
+        // N_j against adaptive quadrature of v^{2j}(v² + k²)^{−1/2} at 128 bits.
+        let p = MpPrec::new(128).unwrap();
+        for k in [(1, 1000), (3, 10), (1, 1)] {
+            let kk = Mp::from_ratio(k.0, k.1, p);
+            let k2 = kk.square();
+            let inv: Vec<Mp> = (1..=12).map(|j| Mp::from_ratio(1, 2 * j, p)).collect();
+            let ratio: Vec<Mp> = (1..=12)
+                .map(|j| Mp::from_ratio(2 * j - 1, 2 * j, p))
+                .collect();
+            let mut n = vec![Mp::zero(p); 12];
+            let (m0, p0) = moments(&kk, &k2, &inv, &ratio, &mut n);
+            let pts = [
+                Mp::zero(p),
+                kk.clone().min_of(Mp::from_ratio(1, 2, p)),
+                Mp::one(p),
+            ];
+            let lim = crate::numerics::quadrature::Limits::default();
+            let tol = Mp::epsilon(p);
+            let q = |f: &dyn Fn(&Mp) -> Mp| {
+                crate::numerics::quadrature::integrate(f, &pts, &tol, lim)
+                    .unwrap()
+                    .value
+            };
+            for (j, nj) in n.iter().enumerate() {
+                let want = q(&|v: &Mp| v.powi(2 * j as i64) / (v.square() + &k2).sqrt());
+                assert!(
+                    ((nj.clone() - &want) / &want).abs() < Mp::epsilon(p).mul_i64(64),
+                    "N_{j} k={k:?}"
+                );
+            }
+            let w = |m: i64| q(&|v: &Mp| (v.square() + &k2).powi(-m) / (v.square() + &k2).sqrt());
+            assert!(((m0 - w(1)) / w(1)).abs() < Mp::epsilon(p).mul_i64(16));
+            assert!(((p0 - w(2)) / w(2)).abs() < Mp::epsilon(p).mul_i64(16));
+        }
+    }
+}

@@ -1,0 +1,67 @@
+//! The fast route allocates nothing per call at `f64` and double-double once its rule is built
+//! (a counting allocator wraps the system one in this test binary; the count is per thread, so
+//! tests running in parallel do not disturb each other).
+
+use moving_hertz::physics::Material;
+use moving_hertz::routes::fast::{self, FastSetup};
+use moving_hertz::routes::AxisRatio;
+use moving_hertz::scalar::{Dd, Real};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+struct Counting;
+
+thread_local! {
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+// SAFETY: every call is forwarded unchanged to the system allocator; the thread-local counter
+// is a const-initialised `Cell` and does not allocate.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
+        System.alloc(layout)
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        System.dealloc(ptr, layout)
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+fn allocations() -> usize {
+    ALLOCATIONS.with(|c| c.get())
+}
+
+fn no_allocation<T: Real>(p: T::Prec) {
+    let mat = Material::new(T::from_ratio(1, 4, p)).unwrap();
+    let speed = mat.speed(T::from_ratio(99, 100, p)).unwrap();
+    // The counter works: the setup keeps its node values in vectors.
+    let before = allocations();
+    let setup = FastSetup::new(&mat, &speed).unwrap();
+    assert!(allocations() > before);
+    for k in [(1, 1_000_000), (3, 10), (1, 1)] {
+        let axes = AxisRatio::new(T::from_ratio(k.0, k.1, p)).unwrap();
+        // Warm up: builds and caches the rule (and the Gauss–Legendre nodes).
+        fast::integrals_with_dk(&mat, &speed, &axes).unwrap();
+        let before = allocations();
+        let a = fast::integrals(&mat, &speed, &axes).unwrap();
+        let b = fast::integrals_with_dk(&mat, &speed, &axes).unwrap();
+        let c = setup.integrals_with_dk(&axes).unwrap();
+        let after = allocations();
+        assert_eq!(
+            after - before,
+            0,
+            "k = {k:?}: {} allocations",
+            after - before
+        );
+        assert!(a.i1.is_finite() && b.di2_dk.is_finite() && c.integrals.i2.is_finite());
+    }
+}
+
+#[test]
+fn no_allocation_per_call_at_f64_and_double_double() {
+    no_allocation::<f64>(());
+    no_allocation::<Dd>(());
+}
