@@ -49,7 +49,7 @@ pub fn ellipse(args: &Args) -> Result<(), String> {
                 ("e".into(), s(sol.e.to_decimal())),
                 ("I1".into(), s(ci.i1.to_decimal())),
                 ("I2".into(), s(ci.i2.to_decimal())),
-                ("method".into(), s(method.resolve().label())),
+                ("method".into(), s(sol.method.label())),
                 ("precision".into(), s(prec.label())),
                 ("error_estimate".into(), s(format!("{:.3e}", sol.error_estimate.to_f64()))),
                 ("major_axis".into(), s(sol.major.label())),

@@ -27,7 +27,7 @@ COMMANDS:
             [--method auto|series|quadrature|subtracted] [--json]
         I1, I2 of (34) in the normalisation of (37), with an error estimate; with --tol
         (and no --precision) the lowest precision reaching TOL is chosen
-  ellipse --nu NU --speed MR --ratio A1_OVER_B1 [--precision ...] [--method auto|quadrature]
+  ellipse --nu NU --speed MR --ratio A1_OVER_B1 [--precision ...] [--method auto|quadrature|fast]
           [--repeat N] [--json]
         the contact ellipse's axis ratio k = b/a (a along the motion) and eccentricity for
         the curvature ratio A1/B1 = R2/R1 (R1 along the motion, R2 across)

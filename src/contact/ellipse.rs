@@ -11,19 +11,62 @@
 //! bracket: F increases with k (checked over ν, M_R and 10^-6 ≤ A1/B1 ≤ 10^6 in
 //! `tests/ellipse.rs`), so a step leaving the bracket is replaced by bisection in λ.
 //!
-//! The start is the static solution (M_R = 0), whose ratio is k² D(e²)/(E(e²) − k² D(e²))
-//! (D = (K − E)/e²), refined by the same Newton iteration on cheap elliptic integrals.
+//! The start is Hamrock & Brewe's approximation of the static ellipse, k ≈ (A1/B1)^(2/π).
 //!
 //! **Precision ladder** ([`solve_ellipse`] with a seed): a solve at high precision is started from
 //! the `f64` root, so Newton's quadratic convergence reaches 256 bits in 2–3 steps — a few
 //! high-precision evaluations of the integrals, no search.
 
 use crate::error::{Error, Result};
-use crate::numerics::elliptic::{ellipd_mc, ellipke_mc};
 use crate::physics::{Material, Speed};
 use crate::routes::direct::{contact_integrals, ContactIntegrals};
+use crate::routes::fast::{FastSetup, IntegralsDk};
 use crate::routes::AxisRatio;
 use crate::scalar::{check_finite, short, Real};
+
+/// I1, I2 (normalisation of (37)) and their derivatives with respect to the axis ratio k at one
+/// k, with the larger relative error estimate of I1, I2 and the work spent.
+#[derive(Clone, Debug)]
+pub struct KIntegrals<T: Real> {
+    /// I1.
+    pub i1: T,
+    /// I2.
+    pub i2: T,
+    /// ∂I1/∂k.
+    pub di1_dk: T,
+    /// ∂I2/∂k.
+    pub di2_dk: T,
+    /// Relative error estimate of I1, I2.
+    pub error_estimate: T,
+    /// Integrand evaluations.
+    pub work: usize,
+}
+
+impl<T: Real> From<ContactIntegrals<T>> for KIntegrals<T> {
+    fn from(c: ContactIntegrals<T>) -> Self {
+        KIntegrals {
+            i1: c.i1,
+            i2: c.i2,
+            di1_dk: c.di1_dk,
+            di2_dk: c.di2_dk,
+            error_estimate: c.error_estimate,
+            work: c.work,
+        }
+    }
+}
+
+impl<T: Real> From<IntegralsDk<T>> for KIntegrals<T> {
+    fn from(c: IntegralsDk<T>) -> Self {
+        KIntegrals {
+            i1: c.integrals.i1,
+            i2: c.integrals.i2,
+            di1_dk: c.di1_dk,
+            di2_dk: c.di2_dk,
+            error_estimate: c.integrals.error_estimate,
+            work: c.integrals.work,
+        }
+    }
+}
 
 /// Which axis of the contact ellipse is the longer one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -53,8 +96,10 @@ pub struct EllipseShape<T: Real> {
     pub e: T,
     /// Which axis is the major one.
     pub major: MajorAxis,
-    /// The integrals at the solution (normalisation of (37)), with J0 and the k-derivatives.
-    pub integrals: ContactIntegrals<T>,
+    /// The integrals at the solution (normalisation of (37)) and their k-derivatives.
+    pub integrals: KIntegrals<T>,
+    /// The method that evaluated them.
+    pub method: EllipseMethod,
     /// Estimated relative error of k (from the integrals' error and the last Newton step).
     pub error_estimate: T,
     /// Newton iterations (integral evaluations) spent.
@@ -74,48 +119,38 @@ pub fn check_ratio<T: Real>(ratio: &T) -> Result<()> {
     Ok(())
 }
 
-/// The static ratio I2/I1 at axis ratio k: k² D/(E − k² D), D = (K − E)/e², and its logarithmic
-/// derivative d ln(ratio)/d ln k by a centred difference of the closed form.
-fn static_log_ratio<T: Real>(k: &T) -> Result<T> {
-    let k2 = k.square();
-    let d = ellipd_mc(&k2)?;
-    let (_, e) = ellipke_mc(&k2)?;
-    let kd = k2 * d;
-    Ok((kd.clone() / (e - kd)).ln())
-}
-
-/// The static solution k0 of k² D/(E − k² D) = ratio, in `f64` (a start for Newton).
+/// A start for Newton: Hamrock & Brewe's approximation of the static Hertz ellipse,
+/// k ≈ (A1/B1)^(2/π) (within a few per cent of the static k for 10^-6 ≤ A1/B1 ≤ 10^6; the
+/// speed lowers k further, which the safeguarded Newton iteration follows).
 fn static_seed(ratio: f64) -> f64 {
-    // Bisection in ln k on the monotone static ratio, 60 steps over [1e-12, 1e12].
-    let target = ratio.ln();
-    let (mut lo, mut hi) = (-27.6f64, 27.6f64);
-    for _ in 0..60 {
-        let mid = 0.5 * (lo + hi);
-        match static_log_ratio(&mid.exp()) {
-            Ok(v) if v < target => lo = mid,
-            Ok(_) => hi = mid,
-            Err(_) => break,
-        }
+    let k = ratio.powf(std::f64::consts::FRAC_2_PI);
+    if k.is_finite() && k > 0.0 {
+        k
+    } else {
+        1.0
     }
-    (0.5 * (lo + hi)).exp()
 }
 
 /// How the integrals inside the ellipse solve are evaluated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum EllipseMethod {
-    /// The cheapest available for the inputs.
+    /// The fast route wherever it applies (2^-40 ≤ k ≤ 1), the adaptive quadrature elsewhere.
     Auto,
     /// Adaptive vector quadrature of (46)–(47) and their k-derivatives
     /// ([`crate::routes::direct::contact_integrals`]).
     Quadrature,
+    /// The fixed-rule fast route ([`crate::routes::fast`]), with its k-independent part
+    /// precomputed once per solve; only for 2^-40 ≤ k ≤ 1 (a Newton iterate outside is an error).
+    Fast,
 }
 
 impl EllipseMethod {
-    /// `auto` or `quadrature`.
+    /// `auto`, `quadrature` or `fast`.
     pub fn label(&self) -> &'static str {
         match self {
             EllipseMethod::Auto => "auto",
             EllipseMethod::Quadrature => "quadrature",
+            EllipseMethod::Fast => "fast",
         }
     }
     /// Parses a label.
@@ -123,30 +158,50 @@ impl EllipseMethod {
         match s {
             "auto" => Ok(EllipseMethod::Auto),
             "quadrature" => Ok(EllipseMethod::Quadrature),
+            "fast" => Ok(EllipseMethod::Fast),
             _ => Err(Error::Parse {
                 text: s.to_string(),
-                reason: "expected auto or quadrature",
+                reason: "expected auto, quadrature or fast",
             }),
-        }
-    }
-    /// The concrete method `Auto` stands for.
-    pub fn resolve(self) -> EllipseMethod {
-        match self {
-            EllipseMethod::Auto => EllipseMethod::Quadrature,
-            m => m,
         }
     }
 }
 
-/// The integrals and k-derivatives at one axis ratio by `method`.
-fn evaluate<T: Real>(
+/// The evaluator of one solve: the fast route's precomputed k-independent part when the method
+/// allows it.
+struct Evaluator<'a, T: Real + 'static> {
     method: EllipseMethod,
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-) -> Result<ContactIntegrals<T>> {
-    match method.resolve() {
-        _ => contact_integrals(mat, speed, axes, &T::zero(axes.k.prec())),
+    fast: Option<FastSetup<T>>,
+    mat: &'a Material<T>,
+    speed: &'a Speed<T>,
+}
+
+impl<'a, T: Real> Evaluator<'a, T> {
+    fn new(method: EllipseMethod, mat: &'a Material<T>, speed: &'a Speed<T>) -> Result<Self> {
+        let fast = match method {
+            EllipseMethod::Quadrature => None,
+            EllipseMethod::Fast => Some(FastSetup::new(mat, speed)?),
+            EllipseMethod::Auto => FastSetup::new(mat, speed).ok(),
+        };
+        Ok(Evaluator {
+            method,
+            fast,
+            mat,
+            speed,
+        })
+    }
+
+    /// I1, I2 and their k-derivatives at `axes`, and the method that produced them.
+    fn eval(&self, axes: &AxisRatio<T>) -> Result<(KIntegrals<T>, EllipseMethod)> {
+        if let Some(f) = &self.fast {
+            match f.integrals_with_dk(axes) {
+                Ok(r) => return Ok((r.into(), EllipseMethod::Fast)),
+                Err(e) if self.method == EllipseMethod::Fast => return Err(e),
+                Err(_) => {}
+            }
+        }
+        let c = contact_integrals(self.mat, self.speed, axes, &T::zero(axes.k.prec()))?;
+        Ok((c.into(), EllipseMethod::Quadrature))
     }
 }
 
@@ -178,11 +233,12 @@ pub fn solve_ellipse_seeded<T: Real>(
         Some(s) if s.is_positive() && s.is_finite() => s.clone(),
         _ => T::from_f64(static_seed(ratio.to_f64()), p),
     };
-    let eval = |lnk: &T| -> Result<(T, T, ContactIntegrals<T>)> {
+    let evaluator = Evaluator::new(method, mat, speed)?;
+    let eval = |lnk: &T| -> Result<(T, T, (KIntegrals<T>, EllipseMethod))> {
         let ax = AxisRatio::new(lnk.clone().exp())?;
-        let ci = evaluate(method, mat, speed, &ax)?;
-        let f = ci.i2.clone().ln() - ci.i1.clone().ln() - &target;
-        let df = ax.k.clone() * (ci.di2_dk.clone() / &ci.i2 - ci.di1_dk.clone() / &ci.i1);
+        let ci = evaluator.eval(&ax)?;
+        let f = ci.0.i2.clone().ln() - ci.0.i1.clone().ln() - &target;
+        let df = ax.k.clone() * (ci.0.di2_dk.clone() / &ci.0.i2 - ci.0.di1_dk.clone() / &ci.0.i1);
         Ok((f, df, ci))
     };
     let eps = T::epsilon(p);
@@ -194,7 +250,7 @@ pub fn solve_ellipse_seeded<T: Real>(
     for it in 0..200 {
         let (f, df, ci) = eval(&lam)?;
         if f.is_zero() {
-            return Ok(finish(lam, ci, T::zero(p), it + 1));
+            return Ok(finish(lam.clone(), &lam, ci, T::zero(p), it + 1));
         }
         if f.is_negative() {
             lo = Some(lam.clone());
@@ -207,9 +263,13 @@ pub fn solve_ellipse_seeded<T: Real>(
         } else {
             None
         };
+        let mut was_newton = false;
         let next = match (&lo, &hi, newton) {
             // Inside the closed bracket (a converged step may land on its end).
-            (Some(l), Some(h), Some(n)) if n >= *l && n <= *h => n,
+            (Some(l), Some(h), Some(n)) if n >= *l && n <= *h => {
+                was_newton = true;
+                n
+            }
             (Some(l), Some(h), _) => (l.clone() + h).mul_pow2(-1),
             (_, _, Some(n)) => {
                 // Unbracketed: limit the step to a factor e² in k.
@@ -222,7 +282,7 @@ pub fn solve_ellipse_seeded<T: Real>(
         };
         let step = (next.clone() - &lam).abs();
         let scale = lam.clone().abs().max_of(T::one(p));
-        lam = next;
+        let lam_old = std::mem::replace(&mut lam, next);
         // Converged: the step is at rounding level, or stopped shrinking near it.
         let small = step <= scale.clone() * &eps.clone().mul_i64(4);
         let stalled = last_step
@@ -231,7 +291,16 @@ pub fn solve_ellipse_seeded<T: Real>(
         if small || stalled {
             // The integrals are those of the previous iterate, one rounding-level step away;
             // the step is part of the error estimate.
-            return Ok(finish(lam, ci, step, it + 1));
+            return Ok(finish(lam, &lam_old, ci, step, it + 1));
+        }
+        // Quadratic convergence: once Newton is converging (from a ladder seed, or after two
+        // steps), a step δ leaves an error of order δ²; stop when 64 δ² ≤ ε·scale and count
+        // 64 δ²/scale in the estimate. This saves one high-precision evaluation in the ladder.
+        let newton_phase = seed.is_some() || it >= 2;
+        if was_newton && newton_phase && step.square().mul_i64(64) <= eps.clone() * &scale.square()
+        {
+            let projected = step.square().mul_i64(64) / &scale;
+            return Ok(finish(lam, &lam_old, ci, projected, it + 1));
         }
         last_step = Some(step);
     }
@@ -242,15 +311,22 @@ pub fn solve_ellipse_seeded<T: Real>(
     })
 }
 
+/// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`:
+/// I1, I2 are carried to the new k to first order, I(k) ≈ I(k_old) + I′(k_old)(k − k_old)
+/// (error O((k − k_old)²), below the rounding level whenever the iteration stops).
 fn finish<T: Real>(
     lam: T,
-    ci: ContactIntegrals<T>,
+    lam_old: &T,
+    (mut ci, method): (KIntegrals<T>, EllipseMethod),
     last_step: T,
     iterations: usize,
 ) -> EllipseShape<T> {
     let p = lam.prec();
     let one = T::one(p);
     let k = lam.exp();
+    let dk = k.clone() - lam_old.clone().exp();
+    ci.i1 += &(ci.di1_dk.clone() * &dk);
+    ci.i2 += &(ci.di2_dk.clone() * &dk);
     let (e, major) = if k <= one {
         (((one.clone() - &k) * (one + &k)).sqrt(), MajorAxis::Along)
     } else {
@@ -266,6 +342,7 @@ fn finish<T: Real>(
         e,
         major,
         integrals: ci,
+        method,
         iterations,
     }
 }

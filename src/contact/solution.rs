@@ -21,6 +21,8 @@
 use super::ellipse::{solve_ellipse, solve_ellipse_ladder, EllipseShape};
 use crate::error::{Error, Result};
 use crate::physics::{Material, Speed};
+use crate::routes::direct::contact_integrals;
+use crate::routes::AxisRatio;
 use crate::scalar::{check_finite, short, Real};
 
 /// What fixes the size of the contact: the load P or the approach d0 (both positive).
@@ -97,6 +99,8 @@ pub fn solve_contact<T: Real>(
     };
     let ci = &shape.integrals;
     let k = shape.k.clone();
+    // J0 of (32) at the solved k, by the adaptive vector quadrature (one evaluation).
+    let j0 = contact_integrals(mat, speed, &AxisRatio::new(k.clone())?, &T::zero(p))?.j0;
     let pi = T::pi(p);
     let four_mu = mu.clone().mul_i64(4);
     let (a, load) = match loading {
@@ -106,7 +110,7 @@ pub fn solve_contact<T: Real>(
             (a3.cbrt(), pl.clone())
         }
         Loading::Approach(d0) => {
-            let a = (d0.clone() * &ci.i1 / (b1.clone() * &ci.j0)).sqrt();
+            let a = (d0.clone() * &ci.i1 / (b1.clone() * &j0)).sqrt();
             let p0 = four_mu.clone() * &a * &b1 / (k.clone() * &ci.i1);
             let b = k.clone() * &a;
             let load = pi.clone().mul_i64(2).div_i64(3) * p0 * &a * b;
@@ -115,7 +119,7 @@ pub fn solve_contact<T: Real>(
     };
     let b = k.clone() * &a;
     let p0 = load.clone().mul_i64(3) / (pi.mul_i64(2) * &a * &b);
-    let d0 = p0.clone() * &b * &ci.j0 / &four_mu;
+    let d0 = p0.clone() * &b * &j0 / &four_mu;
     // Inputs at the edge of the format (a radius of 1e-320, a load of 1e300) can overflow or
     // underflow the scaling even though each is valid: report it rather than return ∞ or 0.
     for (name, v) in [
