@@ -214,7 +214,7 @@ fn study_poisson(out: &std::path::Path) -> Result<(), String> {
 }
 
 fn study_pareto(out: &std::path::Path) -> Result<(), String> {
-    let methods = [EllipseMethod::Quadrature];
+    let methods = [EllipseMethod::Fast, EllipseMethod::Quadrature];
     let rows = pareto::run(&methods, 200.0, |what| eprintln!("pareto: {what} ..."))
         .map_err(|e| e.to_string())?;
     let csv: Vec<Vec<String>> = rows

@@ -4,19 +4,61 @@
 
 use super::median_ns;
 use super::svg::{Chart, Series, Style};
+use crate::physics::{Material, Speed};
 use crate::routes::choose::{run_at, Inputs};
-use crate::routes::Method;
+use crate::routes::series::{self, SeriesOptions};
+use crate::routes::{direct, AxisRatio, Integrals, Method};
+
+type Prepared<T> = (Material<T>, Speed<T>, AxisRatio<T>);
 use crate::scalar::{Dd, Mp, MpPrec, Precision, Real};
 use rug::Float;
 use rug::Rational;
+
+/// The routes the study compares (the crate's `Method::Subtracted` runs `Fast` where it applies
+/// and `Subtracted` otherwise; here they are measured separately).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Route {
+    /// The series (37).
+    Series,
+    /// Adaptive quadrature of (46)–(47).
+    Quadrature,
+    /// Adaptive quadrature with the subtraction (48) and S by (53).
+    Subtracted,
+    /// The fixed-rule fast route (`routes::fast`).
+    Fast,
+}
+
+impl Route {
+    /// A short label.
+    pub fn label(&self) -> &'static str {
+        match self {
+            Route::Series => "series",
+            Route::Quadrature => "quadrature",
+            Route::Subtracted => "subtracted",
+            Route::Fast => "fast",
+        }
+    }
+    /// Runs the route on inputs already rounded to the working precision (so that timings do
+    /// not include the conversion of the inputs nor the material's Rayleigh roots).
+    fn run<T: Real>(self, prepared: &Prepared<T>) -> crate::Result<Integrals<T>> {
+        let (m, s, a) = prepared;
+        let zero = T::zero(a.k.prec());
+        match self {
+            Route::Series => series::integrals(m, s, a, &SeriesOptions::default()),
+            Route::Quadrature => direct::quadrature(m, s, a, &zero),
+            Route::Subtracted => direct::subtracted(m, s, a, &zero),
+            Route::Fast => direct::fast(m, s, a),
+        }
+    }
+}
 
 /// One measurement.
 #[derive(Clone, Debug)]
 pub struct Row {
     /// M_R as text (exact decimal).
     pub mr: String,
-    /// The method.
-    pub method: Method,
+    /// The route.
+    pub method: Route,
     /// The precision.
     pub precision: Precision,
     /// Worst relative error of I1, I2 against the reference (NaN on failure).
@@ -33,8 +75,13 @@ pub struct Row {
 
 /// The speeds of the study: 0.1, 0.5, 0.9, 0.99, 0.999, 0.9999, 1 − 10^-8.
 pub const SPEEDS: [&str; 7] = ["0.1", "0.5", "0.9", "0.99", "0.999", "0.9999", "0.99999999"];
-/// The methods compared.
-pub const METHODS: [Method; 3] = [Method::Series, Method::Quadrature, Method::Subtracted];
+/// The routes compared.
+pub const METHODS: [Route; 4] = [
+    Route::Series,
+    Route::Quadrature,
+    Route::Subtracted,
+    Route::Fast,
+];
 
 /// The inputs as rounded to precision `p`, held exactly: the reference is computed for them, so
 /// that the study measures the methods' error, not the conditioning of the rounded inputs (which
@@ -58,7 +105,7 @@ fn measure<T: Real>(
     exact: &Inputs,
     p: T::Prec,
     label: Precision,
-    method: Method,
+    method: Route,
     budget_ms: f64,
 ) -> Row {
     let Ok(inputs) = rounded::<T>(exact, p) else {
@@ -68,10 +115,13 @@ fn measure<T: Real>(
         Ok(r) => r,
         Err(e) => return failed(exact, method, label, e.to_string()),
     };
-    let inputs = &inputs;
+    let prepared = match inputs.at::<T>(p) {
+        Ok(x) => x,
+        Err(e) => return failed(exact, method, label, e.to_string()),
+    };
     let reference = &reference;
     let mr = format!("{}", exact.mr.to_f64());
-    match run_at::<T>(inputs, p, method, 0.0) {
+    match method.run::<T>(&prepared) {
         Ok(r) => {
             let bits = 600;
             let err = |got: &T, want: &Float| {
@@ -79,9 +129,7 @@ fn measure<T: Real>(
                 d.abs().to_f64()
             };
             let error = err(&r.i1, &reference.0).max(err(&r.i2, &reference.1));
-            let time_ns = median_ns(budget_ms, || {
-                run_at::<T>(inputs, p, method, 0.0).map(|r| r.work)
-            });
+            let time_ns = median_ns(budget_ms, || method.run::<T>(&prepared).map(|r| r.work));
             Row {
                 mr,
                 method,
@@ -97,7 +145,7 @@ fn measure<T: Real>(
     }
 }
 
-fn failed(exact: &Inputs, method: Method, precision: Precision, why: String) -> Row {
+fn failed(exact: &Inputs, method: Route, precision: Precision, why: String) -> Row {
     Row {
         mr: format!("{}", exact.mr.to_f64()),
         method,

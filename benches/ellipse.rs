@@ -1,0 +1,43 @@
+//! The ellipse solve (33) per precision, against the targets of issue 6: f64 ≤ 2 µs for any
+//! M_R ≤ 0.9999, double-double ≤ 25× f64, MPFR 256 bits ≤ 2 ms. ν = 0.2, A1/B1 = 0.5; the
+//! material and speed are built outside the timed call (they are per-problem constants).
+//!
+//! Run: `cargo bench --bench ellipse -- --warm-up-time 1 --measurement-time 3`
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use moving_hertz::contact::ellipse::{solve_ellipse_with, EllipseMethod};
+use moving_hertz::physics::Material;
+use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
+
+fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, methods: &[EllipseMethod]) {
+    let mut g = c.benchmark_group(format!("ellipse/{label}"));
+    if T::bits(p) > 200 {
+        g.sample_size(10);
+    }
+    let mat = Material::new(T::parse("0.2", p).expect("nu")).expect("material");
+    let ratio = T::parse("0.5", p).expect("ratio");
+    for mr in ["0.5", "0.9", "0.999", "0.9999"] {
+        let sp = mat.speed(T::parse(mr, p).expect("speed")).expect("speed");
+        for &m in methods {
+            g.bench_function(format!("{}_M={mr}", m.label()), |b| {
+                b.iter(|| solve_ellipse_with(black_box(&mat), black_box(&sp), black_box(&ratio), m))
+            });
+        }
+    }
+    g.finish();
+}
+
+fn bench(c: &mut Criterion) {
+    let both = [EllipseMethod::Fast, EllipseMethod::Quadrature];
+    run::<f64>(c, "f64", (), &both);
+    run::<Dd>(c, "dd", (), &both);
+    run::<Mp>(
+        c,
+        "mpfr256",
+        MpPrec::new(256).expect("precision"),
+        &[EllipseMethod::Fast],
+    );
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
