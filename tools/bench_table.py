@@ -9,8 +9,9 @@ Reads target/criterion/<group>/<bench>/new/estimates.json (median point estimate
 (after `cargo bench --bench series -- --warm-up-time 1 --measurement-time 2`).
 """
 
-import json
 import os
+
+from criterion_table import fmt, median_ns  # shared helpers (same directory)
 import sys
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "target", "criterion")
@@ -19,17 +20,6 @@ FUNCS = ["ellipk_m=0.7", "ellipe_m=0.7", "ellipk_mc_mc=1e-12", "ellipe_mc_mc=1e-
          "ellipke_mc_mc=1e-12", "ellipf_phi=1.25,m=0.7", "ellipe_inc_phi=1.25,m=0.7"]
 
 
-def median_ns(*path):
-    with open(os.path.join(ROOT, *path, "new", "estimates.json")) as fh:
-        return json.load(fh)["median"]["point_estimate"]
-
-
-def fmt(ns):
-    if ns < 1e3:
-        return f"{ns:.1f} ns"
-    if ns < 1e6:
-        return f"{ns / 1e3:.2f} µs"
-    return f"{ns / 1e6:.2f} ms"
 
 
 def main():

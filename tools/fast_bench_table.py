@@ -5,8 +5,9 @@ Run after   cargo bench --bench fast_integrals -- --warm-up-time 0.5 --measureme
 Reads target/criterion/<group>/<bench>/new/estimates.json (median point estimates).
 """
 
-import json
 import os
+
+from criterion_table import fmt, median_ns  # shared helpers (same directory)
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "target", "criterion")
 PRECISIONS = ["f64", "dd", "mpfr128", "mpfr256"]
@@ -14,18 +15,6 @@ MRS = ["0.5", "0.9", "0.999", "1-1e-8"]
 KS = ["0.01", "0.3", "1"]
 
 
-def median_ns(group, bench):
-    path = os.path.join(ROOT, group, bench, "new", "estimates.json")
-    with open(path) as fh:
-        return json.load(fh)["median"]["point_estimate"]
-
-
-def fmt(ns):
-    if ns < 1e3:
-        return f"{ns:.0f} ns"
-    if ns < 1e6:
-        return f"{ns / 1e3:.1f} µs"
-    return f"{ns / 1e6:.2f} ms"
 
 
 def main():

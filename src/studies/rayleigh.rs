@@ -177,57 +177,44 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
             precs.push(r.precision);
         }
     }
-    for prec in &precs {
-        let near = |c: f64, method: &str, pick_m1: bool| -> Vec<(f64, f64)> {
-            let mut v: Vec<(f64, f64)> = rows
-                .iter()
-                .filter(|r| r.precision == *prec && r.method == method && (r.nu - c).abs() < 0.05)
-                .map(|r| {
-                    (
-                        (r.nu - c).abs(),
-                        if pick_m1 { r.m1 } else { r.m23 }.max(1e-2),
-                    )
-                })
-                .collect();
-            v.sort_by(|a, b| a.0.total_cmp(&b.0));
-            v
-        };
+    // The errors of one method near the point c, against |ν − c|, sorted.
+    let near = |prec: Precision, c: f64, method: &str, pick_m1: bool| -> Vec<(f64, f64)> {
+        let mut v: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.precision == prec && r.method == method && (r.nu - c).abs() < 0.05)
+            .map(|r| {
+                (
+                    (r.nu - c).abs(),
+                    if pick_m1 { r.m1 } else { r.m23 }.max(1e-2),
+                )
+            })
+            .collect();
+        v.sort_by(|a, b| a.0.total_cmp(&b.0));
+        v
+    };
+    for &prec in &precs {
+        let l = prec.label();
         merge.push(Series::new(
-            format!("real-branches {}", prec.label()),
-            near(nu_star, "real-branches", false),
+            format!("real-branches {l}"),
+            near(prec, nu_star, "real-branches", false),
             Style::LineMarkers,
         ));
         p0.push(Series::new(
-            format!("complex-cardano {}", prec.label()),
-            near(0.4, "complex-cardano", true),
+            format!("complex-cardano {l}"),
+            near(prec, 0.4, "complex-cardano", true),
             Style::LineMarkers,
         ));
     }
-    for prec in &precs {
-        let near = |c: f64, pick_m1: bool| -> Vec<(f64, f64)> {
-            let mut v: Vec<(f64, f64)> = rows
-                .iter()
-                .filter(|r| {
-                    r.precision == *prec && r.method == "default" && (r.nu - c).abs() < 0.05
-                })
-                .map(|r| {
-                    (
-                        (r.nu - c).abs(),
-                        if pick_m1 { r.m1 } else { r.m23 }.max(1e-2),
-                    )
-                })
-                .collect();
-            v.sort_by(|a, b| a.0.total_cmp(&b.0));
-            v
-        };
+    for &prec in &precs {
+        let l = prec.label();
         merge.push(Series::new(
-            format!("default {}", prec.label()),
-            near(nu_star, false),
+            format!("default {l}"),
+            near(prec, nu_star, "default", false),
             Style::Dashed,
         ));
         p0.push(Series::new(
-            format!("default {}", prec.label()),
-            near(0.4, true),
+            format!("default {l}"),
+            near(prec, 0.4, "default", true),
             Style::Dashed,
         ));
     }

@@ -53,6 +53,24 @@ pub fn rel_err_eps<T: Real>(got: &T, want: &T) -> f64 {
     (r / &T::epsilon(p)).to_f64()
 }
 
+/// SplitMix64: a small deterministic generator for test arguments.
+pub struct SplitMix(pub u64);
+
+impl SplitMix {
+    /// The next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E3779B97F4A7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58476D1CE4E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D049BB133111EB);
+        z ^ (z >> 31)
+    }
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 /// The MPFR precision token for `bits` bits.
 pub fn mp(bits: u64) -> MpPrec {
     MpPrec::new(bits).expect("valid precision")
