@@ -472,3 +472,65 @@ fn extreme_arguments() {
     assert!(((rf - &expect) / &expect).abs().to_f64() < 1e-30);
     assert_eq!(mixed_precision_events(), 0);
 }
+
+/// K, E, F(φ|m) and E(φ|m) at 512 bits against the crate's own tanh–sinh quadrature of their
+/// defining integrals ∫ (1 − m sin²θ)^(∓1/2) dθ, with 1 − m sin²θ formed as cos²θ + mc·sin²θ and
+/// cos θ = sin(π/2 − θ) taken from the distance to the end π/2 (so m → 1 keeps its digits).
+#[test]
+fn agreement_with_quadrature_at_512_bits() {
+    use moving_hertz::numerics::quadrature::{tanh_sinh_gaps, Limits};
+    let p = mp(512);
+    let one = Mp::one(p);
+    let half_pi = Mp::pi(p).mul_pow2(-1);
+    for (m_text, phi_text) in [
+        ("0.5", "1.25"),
+        ("-3.25", "0.75"),
+        ("0.999", "1.5"),
+        ("0.9999999999", "1.0"),
+    ] {
+        let m = Mp::parse(m_text, p).unwrap();
+        let mc = one.clone() - &m;
+        let phi = Mp::parse(phi_text, p).unwrap();
+        for (upper, complete) in [(half_pi.clone(), true), (phi.clone(), false)] {
+            // f(θ) with the distance of θ to the upper end available for cos near π/2.
+            let delta = |theta: &Mp, to_end: &Mp| -> Mp {
+                let s = theta.clone().sin();
+                let c = if complete {
+                    to_end.clone().sin()
+                } else {
+                    theta.clone().cos()
+                };
+                c.square() + mc.clone() * s.square()
+            };
+            let first = tanh_sinh_gaps(
+                |t: &Mp, _: &Mp, b: &Mp| delta(t, b).sqrt().recip(),
+                &[Mp::zero(p), upper.clone()],
+                &Mp::zero(p),
+                Limits::default(),
+            )
+            .unwrap();
+            let second = tanh_sinh_gaps(
+                |t: &Mp, _: &Mp, b: &Mp| delta(t, b).sqrt(),
+                &[Mp::zero(p), upper.clone()],
+                &Mp::zero(p),
+                Limits::default(),
+            )
+            .unwrap();
+            let (f, e) = if complete {
+                (ellipk(&m).unwrap(), ellipe(&m).unwrap())
+            } else {
+                (ellipf(&phi, &m).unwrap(), ellipe_inc(&phi, &m).unwrap())
+            };
+            for (name, got, q) in [("F or K", &f, &first), ("E", &e, &second)] {
+                let err = ((got.clone() - &q.value) / &q.value).abs() / Mp::epsilon(p);
+                let bound =
+                    8.0 + (q.error.clone() / q.value.clone().abs() / Mp::epsilon(p)).to_f64();
+                assert!(
+                    err.to_f64() <= bound,
+                    "m = {m_text}, phi = {phi_text}, complete = {complete}: {name} off by {} eps",
+                    err.to_f64()
+                );
+            }
+        }
+    }
+}
