@@ -244,7 +244,7 @@ fn bad_material_and_speed_inputs_are_typed_errors() {
 fn speed_ratio_round_trip() {
     // ν = 1/4 ⇔ c2/c1 = 1/√3; its Rayleigh root is the classical 2 − 2/√3.
     let mat = Material::from_speed_ratio((1.0f64 / 3.0).sqrt()).expect("material");
-    assert!((mat.nu() - 0.25).abs() < 4e-16);
+    approx::assert_abs_diff_eq!(*mat.nu(), 0.25, epsilon = 4e-16);
     let want = 2.0 - 2.0 / 3f64.sqrt();
-    assert!((mat.m1() - want).abs() <= 4.0 * f64::EPSILON * want);
+    approx::assert_relative_eq!(*mat.m1(), want, max_relative = 4.0 * f64::EPSILON);
 }

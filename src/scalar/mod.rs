@@ -28,6 +28,7 @@
 mod complex;
 mod dd;
 mod f64_impl;
+mod interop;
 mod mp;
 mod parse;
 mod rational;
