@@ -152,3 +152,75 @@ fn bad_axis_ratio_is_a_typed_error() {
         Err(Error::Domain { .. })
     ));
 }
+
+/// (52) for S1 against the crate's quadrature of (51), and the two derivative rules quoted after
+/// (53) (modulus p) against a centred difference of the crate's incomplete integrals, at 256 bits.
+#[test]
+fn closed_form_52_and_the_quoted_derivative_rules() {
+    use moving_hertz::numerics::elliptic::{ellipe_inc, ellipf};
+    use moving_hertz::numerics::quadrature::{integrate, Limits};
+    let p = common::mp(256);
+    let eps = Mp::epsilon(p);
+    let mat = Material::new(Mp::parse("0.25", p).unwrap()).unwrap();
+    for (mr, k) in [
+        ("0.5", "0.6"),
+        ("0.9", "0.3"),
+        ("0.99", "0.8"),
+        ("0.3", "0.95"),
+    ] {
+        let sp = mat.speed(Mp::parse(mr, p).unwrap()).unwrap();
+        let ax = AxisRatio::new(Mp::parse(k, p).unwrap()).unwrap();
+        let s1 = direct::s1_closed_form(&sp, &ax).unwrap();
+        // (51): ∫ cos²α / ((1 − M_R² cos²α) Δ) dα.
+        let f = |a: &Mp| {
+            let (s, c) = a.clone().sin_cos();
+            let c2 = c.square();
+            let d = (c2.clone() + ax.k2.clone() * s.square()).sqrt();
+            c2.clone() / ((Mp::one(p) - sp.mr2.clone() * &c2) * d)
+        };
+        let q = integrate(
+            f,
+            &[Mp::zero(p), Mp::pi(p).mul_pow2(-1)],
+            &Mp::zero(p),
+            Limits::default(),
+        )
+        .unwrap();
+        let e = ((s1 - &q.value) / &q.value).abs() / &eps;
+        assert!(
+            e.to_f64() <= 16.0,
+            "S1 at M_R={mr}, k={k}: {} eps",
+            e.to_f64()
+        );
+    }
+    // ∂E(β,p)/∂p = (E − F)/p;  ∂F/∂p = [E/p − (1 − p²)F/p − p sin2β/(2√(1 − p² sin²β))]/(1 − p²).
+    let beta = Mp::parse("0.7", p).unwrap();
+    for pm in ["0.6", "0.3", "0.9"] {
+        let pp = Mp::parse(pm, p).unwrap();
+        let h = Mp::one(p).mul_pow2(-60);
+        let at = |q: &Mp| {
+            (
+                ellipe_inc(&beta, &q.square()).unwrap(),
+                ellipf(&beta, &q.square()).unwrap(),
+            )
+        };
+        let (ep, fp) = at(&(pp.clone() + &h));
+        let (em, fm) = at(&(pp.clone() - &h));
+        let (e0, f0) = at(&pp);
+        let de = (ep - em) / h.clone().mul_pow2(1);
+        let df = (fp - fm) / h.clone().mul_pow2(1);
+        let one = Mp::one(p);
+        let rule_e = (e0.clone() - &f0) / &pp;
+        let sb = beta.clone().sin();
+        let root = (one.clone() - pp.square() * sb.square()).sqrt();
+        let sin2b = beta.clone().mul_pow2(1).sin();
+        let rule_f = (e0 / &pp
+            - (one.clone() - pp.square()) * f0 / &pp
+            - pp.clone() * sin2b / root.mul_pow2(1))
+            / (one - pp.square());
+        // The centred difference is accurate to h² ≈ 2^-120.
+        for (name, num, rule) in [("dE/dp", de, rule_e), ("dF/dp", df, rule_f)] {
+            let rel = ((num - &rule) / &rule).abs().to_f64();
+            assert!(rel < 1e-30, "{name} at p = {pm}: {rel:e}");
+        }
+    }
+}
