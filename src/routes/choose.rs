@@ -74,7 +74,7 @@ impl Inputs {
         if nu <= -1 || nu > Rational::from((1, 2)) {
             return Err(dom("nu (Poisson's ratio)", &nu, "(-1, 1/2]"));
         }
-        if mr < 0 || mr >= 1 {
+        if !(0..1).contains(&mr) {
             return Err(dom("speed M_R = V/c_R", &mr, "[0, 1) (sub-Rayleigh)"));
         }
         if k <= 0 {

@@ -54,11 +54,11 @@ impl num_traits::Num for Dd {
 impl num_traits::ToPrimitive for Dd {
     fn to_i64(&self) -> Option<i64> {
         let f = Field::to_f64(self);
-        (f.is_finite() && f.abs() < 9.2e18).then(|| f as i64)
+        (f.is_finite() && f.abs() < 9.2e18).then_some(f as i64)
     }
     fn to_u64(&self) -> Option<u64> {
         let f = Field::to_f64(self);
-        (f.is_finite() && (0.0..1.8e19).contains(&f)).then(|| f as u64)
+        (f.is_finite() && (0.0..1.8e19).contains(&f)).then_some(f as u64)
     }
     fn to_f64(&self) -> Option<f64> {
         Some(Field::to_f64(self))
