@@ -100,7 +100,11 @@ pub struct EllipseShape<T: Real> {
     pub integrals: KIntegrals<T>,
     /// The method that evaluated them.
     pub method: EllipseMethod,
-    /// Estimated relative error of k (from the integrals' error and the last Newton step).
+    /// Estimated relative error of k (from the integrals' error and the last Newton step), for
+    /// the inputs as represented at the working precision. Near the Rayleigh speed k is
+    /// ill-conditioned in M_R (condition number ~ 1/(2(1 − M_R))): a decimal speed such as
+    /// 0.999999 rounded to the working precision moves k by up to ε/(2(1 − M_R)) more, which
+    /// this estimate does not include (it is the input's error, not the solver's).
     pub error_estimate: T,
     /// Newton iterations (integral evaluations) spent.
     pub iterations: usize,
