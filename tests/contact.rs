@@ -247,3 +247,40 @@ fn bad_inputs_are_typed_errors() {
         Err(Error::NotFinite { .. })
     ));
 }
+
+/// A1/B1 > 1 (unseeded start above k = 1): the default solve agrees with the all-quadrature
+/// solve, and when speed brings the root below k = 1 it is found by the fast route (one
+/// evaluation at k = 1 picks the side), not by adaptive evaluations above k = 1.
+#[test]
+fn ratio_above_one_agrees_with_quadrature_and_uses_the_fast_route_below_k1() {
+    use moving_hertz::contact::ellipse::{solve_ellipse_seeded, EllipseMethod};
+    for nu in [-0.5, 0.2, 0.5] {
+        let mat = Material::new(nu).unwrap();
+        for mr in [0.0, 0.5, 0.9, 0.9999] {
+            let sp = mat.speed(mr).unwrap();
+            for ratio in [1.0, 1.5, 2.0, 10.0, 1e3] {
+                let auto = solve_ellipse_seeded(&mat, &sp, &ratio, None, EllipseMethod::Auto)
+                    .unwrap();
+                let quad =
+                    solve_ellipse_seeded(&mat, &sp, &ratio, None, EllipseMethod::Quadrature)
+                        .unwrap();
+                let rel = (auto.k / quad.k - 1.0).abs();
+                assert!(
+                    rel <= 64.0 * f64::EPSILON,
+                    "nu={nu} M_R={mr} A1/B1={ratio}: auto k {} vs quadrature {} ({rel:e})",
+                    auto.k,
+                    quad.k
+                );
+                if auto.k < 1.0 - 1e-12 {
+                    assert_eq!(
+                        auto.method,
+                        EllipseMethod::Fast,
+                        "nu={nu} M_R={mr} A1/B1={ratio}: k = {} < 1 not by the fast route",
+                        auto.k
+                    );
+                    assert!(auto.iterations <= 8, "{} iterations", auto.iterations);
+                }
+            }
+        }
+    }
+}

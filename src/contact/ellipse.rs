@@ -251,7 +251,28 @@ pub fn solve_ellipse_seeded<T: Real>(
     let mut lo: Option<T> = None;
     let mut hi: Option<T> = None;
     let mut last_step: Option<T> = None;
-    for it in 0..200 {
+    let mut spent = 0;
+    // An unseeded start above k = 1 (A1/B1 > 1): at speed the root may still lie below k = 1,
+    // where the fast route applies, while iterates above it would pay adaptive evaluations. One
+    // evaluation at k = 1 (fast) tells the side; below, Newton starts from k = 1 with the bracket
+    // end at λ = 0.
+    if seed.is_none() && method != EllipseMethod::Quadrature && lam.is_positive() {
+        let zero = T::zero(p);
+        let (f, df, _) = eval(&zero)?;
+        spent = 1;
+        if f.is_negative() {
+            lo = Some(zero);
+        } else {
+            let two = T::from_i64(2, p);
+            lam = if df.is_positive() && df.is_finite() {
+                (-(f / &df)).max_of(-two)
+            } else {
+                -two
+            };
+            hi = Some(zero);
+        }
+    }
+    for it in spent..200 {
         let (f, df, ci) = eval(&lam)?;
         if f.is_zero() {
             return Ok(finish(lam.clone(), &lam, ci, T::zero(p), it + 1));
@@ -279,7 +300,13 @@ pub fn solve_ellipse_seeded<T: Real>(
                 // Unbracketed: limit the step to a factor e² in k.
                 let two = T::from_i64(2, p);
                 let step = n - &lam;
-                lam.clone() + step.clone().min_of(two.clone()).max_of(-two)
+                let next = lam.clone() + step.clone().min_of(two.clone()).max_of(-two);
+                // Never past a known end of the bracket.
+                match (&lo, &hi) {
+                    (Some(l), _) if next <= *l => (lam.clone() + l).mul_pow2(-1),
+                    (_, Some(h)) if next >= *h => (lam.clone() + h).mul_pow2(-1),
+                    _ => next,
+                }
             }
             (Some(_), None, None) => lam.clone() + T::one(p),
             (None, _, None) => lam.clone() - T::one(p),
