@@ -259,11 +259,10 @@ fn ratio_above_one_agrees_with_quadrature_and_uses_the_fast_route_below_k1() {
         for mr in [0.0, 0.5, 0.9, 0.9999] {
             let sp = mat.speed(mr).unwrap();
             for ratio in [1.0, 1.5, 2.0, 10.0, 1e3] {
-                let auto = solve_ellipse_seeded(&mat, &sp, &ratio, None, EllipseMethod::Auto)
+                let auto =
+                    solve_ellipse_seeded(&mat, &sp, &ratio, None, EllipseMethod::Auto).unwrap();
+                let quad = solve_ellipse_seeded(&mat, &sp, &ratio, None, EllipseMethod::Quadrature)
                     .unwrap();
-                let quad =
-                    solve_ellipse_seeded(&mat, &sp, &ratio, None, EllipseMethod::Quadrature)
-                        .unwrap();
                 let rel = (auto.k / quad.k - 1.0).abs();
                 assert!(
                     rel <= 64.0 * f64::EPSILON,

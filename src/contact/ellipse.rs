@@ -21,6 +21,7 @@ use crate::error::{Error, Result};
 use crate::physics::{Material, Speed};
 use crate::routes::direct::{contact_integrals, ContactIntegrals};
 use crate::routes::fast::{FastSetup, IntegralsDk};
+use crate::routes::graded;
 use crate::routes::AxisRatio;
 use crate::scalar::{check_finite, short, Real};
 
@@ -138,13 +139,15 @@ fn static_seed(ratio: f64) -> f64 {
 /// How the integrals inside the ellipse solve are evaluated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum EllipseMethod {
-    /// The fast route wherever it applies (2^-40 ≤ k ≤ 1), the adaptive quadrature elsewhere.
+    /// The fixed-rule routes wherever they apply (the fast route for 2^-40 ≤ k ≤ 1, the graded
+    /// panels for 1 < k ≤ 2^40), the adaptive quadrature elsewhere.
     Auto,
     /// Adaptive vector quadrature of (46)–(47) and their k-derivatives
     /// ([`crate::routes::direct::contact_integrals`]).
     Quadrature,
-    /// The fixed-rule fast route ([`crate::routes::fast`]), with its k-independent part
-    /// precomputed once per solve; only for 2^-40 ≤ k ≤ 1 (a Newton iterate outside is an error).
+    /// The fixed-rule routes: [`crate::routes::fast`] for 2^-40 ≤ k ≤ 1, with its k-independent
+    /// part precomputed once per solve, and [`crate::routes::graded`] for 1 < k ≤ 2^40 (a Newton
+    /// iterate outside 2^-40 ≤ k ≤ 2^40 is an error).
     Fast,
 }
 
@@ -198,7 +201,13 @@ impl<'a, T: Real> Evaluator<'a, T> {
     /// I1, I2 and their k-derivatives at `axes`, and the method that produced them.
     fn eval(&self, axes: &AxisRatio<T>) -> Result<(KIntegrals<T>, EllipseMethod)> {
         if let Some(f) = &self.fast {
-            match f.integrals_with_dk(axes) {
+            // k > 1: the graded fixed panels ([`crate::routes::graded`]) instead.
+            let r = if axes.k > T::one(axes.k.prec()) {
+                graded::integrals_with_dk(self.mat, self.speed, axes)
+            } else {
+                f.integrals_with_dk(axes)
+            };
+            match r {
                 Ok(r) => return Ok((r.into(), EllipseMethod::Fast)),
                 Err(e) if self.method == EllipseMethod::Fast => return Err(e),
                 Err(_) => {}

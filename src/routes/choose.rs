@@ -12,8 +12,8 @@
 //! 2. picks the method: for k ≤ 1 the direct quadrature with the singular parts subtracted, run
 //!    by the fixed-rule fast route ([`crate::routes::fast`], [`direct::fast`]) when its a-priori
 //!    bound (16ε) is within the tolerance, else by the adaptive (48) with S by (53); for k > 1 the
-//!    series (section 5) where it needs few terms (slow speeds), otherwise the plain adaptive
-//!    quadrature;
+//!    plain quadrature, by the graded fixed panels ([`crate::routes::graded`]) when their bound
+//!    (32ε) is within the tolerance, else adaptive;
 //! 3. runs it, and accepts the result when its error estimate plus the input-rounding term κ·ε is
 //!    within the tolerance; otherwise it moves up one precision and tries again (at most three
 //!    times) before returning [`Error::Unreachable`].
@@ -22,7 +22,7 @@
 //! inputs (tested against computations at higher precision in `tests/choose.rs`).
 
 use super::fast::FastRule;
-use super::{direct, AxisRatio, Integrals, Method};
+use super::{direct, graded, AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
 use crate::physics::Material;
 use crate::scalar::{decimal_to_rational, Field, MpPrec, Precision, Real};
@@ -148,22 +148,14 @@ pub struct Answer {
     pub work: usize,
 }
 
-/// Most series terms for which the series is the automatic choice when the fast route does not
-/// apply (k > 1): measured (`docs/integrals.md`), the series costs about as much as the adaptive
-/// quadrature at 40 terms.
-pub const SERIES_TERMS_CHEAPEST: u64 = 40;
-
 /// The method the automatic choice takes for these inputs and tolerance:
-/// [`Method::Subtracted`] for k ≤ 1 (where the fast route applies: ~0.25 µs at f64, cheaper than
-/// any series); for k > 1 the series where it needs at most [`SERIES_TERMS_CHEAPEST`] terms,
-/// [`Method::Quadrature`] otherwise.
-pub fn choose_method(inputs: &Inputs, tol: f64) -> Method {
+/// [`Method::Subtracted`] for k ≤ 1 (run by the fast route, ~0.25 µs at f64), and
+/// [`Method::Quadrature`] for k > 1 (run by the graded fixed panels of [`crate::routes::graded`],
+/// 0.3–1 µs at f64, when their bound meets the tolerance; the series, 6–12 µs at f64 even where it
+/// needs few terms, is never cheaper).
+pub fn choose_method(inputs: &Inputs, _tol: f64) -> Method {
     if inputs.k <= 1 {
-        return Method::Subtracted;
-    }
-    let q = inputs.mr.to_f64().powi(2);
-    if super::series::terms_estimate(q, tol.max(1e-300)) <= SERIES_TERMS_CHEAPEST {
-        Method::Series
+        Method::Subtracted
     } else {
         Method::Quadrature
     }
@@ -197,7 +189,10 @@ fn next_precision(p: Precision) -> Result<Precision> {
 ///
 /// [`Method::Subtracted`] runs the fast fixed-rule route ([`direct::fast`]) when k is in its
 /// domain (2^−40 ≤ k ≤ 1) and its bound ([`FastRule::bound_eps`], 16ε) is within `tol` (or `tol`
-/// is 0), and the adaptive [`direct::subtracted`] otherwise.
+/// is 0), and the adaptive [`direct::subtracted`] otherwise. [`Method::Quadrature`] runs the
+/// graded fixed panels ([`graded::integrals`]) when k ≥ 1, `tol` > 0 and their bound
+/// ([`graded::BOUND_EPS`]·ε) is within `tol`, and the adaptive [`direct::quadrature`] otherwise
+/// (`tol` = 0, the precision's floor, always runs the adaptive route: the studies' reference).
 pub fn run_at<T: Real>(
     inputs: &Inputs,
     p: T::Prec,
@@ -207,7 +202,16 @@ pub fn run_at<T: Real>(
     let (mat, speed, axes) = inputs.at::<T>(p)?;
     let t = T::from_f64(tol, p);
     match method {
-        Method::Quadrature => direct::quadrature(&mat, &speed, &axes, &t),
+        Method::Quadrature => {
+            // k ≥ 1 with a tolerance the graded panels' bound meets: the fixed rule.
+            let bound = T::epsilon(p).mul_i64(graded::BOUND_EPS);
+            if tol > 0.0 && bound <= t && axes.k >= T::one(p) {
+                if let Ok(r) = graded::integrals(&mat, &speed, &axes) {
+                    return Ok(r);
+                }
+            }
+            direct::quadrature(&mat, &speed, &axes, &t)
+        }
         Method::Subtracted => {
             let bound = T::epsilon(p).mul_i64(FastRule::<T>::get(p)?.bound_eps() as i64);
             if tol == 0.0 || bound <= t {

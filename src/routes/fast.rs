@@ -350,28 +350,28 @@ fn bound_eps_for(_bits: u32) -> u32 {
 
 /// Constants that depend on the material and the speed but not on k.
 #[derive(Clone, Debug)]
-struct SpeedConsts<T: Real> {
+pub(super) struct SpeedConsts<T: Real> {
     /// 2/m1.
-    two_over_m1: T,
+    pub(super) two_over_m1: T,
     /// c = m1 M_R², c², (m2 + m3)·c, m2 + m3, m2 m3.
-    c: T,
-    c2: T,
-    sc: T,
-    s23: T,
-    q: T,
+    pub(super) c: T,
+    pub(super) c2: T,
+    pub(super) sc: T,
+    pub(super) s23: T,
+    pub(super) q: T,
     /// 1 − γc and δ² = 1 − c.
-    a1: T,
-    d2: T,
+    pub(super) a1: T,
+    pub(super) d2: T,
     /// ε², and the closed-form pole integrals atan(1/ε)/ε and 1 − ε atan(1/ε).
-    eps2: T,
-    pole_t: T,
-    pole_1: T,
+    pub(super) eps2: T,
+    pub(super) pole_t: T,
+    pub(super) pole_1: T,
     /// 2π G(1) M_R = a0 (1 − k²ε²)^{3/2}.
-    g0: T,
+    pub(super) g0: T,
 }
 
 impl<T: Real> SpeedConsts<T> {
-    fn new(mat: &Material<T>, speed: &Speed<T>) -> Self {
+    pub(super) fn new(mat: &Material<T>, speed: &Speed<T>) -> Self {
         let p = speed.mr.prec();
         let one = T::one(p);
         let roots = mat.roots();

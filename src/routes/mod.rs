@@ -21,6 +21,7 @@ pub mod choose;
 pub mod coefficients;
 pub mod direct;
 pub mod fast;
+pub mod graded;
 mod guard;
 pub mod moments;
 pub mod series;

@@ -1,0 +1,61 @@
+//! k > 1: the graded route's I1, I2 with dI/dk (`graded/<precision>`, k ∈ {3, 10³, 10⁶} at
+//! M_R = 0.9, and k = 3 at M_R = 0.9999) and the ellipse solve at A1/B1 = 10 whose root has k > 1
+//! (`ellipse_wide/<precision>`, M_R ∈ {0, 0.5, 0.9}; ν = 0.2). Material and speed are built
+//! outside the timed call.
+//!
+//! Run: `cargo bench --bench graded -- --warm-up-time 1 --measurement-time 2`
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use moving_hertz::contact::ellipse::{solve_ellipse_with, EllipseMethod};
+use moving_hertz::physics::Material;
+use moving_hertz::routes::{graded, AxisRatio};
+use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
+
+fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
+    let mat = Material::new(T::parse("0.2", p).expect("nu")).expect("material");
+    let mut g = c.benchmark_group(format!("graded/{label}"));
+    if T::bits(p) > 200 {
+        g.sample_size(10);
+    }
+    for (mr, k) in [
+        ("0.9", "3"),
+        ("0.9", "1e3"),
+        ("0.9", "1e6"),
+        ("0.9999", "3"),
+    ] {
+        let sp = mat.speed(T::parse(mr, p).expect("speed")).expect("speed");
+        let ax = AxisRatio::new(T::parse(k, p).expect("k")).expect("k");
+        g.bench_function(format!("M={mr}_k={k}"), |b| {
+            b.iter(|| graded::integrals_with_dk(black_box(&mat), black_box(&sp), black_box(&ax)))
+        });
+    }
+    g.finish();
+    let mut g = c.benchmark_group(format!("ellipse_wide/{label}"));
+    if T::bits(p) > 200 {
+        g.sample_size(10);
+    }
+    let ratio = T::parse("10", p).expect("ratio");
+    for mr in ["0", "0.5", "0.9"] {
+        let sp = mat.speed(T::parse(mr, p).expect("speed")).expect("speed");
+        g.bench_function(format!("ratio=10_M={mr}"), |b| {
+            b.iter(|| {
+                solve_ellipse_with(
+                    black_box(&mat),
+                    black_box(&sp),
+                    black_box(&ratio),
+                    EllipseMethod::Auto,
+                )
+            })
+        });
+    }
+    g.finish();
+}
+
+fn bench(c: &mut Criterion) {
+    run::<f64>(c, "f64", ());
+    run::<Dd>(c, "dd", ());
+    run::<Mp>(c, "mpfr256", MpPrec::new(256).expect("precision"));
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
