@@ -270,6 +270,13 @@ pub fn solve_ellipse_seeded<T: Real>(
         let (f, df, _) = eval(&zero)?;
         spent = 1;
         if f.is_negative() {
+            // Newton from k = 1 (F is nearly linear in λ above k = 1), kept within a factor e²
+            // of the static seed.
+            if df.is_positive() && df.is_finite() {
+                let two = T::from_i64(2, p);
+                let n = -(f.clone() / &df);
+                lam = n.min_of(lam.clone() + &two).max_of(lam.clone() - two);
+            }
             lo = Some(zero);
         } else {
             let two = T::from_i64(2, p);
