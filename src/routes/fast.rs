@@ -423,6 +423,39 @@ impl<T: Real> SpeedConsts<T> {
     }
 }
 
+impl<T: Real> SpeedConsts<T> {
+    /// G's cleared form at a left node s = w² (p = 1 + s; `two_p`, `four_p` = 2p, 4p): returns
+    /// e1 = s + 1 − γc, D' = (2p − c)² + 4p√((s + 1 − γc)(s + δ²)) and
+    /// Q' = c² − (m2 + m3)c p + m2m3 p², so that 2πG√(1 + s) = (2/m1)√e1·D'/Q' (module docs).
+    /// One square root, no division.
+    #[inline(always)]
+    pub(super) fn left_node(&self, s: &T, pp: &T, two_p: &T, four_p: &T) -> (T, T, T) {
+        let e1 = s.clone() + &self.a1;
+        let e2 = s.clone() + &self.d2;
+        let sq1 = (e1.clone() * e2).sqrt();
+        let t = two_p.clone() - &self.c;
+        let dd = t.square() + four_p.clone() * sq1;
+        let qq = (self.q.clone() * pp - &self.sc) * pp + &self.c2;
+        (e1, dd, qq)
+    }
+
+    /// The same at a right node σ = v² (p = 1 + σ): returns f1 = 1 + (1 − γc)σ, D' and
+    /// E = Q'(σ)(1 + ε²σ), so that b(σ) = (2/m1)√f1·D'/E (module docs). `one` is 1 at the
+    /// working precision.
+    #[inline(always)]
+    pub(super) fn right_node(&self, sg: &T, pp: &T, two_p: &T, four_p: &T, one: &T) -> (T, T, T) {
+        let cs = self.c.clone() * sg;
+        let f1 = one.clone() + self.a1.clone() * sg;
+        let f2 = one.clone() + self.d2.clone() * sg;
+        let sq1 = (f1.clone() * f2).sqrt();
+        let t = two_p.clone() - &cs;
+        let dd = t.square() + four_p.clone() * sq1;
+        let qq = (self.q.clone() * pp - self.s23.clone() * &cs) * pp + cs.square();
+        let e = qq * (one.clone() + self.eps2.clone() * sg);
+        (f1, dd, e)
+    }
+}
+
 /// The Taylor coefficients b_j (j < J) of b(σ) at σ = 0, from its rationalised form
 /// b = (2/m1) N(σ)/(Q'(σ)(1 + ε²σ)) with
 /// N = (2 + (2 − c)σ)² √(1 + (1 − γc)σ) + 4(1 + σ)(1 + (1 − γc)σ) √(1 + δ²σ): the binomial series
@@ -717,6 +750,20 @@ struct KConsts<T: Real> {
     e0: T,
 }
 
+/// I1 and I2 finite and positive, else [`Error::NoConvergence`] naming which (`what`).
+pub(super) fn check_positive<T: Real>(what: [&'static str; 2], i1: &T, i2: &T) -> Result<()> {
+    for (what, x) in what.into_iter().zip([i1, i2]) {
+        if !x.is_finite() || !x.is_positive() {
+            return Err(Error::NoConvergence {
+                what,
+                iterations: 0,
+                reached: short(x),
+            });
+        }
+    }
+    Ok(())
+}
+
 /// The domain of the route in k: [2^−40, 1].
 fn check_axes<T: Real>(axes: &AxisRatio<T>) -> Result<()> {
     let p = axes.k.prec();
@@ -782,15 +829,7 @@ fn combine<T: Real, const N: usize>(
     let i2r = dot(&r.ws, v.right) + &s2;
     let i1 = i1l + &i1r;
     let i2 = i2l + &i2r;
-    for (what, x) in [("fast route: I1", &i1), ("fast route: I2", &i2)] {
-        if !x.is_finite() || !x.is_positive() {
-            return Err(Error::NoConvergence {
-                what,
-                iterations: 0,
-                reached: short(x),
-            });
-        }
-    }
+    check_positive(["fast route: I1", "fast route: I2"], &i1, &i2)?;
     let (di1, di2) = if dk {
         // Left: dI2_L = 3k (e0 atan(1/ε)/ε − Σω R'), dI1_L = 3k (e0 (1 − ε atan(1/ε)) − Σωs R').
         let three_k = kc.k.clone().mul_i64(3);
@@ -840,12 +879,7 @@ fn left_values<T: Real>(
         .zip(&h.four_p[..n]);
     // N = (2/m1) D' √(e1 u), Q'u², h = s + ε².
     let node = |s: &T, pp: &T, twop: &T, fourp: &T| {
-        let e1 = s.clone() + &sc.a1;
-        let e2 = s.clone() + &sc.d2;
-        let sq1 = (e1.clone() * e2).sqrt();
-        let t = twop.clone() - &sc.c;
-        let dd = t.square() + fourp.clone() * sq1;
-        let qq = (sc.q.clone() * pp - &sc.sc) * pp + &sc.c2;
+        let (e1, dd, qq) = sc.left_node(s, pp, twop, fourp);
         let u = one.clone() + kc.k2.clone() * s;
         let nn = sc.two_over_m1.clone() * dd * (e1 * &u).sqrt();
         let hh = s.clone() + &sc.eps2;
@@ -890,14 +924,7 @@ fn right_values<T: Real>(
         .zip(&h.four_p[..n]);
     // b(σ) = N_b/E, W3 = 1/(hq √hq): r W3 = (N_b − poly·E)/(E hq √hq), 1/hq = E √hq inv.
     let node = |sg: &T, pp: &T, twop: &T, fourp: &T| {
-        let cs = sc.c.clone() * sg;
-        let f1 = one.clone() + sc.a1.clone() * sg;
-        let f2 = one.clone() + sc.d2.clone() * sg;
-        let sq1 = (f1.clone() * f2).sqrt();
-        let t = twop.clone() - &cs;
-        let dd = t.square() + fourp.clone() * sq1;
-        let qq = (sc.q.clone() * pp - sc.s23.clone() * &cs) * pp + cs.square();
-        let e = qq * (one.clone() + sc.eps2.clone() * sg);
+        let (f1, dd, e) = sc.right_node(sg, pp, twop, fourp, &one);
         let nb = sc.two_over_m1.clone() * f1.sqrt() * dd;
         let hq = sg.clone() + &kc.k2;
         let sh = hq.clone().sqrt();
@@ -1076,13 +1103,9 @@ impl<T: Real> FastSetup<T> {
             Vec::with_capacity(n),
         );
         for i in 0..n {
-            let (s, pp) = (&l.s[i], &l.p[i]);
-            let e1 = s.clone() + &sc.a1;
-            let e2 = s.clone() + &sc.d2;
-            let sq1 = (e1.clone() * e2).sqrt();
-            let t = l.two_p[i].clone() - &sc.c;
-            let dd = t.square() + l.four_p[i].clone() * sq1;
-            left_q.push((sc.q.clone() * pp - &sc.sc) * pp + &sc.c2);
+            let s = &l.s[i];
+            let (e1, dd, qq) = sc.left_node(s, &l.p[i], &l.two_p[i], &l.four_p[i]);
+            left_q.push(qq);
             left_l.push(sc.two_over_m1.clone() * dd * e1.sqrt());
             left_ih.push((s.clone() + &sc.eps2).recip());
         }
@@ -1090,15 +1113,7 @@ impl<T: Real> FastSetup<T> {
         let mut right_r = vec![T::zero(p); r.len()];
         taylor_poly(&b, &r.s, &mut right_r);
         for (i, ri) in right_r.iter_mut().enumerate() {
-            let (sg, pp) = (&r.s[i], &r.p[i]);
-            let cs = sc.c.clone() * sg;
-            let f1 = one.clone() + sc.a1.clone() * sg;
-            let f2 = one.clone() + sc.d2.clone() * sg;
-            let sq1 = (f1.clone() * f2).sqrt();
-            let t = r.two_p[i].clone() - &cs;
-            let dd = t.square() + r.four_p[i].clone() * sq1;
-            let qq = (sc.q.clone() * pp - sc.s23.clone() * &cs) * pp + cs.square();
-            let e = qq * (one.clone() + sc.eps2.clone() * sg);
+            let (f1, dd, e) = sc.right_node(&r.s[i], &r.p[i], &r.two_p[i], &r.four_p[i], &one);
             let bi = sc.two_over_m1.clone() * f1.sqrt() * dd / e;
             *ri = bi - &*ri;
         }

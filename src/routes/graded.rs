@@ -33,7 +33,7 @@
 //! is tightest against the ρ = 3 estimate: 2 nodes a panel fewer (15 at `f64`) give 39ε, and
 //! ⌈0.3·bits⌉ + 1 nodes (78 at 256 bits) gave 206ε at 256 bits.
 
-use super::fast::{IntegralsDk, SpeedConsts};
+use super::fast::{check_positive, IntegralsDk, SpeedConsts};
 use super::{AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::GaussLegendre;
@@ -77,12 +77,8 @@ fn left_panel<T: Real>(
         for node in [c.clone() + &d, c.clone() - &d] {
             let s = node.square();
             let pp = one.clone() + &s;
-            let e1 = s.clone() + &sc.a1;
-            let e2 = s.clone() + &sc.d2;
-            let sq1 = (e1.clone() * e2).sqrt();
-            let t = pp.clone().mul_i64(2) - &sc.c;
-            let dd = t.square() + pp.clone().mul_i64(4) * sq1;
-            let qq = (sc.q.clone() * &pp - &sc.sc) * &pp + &sc.c2;
+            let (e1, dd, qq) =
+                sc.left_node(&s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
             let u = one.clone() + k2.clone() * &s;
             let h = s.clone() + &sc.eps2;
             // a/h = (2/m1) D' √(e1 u)/(Q' u² h).
@@ -123,14 +119,13 @@ fn right_panel<T: Real>(
         for node in [half.clone() + &d, half.clone() - &d] {
             let sg = node.square();
             let pp = one.clone() + &sg;
-            let cs = sc.c.clone() * &sg;
-            let f1 = one.clone() + sc.a1.clone() * &sg;
-            let f2 = one.clone() + sc.d2.clone() * &sg;
-            let sq1 = (f1.clone() * f2).sqrt();
-            let t = pp.clone().mul_i64(2) - &cs;
-            let dd = t.square() + pp.clone().mul_i64(4) * sq1;
-            let qq = (sc.q.clone() * &pp - sc.s23.clone() * &cs) * &pp + cs.square();
-            let e = qq * (one.clone() + sc.eps2.clone() * &sg);
+            let (f1, dd, e) = sc.right_node(
+                &sg,
+                &pp,
+                &pp.clone().mul_i64(2),
+                &pp.clone().mul_i64(4),
+                &one,
+            );
             let hq = sg.clone() + k2;
             // b W3 = (2/m1) √f1 D' / (E hq √hq).
             let bw3 = w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / (e * &hq * hq.clone().sqrt());
@@ -208,15 +203,7 @@ fn run<T: Real>(
     let [i1r, i2r, d1r, d2r] = right;
     let i1 = i1l + &i1r;
     let i2 = i2l + &i2r;
-    for (what, x) in [("graded route: I1", &i1), ("graded route: I2", &i2)] {
-        if !x.is_finite() || !x.is_positive() {
-            return Err(Error::NoConvergence {
-                what,
-                iterations: 0,
-                reached: short(x),
-            });
-        }
-    }
+    check_positive(["graded route: I1", "graded route: I2"], &i1, &i2)?;
     let (di1, di2) = if dk {
         let m3k = -axes.k.clone().mul_i64(3);
         ((d1l + &d1r) * &m3k, (d2l + &d2r) * &m3k)
