@@ -353,6 +353,18 @@ pub struct Limits {
     pub gauss_nodes: usize,
 }
 
+impl Limits {
+    /// The Gauss–Legendre order per panel at `bits` bits: [`Limits::gauss_nodes`], or when it
+    /// is 0, `min(bits/4 + 8, 1024)`.
+    pub fn gauss_order(&self, bits: u32) -> usize {
+        if self.gauss_nodes > 0 {
+            self.gauss_nodes
+        } else {
+            (bits as usize / 4 + 8).min(1024)
+        }
+    }
+}
+
 impl Default for Limits {
     /// 500 000 evaluations, 12 tanh–sinh levels, automatic Gauss–Legendre order.
     fn default() -> Self {
@@ -505,11 +517,7 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
 ) -> Result<Quadrature<T>> {
     let (iv, reversed) = setup(points, tol)?;
     let p = tol.prec();
-    let n = if limits.gauss_nodes > 0 {
-        limits.gauss_nodes
-    } else {
-        (T::bits(p) as usize / 4 + 8).min(1024)
-    };
+    let n = limits.gauss_order(T::bits(p));
     let rule = GaussLegendre::<T>::get(n, p)?;
     let eps = T::epsilon(p);
     let tiny = T::min_positive(p);

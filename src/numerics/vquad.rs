@@ -83,11 +83,7 @@ pub fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
             bound: "at least two, strictly increasing",
         });
     }
-    let n = if limits.gauss_nodes > 0 {
-        limits.gauss_nodes
-    } else {
-        (T::bits(p) as usize / 4 + 8).min(1024)
-    };
+    let n = limits.gauss_order(T::bits(p));
     let rule = GaussLegendre::<T>::get(n, p)?;
     let eps = T::epsilon(p);
     let mut evals = 0usize;
