@@ -7,7 +7,9 @@
 mod common;
 
 use common::rel_eps;
-use moving_hertz::contact::{convolution, solve_contact, solve_ellipse, Loading, MajorAxis};
+use moving_hertz::contact::{
+    convolution, solve_contact, solve_ellipse, solve_ellipse_ladder, Loading, MajorAxis,
+};
 use moving_hertz::numerics::elliptic::{ellipb_mc, ellipd_mc, ellipke_mc};
 use moving_hertz::numerics::roots::brent;
 use moving_hertz::physics::Material;
@@ -212,6 +214,50 @@ fn ladder<T: Real>(p: T::Prec, label: &str) {
         let est = (s.error_estimate.clone() / T::epsilon(p)).to_f64();
         assert!(est <= 64.0, "{label}: error estimate {est} eps");
     }
+}
+
+/// k from the default solve (the ladder above f64: fast or graded routes, Newton then chord
+/// steps) within 10ε of a different method at higher precision — the adaptive quadrature solve
+/// at 320 bits — on the same represented inputs (each decimal parsed at the working precision,
+/// then carried exactly to 320 bits, so the conditioning of k in M_R near c_R does not enter).
+fn ladder_accuracy<T: Real>(p: T::Prec, label: &str) {
+    use moving_hertz::contact::ellipse::{solve_ellipse_seeded, EllipseMethod};
+    let q = common::mp(320);
+    for (nu, mr, ratio) in [
+        ("0.2", "0.5", "0.5"),
+        ("0.2", "0.9999", "0.5"),
+        ("0.45", "0.99", "1e-3"),
+        ("0.2", "0.9", "10"),
+        ("-0.5", "0.3", "1e4"),
+    ] {
+        let (nu, mr, ratio) = (
+            T::parse(nu, p).unwrap(),
+            T::parse(mr, p).unwrap(),
+            T::parse(ratio, p).unwrap(),
+        );
+        let mat = Material::new(nu.clone()).unwrap();
+        let s = solve_ellipse_ladder(&mat, &mat.speed(mr.clone()).unwrap(), &ratio).unwrap();
+        let up = |x: &T| Mp::from_float(&x.to_float(T::bits(p)), q);
+        let matq = Material::new(up(&nu)).unwrap();
+        let spq = matq.speed(up(&mr)).unwrap();
+        let want = solve_ellipse_seeded(&matq, &spq, &up(&ratio), None, EllipseMethod::Quadrature)
+            .unwrap()
+            .k;
+        let e = rel_eps(&s.k, &want.to_float(320));
+        assert!(e <= 10.0, "{label}: k off by {e:.2} eps");
+        let est = (s.error_estimate.clone() / T::epsilon(p)).to_f64();
+        assert!(
+            e <= est,
+            "{label}: error {e:.2} eps above its estimate {est:.2} eps"
+        );
+    }
+}
+
+#[test]
+fn ladder_k_within_10_eps_of_a_320_bit_quadrature_solve() {
+    ladder_accuracy::<f64>((), "f64");
+    ladder_accuracy::<Dd>((), "dd");
+    ladder_accuracy::<Mp>(common::mp(256), "mpfr256");
 }
 
 #[test]

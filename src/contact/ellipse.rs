@@ -22,7 +22,7 @@ use crate::physics::{Material, Speed};
 use crate::routes::direct::{contact_integrals, ContactIntegrals};
 use crate::routes::fast::{FastSetup, IntegralsDk};
 use crate::routes::graded;
-use crate::routes::AxisRatio;
+use crate::routes::{AxisRatio, Integrals};
 use crate::scalar::{check_finite, short, Real};
 
 /// I1, I2 (normalisation of (37)) and their derivatives with respect to the axis ratio k at one
@@ -50,6 +50,21 @@ impl<T: Real> From<ContactIntegrals<T>> for KIntegrals<T> {
             i2: c.i2,
             di1_dk: c.di1_dk,
             di2_dk: c.di2_dk,
+            error_estimate: c.error_estimate,
+            work: c.work,
+        }
+    }
+}
+
+impl<T: Real> From<Integrals<T>> for KIntegrals<T> {
+    /// I1, I2 without their derivatives (set to zero).
+    fn from(c: Integrals<T>) -> Self {
+        let z = T::zero(c.i1.prec());
+        KIntegrals {
+            i1: c.i1,
+            i2: c.i2,
+            di1_dk: z.clone(),
+            di2_dk: z,
             error_estimate: c.error_estimate,
             work: c.work,
         }
@@ -198,17 +213,22 @@ impl<'a, T: Real> Evaluator<'a, T> {
         })
     }
 
-    /// I1, I2 and their k-derivatives at `axes`, and the method that produced them.
-    fn eval(&self, axes: &AxisRatio<T>) -> Result<(KIntegrals<T>, EllipseMethod)> {
+    /// I1, I2 and, with `dk`, their k-derivatives at `axes` (zero without), and the method that
+    /// produced them. The adaptive fallback always returns the derivatives.
+    fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<(KIntegrals<T>, EllipseMethod)> {
         if let Some(f) = &self.fast {
             // k > 1: the graded fixed panels ([`crate::routes::graded`]) instead.
-            let r = if axes.k > T::one(axes.k.prec()) {
-                graded::integrals_with_dk(self.mat, self.speed, axes)
-            } else {
-                f.integrals_with_dk(axes)
+            let above = axes.k > T::one(axes.k.prec());
+            let r: Result<KIntegrals<T>> = match (above, dk) {
+                (true, true) => {
+                    graded::integrals_with_dk(self.mat, self.speed, axes).map(Into::into)
+                }
+                (true, false) => graded::integrals(self.mat, self.speed, axes).map(Into::into),
+                (false, true) => f.integrals_with_dk(axes).map(Into::into),
+                (false, false) => f.integrals(axes).map(Into::into),
             };
             match r {
-                Ok(r) => return Ok((r.into(), EllipseMethod::Fast)),
+                Ok(r) => return Ok((r, EllipseMethod::Fast)),
                 Err(e) if self.method == EllipseMethod::Fast => return Err(e),
                 Err(_) => {}
             }
@@ -241,25 +261,38 @@ pub fn solve_ellipse_seeded<T: Real>(
 ) -> Result<EllipseShape<T>> {
     check_ratio(ratio)?;
     let p = ratio.prec();
-    let target = ratio.clone().ln();
     let k0 = match seed {
         Some(s) if s.is_positive() && s.is_finite() => s.clone(),
         _ => T::from_f64(static_seed(ratio.to_f64()), p),
     };
     let evaluator = Evaluator::new(method, mat, speed)?;
-    let eval = |lnk: &T| -> Result<(T, T, (KIntegrals<T>, EllipseMethod))> {
-        let ax = AxisRatio::new(lnk.clone().exp())?;
-        let ci = evaluator.eval(&ax)?;
-        let f = ci.0.i2.clone().ln() - ci.0.i1.clone().ln() - &target;
-        let df = ax.k.clone() * (ci.0.di2_dk.clone() / &ci.0.i2 - ci.0.di1_dk.clone() / &ci.0.i1);
-        Ok((f, df, ci))
-    };
+    // F(λ) = ln(I2/(I1·A1/B1)) at λ = ln k, and F′ = k(I2′/I2 − I1′/I1). With `chord` (the
+    // derivatives dI1/dk, dI2/dk and F′ kept from an earlier iterate) the derivatives are not
+    // evaluated again: a chord step instead of a Newton step.
+    let eval =
+        |lnk: &T, chord: Option<&Chord<T>>| -> Result<(T, T, (KIntegrals<T>, EllipseMethod))> {
+            let ax = AxisRatio::new(lnk.clone().exp())?;
+            let mut ci = evaluator.eval(&ax, chord.is_none())?;
+            let f = (ci.0.i2.clone() / &ci.0.i1 / ratio).ln();
+            let df = match chord {
+                Some(c) => {
+                    ci.0.di1_dk = c.di1.clone();
+                    ci.0.di2_dk = c.di2.clone();
+                    c.df.clone()
+                }
+                None => {
+                    ax.k.clone() * (ci.0.di2_dk.clone() / &ci.0.i2 - ci.0.di1_dk.clone() / &ci.0.i1)
+                }
+            };
+            Ok((f, df, ci))
+        };
     let eps = T::epsilon(p);
     let mut lam = k0.ln();
     // Bracket [lo, hi] in λ with F(lo) < 0 < F(hi), grown as evaluations reveal signs.
     let mut lo: Option<T> = None;
     let mut hi: Option<T> = None;
     let mut last_step: Option<T> = None;
+    let mut chord: Option<Chord<T>> = None;
     let mut spent = 0;
     // An unseeded start above k = 1 (A1/B1 > 1): at speed the root may still lie below k = 1,
     // where the fast route applies, while iterates above it would pay adaptive evaluations. One
@@ -267,7 +300,7 @@ pub fn solve_ellipse_seeded<T: Real>(
     // end at λ = 0.
     if seed.is_none() && method != EllipseMethod::Quadrature && lam.is_positive() {
         let zero = T::zero(p);
-        let (f, df, _) = eval(&zero)?;
+        let (f, df, _) = eval(&zero, None)?;
         spent = 1;
         if f.is_negative() {
             // Newton from k = 1 (F is nearly linear in λ above k = 1), kept within a factor e²
@@ -289,7 +322,7 @@ pub fn solve_ellipse_seeded<T: Real>(
         }
     }
     for it in spent..200 {
-        let (f, df, ci) = eval(&lam)?;
+        let (f, df, ci) = eval(&lam, chord.as_ref())?;
         if f.is_zero() {
             return Ok(finish(lam.clone(), &lam, ci, T::zero(p), it + 1));
         }
@@ -298,7 +331,7 @@ pub fn solve_ellipse_seeded<T: Real>(
         } else {
             hi = Some(lam.clone());
         }
-        // Newton step, or bisection / bracket growth when Newton misbehaves.
+        // Newton (or chord) step, or bisection / bracket growth when Newton misbehaves.
         let newton = if df.is_positive() && df.is_finite() {
             Some(lam.clone() - f.clone() / &df)
         } else {
@@ -315,13 +348,17 @@ pub fn solve_ellipse_seeded<T: Real>(
             (_, _, Some(n)) => {
                 // Unbracketed: limit the step to a factor e² in k.
                 let two = T::from_i64(2, p);
-                let step = n - &lam;
+                let step = n.clone() - &lam;
                 let next = lam.clone() + step.clone().min_of(two.clone()).max_of(-two);
                 // Never past a known end of the bracket.
                 match (&lo, &hi) {
                     (Some(l), _) if next <= *l => (lam.clone() + l).mul_pow2(-1),
                     (_, Some(h)) if next >= *h => (lam.clone() + h).mul_pow2(-1),
-                    _ => next,
+                    _ => {
+                        // A full Newton step (not clamped) counts as one for the stopping rule.
+                        was_newton = next == n;
+                        next
+                    }
                 }
             }
             (Some(_), None, None) => lam.clone() + T::one(p),
@@ -329,6 +366,12 @@ pub fn solve_ellipse_seeded<T: Real>(
         };
         let step = (next.clone() - &lam).abs();
         let scale = lam.clone().abs().max_of(T::one(p));
+        // How far the derivative used for this step lies behind (0 for a Newton step).
+        let age = chord
+            .as_ref()
+            .map(|c| (lam.clone() - &c.lam).abs())
+            .unwrap_or_else(|| T::zero(p));
+        let fresh = chord.is_none();
         let lam_old = std::mem::replace(&mut lam, next);
         // Converged: the step is at rounding level, or stopped shrinking near it.
         let small = step <= scale.clone() * &eps.clone().mul_i64(4);
@@ -341,13 +384,29 @@ pub fn solve_ellipse_seeded<T: Real>(
             return Ok(finish(lam, &lam_old, ci, step, it + 1));
         }
         // Quadratic convergence: once Newton is converging (from a ladder seed, or after two
-        // steps), a step δ leaves an error of order δ²; stop when 64 δ² ≤ ε·scale and count
-        // 64 δ²/scale in the estimate. This saves one high-precision evaluation in the ladder.
+        // steps), a step δ leaves an error of order δ² — δ·(age) for a chord step whose
+        // derivative is `age` behind; stop when 64 δ·max(δ, age) ≤ ε·scale² and count it in the
+        // estimate. This saves one high-precision evaluation in the ladder.
         let newton_phase = seed.is_some() || it >= 2;
-        if was_newton && newton_phase && step.square().mul_i64(64) <= eps.clone() * &scale.square()
-        {
-            let projected = step.square().mul_i64(64) / &scale;
-            return Ok(finish(lam, &lam_old, ci, projected, it + 1));
+        let projected = step.clone() * &step.clone().max_of(age).mul_i64(64);
+        if was_newton && newton_phase && projected <= eps.clone() * &scale.square() {
+            return Ok(finish(lam, &lam_old, ci, projected / &scale, it + 1));
+        }
+        // The next evaluation is expected to be the last (its step ~δ², the stop above then
+        // holds with age δ: δ³ ≤ ε/64): it skips the k-derivatives and steps with this
+        // iterate's F′ (a chord step), which costs no convergence at that distance.
+        if was_newton && newton_phase && fresh {
+            let cube = step.clone().square() * &step;
+            if cube.mul_i64(64) <= eps.clone() * &scale.clone().square() * &scale {
+                chord = Some(Chord {
+                    lam: lam_old.clone(),
+                    di1: ci.0.di1_dk.clone(),
+                    di2: ci.0.di2_dk.clone(),
+                    df: df.clone(),
+                });
+            }
+        } else if !was_newton {
+            chord = None;
         }
         last_step = Some(step);
     }
@@ -356,6 +415,14 @@ pub fn solve_ellipse_seeded<T: Real>(
         iterations: 200,
         reached: last_step.map(|s| short(&s)).unwrap_or_default(),
     })
+}
+
+/// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′.
+struct Chord<T> {
+    lam: T,
+    di1: T,
+    di2: T,
+    df: T,
 }
 
 /// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`:
