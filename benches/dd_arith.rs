@@ -2,7 +2,8 @@
 //!
 //! On the default x86-64 target (no `fma` target feature) twofloat's multiply forms the exact
 //! product with `f64::mul_add`, a call into libm's software fma; `Dd` uses Dekker's splitting
-//! there instead, and the hardware FMA when compiled with `-C target-feature=+fma` (or
+//! on processors without an FMA; with one it issues the hardware instruction, detected at run
+//! time (group `dd_arith_fma-runtime`) or inlined when compiled with `-C target-feature=+fma` (or
 //! `-C target-cpu=native`). Run both ways:
 //!
 //! ```text
@@ -20,8 +21,15 @@ use twofloat::TwoFloat;
 const CHAIN: usize = 64;
 
 fn bench(c: &mut Criterion) {
+    // How `Dd` forms its exact products in this build on this processor.
+    #[cfg(target_arch = "x86_64")]
+    let runtime = std::arch::is_x86_feature_detected!("fma");
+    #[cfg(not(target_arch = "x86_64"))]
+    let runtime = false;
     let fma = if cfg!(target_feature = "fma") {
         "fma"
+    } else if runtime {
+        "fma-runtime"
     } else {
         "nofma"
     };

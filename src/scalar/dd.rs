@@ -8,11 +8,13 @@
 //! * **Multiplication** is ours: `twofloat` forms the exact product with `f64::mul_add`, which on
 //!   the default x86-64 target (no `fma` target feature) is a call into libm's *software* fma —
 //!   about 11× slower than the hardware instruction. Here the error-free product
-//!   ([`two_prod`]) uses the hardware FMA when the crate is compiled with it
-//!   (`RUSTFLAGS="-C target-cpu=native"` or `-C target-feature=+fma`) and Dekker's splitting
-//!   otherwise. The `dd_arith` bench measures the three variants.
+//!   ([`two_prod`]) uses the hardware FMA — inlined when the crate is compiled with it
+//!   (`-C target-cpu=native`), otherwise detected once at run time and issued by inline
+//!   assembly — and Dekker's splitting on processors without one. Both are exact, so results
+//!   are the same bit for bit. The `dd_arith` bench measures the variants.
 //! * **Division** is ours: `twofloat`'s `TwoFloat / TwoFloat` is accurate only to ~1e-16. We use
-//!   the three-quotient long division (as in Hida, Li & Bailey's QD library), error ≈ 2^-105.
+//!   the three-quotient long division (as in Hida, Li & Bailey's QD library), error ≈ 2^-105,
+//!   with the two correction quotients multiplied by 1/b.hi rather than divided by b.hi.
 //! * **sqrt, cbrt, exp, expm1, ln, ln1p, sin, cos, atan2** are ours (twofloat's `ln` is ~1e-12,
 //!   its `atan2` ~1e-16): an `f64` seed and one Newton or Halley step at double-double, or table
 //!   reduction and a Taylor series whose constants are computed once from MPFR.
@@ -96,11 +98,18 @@ pub(crate) fn two_prod(a: f64, b: f64) -> (f64, f64) {
         if hw::has_fma() {
             return (p, hw::fms(a, b, p));
         }
-        let (ah, al) = split(a);
-        let (bh, bl) = split(b);
-        let e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
-        (p, e)
+        (p, dekker_error(a, b, p))
     }
+}
+
+/// The rounding error `a·b − p` of `p = fl(a·b)` by Dekker's splitting (exact unless the
+/// product under- or overflows).
+#[cfg(not(target_feature = "fma"))]
+#[inline(always)]
+fn dekker_error(a: f64, b: f64, p: f64) -> f64 {
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    ((ah * bh - p) + ah * bl + al * bh) + al * bl
 }
 
 /// Run-time use of the x86-64 FMA instruction in a build without the `fma` target feature.
@@ -791,5 +800,47 @@ impl Real for Dd {
     }
     fn with_prec(&self, _: ()) -> Dd {
         *self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// Both error-free products — Dekker's and the hardware FMA's, whichever this processor
+    /// runs by default — give the exact error of the rounded product, checked in exact
+    /// arithmetic over random and extreme arguments.
+    #[cfg(not(target_feature = "fma"))]
+    #[test]
+    fn both_error_free_products_are_exact() {
+        let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let mut args = vec![
+            (1.0 + 2f64.powi(-52), 1.0 - 2f64.powi(-53)),
+            (1e300, 3e-301),
+        ];
+        args.push((6.7e299, 1.3e-5));
+        for _ in 0..20000 {
+            let m = |r: u64| (r >> 11) as f64 / (1u64 << 53) as f64 + 0.5;
+            let (r1, r2) = (next(), next());
+            let e1 = (r1 % 600) as i32 - 300;
+            let e2 = (r2 % 600) as i32 - 300;
+            let s = if r1 & 1 == 1 { -1.0 } else { 1.0 };
+            args.push((s * m(next()) * 2f64.powi(e1), m(next()) * 2f64.powi(e2)));
+        }
+        for (a, b) in args {
+            let p = a * b;
+            let exact = rug::Float::with_val(256, a) * b - p;
+            let want = exact.to_f64();
+            assert_eq!(super::dekker_error(a, b, p), want, "Dekker at {a:e}·{b:e}");
+            assert_eq!(super::two_prod(a, b).1, want, "two_prod at {a:e}·{b:e}");
+            #[cfg(target_arch = "x86_64")]
+            if super::hw::has_fma() {
+                assert_eq!(super::hw::fms(a, b, p), want, "FMA at {a:e}·{b:e}");
+            }
+        }
     }
 }
