@@ -23,7 +23,7 @@ use crate::routes::direct::{contact_integrals, ContactIntegrals};
 use crate::routes::fast::{FastSetup, IntegralsDk};
 use crate::routes::graded;
 use crate::routes::{AxisRatio, Integrals};
-use crate::scalar::{check_finite, short, Real};
+use crate::scalar::{check_finite, short, Dd, Real};
 
 /// I1, I2 (normalisation of (37)) and their derivatives with respect to the axis ratio k at one
 /// k, with the larger relative error estimate of I1, I2 and the work spent.
@@ -259,6 +259,23 @@ pub fn solve_ellipse_seeded<T: Real>(
     seed: Option<&T>,
     method: EllipseMethod,
 ) -> Result<EllipseShape<T>> {
+    solve_core(mat, speed, ratio, seed, None, method, true).map(|(s, _)| s)
+}
+
+/// The Newton iteration of [`solve_ellipse_seeded`]. `seed_slope`: the derivatives at (near)
+/// the seed from a lower precision and a bound on the seed's error in λ, used for chord steps
+/// when two of them reach ε. `allow_chord`:
+/// whether the evaluation expected to be the last may skip the k-derivatives. Returns the shape
+/// and the derivatives of the last evaluation that computed them.
+fn solve_core<T: Real>(
+    mat: &Material<T>,
+    speed: &Speed<T>,
+    ratio: &T,
+    seed: Option<&T>,
+    seed_slope: Option<(Chord<T>, T)>,
+    method: EllipseMethod,
+    allow_chord: bool,
+) -> Result<(EllipseShape<T>, Option<Chord<T>>)> {
     check_ratio(ratio)?;
     let p = ratio.prec();
     let k0 = match seed {
@@ -293,6 +310,16 @@ pub fn solve_ellipse_seeded<T: Real>(
     let mut hi: Option<T> = None;
     let mut last_step: Option<T> = None;
     let mut chord: Option<Chord<T>> = None;
+    let mut fresh_slope: Option<Chord<T>> = None;
+    if let (Some((c, seed_err)), Some(_)) = (seed_slope, seed) {
+        // Chord steps from a lower precision's derivative (relative error r): each multiplies
+        // the error by ~r. Taken when two of them bring the seed's error δ0 to ε/64.
+        let r = c.rel_err.clone() + &(lam.clone() - &c.lam).abs();
+        let reach = r.square() * &seed_err.mul_i64(64);
+        if reach <= eps && c.df.is_positive() && c.df.is_finite() {
+            chord = Some(c);
+        }
+    }
     let mut spent = 0;
     // An unseeded start above k = 1 (A1/B1 > 1): at speed the root may still lie below k = 1,
     // where the fast route applies, while iterates above it would pay adaptive evaluations. One
@@ -324,7 +351,10 @@ pub fn solve_ellipse_seeded<T: Real>(
     for it in spent..200 {
         let (f, df, ci) = eval(&lam, chord.as_ref())?;
         if f.is_zero() {
-            return Ok(finish(lam.clone(), &lam, ci, T::zero(p), it + 1));
+            return Ok((
+                finish(lam.clone(), &lam, ci, T::zero(p), it + 1),
+                fresh_slope,
+            ));
         }
         if f.is_negative() {
             lo = Some(lam.clone());
@@ -369,9 +399,18 @@ pub fn solve_ellipse_seeded<T: Real>(
         // How far the derivative used for this step lies behind (0 for a Newton step).
         let age = chord
             .as_ref()
-            .map(|c| (lam.clone() - &c.lam).abs())
+            .map(|c| (lam.clone() - &c.lam).abs() + &c.rel_err)
             .unwrap_or_else(|| T::zero(p));
         let fresh = chord.is_none();
+        if fresh {
+            fresh_slope = Some(Chord {
+                lam: lam.clone(),
+                di1: ci.0.di1_dk.clone(),
+                di2: ci.0.di2_dk.clone(),
+                df: df.clone(),
+                rel_err: T::zero(p),
+            });
+        }
         let lam_old = std::mem::replace(&mut lam, next);
         // Converged: the step is at rounding level, or stopped shrinking near it.
         let small = step <= scale.clone() * &eps.clone().mul_i64(4);
@@ -381,7 +420,7 @@ pub fn solve_ellipse_seeded<T: Real>(
         if small || stalled {
             // The integrals are those of the previous iterate, one rounding-level step away;
             // the step is part of the error estimate.
-            return Ok(finish(lam, &lam_old, ci, step, it + 1));
+            return Ok((finish(lam, &lam_old, ci, step, it + 1), fresh_slope));
         }
         // Quadratic convergence: once Newton is converging (from a ladder seed, or after two
         // steps), a step δ leaves an error of order δ² — δ·(age) for a chord step whose
@@ -390,20 +429,18 @@ pub fn solve_ellipse_seeded<T: Real>(
         let newton_phase = seed.is_some() || it >= 2;
         let projected = step.clone() * &step.clone().max_of(age).mul_i64(64);
         if was_newton && newton_phase && projected <= eps.clone() * &scale.square() {
-            return Ok(finish(lam, &lam_old, ci, projected / &scale, it + 1));
+            return Ok((
+                finish(lam, &lam_old, ci, projected / &scale, it + 1),
+                fresh_slope,
+            ));
         }
         // The next evaluation is expected to be the last (its step ~δ², the stop above then
         // holds with age δ: δ³ ≤ ε/64): it skips the k-derivatives and steps with this
         // iterate's F′ (a chord step), which costs no convergence at that distance.
-        if was_newton && newton_phase && fresh {
+        if allow_chord && was_newton && newton_phase && fresh {
             let cube = step.clone().square() * &step;
             if cube.mul_i64(64) <= eps.clone() * &scale.clone().square() * &scale {
-                chord = Some(Chord {
-                    lam: lam_old.clone(),
-                    di1: ci.0.di1_dk.clone(),
-                    di2: ci.0.di2_dk.clone(),
-                    df: df.clone(),
-                });
+                chord = fresh_slope.clone();
             }
         } else if !was_newton {
             chord = None;
@@ -417,12 +454,15 @@ pub fn solve_ellipse_seeded<T: Real>(
     })
 }
 
-/// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′.
+/// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′, with F′'s
+/// relative error when it comes from a lower precision (0 otherwise).
+#[derive(Clone)]
 struct Chord<T> {
     lam: T,
     di1: T,
     di2: T,
     df: T,
+    rel_err: T,
 }
 
 /// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`:
@@ -485,11 +525,68 @@ pub fn solve_ellipse_with<T: Real>(
     if T::bits(p) <= 53 {
         return solve_ellipse_seeded(mat, speed, ratio, None, method);
     }
+    // Each stage ends on a Newton step (no chord), so that its last derivatives lie one
+    // rounding-level step from its root and serve the next stage's chord steps.
     let mat64 = Material::new(mat.nu().to_f64())?;
     let mr = speed.mr.to_f64().min(1.0 - f64::EPSILON);
-    let seed = Material::speed(&mat64, mr)
-        .and_then(|sp| solve_ellipse_seeded(&mat64, &sp, &ratio.to_f64(), None, method))
-        .map(|s| T::from_f64(s.k, p))
-        .ok();
-    solve_ellipse_seeded(mat, speed, ratio, seed.as_ref(), method)
+    let stage64 = Material::speed(&mat64, mr)
+        .and_then(|sp| solve_core(&mat64, &sp, &ratio.to_f64(), None, None, method, false));
+    let (k64, slope64) = match stage64 {
+        Ok((s, c)) => (s.k, c),
+        Err(_) => return solve_core(mat, speed, ratio, None, None, method, true).map(|(s, _)| s),
+    };
+    // Above double-double, a double-double stage in between: its root is off by ~2^-100, so
+    // the target precision needs one Newton step fewer (two chord steps up to ~600 bits).
+    if T::bits(p) > 106 {
+        let to_dd = |x: &T| Dd::from_float(&x.to_float(T::bits(p)), ());
+        let stage_dd = Material::new(to_dd(mat.nu())).and_then(|m| {
+            let sp = m.speed(to_dd(&speed.mr))?;
+            let slope = slope64.as_ref().map(|c| lift(c, (), F64_SLOPE, F64_SEED));
+            solve_core(
+                &m,
+                &sp,
+                &to_dd(ratio),
+                Some(&Dd::from_f64(k64, ())),
+                slope,
+                method,
+                false,
+            )
+        });
+        if let Ok((s, c)) = stage_dd {
+            let seed = T::from_float(&s.k.to_float(106), p);
+            let slope = c.as_ref().map(|c| lift(c, p, DD_SLOPE, DD_SEED));
+            return solve_core(mat, speed, ratio, Some(&seed), slope, method, true).map(|(s, _)| s);
+        }
+    }
+    let seed = T::from_f64(k64, p);
+    let slope = slope64.as_ref().map(|c| lift(c, p, F64_SLOPE, F64_SEED));
+    solve_core(mat, speed, ratio, Some(&seed), slope, method, true).map(|(s, _)| s)
+}
+
+/// Bounds on a stage's derivative F′ (relative: the k-derivatives' measured 47ε at f64, 53ε at
+/// double-double, with a margin) and on its root's error in λ (a few ε).
+const F64_SLOPE: f64 = 9.094947017729282e-13; // 2^-40
+const F64_SEED: f64 = 3.552713678800501e-15; // 2^-48
+const DD_SLOPE: f64 = 8.077935669463161e-28; // 2^-90
+const DD_SEED: f64 = 2.524354896707238e-29; // 2^-95
+
+/// A stage's derivatives carried to the precision `p` of the next, with their error bound and
+/// the bound on the stage's root error.
+fn lift<S: Real, T: Real>(
+    c: &Chord<S>,
+    p: T::Prec,
+    slope_err: f64,
+    seed_err: f64,
+) -> (Chord<T>, T) {
+    let up = |x: &S| T::from_float(&x.to_float(S::bits(x.prec())), p);
+    (
+        Chord {
+            lam: up(&c.lam),
+            di1: up(&c.di1),
+            di2: up(&c.di2),
+            df: up(&c.df),
+            rel_err: T::from_f64(slope_err, p),
+        },
+        T::from_f64(seed_err, p),
+    )
 }
