@@ -82,6 +82,55 @@ fn integrals_and_derivatives_match_the_adaptive_reference() {
     common::assert_no_mixing();
 }
 
+/// A layout made for another k_ref serves every 1 ≤ k ≤ (5/4)·k_ref within the same bound:
+/// the edge k = (5/4)·k_ref and a layout for a 16 times larger k (the Newton iterates of the
+/// ellipse solve reuse one layout). The derivatives are checked as above (≤ 128 bits).
+fn setup_against_reference<T: Real>(p: T::Prec, label: &str) {
+    let bound = graded::BOUND_EPS as f64;
+    let mut worst = 0.0f64;
+    for c in cases() {
+        let (mat, sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
+        let k = T::from_f64(c.k, p);
+        // (4/5)(1 + 2^-30): the edge up to the rounding of k_ref·5/4.
+        let edge = (k.clone() * &T::from_f64(0.8 * (1.0 + 2f64.powi(-30)), p)).max_of(T::one(p));
+        let wide = (k.clone().mul_i64(16)).min_of(T::from_i64(1 << 40, p));
+        for k_ref in [edge, wide] {
+            let setup = graded::GradedSetup::new(&mat, &sp, &k_ref).expect("layout");
+            assert!(setup.covers(&k));
+            let r = setup.integrals_with_dk(&ax).expect("graded setup");
+            let e = rel_eps(&r.integrals.i1, &c.i1).max(rel_eps(&r.integrals.i2, &c.i2));
+            let d = rel_eps(&r.di1_dk, &c.d1).max(rel_eps(&r.di2_dk, &c.d2));
+            let d = if T::bits(p) <= 128 { d } else { 0.0 };
+            let at = format!(
+                "{label} nu={} M_R={} k={} k_ref={}",
+                c.nu,
+                c.mr,
+                c.k,
+                k_ref.to_f64()
+            );
+            assert!(e <= bound, "{at}: error {e:.2} eps");
+            assert!(d <= 4.0 * bound, "{at}: dI/dk error {d:.2} eps");
+            worst = worst.max(e).max(d);
+        }
+        // Beyond the layout's range: a typed error, not a silently worse value.
+        let small = graded::GradedSetup::new(&mat, &sp, &T::one(p)).unwrap();
+        let beyond = AxisRatio::new(T::from_ratio(3, 2, p)).unwrap();
+        assert!(matches!(
+            small.integrals(&beyond),
+            Err(moving_hertz::Error::Domain { .. })
+        ));
+    }
+    println!("{label}: layouts for other k_ref, worst {worst:.2} eps");
+}
+
+#[test]
+fn a_layout_serves_k_up_to_five_quarters_of_its_k_ref() {
+    setup_against_reference::<f64>((), "f64");
+    setup_against_reference::<Dd>((), "dd");
+    setup_against_reference::<Mp>(mp(128), "mpfr128");
+    setup_against_reference::<Mp>(mp(256), "mpfr256");
+}
+
 /// The independent mpmath values with k > 1 (decimal inputs parsed at each precision).
 fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
     let mut n = 0;

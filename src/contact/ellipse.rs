@@ -20,10 +20,11 @@
 use crate::error::{Error, Result};
 use crate::physics::{Material, Speed};
 use crate::routes::direct::{contact_integrals, ContactIntegrals};
-use crate::routes::fast::{FastSetup, IntegralsDk};
-use crate::routes::graded;
+use crate::routes::fast::{self, FastSetup, IntegralsDk};
+use crate::routes::graded::GradedSetup;
 use crate::routes::{AxisRatio, Integrals};
 use crate::scalar::{check_finite, short, Dd, Real};
+use std::cell::{OnceCell, RefCell};
 
 /// I1, I2 (normalisation of (37)) and their derivatives with respect to the axis ratio k at one
 /// k, with the larger relative error estimate of I1, I2 and the work spent.
@@ -193,39 +194,52 @@ impl EllipseMethod {
 /// allows it.
 struct Evaluator<'a, T: Real + 'static> {
     method: EllipseMethod,
-    fast: Option<FastSetup<T>>,
+    /// The fast route's k-independent part, built at the first evaluation below k = 1 that is
+    /// not a probe (none for [`EllipseMethod::Quadrature`]).
+    fast: OnceCell<Result<FastSetup<T>>>,
+    graded: RefCell<Option<GradedSetup<T>>>,
     mat: &'a Material<T>,
     speed: &'a Speed<T>,
 }
 
 impl<'a, T: Real> Evaluator<'a, T> {
-    fn new(method: EllipseMethod, mat: &'a Material<T>, speed: &'a Speed<T>) -> Result<Self> {
-        let fast = match method {
-            EllipseMethod::Quadrature => None,
-            EllipseMethod::Fast => Some(FastSetup::new(mat, speed)?),
-            EllipseMethod::Auto => FastSetup::new(mat, speed).ok(),
-        };
-        Ok(Evaluator {
+    fn new(method: EllipseMethod, mat: &'a Material<T>, speed: &'a Speed<T>) -> Self {
+        Evaluator {
             method,
-            fast,
+            fast: OnceCell::new(),
+            graded: RefCell::new(None),
             mat,
             speed,
-        })
+        }
     }
 
     /// I1, I2 and, with `dk`, their k-derivatives at `axes` (zero without), and the method that
-    /// produced them. The adaptive fallback always returns the derivatives.
-    fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<(KIntegrals<T>, EllipseMethod)> {
-        if let Some(f) = &self.fast {
-            // k > 1: the graded fixed panels ([`crate::routes::graded`]) instead.
+    /// produced them. The adaptive fallback always returns the derivatives. A `probe` (one
+    /// evaluation at k = 1 before the iteration goes above it) runs the fast route once without
+    /// building its k-independent part.
+    fn eval(
+        &self,
+        axes: &AxisRatio<T>,
+        dk: bool,
+        probe: bool,
+    ) -> Result<(KIntegrals<T>, EllipseMethod)> {
+        if self.method != EllipseMethod::Quadrature {
+            // k > 1: the graded fixed panels ([`crate::routes::graded`]) instead, their layout
+            // kept while the iterates stay within its range.
             let above = axes.k > T::one(axes.k.prec());
-            let r: Result<KIntegrals<T>> = match (above, dk) {
-                (true, true) => {
-                    graded::integrals_with_dk(self.mat, self.speed, axes).map(Into::into)
+            let r: Result<KIntegrals<T>> = if above {
+                self.graded(axes, dk)
+            } else if probe && self.fast.get().is_none() {
+                fast::integrals_with_dk(self.mat, self.speed, axes).map(Into::into)
+            } else {
+                match self
+                    .fast
+                    .get_or_init(|| FastSetup::new(self.mat, self.speed))
+                {
+                    Ok(f) if dk => f.integrals_with_dk(axes).map(Into::into),
+                    Ok(f) => f.integrals(axes).map(Into::into),
+                    Err(e) => Err(e.clone()),
                 }
-                (true, false) => graded::integrals(self.mat, self.speed, axes).map(Into::into),
-                (false, true) => f.integrals_with_dk(axes).map(Into::into),
-                (false, false) => f.integrals(axes).map(Into::into),
             };
             match r {
                 Ok(r) => return Ok((r, EllipseMethod::Fast)),
@@ -235,6 +249,26 @@ impl<'a, T: Real> Evaluator<'a, T> {
         }
         let c = contact_integrals(self.mat, self.speed, axes, &T::zero(axes.k.prec()))?;
         Ok((c.into(), EllipseMethod::Quadrature))
+    }
+
+    /// The graded route at k > 1 from the kept layout, laid out anew (for 9/8 of this k, so
+    /// that iterates up to 45/32 k reuse it) when k lies outside its range.
+    fn graded(&self, axes: &AxisRatio<T>, dk: bool) -> Result<KIntegrals<T>> {
+        let mut kept = self.graded.borrow_mut();
+        let g = match kept.take() {
+            Some(g) if g.covers(&axes.k) => kept.insert(g),
+            _ => {
+                let p = axes.k.prec();
+                let k_ref =
+                    (axes.k.clone() * &T::from_ratio(9, 8, p)).min_of(T::from_i64(1 << 40, p));
+                kept.insert(GradedSetup::new(self.mat, self.speed, &k_ref)?)
+            }
+        };
+        if dk {
+            g.integrals_with_dk(axes).map(Into::into)
+        } else {
+            g.integrals(axes).map(Into::into)
+        }
     }
 }
 
@@ -282,27 +316,29 @@ fn solve_core<T: Real>(
         Some(s) if s.is_positive() && s.is_finite() => s.clone(),
         _ => T::from_f64(static_seed(ratio.to_f64()), p),
     };
-    let evaluator = Evaluator::new(method, mat, speed)?;
+    let evaluator = Evaluator::new(method, mat, speed);
     // F(λ) = ln(I2/(I1·A1/B1)) at λ = ln k, and F′ = k(I2′/I2 − I1′/I1). With `chord` (the
     // derivatives dI1/dk, dI2/dk and F′ kept from an earlier iterate) the derivatives are not
-    // evaluated again: a chord step instead of a Newton step.
-    let eval =
-        |lnk: &T, chord: Option<&Chord<T>>| -> Result<(T, T, (KIntegrals<T>, EllipseMethod))> {
-            let ax = AxisRatio::new(lnk.clone().exp())?;
-            let mut ci = evaluator.eval(&ax, chord.is_none())?;
-            let f = (ci.0.i2.clone() / &ci.0.i1 / ratio).ln();
-            let df = match chord {
-                Some(c) => {
-                    ci.0.di1_dk = c.di1.clone();
-                    ci.0.di2_dk = c.di2.clone();
-                    c.df.clone()
-                }
-                None => {
-                    ax.k.clone() * (ci.0.di2_dk.clone() / &ci.0.i2 - ci.0.di1_dk.clone() / &ci.0.i1)
-                }
-            };
-            Ok((f, df, ci))
+    // evaluated again: a chord step instead of a Newton step. `probe`: see [`Evaluator::eval`].
+    let eval = |lnk: &T,
+                chord: Option<&Chord<T>>,
+                probe: bool|
+     -> Result<(T, T, (KIntegrals<T>, EllipseMethod))> {
+        let ax = AxisRatio::new(lnk.clone().exp())?;
+        let mut ci = evaluator.eval(&ax, chord.is_none(), probe)?;
+        let f = (ci.0.i2.clone() / &ci.0.i1 / ratio).ln();
+        let df = match chord {
+            Some(c) => {
+                ci.0.di1_dk = c.di1.clone();
+                ci.0.di2_dk = c.di2.clone();
+                c.df.clone()
+            }
+            None => {
+                ax.k.clone() * (ci.0.di2_dk.clone() / &ci.0.i2 - ci.0.di1_dk.clone() / &ci.0.i1)
+            }
         };
+        Ok((f, df, ci))
+    };
     let eps = T::epsilon(p);
     let mut lam = k0.ln();
     // Bracket [lo, hi] in λ with F(lo) < 0 < F(hi), grown as evaluations reveal signs.
@@ -327,7 +363,7 @@ fn solve_core<T: Real>(
     // end at λ = 0.
     if seed.is_none() && method != EllipseMethod::Quadrature && lam.is_positive() {
         let zero = T::zero(p);
-        let (f, df, _) = eval(&zero, None)?;
+        let (f, df, _) = eval(&zero, None, true)?;
         spent = 1;
         if f.is_negative() {
             // Newton from k = 1 (F is nearly linear in λ above k = 1), kept within a factor e²
@@ -349,7 +385,7 @@ fn solve_core<T: Real>(
         }
     }
     for it in spent..200 {
-        let (f, df, ci) = eval(&lam, chord.as_ref())?;
+        let (f, df, ci) = eval(&lam, chord.as_ref(), false)?;
         if f.is_zero() {
             return Ok((
                 finish(lam.clone(), &lam, ci, T::zero(p), it + 1),

@@ -21,15 +21,18 @@
 //!
 //! **Cost.** (2 + ⌈log₄(1/a₁)⌉)·n evaluations of G (two or three square roots and one division
 //! each): 51 at `f64` for k ≤ 4 and M_R ≤ 0.97, 204 at k = 10⁶ (a₁ = 10⁻⁶); about 0.4–1.5 µs at
-//! `f64`. The Gauss–Legendre rule comes from the shared cache (one lock per call).
+//! `f64`. [`GradedSetup`] keeps the layout and G at its nodes for every k up to 5/4 of the k it
+//! was laid out for, so that a further k costs one square root and one division a node (the
+//! ellipse solve's Newton iterates). The Gauss–Legendre rule comes from the shared cache.
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^40, else [`Error::Domain`].
 //!
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
 //! checked against the adaptive route at 400 bits in `tests/graded.rs` over ν ∈ {−0.9, 0, 0.25,
 //! 0.5}, M_R ∈ {0, 0.5, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {1, 1.5, 3, 10, 10³, 10⁶}, with the
-//! derivatives: worst 3.4ε at `f64`, 1.5ε at double-double, 2.6ε and 3.7ε at MPFR 128 and 256
-//! bits (derivatives, ≤ 128 bits: 3.6ε, 1.4ε, 2.3ε). The margin is thin where the node count
+//! derivatives: worst 3.2ε at `f64`, 1.5ε at double-double, 3.1ε and 4.1ε at MPFR 128 and 256
+//! bits (derivatives, ≤ 128 bits: 3.9ε, 1.9ε, 2.5ε); a layout for another k_ref (k at 5/4 of
+//! it, or 16 times below it): 3.7ε, 1.9ε, 3.5ε, 3.3ε. The margin is thin where the node count
 //! is tightest against the ρ = 3 estimate: 2 nodes a panel fewer (15 at `f64`) give 39ε, and
 //! ⌈0.3·bits⌉ + 1 nodes (78 at 256 bits) gave 206ε at 256 bits.
 
@@ -54,95 +57,17 @@ pub fn panel_nodes(bits: u32) -> usize {
     }
 }
 
-/// Sums over one panel of the left half [x0, x1] in w: I2, I1 and, with `dk`, ∫ s a/(u h),
-/// ∫ s² a/(u h) (the k-derivatives divided by −3k).
-#[allow(clippy::too_many_arguments)]
-fn left_panel<T: Real>(
-    gl: &GaussLegendre<T>,
-    sc: &SpeedConsts<T>,
-    k2: &T,
-    x0: &T,
-    x1: &T,
-    dk: bool,
-    acc: &mut [T; 4],
-) {
-    let p = x0.prec();
-    let one = T::one(p);
+/// The nodes of one panel [x0, x1] in w (or v): pushes (x², weight) for each node.
+fn panel_nodes_into<T: Real>(gl: &GaussLegendre<T>, x0: &T, x1: &T, out: &mut Vec<(T, T)>) {
     let c = (x0.clone() + x1).mul_pow2(-1);
     let r = (x1.clone() - x0).mul_pow2(-1);
-    let mut part = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
     for (x, w) in gl.nodes().iter().zip(gl.weights()) {
         let d = r.clone() * x;
-        let mirrored = !x.is_zero();
-        for node in [c.clone() + &d, c.clone() - &d] {
-            let s = node.square();
-            let pp = one.clone() + &s;
-            let (e1, dd, qq) =
-                sc.left_node(&s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
-            let u = one.clone() + k2.clone() * &s;
-            let h = s.clone() + &sc.eps2;
-            // a/h = (2/m1) D' √(e1 u)/(Q' u² h).
-            let g = w.clone() * &sc.two_over_m1 * dd * (e1 * &u).sqrt() / (qq * &u * &u * h);
-            let sg = s.clone() * &g;
-            if dk {
-                let su = sg.clone() / &u;
-                part[3] += &(s.clone() * &su);
-                part[2] += &su;
-            }
-            part[0] += &g;
-            part[1] += &sg;
-            if !mirrored {
-                break;
-            }
+        let wr = w.clone() * &r;
+        out.push(((c.clone() + &d).square(), wr.clone()));
+        if !x.is_zero() {
+            out.push(((c.clone() - &d).square(), wr));
         }
-    }
-    for (a, q) in acc.iter_mut().zip(part) {
-        *a += &(q * &r);
-    }
-}
-
-/// The right half in v ∈ [0, 1], one panel: I1, I2 and, with `dk`, ∫ b W5, ∫ σ b W5.
-fn right_panel<T: Real>(
-    gl: &GaussLegendre<T>,
-    sc: &SpeedConsts<T>,
-    k2: &T,
-    dk: bool,
-    acc: &mut [T; 4],
-) {
-    let p = k2.prec();
-    let one = T::one(p);
-    let half = T::from_ratio(1, 2, p);
-    let mut part = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-    for (x, w) in gl.nodes().iter().zip(gl.weights()) {
-        let d = half.clone() * x;
-        let mirrored = !x.is_zero();
-        for node in [half.clone() + &d, half.clone() - &d] {
-            let sg = node.square();
-            let pp = one.clone() + &sg;
-            let (f1, dd, e) = sc.right_node(
-                &sg,
-                &pp,
-                &pp.clone().mul_i64(2),
-                &pp.clone().mul_i64(4),
-                &one,
-            );
-            let hq = sg.clone() + k2;
-            // b W3 = (2/m1) √f1 D' / (E hq √hq).
-            let bw3 = w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / (e * &hq * hq.clone().sqrt());
-            let sbw3 = sg.clone() * &bw3;
-            if dk {
-                part[2] += &(bw3.clone() / &hq);
-                part[3] += &(sbw3.clone() / &hq);
-            }
-            part[0] += &bw3;
-            part[1] += &sbw3;
-            if !mirrored {
-                break;
-            }
-        }
-    }
-    for (a, q) in acc.iter_mut().zip(part) {
-        *a += &(q * &half);
     }
 }
 
@@ -154,73 +79,226 @@ fn geometric_panels(a1: f64) -> usize {
     (-a1.ln() / 4f64.ln()).ceil().max(1.0) as usize
 }
 
+fn check_k<T: Real>(k: &T) -> Result<()> {
+    let p = k.prec();
+    if *k < T::one(p) || *k > T::from_i64(1 << 40, p) {
+        return Err(Error::Domain {
+            name: "axis ratio k for the graded route",
+            value: short(k),
+            bound: "[1, 2^40]",
+        });
+    }
+    Ok(())
+}
+
+/// The k-independent part of the graded route for one material and speed: panels laid out for
+/// an axis ratio `k_ref`, G at every node. It serves every 1 ≤ k ≤ (5/4)·k_ref with the same
+/// accuracy bound (module docs: a first panel [0, a₁] with k·a₁ ≤ 5/4 keeps ρ ≥ 3.9, the next
+/// ρ ≥ 3.2; smaller k only moves the singularities away), so that Newton's method on (33)
+/// pays the square roots and the division of G once and then one square root and one division
+/// a node per k.
+///
+/// Stored per node, weights included: on the left (w = tan α, s = w²) f = (2/m1) D′ √e1/(Q′ h)
+/// with a/h = f·u^{−3/2}, u = 1 + k²s, h = s + ε², and s·f, s²·f; on the right (σ = v²)
+/// f = (2/m1) √f1 D′/E with b W3 = f·(σ + k²)^{−3/2}, and σ·f. An evaluation forms u^{−3/2}
+/// (and u^{−5/2} for the derivatives) at the nodes, then weighted sums panel by panel.
+#[derive(Clone, Debug)]
+pub struct GradedSetup<T: Real> {
+    k_max: T,
+    left_s: Vec<T>,
+    left_f: [Vec<T>; 3],
+    /// The end of each left panel in the node lists.
+    panel_ends: Vec<usize>,
+    right_s: Vec<T>,
+    right_f: [Vec<T>; 2],
+}
+
+impl<T: Real> GradedSetup<T> {
+    /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^40, else [`Error::Domain`]) and evaluates
+    /// G at their nodes: (3 + ⌈log₄ 1/min(1/k_ref, ε)⌉)·[`panel_nodes`] evaluations of G.
+    pub fn new(mat: &Material<T>, speed: &Speed<T>, k_ref: &T) -> Result<Self> {
+        check_k(k_ref)?;
+        let p = k_ref.prec();
+        let one = T::one(p);
+        let zero = T::zero(p);
+        let n = panel_nodes(T::bits(p));
+        let gl = GaussLegendre::<T>::get(n, p)?;
+        let sc = SpeedConsts::new(mat, speed);
+        let eps = sc.eps2.clone().sqrt();
+        let a1 = k_ref.clone().recip().min_of(eps);
+        let m = geometric_panels(a1.to_f64());
+        // Breakpoints 0, a₁, a₁^{1 − i/m} (ratio a₁^{−1/m} ≤ 4), 1; or 0, 1.
+        let mut breaks = vec![zero.clone()];
+        if m > 0 {
+            let step = (-a1.clone().ln()).div_i64(m as i64).exp();
+            let mut x = a1;
+            for _ in 0..m {
+                breaks.push(x.clone());
+                x *= &step;
+            }
+        }
+        breaks.push(one.clone());
+        let mut left = Vec::with_capacity(n * (m + 1));
+        let mut panel_ends = Vec::with_capacity(m + 1);
+        for pair in breaks.windows(2) {
+            panel_nodes_into(&gl, &pair[0], &pair[1], &mut left);
+            panel_ends.push(left.len());
+        }
+        let mut right = Vec::with_capacity(n);
+        panel_nodes_into(&gl, &zero, &one, &mut right);
+        // G at the nodes: no dependence between nodes (vectorised at f64).
+        let (left_s, lw): (Vec<T>, Vec<T>) = left.into_iter().unzip();
+        let lf: Vec<T> = left_s
+            .iter()
+            .zip(&lw)
+            .map(|(s, w)| {
+                let pp = one.clone() + s;
+                let (e1, dd, qq) =
+                    sc.left_node(s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
+                let h = s.clone() + &sc.eps2;
+                w.clone() * &sc.two_over_m1 * dd * e1.sqrt() / (qq * h)
+            })
+            .collect();
+        let lsf: Vec<T> = left_s.iter().zip(&lf).map(|(s, f)| s.clone() * f).collect();
+        let lssf: Vec<T> = left_s
+            .iter()
+            .zip(&lsf)
+            .map(|(s, f)| s.clone() * f)
+            .collect();
+        let (right_s, rw): (Vec<T>, Vec<T>) = right.into_iter().unzip();
+        let rf: Vec<T> = right_s
+            .iter()
+            .zip(&rw)
+            .map(|(sg, w)| {
+                let pp = one.clone() + sg;
+                let (f1, dd, e) = sc.right_node(
+                    sg,
+                    &pp,
+                    &pp.clone().mul_i64(2),
+                    &pp.clone().mul_i64(4),
+                    &one,
+                );
+                w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / e
+            })
+            .collect();
+        let rsf: Vec<T> = right_s
+            .iter()
+            .zip(&rf)
+            .map(|(s, f)| s.clone() * f)
+            .collect();
+        Ok(GradedSetup {
+            k_max: k_ref.clone() * &T::from_ratio(5, 4, p),
+            left_s,
+            left_f: [lf, lsf, lssf],
+            panel_ends,
+            right_s,
+            right_f: [rf, rsf],
+        })
+    }
+
+    /// Whether `k` lies in the range this layout serves, 1 ≤ k ≤ (5/4)·k_ref.
+    pub fn covers(&self, k: &T) -> bool {
+        *k >= T::one(k.prec()) && *k <= self.k_max
+    }
+
+    /// I1, I2 at `axes` ([`integrals`]' accuracy); [`Error::Domain`] outside [`Self::covers`].
+    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Integrals<T>> {
+        self.eval(axes, false).map(|r| r.integrals)
+    }
+
+    /// I1, I2, dI1/dk, dI2/dk at `axes` ([`integrals_with_dk`]' accuracy).
+    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<IntegralsDk<T>> {
+        self.eval(axes, true)
+    }
+
+    fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<IntegralsDk<T>> {
+        check_k(&axes.k)?;
+        if axes.k > self.k_max {
+            return Err(Error::Domain {
+                name: "axis ratio k for this graded layout",
+                value: short(&axes.k),
+                bound: "[1, 5/4 k_ref]",
+            });
+        }
+        let p = axes.k.prec();
+        let one = T::one(p);
+        // Left, panel by panel: Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2},
+        // Σ s² f u^{−5/2} (one square root and one division a node).
+        let [lf, lsf, lssf] = &self.left_f;
+        let mut left = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
+        let mut start = 0;
+        for &end in &self.panel_ends {
+            let mut part = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
+            for i in start..end {
+                let u = one.clone() + axes.k2.clone() * &self.left_s[i];
+                if dk {
+                    let t5 = (u.clone() * &u * u.clone().sqrt()).recip();
+                    let t3 = t5.clone() * u;
+                    part[0] += &(lf[i].clone() * &t3);
+                    part[1] += &(lsf[i].clone() * t3);
+                    part[2] += &(lsf[i].clone() * &t5);
+                    part[3] += &(lssf[i].clone() * t5);
+                } else {
+                    let t3 = (u.clone() * u.sqrt()).recip();
+                    part[0] += &(lf[i].clone() * &t3);
+                    part[1] += &(lsf[i].clone() * t3);
+                }
+            }
+            for (a, q) in left.iter_mut().zip(part) {
+                *a += &q;
+            }
+            start = end;
+        }
+        // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
+        let [rf, rsf] = &self.right_f;
+        let mut right = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
+        for (i, sg) in self.right_s.iter().enumerate() {
+            let h = sg.clone() + &axes.k2;
+            if dk {
+                let t5 = (h.clone() * &h * h.clone().sqrt()).recip();
+                let t3 = t5.clone() * h;
+                right[0] += &(rf[i].clone() * &t3);
+                right[1] += &(rsf[i].clone() * t3);
+                right[2] += &(rf[i].clone() * &t5);
+                right[3] += &(rsf[i].clone() * t5);
+            } else {
+                let t3 = (h.clone() * h.sqrt()).recip();
+                right[0] += &(rf[i].clone() * &t3);
+                right[1] += &(rsf[i].clone() * t3);
+            }
+        }
+        let [i2l, i1l, d2l, d1l] = left;
+        let [i1r, i2r, d1r, d2r] = right;
+        let i1 = i1l + &i1r;
+        let i2 = i2l + &i2r;
+        check_positive(["graded route: I1", "graded route: I2"], &i1, &i2)?;
+        let (di1, di2) = if dk {
+            let m3k = -axes.k.clone().mul_i64(3);
+            ((d1l + &d1r) * &m3k, (d2l + &d2r) * &m3k)
+        } else {
+            (T::zero(p), T::zero(p))
+        };
+        Ok(IntegralsDk {
+            integrals: Integrals {
+                i1,
+                i2,
+                error_estimate: T::epsilon(p).mul_i64(BOUND_EPS),
+                method: Method::Quadrature,
+                work: self.left_s.len() + self.right_s.len(),
+            },
+            di1_dk: di1,
+            di2_dk: di2,
+        })
+    }
+}
+
 fn run<T: Real>(
     mat: &Material<T>,
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
     dk: bool,
 ) -> Result<IntegralsDk<T>> {
-    let p = axes.k.prec();
-    let one = T::one(p);
-    if axes.k < one || axes.k > T::from_i64(1 << 40, p) {
-        return Err(Error::Domain {
-            name: "axis ratio k for the graded route",
-            value: short(&axes.k),
-            bound: "[1, 2^40]",
-        });
-    }
-    let n = panel_nodes(T::bits(p));
-    let gl = GaussLegendre::<T>::get(n, p)?;
-    let sc = SpeedConsts::new(mat, speed);
-    let eps = sc.eps2.clone().sqrt();
-    let a1 = axes.k.clone().recip().min_of(eps);
-    let mut left = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-    let m = geometric_panels(a1.to_f64());
-    let mut evaluations = 0;
-    if m == 0 {
-        left_panel(&gl, &sc, &axes.k2, &T::zero(p), &one, dk, &mut left);
-        evaluations += n;
-    } else {
-        left_panel(&gl, &sc, &axes.k2, &T::zero(p), &a1, dk, &mut left);
-        // x_i = a₁^{1 − i/m}: ratio a₁^{−1/m} ≤ 4.
-        let step = (-a1.clone().ln()).div_i64(m as i64).exp();
-        let mut x0 = a1;
-        for i in 0..m {
-            let x1 = if i + 1 == m {
-                one.clone()
-            } else {
-                x0.clone() * &step
-            };
-            left_panel(&gl, &sc, &axes.k2, &x0, &x1, dk, &mut left);
-            x0 = x1;
-        }
-        evaluations += n * (m + 1);
-    }
-    let mut right = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-    right_panel(&gl, &sc, &axes.k2, dk, &mut right);
-    evaluations += n;
-    let [i2l, i1l, d2l, d1l] = left;
-    let [i1r, i2r, d1r, d2r] = right;
-    let i1 = i1l + &i1r;
-    let i2 = i2l + &i2r;
-    check_positive(["graded route: I1", "graded route: I2"], &i1, &i2)?;
-    let (di1, di2) = if dk {
-        let m3k = -axes.k.clone().mul_i64(3);
-        ((d1l + &d1r) * &m3k, (d2l + &d2r) * &m3k)
-    } else {
-        (T::zero(p), T::zero(p))
-    };
-    Ok(IntegralsDk {
-        integrals: Integrals {
-            i1,
-            i2,
-            error_estimate: T::epsilon(p).mul_i64(BOUND_EPS),
-            method: Method::Quadrature,
-            work: evaluations,
-        },
-        di1_dk: di1,
-        di2_dk: di2,
-    })
+    GradedSetup::new(mat, speed, &axes.k)?.eval(axes, dk)
 }
 
 /// I1, I2 of (34) in the normalisation of (37) for k ≥ 1 by graded fixed panels (module docs).
