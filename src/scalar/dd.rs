@@ -337,6 +337,9 @@ struct Consts {
     exp2_table: [Dd; 64],
     /// 1/n!, n = 0..=29.
     inv_fact: [Dd; 30],
+    /// expm1_limits[m]: the largest |x| for which e^x − 1 = x Σ_{n≤m} x^n/(n+1)! to 2^-108
+    /// (first omitted term |x|^{m+1}/(m+2)! ≤ 2^-108), m = 0..=26.
+    expm1_limits: [f64; 27],
 }
 
 fn three_parts(x: &rug::Float) -> [f64; 3] {
@@ -371,6 +374,13 @@ fn consts() -> &'static Consts {
             let r = rug::Float::with_val(bits, 1u32) / &f;
             *t = Dd::from_float(&r, ());
         }
+        let mut expm1_limits = [0.0; 27];
+        for (m, l) in expm1_limits.iter_mut().enumerate() {
+            // (2^-108 (m + 2)!)^{1/(m + 1)}, a little under (f64 logarithms).
+            let ln_fact: f64 = (2..=m + 2).map(|j| (j as f64).ln()).sum();
+            let ln_l = (ln_fact - 108.0 * std::f64::consts::LN_2) / (m as f64 + 1.0);
+            *l = ln_l.exp() * (1.0 - 1e-6);
+        }
         Consts {
             pi: Dd::from_float(&pi, ()),
             ln2: Dd::from_float(&ln2, ()),
@@ -378,6 +388,7 @@ fn consts() -> &'static Consts {
             ln2_64: three_parts(&ln2_64),
             exp2_table,
             inv_fact,
+            expm1_limits,
         }
     })
 }
@@ -403,11 +414,14 @@ fn horner(x: Dd, coef: &[Dd], from: usize, to: usize) -> Dd {
 }
 
 impl Dd {
-    /// e^x − 1 by its Taylor series, for |x| ≤ 1/2 (relative error ≈ 2^-105).
+    /// e^x − 1 by its Taylor series, for |x| ≤ 1/2 (relative error ≈ 2^-105), with as many
+    /// terms as |x| needs (2 at |x| ≈ 10^-16, 26 at 1/2).
     fn expm1_small(self) -> Dd {
         let c = consts();
-        // Σ_{n≥1} x^n/n! = x · Σ_{n≥0} x^n/(n+1)!; |x| ≤ 1/2 needs n ≤ 26.
-        let s = horner(self, &c.inv_fact[1..], 0, 26);
+        // Σ_{n≥1} x^n/n! = x · Σ_{n≥0} x^n/(n+1)!, truncated after x^m/(m+1)!.
+        let a = self.hi().abs();
+        let m = c.expm1_limits.iter().position(|&l| a <= l).unwrap_or(26);
+        let s = horner(self, &c.inv_fact[1..], 0, m);
         s * self
     }
 
