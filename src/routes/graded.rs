@@ -57,16 +57,16 @@ pub fn panel_nodes(bits: u32) -> usize {
     }
 }
 
-/// The nodes of one panel [x0, x1] in w (or v): pushes (x², weight) for each node.
-fn panel_nodes_into<T: Real>(gl: &GaussLegendre<T>, x0: &T, x1: &T, out: &mut Vec<(T, T)>) {
+/// Calls `node(x², weight)` for each node of one panel [x0, x1] in w (or v).
+fn for_panel_nodes<T: Real>(gl: &GaussLegendre<T>, x0: &T, x1: &T, mut node: impl FnMut(T, &T)) {
     let c = (x0.clone() + x1).mul_pow2(-1);
     let r = (x1.clone() - x0).mul_pow2(-1);
     for (x, w) in gl.nodes().iter().zip(gl.weights()) {
         let d = r.clone() * x;
         let wr = w.clone() * &r;
-        out.push(((c.clone() + &d).square(), wr.clone()));
+        node((c.clone() + &d).square(), &wr);
         if !x.is_zero() {
-            out.push(((c.clone() - &d).square(), wr));
+            node((c.clone() - &d).square(), &wr);
         }
     }
 }
@@ -138,61 +138,49 @@ impl<T: Real> GradedSetup<T> {
             }
         }
         breaks.push(one.clone());
-        let mut left = Vec::with_capacity(n * (m + 1));
-        let mut panel_ends = Vec::with_capacity(m + 1);
+        // G at the nodes, with the weights: left f, s·f, s²·f; right f, σ·f.
+        let nl = n * (breaks.len() - 1);
+        let mut left_s = Vec::with_capacity(nl);
+        let mut left_f = [(); 3].map(|_| Vec::with_capacity(nl));
+        let mut panel_ends = Vec::with_capacity(breaks.len() - 1);
         for pair in breaks.windows(2) {
-            panel_nodes_into(&gl, &pair[0], &pair[1], &mut left);
-            panel_ends.push(left.len());
-        }
-        let mut right = Vec::with_capacity(n);
-        panel_nodes_into(&gl, &zero, &one, &mut right);
-        // G at the nodes: no dependence between nodes (vectorised at f64).
-        let (left_s, lw): (Vec<T>, Vec<T>) = left.into_iter().unzip();
-        let lf: Vec<T> = left_s
-            .iter()
-            .zip(&lw)
-            .map(|(s, w)| {
-                let pp = one.clone() + s;
+            for_panel_nodes(&gl, &pair[0], &pair[1], |s, w| {
+                let pp = one.clone() + &s;
                 let (e1, dd, qq) =
-                    sc.left_node(s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
+                    sc.left_node(&s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
                 let h = s.clone() + &sc.eps2;
-                w.clone() * &sc.two_over_m1 * dd * e1.sqrt() / (qq * h)
-            })
-            .collect();
-        let lsf: Vec<T> = left_s.iter().zip(&lf).map(|(s, f)| s.clone() * f).collect();
-        let lssf: Vec<T> = left_s
-            .iter()
-            .zip(&lsf)
-            .map(|(s, f)| s.clone() * f)
-            .collect();
-        let (right_s, rw): (Vec<T>, Vec<T>) = right.into_iter().unzip();
-        let rf: Vec<T> = right_s
-            .iter()
-            .zip(&rw)
-            .map(|(sg, w)| {
-                let pp = one.clone() + sg;
-                let (f1, dd, e) = sc.right_node(
-                    sg,
-                    &pp,
-                    &pp.clone().mul_i64(2),
-                    &pp.clone().mul_i64(4),
-                    &one,
-                );
-                w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / e
-            })
-            .collect();
-        let rsf: Vec<T> = right_s
-            .iter()
-            .zip(&rf)
-            .map(|(s, f)| s.clone() * f)
-            .collect();
+                let f = w.clone() * &sc.two_over_m1 * dd * e1.sqrt() / (qq * h);
+                let sf = s.clone() * &f;
+                left_f[2].push(s.clone() * &sf);
+                left_f[1].push(sf);
+                left_f[0].push(f);
+                left_s.push(s);
+            });
+            panel_ends.push(left_s.len());
+        }
+        let mut right_s = Vec::with_capacity(n);
+        let mut right_f = [(); 2].map(|_| Vec::with_capacity(n));
+        for_panel_nodes(&gl, &zero, &one, |sg, w| {
+            let pp = one.clone() + &sg;
+            let (f1, dd, e) = sc.right_node(
+                &sg,
+                &pp,
+                &pp.clone().mul_i64(2),
+                &pp.clone().mul_i64(4),
+                &one,
+            );
+            let f = w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / e;
+            right_f[1].push(sg.clone() * &f);
+            right_f[0].push(f);
+            right_s.push(sg);
+        });
         Ok(GradedSetup {
             k_max: k_ref.clone() * &T::from_ratio(5, 4, p),
             left_s,
-            left_f: [lf, lsf, lssf],
+            left_f,
             panel_ends,
             right_s,
-            right_f: [rf, rsf],
+            right_f,
         })
     }
 
