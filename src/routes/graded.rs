@@ -211,27 +211,21 @@ impl<T: Real> GradedSetup<T> {
         let p = axes.k.prec();
         let one = T::one(p);
         // Left, panel by panel: Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2},
-        // Σ s² f u^{−5/2} (one square root and one division a node).
+        // Σ s² f u^{−5/2}, u = 1 + k²s.
         let [lf, lsf, lssf] = &self.left_f;
         let mut left = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
         let mut start = 0;
         for &end in &self.panel_ends {
-            let mut part = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-            for i in start..end {
-                let u = one.clone() + axes.k2.clone() * &self.left_s[i];
-                if dk {
-                    let t5 = (u.clone() * &u * u.clone().sqrt()).recip();
-                    let t3 = t5.clone() * u;
-                    part[0] += &(lf[i].clone() * &t3);
-                    part[1] += &(lsf[i].clone() * t3);
-                    part[2] += &(lsf[i].clone() * &t5);
-                    part[3] += &(lssf[i].clone() * t5);
-                } else {
-                    let t3 = (u.clone() * u.sqrt()).recip();
-                    part[0] += &(lf[i].clone() * &t3);
-                    part[1] += &(lsf[i].clone() * t3);
-                }
-            }
+            let r = start..end;
+            let factors = [
+                &lf[r.clone()],
+                &lsf[r.clone()],
+                &lsf[r.clone()],
+                &lssf[r.clone()],
+            ];
+            let part = power_sums(&self.left_s[r], factors, dk, p, |s| {
+                one.clone() + axes.k2.clone() * s
+            });
             for (a, q) in left.iter_mut().zip(part) {
                 *a += &q;
             }
@@ -239,22 +233,9 @@ impl<T: Real> GradedSetup<T> {
         }
         // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
         let [rf, rsf] = &self.right_f;
-        let mut right = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-        for (i, sg) in self.right_s.iter().enumerate() {
-            let h = sg.clone() + &axes.k2;
-            if dk {
-                let t5 = (h.clone() * &h * h.clone().sqrt()).recip();
-                let t3 = t5.clone() * h;
-                right[0] += &(rf[i].clone() * &t3);
-                right[1] += &(rsf[i].clone() * t3);
-                right[2] += &(rf[i].clone() * &t5);
-                right[3] += &(rsf[i].clone() * t5);
-            } else {
-                let t3 = (h.clone() * h.sqrt()).recip();
-                right[0] += &(rf[i].clone() * &t3);
-                right[1] += &(rsf[i].clone() * t3);
-            }
-        }
+        let right = power_sums(&self.right_s, [rf, rsf, rf, rsf], dk, p, |sg| {
+            sg.clone() + &axes.k2
+        });
         let [i2l, i1l, d2l, d1l] = left;
         let [i1r, i2r, d1r, d2r] = right;
         let i1 = i1l + &i1r;
@@ -278,6 +259,35 @@ impl<T: Real> GradedSetup<T> {
             di2_dk: di2,
         })
     }
+}
+
+/// Σ a x^{−3/2}, Σ b x^{−3/2} and, with `dk`, Σ c x^{−5/2}, Σ d x^{−5/2} over the nodes, with
+/// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node).
+#[inline(always)]
+fn power_sums<T: Real>(
+    nodes: &[T],
+    [a, b, c, d]: [&[T]; 4],
+    dk: bool,
+    p: T::Prec,
+    shift: impl Fn(&T) -> T,
+) -> [T; 4] {
+    let mut acc = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
+    for (i, node) in nodes.iter().enumerate() {
+        let x = shift(node);
+        if dk {
+            let t5 = (x.clone() * &x * x.clone().sqrt()).recip();
+            let t3 = t5.clone() * x;
+            acc[0] += &(a[i].clone() * &t3);
+            acc[1] += &(b[i].clone() * t3);
+            acc[2] += &(c[i].clone() * &t5);
+            acc[3] += &(d[i].clone() * t5);
+        } else {
+            let t3 = (x.clone() * x.sqrt()).recip();
+            acc[0] += &(a[i].clone() * &t3);
+            acc[1] += &(b[i].clone() * t3);
+        }
+    }
+    acc
 }
 
 fn run<T: Real>(
