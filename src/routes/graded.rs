@@ -271,21 +271,39 @@ fn power_sums<T: Real>(
     p: T::Prec,
     shift: impl Fn(&T) -> T,
 ) -> [T; 4] {
-    let mut acc = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-    for (i, node) in nodes.iter().enumerate() {
-        let x = shift(node);
+    // Node values first, sums after: the node loop carries no dependence, so that at f64 the
+    // compiler packs two nodes into one SSE2 square root and division.
+    let zero = || [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
+    let mut acc = zero();
+    const CHUNK: usize = 32;
+    let mut t3 = [(); CHUNK].map(|_| T::zero(p));
+    let mut t5 = [(); CHUNK].map(|_| T::zero(p));
+    let mut i0 = 0;
+    while i0 < nodes.len() {
+        let m = CHUNK.min(nodes.len() - i0);
         if dk {
-            let t5 = (x.clone() * &x * x.clone().sqrt()).recip();
-            let t3 = t5.clone() * x;
-            acc[0] += &(a[i].clone() * &t3);
-            acc[1] += &(b[i].clone() * t3);
-            acc[2] += &(c[i].clone() * &t5);
-            acc[3] += &(d[i].clone() * t5);
+            for j in 0..m {
+                let x = shift(&nodes[i0 + j]);
+                let v = (x.clone() * &x * x.clone().sqrt()).recip();
+                t3[j] = v.clone() * x;
+                t5[j] = v;
+            }
         } else {
-            let t3 = (x.clone() * x.sqrt()).recip();
-            acc[0] += &(a[i].clone() * &t3);
-            acc[1] += &(b[i].clone() * t3);
+            for j in 0..m {
+                let x = shift(&nodes[i0 + j]);
+                t3[j] = (x.clone() * x.sqrt()).recip();
+            }
         }
+        for j in 0..m {
+            let i = i0 + j;
+            acc[0] += &(a[i].clone() * &t3[j]);
+            acc[1] += &(b[i].clone() * &t3[j]);
+            if dk {
+                acc[2] += &(c[i].clone() * &t5[j]);
+                acc[3] += &(d[i].clone() * &t5[j]);
+            }
+        }
+        i0 += m;
     }
     acc
 }
