@@ -138,42 +138,44 @@ impl<T: Real> GradedSetup<T> {
             }
         }
         breaks.push(one.clone());
-        // G at the nodes, with the weights: left f, s·f, s²·f; right f, σ·f.
+        // The nodes (x², weight), then G at them with the weights: left f, s·f, s²·f; right f,
+        // σ·f.
         let nl = n * (breaks.len() - 1);
-        let mut left_s = Vec::with_capacity(nl);
-        let mut left_f = [(); 3].map(|_| Vec::with_capacity(nl));
+        let (mut left_s, mut left_w) = (Vec::with_capacity(nl), Vec::with_capacity(nl));
         let mut panel_ends = Vec::with_capacity(breaks.len() - 1);
         for pair in breaks.windows(2) {
             for_panel_nodes(&gl, &pair[0], &pair[1], |s, w| {
-                let pp = one.clone() + &s;
-                let (e1, dd, qq) =
-                    sc.left_node(&s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
-                let h = s.clone() + &sc.eps2;
-                let f = w.clone() * &sc.two_over_m1 * dd * e1.sqrt() / (qq * h);
-                let sf = s.clone() * &f;
-                left_f[2].push(s.clone() * &sf);
-                left_f[1].push(sf);
-                left_f[0].push(f);
                 left_s.push(s);
+                left_w.push(w.clone());
             });
             panel_ends.push(left_s.len());
         }
-        let mut right_s = Vec::with_capacity(n);
-        let mut right_f = [(); 2].map(|_| Vec::with_capacity(n));
+        let lf = chunked_map(&left_s, &left_w, |s, w| {
+            let pp = one.clone() + s;
+            let (e1, dd, qq) = sc.left_node(s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
+            let h = s.clone() + &sc.eps2;
+            w.clone() * &sc.two_over_m1 * dd * e1.sqrt() / (qq * h)
+        });
+        let lsf = chunked_map(&left_s, &lf, |s, f| s.clone() * f);
+        let lssf = chunked_map(&left_s, &lsf, |s, f| s.clone() * f);
+        let (mut right_s, mut right_w) = (Vec::with_capacity(n), Vec::with_capacity(n));
         for_panel_nodes(&gl, &zero, &one, |sg, w| {
-            let pp = one.clone() + &sg;
+            right_s.push(sg);
+            right_w.push(w.clone());
+        });
+        let rf = chunked_map(&right_s, &right_w, |sg, w| {
+            let pp = one.clone() + sg;
             let (f1, dd, e) = sc.right_node(
-                &sg,
+                sg,
                 &pp,
                 &pp.clone().mul_i64(2),
                 &pp.clone().mul_i64(4),
                 &one,
             );
-            let f = w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / e;
-            right_f[1].push(sg.clone() * &f);
-            right_f[0].push(f);
-            right_s.push(sg);
+            w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / e
         });
+        let rsf = chunked_map(&right_s, &rf, |sg, f| sg.clone() * f);
+        let (left_f, right_f) = ([lf, lsf, lssf], [rf, rsf]);
         Ok(GradedSetup {
             k_max: k_ref.clone() * &T::from_ratio(5, 4, p),
             left_s,
@@ -261,6 +263,27 @@ impl<T: Real> GradedSetup<T> {
     }
 }
 
+/// `[g(x₀, y₀), g(x₁, y₁), …]`, evaluated in chunks of [`CHUNK`] into a stack buffer before being
+/// appended (no dependence between nodes: vectorised at `f64`, like [`power_sums`]).
+#[inline(always)]
+fn chunked_map<T: Real>(xs: &[T], ys: &[T], g: impl Fn(&T, &T) -> T) -> Vec<T> {
+    let mut out = Vec::with_capacity(xs.len());
+    let Some(first) = xs.first() else {
+        return out;
+    };
+    let mut buf = [(); CHUNK].map(|_| T::zero(first.prec()));
+    for (cx, cy) in xs.chunks(CHUNK).zip(ys.chunks(CHUNK)) {
+        for ((b, x), y) in buf.iter_mut().zip(cx).zip(cy) {
+            *b = g(x, y);
+        }
+        out.extend(buf[..cx.len()].iter().cloned());
+    }
+    out
+}
+
+/// Nodes a chunk in the node loops of [`chunked_map`] and [`power_sums`].
+const CHUNK: usize = 32;
+
 /// Σ a x^{−3/2}, Σ b x^{−3/2} and, with `dk`, Σ c x^{−5/2}, Σ d x^{−5/2} over the nodes, with
 /// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node).
 #[inline(always)]
@@ -275,7 +298,6 @@ fn power_sums<T: Real>(
     // compiler packs two nodes into one SSE2 square root and division.
     let zero = || [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
     let mut acc = zero();
-    const CHUNK: usize = 32;
     let mut t3 = [(); CHUNK].map(|_| T::zero(p));
     let mut t5 = [(); CHUNK].map(|_| T::zero(p));
     let mut i0 = 0;
