@@ -375,12 +375,13 @@ fn solve_core<T: Real>(
         let (f, df, _) = eval(&zero, None, true)?;
         spent = 1;
         if f.is_negative() {
-            // Newton from k = 1 (F is nearly linear in λ above k = 1), kept within a factor e²
-            // of the static seed.
+            // Newton from k = 1 (F is nearly linear in λ above k = 1), not above the static
+            // seed (speed lowers k; 108 → 105 evaluations over a 25-case grid) nor more than a
+            // factor e² below it.
             if df.is_positive() && df.is_finite() {
                 let two = T::from_i64(2, p);
                 let n = -(f.clone() / &df);
-                lam = n.min_of(lam.clone() + &two).max_of(lam.clone() - two);
+                lam = n.min_of(lam.clone()).max_of(lam.clone() - two);
             }
             lo = Some(zero);
         } else {
