@@ -547,9 +547,12 @@ fn finish<T: Real>(
     }
 }
 
-/// The precision ladder: solves at `f64` first (inputs rounded to `f64`) and refines the root at
-/// the working precision of `T` by Newton from that seed — a few high-precision evaluations of the
-/// integrals instead of a search. For `T = f64` this is [`solve_ellipse`].
+/// The precision ladder: solves at `f64` first (inputs rounded to `f64`), above 106 bits then at
+/// double-double, and refines the root at the working precision of `T` from the last stage's root
+/// and derivative — two chord steps at double-double, two or three Newton or chord steps above
+/// (module docs): a few high-precision evaluations of the integrals instead of a search. For
+/// `T = f64` this is [`solve_ellipse`]. Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit
+/// quadrature solve, `tests/contact.rs`), with an error estimate.
 pub fn solve_ellipse_ladder<T: Real>(
     mat: &Material<T>,
     speed: &Speed<T>,
