@@ -204,6 +204,18 @@ impl<T: Real> Half<T> {
     fn len(&self) -> usize {
         self.s.len()
     }
+
+    /// The node quantities (s, p, 2p, 4p), node by node.
+    #[inline(always)]
+    fn nodes(&self) -> impl Iterator<Item = (&T, &T, &T, &T)> {
+        let n = self.len();
+        self.s[..n]
+            .iter()
+            .zip(&self.p[..n])
+            .zip(&self.two_p[..n])
+            .zip(&self.four_p[..n])
+            .map(|(((s, p), two_p), four_p)| (s, p, two_p, four_p))
+    }
 }
 
 /// The fixed rules of the fast route at one precision: nodes and weights on [0, 1] for both
@@ -750,18 +762,40 @@ struct KConsts<T: Real> {
     e0: T,
 }
 
-/// I1 and I2 finite and positive, else [`Error::NoConvergence`] naming which (`what`).
-pub(super) fn check_positive<T: Real>(what: [&'static str; 2], i1: &T, i2: &T) -> Result<()> {
-    for (what, x) in what.into_iter().zip([i1, i2]) {
-        if !x.is_finite() || !x.is_positive() {
-            return Err(Error::NoConvergence {
-                what,
-                iterations: 0,
-                reached: short(x),
-            });
+impl<T: Real> IntegralsDk<T> {
+    /// The result of a fixed rule (this route or [`crate::routes::graded`]): I1 and I2 checked
+    /// finite and positive (else [`Error::NoConvergence`] naming `route`), the derivatives, the
+    /// a-priori bound `bound_eps`·ε as the estimate, the method and the node count.
+    pub(super) fn from_rule(
+        route: &'static str,
+        [i1, i2]: [T; 2],
+        [di1_dk, di2_dk]: [T; 2],
+        bound_eps: i64,
+        method: Method,
+        work: usize,
+    ) -> Result<Self> {
+        for x in [&i1, &i2] {
+            if !x.is_finite() || !x.is_positive() {
+                return Err(Error::NoConvergence {
+                    what: route,
+                    iterations: 0,
+                    reached: short(x),
+                });
+            }
         }
+        let error_estimate = T::epsilon(i1.prec()).mul_i64(bound_eps);
+        Ok(IntegralsDk {
+            integrals: Integrals {
+                i1,
+                i2,
+                error_estimate,
+                method,
+                work,
+            },
+            di1_dk,
+            di2_dk,
+        })
     }
-    Ok(())
 }
 
 /// The domain of the route in k: [2^−40, 1].
@@ -829,7 +863,6 @@ fn combine<T: Real, const N: usize>(
     let i2r = dot(&r.ws, v.right) + &s2;
     let i1 = i1l + &i1r;
     let i2 = i2l + &i2r;
-    check_positive(["fast route: I1", "fast route: I2"], &i1, &i2)?;
     let (di1, di2) = if dk {
         // Left: dI2_L = 3k (e0 atan(1/ε)/ε − Σω R'), dI1_L = 3k (e0 (1 − ε atan(1/ε)) − Σωs R').
         let three_k = kc.k.clone().mul_i64(3);
@@ -842,17 +875,14 @@ fn combine<T: Real, const N: usize>(
     } else {
         (T::zero(p), T::zero(p))
     };
-    Ok(IntegralsDk {
-        integrals: Integrals {
-            i1,
-            i2,
-            error_estimate: T::epsilon(p).mul_i64(rule.bound_eps as i64),
-            method: Method::Subtracted,
-            work: rule.sizes.nodes(),
-        },
-        di1_dk: di1,
-        di2_dk: di2,
-    })
+    IntegralsDk::from_rule(
+        "fast route: I1 and I2 (finite, positive)",
+        [i1, i2],
+        [di1, di2],
+        rule.bound_eps as i64,
+        Method::Subtracted,
+        rule.sizes.nodes(),
+    )
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -871,12 +901,7 @@ fn left_values<T: Real>(
     out_dk: &mut [T],
 ) {
     let one = T::one(sc.c.prec());
-    let n = h.len();
-    let nodes = h.s[..n]
-        .iter()
-        .zip(&h.p[..n])
-        .zip(&h.two_p[..n])
-        .zip(&h.four_p[..n]);
+    let nodes = h.nodes();
     // N = (2/m1) D' √(e1 u), Q'u², h = s + ε².
     let node = |s: &T, pp: &T, twop: &T, fourp: &T| {
         let (e1, dd, qq) = sc.left_node(s, pp, twop, fourp);
@@ -887,13 +912,12 @@ fn left_values<T: Real>(
         (nn, qu2, u, hh)
     };
     if out_dk.is_empty() {
-        for ((((s, pp), twop), fourp), r) in nodes.zip(out.iter_mut()) {
+        for ((s, pp, twop, fourp), r) in nodes.zip(out.iter_mut()) {
             let (nn, qu2, _, hh) = node(s, pp, twop, fourp);
             *r = (nn - kc.a0.clone() * &qu2) / (qu2 * hh);
         }
     } else {
-        for (((((s, pp), twop), fourp), r), dr) in nodes.zip(out.iter_mut()).zip(out_dk.iter_mut())
-        {
+        for (((s, pp, twop, fourp), r), dr) in nodes.zip(out.iter_mut()).zip(out_dk.iter_mut()) {
             let (nn, qu2, u, hh) = node(s, pp, twop, fourp);
             // inv = 1/(Q' u³ h): A/u = N h inv, R = (N − a0 Q'u²) u inv, 1/h = Q'u³ inv.
             let qu3 = qu2.clone() * &u;
@@ -916,12 +940,7 @@ fn right_values<T: Real>(
     out_dk: &mut [T],
 ) {
     let one = T::one(sc.c.prec());
-    let n = h.len();
-    let nodes = h.s[..n]
-        .iter()
-        .zip(&h.p[..n])
-        .zip(&h.two_p[..n])
-        .zip(&h.four_p[..n]);
+    let nodes = h.nodes();
     // b(σ) = N_b/E, W3 = 1/(hq √hq): r W3 = (N_b − poly·E)/(E hq √hq), 1/hq = E √hq inv.
     let node = |sg: &T, pp: &T, twop: &T, fourp: &T| {
         let (f1, dd, e) = sc.right_node(sg, pp, twop, fourp, &one);
@@ -932,13 +951,12 @@ fn right_values<T: Real>(
         (nb, e, sh, inv)
     };
     if out_dk.is_empty() {
-        for ((((sg, pp), twop), fourp), r) in nodes.zip(out.iter_mut()) {
+        for ((sg, pp, twop, fourp), r) in nodes.zip(out.iter_mut()) {
             let (nb, e, _, inv) = node(sg, pp, twop, fourp);
             *r = (nb - r.clone() * &e) * inv;
         }
     } else {
-        for (((((sg, pp), twop), fourp), r), dr) in nodes.zip(out.iter_mut()).zip(out_dk.iter_mut())
-        {
+        for (((sg, pp, twop, fourp), r), dr) in nodes.zip(out.iter_mut()).zip(out_dk.iter_mut()) {
             let (nb, e, sh, inv) = node(sg, pp, twop, fourp);
             let rw3 = (nb - r.clone() * &e) * &inv;
             *dr = rw3.clone() * inv * e * sh;
@@ -1102,9 +1120,8 @@ impl<T: Real> FastSetup<T> {
             Vec::with_capacity(n),
             Vec::with_capacity(n),
         );
-        for i in 0..n {
-            let s = &l.s[i];
-            let (e1, dd, qq) = sc.left_node(s, &l.p[i], &l.two_p[i], &l.four_p[i]);
+        for (s, pp, two_p, four_p) in l.nodes() {
+            let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
             left_q.push(qq);
             left_l.push(sc.two_over_m1.clone() * dd * e1.sqrt());
             left_ih.push((s.clone() + &sc.eps2).recip());
@@ -1112,8 +1129,8 @@ impl<T: Real> FastSetup<T> {
         let r = &rule.right;
         let mut right_r = vec![T::zero(p); r.len()];
         taylor_poly(&b, &r.s, &mut right_r);
-        for (i, ri) in right_r.iter_mut().enumerate() {
-            let (f1, dd, e) = sc.right_node(&r.s[i], &r.p[i], &r.two_p[i], &r.four_p[i], &one);
+        for ((sg, pp, two_p, four_p), ri) in r.nodes().zip(right_r.iter_mut()) {
+            let (f1, dd, e) = sc.right_node(sg, pp, two_p, four_p, &one);
             let bi = sc.two_over_m1.clone() * f1.sqrt() * dd / e;
             *ri = bi - &*ri;
         }

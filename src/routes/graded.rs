@@ -36,7 +36,7 @@
 //! is tightest against the ρ = 3 estimate: 2 nodes a panel fewer (15 at `f64`) give 39ε, and
 //! ⌈0.3·bits⌉ + 1 nodes (78 at 256 bits) gave 206ε at 256 bits.
 
-use super::fast::{check_positive, IntegralsDk, SpeedConsts};
+use super::fast::{IntegralsDk, SpeedConsts};
 use super::{AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::GaussLegendre;
@@ -242,24 +242,20 @@ impl<T: Real> GradedSetup<T> {
         let [i1r, i2r, d1r, d2r] = right;
         let i1 = i1l + &i1r;
         let i2 = i2l + &i2r;
-        check_positive(["graded route: I1", "graded route: I2"], &i1, &i2)?;
         let (di1, di2) = if dk {
             let m3k = -axes.k.clone().mul_i64(3);
             ((d1l + &d1r) * &m3k, (d2l + &d2r) * &m3k)
         } else {
             (T::zero(p), T::zero(p))
         };
-        Ok(IntegralsDk {
-            integrals: Integrals {
-                i1,
-                i2,
-                error_estimate: T::epsilon(p).mul_i64(BOUND_EPS),
-                method: Method::Quadrature,
-                work: self.left_s.len() + self.right_s.len(),
-            },
-            di1_dk: di1,
-            di2_dk: di2,
-        })
+        IntegralsDk::from_rule(
+            "graded route: I1 and I2 (finite, positive)",
+            [i1, i2],
+            [di1, di2],
+            BOUND_EPS,
+            Method::Quadrature,
+            self.left_s.len() + self.right_s.len(),
+        )
     }
 }
 
