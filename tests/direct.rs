@@ -4,47 +4,15 @@
 
 mod common;
 
-use common::{read_csv, reference, rel_eps};
+use common::{mpmath_cases, read_csv, reference, rel_eps, MpmathCase};
 use moving_hertz::numerics::elliptic::{ellipd_mc, ellipke_mc};
 use moving_hertz::physics::Material;
 use moving_hertz::prelude::*;
 use moving_hertz::routes::{direct, AxisRatio, Integrals};
 
-struct Case {
-    nu: String,
-    mr: String,
-    k: String,
-    i1: rug::Float,
-    i2: rug::Float,
-}
-
-fn cases() -> Vec<Case> {
-    read_csv("integrals_mpmath.csv")
-        .into_iter()
-        .filter(|r| r[0] == "I")
-        .map(|r| Case {
-            nu: r[1].clone(),
-            mr: r[2].clone(),
-            k: r[3].clone(),
-            i1: reference(&r[4]),
-            i2: reference(&r[5]),
-        })
-        .collect()
-}
-
-fn setup<T: Real>(
-    c: &Case,
-    p: T::Prec,
-) -> (Material<T>, moving_hertz::physics::Speed<T>, AxisRatio<T>) {
-    let mat = Material::new(T::parse(&c.nu, p).unwrap()).unwrap();
-    let sp = mat.speed(T::parse(&c.mr, p).unwrap()).unwrap();
-    let ax = AxisRatio::new(T::parse(&c.k, p).unwrap()).unwrap();
-    (mat, sp, ax)
-}
-
 /// Checks a result against the reference: error ≤ `bound` ε, and within the reported estimate
 /// (plus the rounding of the reference comparison itself).
-fn check<T: Real>(r: &Integrals<T>, c: &Case, bound: f64, label: &str) -> f64 {
+fn check<T: Real>(r: &Integrals<T>, c: &MpmathCase, bound: f64, label: &str) -> f64 {
     let e1 = rel_eps(&r.i1, &c.i1);
     let e2 = rel_eps(&r.i2, &c.i2);
     let est = (r.error_estimate.clone() / T::epsilon(r.i1.prec())).to_f64();
@@ -70,8 +38,8 @@ fn check<T: Real>(r: &Integrals<T>, c: &Case, bound: f64, label: &str) -> f64 {
 
 fn against_reference<T: Real>(p: T::Prec, label: &str) {
     let (mut wq, mut ws) = (0.0f64, 0.0f64);
-    for c in cases() {
-        let (mat, sp, ax) = setup::<T>(&c, p);
+    for c in mpmath_cases() {
+        let (mat, sp, ax) = c.inputs::<T>(p);
         let zero = T::zero(p);
         let q = direct::quadrature(&mat, &sp, &ax, &zero).expect("quadrature");
         wq = wq.max(check(&q, &c, 16.0, label));

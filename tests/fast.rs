@@ -11,7 +11,7 @@
 mod common;
 
 use common::{
-    assert_no_mixing, check_adaptive_row, integral_cases, integral_inputs, mp, read_csv, reference,
+    assert_no_mixing, check_adaptive_row, integral_cases, integral_inputs, mp, mpmath_cases,
     rel_eps, write_adaptive_reference, IntegralCase,
 };
 use moving_hertz::physics::Material;
@@ -160,20 +160,20 @@ fn setup_agrees_with_one_shot() {
 /// the rows the route covers (k ≤ 1).
 fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
     let mut n = 0;
-    for r in read_csv("integrals_mpmath.csv")
-        .into_iter()
-        .filter(|r| r[0] == "I")
-    {
-        let k = T::parse(&r[3], p).unwrap();
-        if k > T::one(p) {
+    for c in mpmath_cases() {
+        let (mat, sp, ax) = c.inputs::<T>(p);
+        if ax.k > T::one(p) {
             continue;
         }
-        let mat = Material::new(T::parse(&r[1], p).unwrap()).unwrap();
-        let sp = mat.speed(T::parse(&r[2], p).unwrap()).unwrap();
-        let ax = AxisRatio::new(k).unwrap();
-        let f = fast::integrals(&mat, &sp, &ax).expect("fast route");
-        let e = rel_eps(&f.i1, &reference(&r[4])).max(rel_eps(&f.i2, &reference(&r[5])));
-        assert!(e <= 16.0, "{label} {:?}: {e:.1} eps", &r[1..4]);
+        let r = fast::integrals(&mat, &sp, &ax).expect("fast route");
+        let e = c.error_eps(&r.i1, &r.i2);
+        assert!(
+            e <= 16.0,
+            "{label} nu={} M_R={} k={}: {e:.1} eps",
+            c.nu,
+            c.mr,
+            c.k
+        );
         n += 1;
     }
     assert_eq!(n, 10);

@@ -13,10 +13,9 @@
 mod common;
 
 use common::{
-    check_adaptive_row, integral_cases, integral_inputs, mp, read_csv, reference, rel_eps,
+    check_adaptive_row, integral_cases, integral_inputs, mp, mpmath_cases, rel_eps,
     write_adaptive_reference, IntegralCase,
 };
-use moving_hertz::physics::Material;
 use moving_hertz::prelude::*;
 use moving_hertz::routes::{direct, graded, AxisRatio};
 
@@ -134,19 +133,20 @@ fn a_layout_serves_k_up_to_five_quarters_of_its_k_ref() {
 /// The independent mpmath values with k > 1 (decimal inputs parsed at each precision).
 fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
     let mut n = 0;
-    for r in read_csv("integrals_mpmath.csv")
-        .into_iter()
-        .filter(|r| r[0] == "I")
-    {
-        let k = T::parse(&r[3], p).unwrap();
-        if k <= T::one(p) {
+    for c in mpmath_cases() {
+        let (mat, sp, ax) = c.inputs::<T>(p);
+        if ax.k <= T::one(p) {
             continue;
         }
-        let mat = Material::new(T::parse(&r[1], p).unwrap()).unwrap();
-        let sp = mat.speed(T::parse(&r[2], p).unwrap()).unwrap();
-        let g = graded::integrals(&mat, &sp, &AxisRatio::new(k).unwrap()).expect("graded");
-        let e = rel_eps(&g.i1, &reference(&r[4])).max(rel_eps(&g.i2, &reference(&r[5])));
-        assert!(e <= 32.0, "{label} {:?}: {e:.1} eps", &r[1..4]);
+        let r = graded::integrals(&mat, &sp, &ax).expect("graded");
+        let e = c.error_eps(&r.i1, &r.i2);
+        assert!(
+            e <= 32.0,
+            "{label} nu={} M_R={} k={}: {e:.1} eps",
+            c.nu,
+            c.mr,
+            c.k
+        );
         n += 1;
     }
     assert_eq!(n, 2);

@@ -206,3 +206,43 @@ pub fn check_adaptive_row(case: &IntegralCase, idx: usize) {
         assert!(e < 1e-85, "row {idx}: {e:e}");
     }
 }
+
+/// One row of tests/data/integrals_mpmath.csv (tools/gen_integrals.py): decimal inputs and
+/// mpmath's I1, I2.
+pub struct MpmathCase {
+    pub nu: String,
+    pub mr: String,
+    pub k: String,
+    pub i1: Float,
+    pub i2: Float,
+}
+
+/// The I1, I2 rows of tests/data/integrals_mpmath.csv.
+pub fn mpmath_cases() -> Vec<MpmathCase> {
+    read_csv("integrals_mpmath.csv")
+        .into_iter()
+        .filter(|r| r[0] == "I")
+        .map(|r| MpmathCase {
+            nu: r[1].clone(),
+            mr: r[2].clone(),
+            k: r[3].clone(),
+            i1: reference(&r[4]),
+            i2: reference(&r[5]),
+        })
+        .collect()
+}
+
+impl MpmathCase {
+    /// The case's material, speed and axis ratio, each decimal parsed at precision `p`.
+    pub fn inputs<T: Real>(&self, p: T::Prec) -> (Material<T>, Speed<T>, AxisRatio<T>) {
+        let mat = Material::new(T::parse(&self.nu, p).unwrap()).unwrap();
+        let sp = mat.speed(T::parse(&self.mr, p).unwrap()).unwrap();
+        let ax = AxisRatio::new(T::parse(&self.k, p).unwrap()).unwrap();
+        (mat, sp, ax)
+    }
+
+    /// The larger relative error of (I1, I2) against mpmath, in ε of the working precision.
+    pub fn error_eps<T: Real>(&self, i1: &T, i2: &T) -> f64 {
+        rel_eps(i1, &self.i1).max(rel_eps(i2, &self.i2))
+    }
+}
