@@ -8,46 +8,54 @@
 //! only δ² (δ ≥ 0.3, G's branch point) in s = w².
 //!
 //! **Panels.** The variables of [`crate::routes::fast`]: the left half α ∈ [0, π/4] in w = tan α,
-//! the right half in v = cot α. On the left every singularity of the integrand in the complex
-//! w-plane lies at or beyond distance a₁ = min(1/k, ε) from the real axis near w = 0 (the branch
-//! points ±i/k of u^{−3/2}, the poles ±iε, G's branch points ±iδ, ±i); the breakpoints are 0, a₁
-//! and a geometric sequence from a₁ to 1 of ratio at most 4, i.e. 1 + ⌈log₄(1/a₁)⌉ panels. On a
-//! panel [x, 4x] a singularity at any distance below x from 0 lies outside the Bernstein ellipse
-//! of parameter ρ = 3 (ρ = 4.6 on the first panel [0, a₁]), so an n-point rule on each panel
-//! converges like ρ^{−2n} whatever k and ε are: [`panel_nodes`] (17 at `f64`, 36 at
-//! double-double, 86 at 256 bits). The right half, for k ≥ 1, has its nearest singularities at
-//! v = ±i (the factor (1 + σ)^{−1/2} of b) and ±ik: one panel of the same rule. The integrands are
+//! the right half in v = cot α. On the left every singularity of the integrand lies on the
+//! imaginary w-axis (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points ±iδ,
+//! ±i√(1 − γc), and the zeros of Q′ near ±0.8i–±i, complex only slightly off the axis for
+//! ν > 0.26) at heights ≥ a, a ≤ min(4/(5k), ε, δ). The map w = a sinh x sends every point iy,
+//! y ≥ a, to the line Im x = π/2: in x the integrand is analytic in the strip |Im x| < π/2
+//! whatever k and ε are, and decays like e^{−2x} past the k-peak. The left half is cut into M
+//! equal panels of length ln 4 in x (M = ⌈asinh(1/a)/ln 4⌉, a made 1/sinh(M ln 4)); on each, the
+//! strip lies outside the Bernstein ellipse ρ = 4.74, so an n-point rule converges like
+//! ρ^{−2n}: [`left_nodes`] (14 at `f64`, 26 at double-double, 60 at 256 bits). Equal lengths of
+//! ln 4 make every node's e^{±x} a product of a cached 2^{±(1+t)} by 4^{±j}: no exponential a
+//! node. The right half, for k ≥ 1, has its nearest singularities at v = ±i (the factor
+//! (1 + σ)^{−1/2} of b) and ±ik: one panel of [`panel_nodes`] (17 at `f64`, 36 at double-double,
+//! 86 at 256 bits; 23 at double-double gave 6500ε in dI/dk at k = 1). The integrands are
 //! positive: no cancellation, rounding error a few ε.
 //!
-//! **Cost.** (2 + ⌈log₄(1/a₁)⌉)·n evaluations of G (two or three square roots and one division
-//! each): 51 at `f64` for k ≤ 4 and M_R ≤ 0.97, 204 at k = 10⁶ (a₁ = 10⁻⁶); about 0.4–1.5 µs at
-//! `f64`. [`GradedSetup`] keeps the layout and G at its nodes for every k up to 5/4 of the k it
-//! was laid out for, so that a further k costs one square root and one division a node (the
-//! ellipse solve's Newton iterates). The Gauss–Legendre rule comes from the shared cache.
+//! **Cost.** M·[`left_nodes`] + [`panel_nodes`] evaluations of G (two square roots and one
+//! division each): at `f64` 31 at M_R = 0, k = 1; 45 at M_R = 0.9, k = 3 (51 with the
+//! geometric panels in w this replaced); 73 at M_R = 0.9999, k = 3 (102); 101 at k = 10³ (119);
+//! 171 at k = 10⁶ (204). The layout (G at the nodes) takes 0.27–0.66 µs at `f64` for k ≤ 3000. [`GradedSetup`] keeps the
+//! layout for every k up to 5/4 of the k it was laid out for, so that a further k costs one
+//! square root and one division a node (the ellipse solve's Newton iterates; 0.08–0.26 µs with
+//! the derivatives). The Gauss–Legendre rules come from the shared cache.
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^40, else [`Error::Domain`].
 //!
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
 //! checked against the adaptive route at 400 bits in `tests/graded.rs` over ν ∈ {−0.9, 0, 0.25,
 //! 0.5}, M_R ∈ {0, 0.5, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {1, 1.5, 3, 10, 10³, 10⁶}, with the
-//! derivatives: worst 3.2ε at `f64`, 1.5ε at double-double, 3.1ε and 4.1ε at MPFR 128 and 256
-//! bits (derivatives, ≤ 128 bits: 3.9ε, 1.9ε, 2.5ε); a layout for another k_ref (k at 5/4 of
-//! it, or 16 times below it): 3.7ε, 1.9ε, 3.5ε, 3.3ε. The margin is thin where the node count
-//! is tightest against the ρ = 3 estimate: 2 nodes a panel fewer (15 at `f64`) give 39ε, and
-//! ⌈0.3·bits⌉ + 1 nodes (78 at 256 bits) gave 206ε at 256 bits.
+//! derivatives: worst 3.6ε at `f64`, 1.5ε at double-double, 2.8ε and 2.5ε at MPFR 128 and 256
+//! bits (derivatives, ≤ 128 bits: 2.3ε, 1.4ε, 2.7ε); a layout for another k_ref (k at 5/4 of
+//! it, or 16 times below it): 3.6ε, 2.5ε, 3.6ε, 3.3ε. The left node count has a margin of one
+//! node at `f64`: 13 give 4.3ε and 12 give 74ε in dI/dk (ν = −0.9, M_R = 0, k = 1.5, where the
+//! branch points of u^{−5/2} and of G sit on the strip's edge).
 
 use super::fast::{IntegralsDk, SpeedConsts};
 use super::{AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
-use crate::numerics::quadrature::GaussLegendre;
+use crate::numerics::quadrature::{cached, GaussLegendre};
 use crate::physics::{Material, Speed};
 use crate::scalar::{short, Real};
+use std::sync::Arc;
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
 pub const BOUND_EPS: i64 = 32;
 
-/// Nodes per panel at a working precision of `bits` bits: 17 at `f64`, ⌈0.33·bits⌉ + 1 above
-/// (36 at double-double, 86 at 256 bits): ρ^{−2n} ≤ 2^{−bits} needs n ≥ 0.316·bits for ρ = 3.
+/// Nodes of the right half's single panel at a working precision of `bits` bits: 17 at `f64`,
+/// ⌈0.33·bits⌉ + 1 above (36 at double-double, 86 at 256 bits): its nearest singularities
+/// (v = ±i) allow ρ ≈ 3 in the worst case measured, ρ^{−2n} ≤ 2^{−bits} needs n ≥ 0.316·bits.
 pub fn panel_nodes(bits: u32) -> usize {
     let b = bits.max(24) as usize;
     if b <= 53 {
@@ -57,26 +65,82 @@ pub fn panel_nodes(bits: u32) -> usize {
     }
 }
 
-/// Calls `node(x², weight)` for each node of one panel [x0, x1] in w (or v).
+/// Nodes of each left panel (length ln 4 in x, w = a sinh x) at `bits` bits: 14 at `f64`,
+/// ⌈0.2227·bits + 2⌉ above (26 at double-double, 60 at 256 bits). Every singularity lies at
+/// |Im x| ≥ π/2, so ρ ≥ 4.74 on every panel and ρ^{−2n} ≤ 2^{−bits}/2^7 needs
+/// n ≥ 0.2227·bits + 2.25 (the 2^7 covers the measured constant of the u^{−5/2} branch points).
+pub fn left_nodes(bits: u32) -> usize {
+    let b = bits.max(24) as usize;
+    if b <= 53 {
+        14
+    } else {
+        (2227 * b + 20000).div_ceil(10000)
+    }
+}
+
+/// The fixed tables of the graded route at one precision, cached per (n_left, precision): for
+/// each left node of a panel of length ln 4 in x (panel j covers [j ln 4, (j + 1) ln 4]), with t
+/// the Gauss–Legendre node on [−1, 1], e^{x − j ln 4} = 2^{1+t} (`ep`), e^{−x − j ln 4} =
+/// 2^{−1−t} (`em`) and the weight times ln 2 (`lw`), so that e^{±x} on panel j is a product by
+/// 4^{±j} (exact); for the right half's single panel [0, 1] in v, σ = v² and the weights.
+struct Rules<T: Real> {
+    prec: T::Prec,
+    ep: Vec<T>,
+    em: Vec<T>,
+    lw: Vec<T>,
+    right_s: Vec<T>,
+    right_w: Vec<T>,
+}
+
+impl<T: Real> Rules<T> {
+    fn get(p: T::Prec) -> Result<Arc<Self>> {
+        let bits = T::bits(p);
+        let nl = left_nodes(bits);
+        cached(
+            nl,
+            p,
+            |r: &Self| r.prec,
+            || {
+                let left = GaussLegendre::<T>::get(nl, p)?;
+                let right = GaussLegendre::<T>::get(panel_nodes(bits), p)?;
+                let ln2 = T::ln2(p);
+                let one = T::one(p);
+                let (mut ep, mut em, mut lw) = (Vec::new(), Vec::new(), Vec::new());
+                for_panel_nodes(&left, &-one.clone(), &one, |t, w| {
+                    ep.push(((one.clone() + &t) * &ln2).exp());
+                    em.push(((one.clone() + &t) * &ln2).neg().exp());
+                    lw.push(w.clone() * &ln2);
+                });
+                let (mut right_s, mut right_w) = (Vec::new(), Vec::new());
+                for_panel_nodes(&right, &T::zero(p), &one, |v, w| {
+                    right_s.push(v.square());
+                    right_w.push(w.clone());
+                });
+                Ok(Rules {
+                    prec: p,
+                    ep,
+                    em,
+                    lw,
+                    right_s,
+                    right_w,
+                })
+            },
+        )
+    }
+}
+
+/// Calls `node(x, weight)` for each node of one panel [x0, x1].
 fn for_panel_nodes<T: Real>(gl: &GaussLegendre<T>, x0: &T, x1: &T, mut node: impl FnMut(T, &T)) {
     let c = (x0.clone() + x1).mul_pow2(-1);
     let r = (x1.clone() - x0).mul_pow2(-1);
     for (x, w) in gl.nodes().iter().zip(gl.weights()) {
         let d = r.clone() * x;
         let wr = w.clone() * &r;
-        node((c.clone() + &d).square(), &wr);
+        node(c.clone() + &d, &wr);
         if !x.is_zero() {
-            node((c.clone() - &d).square(), &wr);
+            node(c.clone() - &d, &wr);
         }
     }
-}
-
-/// The number of geometric panels between a₁ and 1 (ratio ≤ 4), from a₁ in `f64`.
-fn geometric_panels(a1: f64) -> usize {
-    if !(a1 > 0.0 && a1 < 1.0) {
-        return 0;
-    }
-    (-a1.ln() / 4f64.ln()).ceil().max(1.0) as usize
 }
 
 fn check_k<T: Real>(k: &T) -> Result<()> {
@@ -93,96 +157,112 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 
 /// The k-independent part of the graded route for one material and speed: panels laid out for
 /// an axis ratio `k_ref`, G at every node. It serves every 1 ≤ k ≤ (5/4)·k_ref with the same
-/// accuracy bound (module docs: a first panel [0, a₁] with k·a₁ ≤ 5/4 keeps ρ ≥ 3.9, the next
-/// ρ ≥ 3.2; smaller k only moves the singularities away), so that Newton's method on (33)
-/// pays the square roots and the division of G once and then one square root and one division
-/// a node per k.
+/// accuracy bound (module docs: the map's scale a is at most 4/(5 k_ref), so every branch point
+/// of u^{−3/2} stays at |Im x| ≥ π/2; smaller k only moves them away), so that Newton's method on
+/// (33) pays the square roots and the division of G once and then one square root and one
+/// division a node per k.
 ///
-/// Stored per node, weights included: on the left (w = tan α, s = w²) f = (2/m1) D′ √e1/(Q′ h)
-/// with a/h = f·u^{−3/2}, u = 1 + k²s, h = s + ε², and s·f, s²·f; on the right (σ = v²)
-/// f = (2/m1) √f1 D′/E with b W3 = f·(σ + k²)^{−3/2}, and σ·f. An evaluation forms u^{−3/2}
-/// (and u^{−5/2} for the derivatives) at the nodes, then weighted sums panel by panel.
+/// Stored per node, weights included: on the left (w = a sinh x, s = w²) f = (2/m1) D′ √e1/(Q′ h)
+/// times dw/dx with a/h = f·u^{−3/2}, u = 1 + k²s, h = s + ε², and s·f, s²·f; on the right
+/// (σ = v²) f = (2/m1) √f1 D′/E with b W3 = f·(σ + k²)^{−3/2}, and σ·f. An evaluation forms
+/// u^{−3/2} (and u^{−5/2} for the derivatives) at the nodes, then weighted sums panel by panel.
 #[derive(Clone, Debug)]
 pub struct GradedSetup<T: Real> {
     k_max: T,
-    left_s: Vec<T>,
-    left_f: [Vec<T>; 3],
-    /// The end of each left panel in the node lists.
-    panel_ends: Vec<usize>,
-    right_s: Vec<T>,
-    right_f: [Vec<T>; 2],
+    /// Nodes a left panel.
+    panel: usize,
+    /// The left nodes' s, f, s·f, s²·f, one after the other (4 × the node count).
+    left: Vec<T>,
+    /// The right nodes' σ, f, σ·f (3 × the node count).
+    right: Vec<T>,
 }
 
 impl<T: Real> GradedSetup<T> {
     /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^40, else [`Error::Domain`]) and evaluates
-    /// G at their nodes: (3 + ⌈log₄ 1/min(1/k_ref, ε)⌉)·[`panel_nodes`] evaluations of G.
+    /// G at their nodes: M·[`left_nodes`] + [`panel_nodes`] evaluations of G, with
+    /// M = ⌈asinh(1/min(4/(5 k_ref), ε, δ))/ln 4⌉ panels on the left.
     pub fn new(mat: &Material<T>, speed: &Speed<T>, k_ref: &T) -> Result<Self> {
         check_k(k_ref)?;
         let p = k_ref.prec();
         let one = T::one(p);
-        let zero = T::zero(p);
-        let n = panel_nodes(T::bits(p));
-        let gl = GaussLegendre::<T>::get(n, p)?;
+        let rules = Rules::<T>::get(p)?;
         let sc = SpeedConsts::new(mat, speed);
-        let eps = sc.eps2.clone().sqrt();
-        let a1 = k_ref.clone().recip().min_of(eps);
-        let m = geometric_panels(a1.to_f64());
-        // Breakpoints 0, a₁, a₁^{1 − i/m} (ratio a₁^{−1/m} ≤ 4), 1; or 0, 1.
-        let mut breaks = vec![zero.clone()];
-        if m > 0 {
-            let step = (-a1.clone().ln()).div_i64(m as i64).exp();
-            let mut x = a1;
-            for _ in 0..m {
-                breaks.push(x.clone());
-                x *= &step;
+        // The scale a of w = a sinh x: at most the lowest singularity height for every
+        // k ≤ (5/4) k_ref (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points
+        // ±iδ), made 1/sinh(M ln 4) for a whole number M of panels.
+        let k_max = k_ref.clone() * &T::from_ratio(5, 4, p);
+        let a_max = k_max
+            .to_f64()
+            .recip()
+            .min(sc.eps2.to_f64().sqrt())
+            .min(sc.d2.to_f64().sqrt());
+        let m = ((1.0 / a_max).asinh() / 4f64.ln()).ceil().max(1.0) as usize;
+        // a/2 = 1/(4^M − 4^−M).
+        let four_m = one.clone().mul_pow2(2 * m as i32);
+        let half_a = (four_m.clone() - four_m.recip()).recip();
+        let panel = rules.ep.len();
+        let nl = m * panel;
+        // Left: s and the weight (a/2)(e^x + e^−x)·w·ln 2 at each node, then f in place of the
+        // weight, then s·f and s²·f.
+        let mut left = vec![T::zero(p); 4 * nl];
+        {
+            let (ls, rest) = left.split_at_mut(nl);
+            let (lf, rest) = rest.split_at_mut(nl);
+            let (lsf, lssf) = rest.split_at_mut(nl);
+            for j in 0..m {
+                let up = one.clone().mul_pow2(2 * j as i32);
+                let down = one.clone().mul_pow2(-2 * j as i32);
+                let range = j * panel..(j + 1) * panel;
+                let nodes = ls[range.clone()].iter_mut().zip(&mut lf[range]);
+                for ((s, f), ((ep, em), w)) in
+                    nodes.zip(rules.ep.iter().zip(&rules.em).zip(&rules.lw))
+                {
+                    let ex = up.clone() * ep;
+                    let emx = down.clone() * em;
+                    *s = ((ex.clone() - &emx) * &half_a).square();
+                    *f = (ex + emx) * &half_a * w;
+                }
             }
-        }
-        breaks.push(one.clone());
-        // The nodes (x², weight), then G at them with the weights: left f, s·f, s²·f; right f,
-        // σ·f.
-        let nl = n * (breaks.len() - 1);
-        let (mut left_s, mut left_w) = (Vec::with_capacity(nl), Vec::with_capacity(nl));
-        let mut panel_ends = Vec::with_capacity(breaks.len() - 1);
-        for pair in breaks.windows(2) {
-            for_panel_nodes(&gl, &pair[0], &pair[1], |s, w| {
-                left_s.push(s);
-                left_w.push(w.clone());
+            node_map(ls, lf, |s, w| {
+                let pp = one.clone() + s;
+                let (e1, dd, qq) =
+                    sc.left_node(s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
+                let h = s.clone() + &sc.eps2;
+                w.clone() * &sc.two_over_m1 * dd * e1.sqrt() / (qq * h)
             });
-            panel_ends.push(left_s.len());
+            lsf.clone_from_slice(lf);
+            node_map(ls, lsf, |s, f| s.clone() * f);
+            lssf.clone_from_slice(lsf);
+            node_map(ls, lssf, |s, f| s.clone() * f);
         }
-        let lf = chunked_map(&left_s, &left_w, |s, w| {
-            let pp = one.clone() + s;
-            let (e1, dd, qq) = sc.left_node(s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
-            let h = s.clone() + &sc.eps2;
-            w.clone() * &sc.two_over_m1 * dd * e1.sqrt() / (qq * h)
-        });
-        let lsf = chunked_map(&left_s, &lf, |s, f| s.clone() * f);
-        let lssf = chunked_map(&left_s, &lsf, |s, f| s.clone() * f);
-        let (mut right_s, mut right_w) = (Vec::with_capacity(n), Vec::with_capacity(n));
-        for_panel_nodes(&gl, &zero, &one, |sg, w| {
-            right_s.push(sg);
-            right_w.push(w.clone());
-        });
-        let rf = chunked_map(&right_s, &right_w, |sg, w| {
-            let pp = one.clone() + sg;
-            let (f1, dd, e) = sc.right_node(
-                sg,
-                &pp,
-                &pp.clone().mul_i64(2),
-                &pp.clone().mul_i64(4),
-                &one,
-            );
-            w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / e
-        });
-        let rsf = chunked_map(&right_s, &rf, |sg, f| sg.clone() * f);
-        let (left_f, right_f) = ([lf, lsf, lssf], [rf, rsf]);
+        // Right: σ, f, σ·f.
+        let nr = rules.right_s.len();
+        let mut right = Vec::with_capacity(3 * nr);
+        right.extend(rules.right_s.iter().cloned());
+        right.extend(rules.right_w.iter().cloned());
+        right.extend(rules.right_s.iter().cloned());
+        {
+            let (rs, rest) = right.split_at_mut(nr);
+            let (rf, rsf) = rest.split_at_mut(nr);
+            node_map(rs, rf, |sg, w| {
+                let pp = one.clone() + sg;
+                let (f1, dd, e) = sc.right_node(
+                    sg,
+                    &pp,
+                    &pp.clone().mul_i64(2),
+                    &pp.clone().mul_i64(4),
+                    &one,
+                );
+                w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / e
+            });
+            // σ·f in place of σ's copy.
+            node_map(rf, rsf, |f, sg| sg.clone() * f);
+        }
         Ok(GradedSetup {
-            k_max: k_ref.clone() * &T::from_ratio(5, 4, p),
-            left_s,
-            left_f,
-            panel_ends,
-            right_s,
-            right_f,
+            k_max,
+            panel,
+            left,
+            right,
         })
     }
 
@@ -214,28 +294,15 @@ impl<T: Real> GradedSetup<T> {
         let one = T::one(p);
         // Left, panel by panel: Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2},
         // Σ s² f u^{−5/2}, u = 1 + k²s.
-        let [lf, lsf, lssf] = &self.left_f;
-        let mut left = [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-        let mut start = 0;
-        for &end in &self.panel_ends {
-            let r = start..end;
-            let factors = [
-                &lf[r.clone()],
-                &lsf[r.clone()],
-                &lsf[r.clone()],
-                &lssf[r.clone()],
-            ];
-            let part = power_sums(&self.left_s[r], factors, dk, p, |s| {
-                one.clone() + axes.k2.clone() * s
-            });
-            for (a, q) in left.iter_mut().zip(part) {
-                *a += &q;
-            }
-            start = end;
-        }
+        let nl = self.left.len() / 4;
+        let [ls, lf, lsf, lssf] = [0, 1, 2, 3].map(|i| &self.left[i * nl..(i + 1) * nl]);
+        let left = power_sums(ls, [lf, lsf, lsf, lssf], self.panel, dk, p, |s| {
+            one.clone() + axes.k2.clone() * s
+        });
         // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
-        let [rf, rsf] = &self.right_f;
-        let right = power_sums(&self.right_s, [rf, rsf, rf, rsf], dk, p, |sg| {
+        let nr = self.right.len() / 3;
+        let [rs, rf, rsf] = [0, 1, 2].map(|i| &self.right[i * nr..(i + 1) * nr]);
+        let right = power_sums(rs, [rf, rsf, rf, rsf], nr, dk, p, |sg| {
             sg.clone() + &axes.k2
         });
         let [i2l, i1l, d2l, d1l] = left;
@@ -254,74 +321,75 @@ impl<T: Real> GradedSetup<T> {
             [di1, di2],
             BOUND_EPS,
             Method::Quadrature,
-            self.left_s.len() + self.right_s.len(),
+            nl + nr,
         )
     }
 }
 
-/// `[g(x₀, y₀), g(x₁, y₁), …]`, evaluated in chunks of [`CHUNK`] into a stack buffer before being
-/// appended (no dependence between nodes: vectorised at `f64`, like [`power_sums`]).
+/// `out[i] = g(x[i], out[i])` for every node: no dependence between nodes, so that at `f64` the
+/// compiler packs two nodes into one SSE2 square root and division.
 #[inline(always)]
-fn chunked_map<T: Real>(xs: &[T], ys: &[T], g: impl Fn(&T, &T) -> T) -> Vec<T> {
-    let mut out = Vec::with_capacity(xs.len());
-    let Some(first) = xs.first() else {
-        return out;
-    };
-    let mut buf = [(); CHUNK].map(|_| T::zero(first.prec()));
-    for (cx, cy) in xs.chunks(CHUNK).zip(ys.chunks(CHUNK)) {
-        for ((b, x), y) in buf.iter_mut().zip(cx).zip(cy) {
-            *b = g(x, y);
-        }
-        out.extend(buf[..cx.len()].iter().cloned());
+fn node_map<T: Real>(xs: &[T], out: &mut [T], g: impl Fn(&T, &T) -> T) {
+    for (o, x) in out.iter_mut().zip(xs) {
+        *o = g(x, o);
     }
-    out
 }
 
-/// Nodes a chunk in the node loops of [`chunked_map`] and [`power_sums`].
+/// Nodes a chunk in the node loops of [`power_sums`] (a stack buffer).
 const CHUNK: usize = 32;
 
 /// Σ a x^{−3/2}, Σ b x^{−3/2} and, with `dk`, Σ c x^{−5/2}, Σ d x^{−5/2} over the nodes, with
-/// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node).
+/// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node),
+/// summed in groups of `panel` nodes (each group's sum added to the total).
 #[inline(always)]
 fn power_sums<T: Real>(
     nodes: &[T],
-    [a, b, c, d]: [&[T]; 4],
+    factors: [&[T]; 4],
+    panel: usize,
     dk: bool,
     p: T::Prec,
     shift: impl Fn(&T) -> T,
 ) -> [T; 4] {
-    // Node values first, sums after: the node loop carries no dependence, so that at f64 the
-    // compiler packs two nodes into one SSE2 square root and division.
     let zero = || [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
     let mut acc = zero();
     let mut t3 = [(); CHUNK].map(|_| T::zero(p));
     let mut t5 = [(); CHUNK].map(|_| T::zero(p));
     let mut i0 = 0;
     while i0 < nodes.len() {
-        let m = CHUNK.min(nodes.len() - i0);
-        if dk {
-            for j in 0..m {
-                let x = shift(&nodes[i0 + j]);
-                let v = (x.clone() * &x * x.clone().sqrt()).recip();
-                t3[j] = v.clone() * x;
-                t5[j] = v;
-            }
-        } else {
-            for j in 0..m {
-                let x = shift(&nodes[i0 + j]);
-                t3[j] = (x.clone() * x.sqrt()).recip();
-            }
-        }
-        for j in 0..m {
-            let i = i0 + j;
-            acc[0] += &(a[i].clone() * &t3[j]);
-            acc[1] += &(b[i].clone() * &t3[j]);
+        let end = (i0 + panel).min(nodes.len());
+        let mut part = zero();
+        // Node values first, sums after: the node loop carries no dependence, so that at f64
+        // the compiler packs two nodes into one SSE2 square root and division.
+        while i0 < end {
+            let m = CHUNK.min(end - i0);
+            let xs = &nodes[i0..i0 + m];
             if dk {
-                acc[2] += &(c[i].clone() * &t5[j]);
-                acc[3] += &(d[i].clone() * &t5[j]);
+                for ((x, v3), v5) in xs.iter().zip(&mut t3).zip(&mut t5) {
+                    let x = shift(x);
+                    let v = (x.clone() * &x * x.clone().sqrt()).recip();
+                    *v3 = v.clone() * x;
+                    *v5 = v;
+                }
+            } else {
+                for (x, v3) in xs.iter().zip(&mut t3) {
+                    let x = shift(x);
+                    *v3 = (x.clone() * x.sqrt()).recip();
+                }
             }
+            let [a, b, c, d] = factors.map(|f| &f[i0..i0 + m]);
+            for j in 0..m {
+                part[0] += &(a[j].clone() * &t3[j]);
+                part[1] += &(b[j].clone() * &t3[j]);
+                if dk {
+                    part[2] += &(c[j].clone() * &t5[j]);
+                    part[3] += &(d[j].clone() * &t5[j]);
+                }
+            }
+            i0 += m;
         }
-        i0 += m;
+        for (s, q) in acc.iter_mut().zip(part) {
+            *s += &q;
+        }
     }
     acc
 }
