@@ -365,12 +365,19 @@ fn solve_core<T: Real>(
         }
     }
     let mut spent = 0;
-    // An unseeded start above k = 1 (A1/B1 > 1): at speed the root may still lie below k = 1,
-    // where the fast route applies, while iterates above it pay graded layouts. One evaluation at
-    // k = 1 (the one-shot fast route) tells the side and starts Newton from there with the
-    // bracket end at λ = 0. (Measured without it: faster by ~0.3 µs when the root is far above
-    // 1 at low speed, slower by 0.3–1.4 µs near the Rayleigh speed or A1/B1 near 1.)
-    if seed.is_none() && method != EllipseMethod::Quadrature && lam.is_positive() {
+    // An unseeded start above k = 1 with 1 < A1/B1 < 30: at speed the root may still lie below
+    // k = 1, where the fast route applies, while iterates above it pay graded layouts. One
+    // evaluation at k = 1 (the one-shot fast route) tells the side and starts Newton from there
+    // with the bracket end at λ = 0. From A1/B1 = 30 on the root lies far above 1 except near
+    // the Rayleigh speed, and the solve starts at the static seed with the asymptotic step of
+    // [`log_model_step`] instead (CLI minima over M_R ∈ {0, 0.9, 0.99, 0.9999}: A1/B1 = 10³–10⁶
+    // 1.3–2.4 µs instead of 1.7–3.1 µs; A1/B1 = 100 at M_R = 0.99 (k = 8.1) 2.05 µs instead of
+    // 1.91 µs, the one case measured slower).
+    if seed.is_none()
+        && method != EllipseMethod::Quadrature
+        && lam.is_positive()
+        && ratio.to_f64() < PROBE_BELOW_RATIO
+    {
         let zero = T::zero(p);
         let (f, df, _) = eval(&zero, None, true)?;
         spent = 1;
@@ -409,7 +416,12 @@ fn solve_core<T: Real>(
         }
         // Newton (or chord) step, or bisection / bracket growth when Newton misbehaves.
         let newton = if df.is_positive() && df.is_finite() {
-            Some(lam.clone() - f.clone() / &df)
+            Some(
+                match log_model_step(lam.to_f64(), f.to_f64(), df.to_f64()) {
+                    Some(d) => lam.clone() + T::from_f64(d, p),
+                    None => lam.clone() - f.clone() / &df,
+                },
+            )
         } else {
             None
         };
@@ -498,6 +510,38 @@ fn solve_core<T: Real>(
         iterations: 200,
         reached: last_step.map(|s| short(&s)).unwrap_or_default(),
     })
+}
+
+/// Below this curvature ratio an unseeded solve whose static seed lies above k = 1 first
+/// evaluates at k = 1 (see [`solve_core`]).
+const PROBE_BELOW_RATIO: f64 = 30.0;
+
+/// A long first step above k = 1 from the asymptotic form of (33) for k ≫ 1: I2 ≈ 2g(V)/k and
+/// I1 ≈ (2/k³)(g(V)(ln 4k − 1) + J(ν, M_R)), so F(λ) ≈ 2λ − ln(λ + c) + d. The two constants
+/// are fitted to F and F′ at the iterate (λ + c = 1/(2 − F′)) and the model solved for the step
+/// Δ in `f64`: F + 2Δ − ln(1 + Δ/(λ + c)) = 0. `None` (a plain Newton step instead) below
+/// k = 1, where the Newton step is short (|F/F′| ≤ 10⁻²: the last steps stay Newton's, whose
+/// error the stopping rule assumes), or where the fit does not apply (F′ ∉ (0, 2)).
+fn log_model_step(lam: f64, f: f64, df: f64) -> Option<f64> {
+    let newton = -f / df;
+    if !(lam > 0.0 && newton.abs() > 1e-2 && df > 0.0 && df < 2.0) {
+        return None;
+    }
+    let q0 = 1.0 / (2.0 - df);
+    let mut d = newton;
+    for _ in 0..8 {
+        if q0 + d <= 0.0 {
+            return None;
+        }
+        let g = f + 2.0 * d - (d / q0).ln_1p();
+        let dg = 2.0 - 1.0 / (q0 + d);
+        let step = g / dg;
+        d -= step;
+        if step.abs() <= 1e-10 * (1.0 + d.abs()) {
+            break;
+        }
+    }
+    d.is_finite().then_some(d)
 }
 
 /// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′, with F′'s
