@@ -329,3 +329,46 @@ fn ratio_above_one_agrees_with_quadrature_and_uses_the_fast_route_below_k1() {
         }
     }
 }
+
+/// Whatever path the solve takes (the k = 1 probe, the static start with the asymptotic step,
+/// the fast or graded routes, bisection), its k satisfies the shape equation (33): I2/I1 at the
+/// returned k, recomputed by the adaptive quadrature at double-double (an independent route at
+/// a higher precision), equals A1/B1 to within the conditioning of F = ln(I2/I1) in ln k times
+/// the reported error of k, and the returned I1, I2 are those integrals. A grid of 150 cases
+/// from A1/B1 = 10⁻⁶ to 10⁶ and M_R up to 0.9999.
+#[test]
+fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
+    use moving_hertz::routes::{direct::contact_integrals, AxisRatio};
+    let mut worst = 0.0f64;
+    for nu in [-0.5, 0.2, 0.5] {
+        let mat = Material::new(nu).unwrap();
+        let matd = Material::new(Dd::from_f64(nu, ())).unwrap();
+        for mr in [0.0, 0.5, 0.9, 0.99, 0.9999] {
+            let sp = mat.speed(mr).unwrap();
+            let spd = matd.speed(Dd::from_f64(mr, ())).unwrap();
+            for ratio in [1e-6, 1e-3, 0.5, 2.0, 10.0, 30.0, 100.0, 1e3, 1e4, 1e6] {
+                let at = format!("nu={nu} M_R={mr} A1/B1={ratio}");
+                let s = solve_ellipse(&mat, &sp, &ratio, None).unwrap();
+                let ax = AxisRatio::new(Dd::from_f64(s.k, ())).unwrap();
+                let c = contact_integrals(&matd, &spd, &ax, &Dd::zero(())).unwrap();
+                let (i1, i2) = (c.i1.to_f64(), c.i2.to_f64());
+                // F′ = d ln(I2/I1)/d ln k, from the reference's derivatives.
+                let df = (c.di2_dk.clone() / &c.i2 - c.di1_dk.clone() / &c.i1).to_f64() * s.k;
+                let resid = ((c.i2 / &c.i1).to_f64() / ratio).ln().abs();
+                let allowed = df.abs() * s.error_estimate + 8.0 * f64::EPSILON;
+                assert!(
+                    resid <= allowed,
+                    "{at}: k = {} leaves ln(I2/I1/ratio) = {resid:e} (allowed {allowed:e})",
+                    s.k
+                );
+                let e = (s.integrals.i1 / i1 - 1.0)
+                    .abs()
+                    .max((s.integrals.i2 / i2 - 1.0).abs())
+                    / f64::EPSILON;
+                assert!(e <= 64.0, "{at}: returned I1, I2 off by {e:.1} eps");
+                worst = worst.max(resid / f64::EPSILON);
+            }
+        }
+    }
+    println!("worst residual {worst:.1} eps");
+}

@@ -519,29 +519,33 @@ const PROBE_BELOW_RATIO: f64 = 30.0;
 /// A long first step above k = 1 from the asymptotic form of (33) for k ≫ 1: I2 ≈ 2g(V)/k and
 /// I1 ≈ (2/k³)(g(V)(ln 4k − 1) + J(ν, M_R)), so F(λ) ≈ 2λ − ln(λ + c) + d. The two constants
 /// are fitted to F and F′ at the iterate (λ + c = 1/(2 − F′)) and the model solved for the step
-/// Δ in `f64`: F + 2Δ − ln(1 + Δ/(λ + c)) = 0. `None` (a plain Newton step instead) below
-/// k = 1, where the Newton step is short (|F/F′| ≤ 10⁻²: the last steps stay Newton's, whose
-/// error the stopping rule assumes), or where the fit does not apply (F′ ∉ (0, 2)).
+/// Δ in `f64`: g(Δ) = F + 2Δ − ln(1 + Δ/(λ + c)) = 0 on the model's increasing branch
+/// λ + c + Δ > 1/2. g is convex there and g ≥ 0 at Newton's step, so Newton's method on g from
+/// that step falls monotonically to the root when one exists. `None` (a plain Newton step
+/// instead) below k = 1, where the Newton step is short (|F/F′| ≤ 10⁻²: the last steps stay
+/// Newton's, whose error the stopping rule assumes), where the fit does not apply (F′ ∉ (0, 2)),
+/// where the model has no root on its branch (far from the asymptotic regime, e.g. kε ≲ 1 near
+/// the Rayleigh speed), or where its step is not within a factor 4 of Newton's.
 fn log_model_step(lam: f64, f: f64, df: f64) -> Option<f64> {
     let newton = -f / df;
     if !(lam > 0.0 && newton.abs() > 1e-2 && df > 0.0 && df < 2.0) {
         return None;
     }
     let q0 = 1.0 / (2.0 - df);
+    let g = |d: f64| f + 2.0 * d - (d / q0).ln_1p();
     let mut d = newton;
-    for _ in 0..8 {
-        if q0 + d <= 0.0 {
+    for _ in 0..30 {
+        let step = g(d) / (2.0 - 1.0 / (q0 + d));
+        d -= step;
+        if !(q0 + d > 0.5) {
             return None;
         }
-        let g = f + 2.0 * d - (d / q0).ln_1p();
-        let dg = 2.0 - 1.0 / (q0 + d);
-        let step = g / dg;
-        d -= step;
         if step.abs() <= 1e-10 * (1.0 + d.abs()) {
             break;
         }
     }
-    d.is_finite().then_some(d)
+    let ratio = d / newton;
+    (g(d).abs() <= 1e-8 && (0.25..=4.0).contains(&ratio)).then_some(d)
 }
 
 /// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′, with F′'s
