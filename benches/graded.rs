@@ -1,6 +1,7 @@
 //! k > 1: the graded route's I1, I2 with dI/dk (`graded/<precision>`, k ∈ {3, 10³, 10⁶} at
-//! M_R = 0.9, and k = 3 at M_R = 0.9999) and the ellipse solve at A1/B1 = 10 whose root has k > 1
-//! (`ellipse_wide/<precision>`, M_R ∈ {0, 0.5, 0.9}; ν = 0.2). Material and speed are built
+//! M_R = 0.9, and k = 3 at M_R = 0.9999) and the ellipse solve with roots k > 1
+//! (`ellipse_wide/<precision>`: A1/B1 = 10 at M_R ∈ {0, 0.5, 0.9}, k = 3.1–4.5; A1/B1 = 10³ and
+//! 10⁶ at M_R ∈ {0, 0.9, 0.9999}, k = 9–2900; ν = 0.2). Material and speed are built
 //! outside the timed call.
 //!
 //! Run: `cargo bench --bench graded -- --warm-up-time 1 --measurement-time 2`
@@ -34,10 +35,20 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
     if T::bits(p) > 200 {
         g.sample_size(10);
     }
-    let ratio = T::parse("10", p).expect("ratio");
-    for mr in ["0", "0.5", "0.9"] {
+    for (r, mr) in [
+        ("10", "0"),
+        ("10", "0.5"),
+        ("10", "0.9"),
+        ("1e3", "0"),
+        ("1e3", "0.9"),
+        ("1e3", "0.9999"),
+        ("1e6", "0"),
+        ("1e6", "0.9"),
+        ("1e6", "0.9999"),
+    ] {
+        let ratio = T::parse(r, p).expect("ratio");
         let sp = mat.speed(T::parse(mr, p).expect("speed")).expect("speed");
-        g.bench_function(format!("ratio=10_M={mr}"), |b| {
+        g.bench_function(format!("ratio={r}_M={mr}"), |b| {
             b.iter(|| {
                 solve_ellipse_with(
                     black_box(&mat),
