@@ -15,16 +15,10 @@ import json
 import os
 import subprocess
 
+from criterion_table import fmt  # same directory: the time formatter of the bench tables
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 BIN = os.path.join(ROOT, "target", "release", "moving-hertz")
-
-
-def fmt(ns):
-    if ns < 1e3:
-        return f"{ns:.0f} ns"
-    if ns < 1e6:
-        return f"{ns / 1e3:.2f} µs"
-    return f"{ns / 1e6:.2f} ms"
 
 
 def main():
