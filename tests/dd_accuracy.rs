@@ -188,6 +188,54 @@ fn roots() {
         4.0,
     );
     unary(
+        "recip_sqrt",
+        25,
+        |r| r.dd_log(-100.0, 100.0, false),
+        |x| x.recip_sqrt(),
+        |x| x.recip_sqrt(),
+        6.0,
+    );
+    // Near the ends of the exponent range (above 1e290 the general path).
+    unary(
+        "recip_sqrt, extreme",
+        26,
+        |r| {
+            if r.unit() < 0.5 {
+                r.dd_log(-290.0, -280.0, false)
+            } else {
+                r.dd_log(285.0, 300.0, false)
+            }
+        },
+        |x| x.recip_sqrt(),
+        |x| x.recip_sqrt(),
+        6.0,
+    );
+    // The kernel forms of the graded route (each power multiplies recip_sqrt's error).
+    binary(
+        "sqrt_div",
+        27,
+        |r| (r.dd_log(-50.0, 50.0, false), r.dd_log(-50.0, 50.0, true)),
+        |a, b| a.sqrt_div(&b),
+        |a, b| Float::with_val(256, a.sqrt() / b),
+        12.0,
+    );
+    unary(
+        "pow_m3_2",
+        28,
+        |r| r.dd_log(-60.0, 60.0, false),
+        |x| x.pow_m3_2(),
+        |x| Float::with_val(256, x.clone().sqrt() * &x).recip(),
+        16.0,
+    );
+    unary(
+        "pow_m3_2_m5_2 (x^-5/2)",
+        29,
+        |r| r.dd_log(-60.0, 60.0, false),
+        |x| x.pow_m3_2_m5_2().1,
+        |x| Float::with_val(256, x.clone().sqrt() * &x * &x).recip(),
+        24.0,
+    );
+    unary(
         "cbrt",
         6,
         |r| r.dd_log(-100.0, 100.0, true),

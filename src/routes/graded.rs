@@ -228,7 +228,7 @@ impl<T: Real> GradedSetup<T> {
                 let (e1, dd, qq) =
                     sc.left_node(s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
                 let h = s.clone() + &sc.eps2;
-                w.clone() * &sc.two_over_m1 * dd * e1.sqrt() / (qq * h)
+                w.clone() * &sc.two_over_m1 * dd * e1.sqrt_div(&(qq * h))
             });
             lsf.clone_from_slice(lf);
             node_map(ls, lsf, |s, f| s.clone() * f);
@@ -253,7 +253,7 @@ impl<T: Real> GradedSetup<T> {
                     &pp.clone().mul_i64(4),
                     &one,
                 );
-                w.clone() * &sc.two_over_m1 * f1.sqrt() * dd / e
+                w.clone() * &sc.two_over_m1 * dd * f1.sqrt_div(&e)
             });
             // σ·f in place of σ's copy.
             node_map(rf, rsf, |f, sg| sg.clone() * f);
@@ -365,15 +365,11 @@ fn power_sums<T: Real>(
             let xs = &nodes[i0..i0 + m];
             if dk {
                 for ((x, v3), v5) in xs.iter().zip(&mut t3).zip(&mut t5) {
-                    let x = shift(x);
-                    let v = (x.clone() * &x * x.clone().sqrt()).recip();
-                    *v3 = v.clone() * x;
-                    *v5 = v;
+                    (*v3, *v5) = shift(x).pow_m3_2_m5_2();
                 }
             } else {
                 for (x, v3) in xs.iter().zip(&mut t3) {
-                    let x = shift(x);
-                    *v3 = (x.clone() * x.sqrt()).recip();
+                    *v3 = shift(x).pow_m3_2();
                 }
             }
             let [a, b, c, d] = factors.map(|f| &f[i0..i0 + m]);

@@ -600,6 +600,26 @@ impl Dd {
         Dd::from_parts(s, corr)
     }
 
+    /// 1/√x from the f64 value y = 1/√hi (error δ ≲ 1 ulp) by one third-order Newton step:
+    /// with r = 1 − x·y² (formed in double-double, y² exact), y·(1 + r/2 + 3r²/8) leaves
+    /// O(δ³) and the rounding of r (~2⁻¹⁰⁶ relative) — no double-double division.
+    fn recip_sqrt_dd(self) -> Dd {
+        let a = self.hi();
+        // Above 1e290 (where y² would be subnormal), zero, negative or not finite: the general
+        // path.
+        if !(f64::MIN_POSITIVE..=1e290).contains(&a) {
+            return self.sqrt_dd().recip();
+        }
+        let y = 1.0 / a.sqrt();
+        let (p, e) = two_prod(y, y);
+        let xy2 = self.mul_dd(Dd::from_parts(p, e));
+        // 1 − hi is exact (hi ∈ [1/2, 2]); r ≈ −2δ.
+        let r = (1.0 - xy2.hi()) - xy2.lo();
+        let c = y * (r * (0.5 + 0.375 * r));
+        let (h, l) = fast_two_sum(y, c);
+        Dd::from_parts(h, l)
+    }
+
     fn cbrt_dd(self) -> Dd {
         let a = self.hi();
         if a == 0.0 || !a.is_finite() {
@@ -780,6 +800,30 @@ impl Real for Dd {
     }
     fn sqrt(self) -> Dd {
         self.sqrt_dd()
+    }
+    fn recip_sqrt(self) -> Dd {
+        self.recip_sqrt_dd()
+    }
+    fn sqrt_div(self, b: &Dd) -> Dd {
+        if !(self.hi() > 0.0 && b.hi() != 0.0 && self.is_finite() && b.is_finite()) {
+            return self.sqrt_dd() / *b;
+        }
+        let q = self * (self * b.square()).recip_sqrt_dd();
+        if b.hi() < 0.0 {
+            -q
+        } else {
+            q
+        }
+    }
+    fn pow_m3_2(self) -> Dd {
+        let y = self.recip_sqrt_dd();
+        y.square() * y
+    }
+    fn pow_m3_2_m5_2(self) -> (Dd, Dd) {
+        let y = self.recip_sqrt_dd();
+        let y2 = y.square();
+        let y3 = y2 * y;
+        (y3, y3 * y2)
     }
     fn cbrt(self) -> Dd {
         self.cbrt_dd()

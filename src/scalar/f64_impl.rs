@@ -172,6 +172,10 @@ impl Real for f64 {
         f64::sqrt(self)
     }
     #[inline(always)]
+    fn recip_sqrt(self) -> f64 {
+        1.0 / f64::sqrt(self)
+    }
+    #[inline(always)]
     fn cbrt(self) -> f64 {
         f64::cbrt(self)
     }

@@ -217,6 +217,33 @@ pub trait Real: Field {
     fn round(self) -> Self;
     /// Square root (NaN for negative input).
     fn sqrt(self) -> Self;
+    /// 1/√x (NaN for negative input, +∞ at 0). The default is `sqrt` then `recip` (f64: two
+    /// correctly rounded operations, ≤ 1 ulp); double-double refines the f64 value by one
+    /// third-order Newton step without a double-double division (≤ 4·2⁻¹⁰⁶ measured,
+    /// `tests/dd_accuracy.rs`); MPFR's `mpfr_rec_sqrt` is correctly rounded.
+    fn recip_sqrt(self) -> Self {
+        self.sqrt().recip()
+    }
+    /// √self / b, the form of G's factors in (45). The default is one square root and one
+    /// division; double-double forms self·(self·b²)^{−1/2} with [`Real::recip_sqrt`] (no
+    /// double-double division; ≤ 4.3·2⁻¹⁰⁶ measured, `tests/dd_accuracy.rs`).
+    fn sqrt_div(self, b: &Self) -> Self {
+        self.sqrt() / b
+    }
+    /// x^{−3/2}, the kernel power of (34) (u^{−3/2}, Δ⁻³). The default is 1/(x·√x): at `f64`
+    /// and MPFR one square root, one product and one division; double-double forms y³ from
+    /// y = [`Real::recip_sqrt`] instead (no double-double division; ≤ 12·2⁻¹⁰⁶ measured, mean
+    /// 1.4·2⁻¹⁰⁶: the cube triples y's error).
+    fn pow_m3_2(self) -> Self {
+        (self.clone() * self.sqrt()).recip()
+    }
+    /// (x^{−3/2}, x^{−5/2}), the kernel powers of (34) and of its k-derivative. The default is
+    /// v = 1/(x²·√x) and (v·x, v); double-double forms (y³, y⁵) from y = [`Real::recip_sqrt`]
+    /// (x^{−5/2} ≤ 20·2⁻¹⁰⁶ measured, mean 2.3·2⁻¹⁰⁶).
+    fn pow_m3_2_m5_2(self) -> (Self, Self) {
+        let v = (self.clone() * &self * self.clone().sqrt()).recip();
+        (v.clone() * self, v)
+    }
     /// Real cube root.
     fn cbrt(self) -> Self;
     /// e^x.

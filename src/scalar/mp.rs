@@ -257,6 +257,9 @@ impl Real for Mp {
     fn sqrt(self) -> Mp {
         Mp(self.0.sqrt())
     }
+    fn recip_sqrt(self) -> Mp {
+        Mp(self.0.recip_sqrt())
+    }
     fn cbrt(self) -> Mp {
         Mp(self.0.cbrt())
     }
