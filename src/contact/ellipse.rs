@@ -500,7 +500,10 @@ fn solve_core<T: Real>(
             if cube.mul_i64(64) <= eps.clone() * &scale.clone().square() * &scale {
                 chord = fresh_slope.clone();
             }
-        } else if !was_newton {
+        } else if !was_newton || !allow_chord {
+            // An intermediate stage of the ladder (`allow_chord` false) takes one chord step
+            // with the lower precision's derivative and then evaluates the derivatives, so that
+            // it hands on its own F′ (a precision's worth of chord contraction) to the next stage.
             chord = None;
         }
         last_step = Some(step);

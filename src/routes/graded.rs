@@ -200,6 +200,8 @@ impl<T: Real> GradedSetup<T> {
         // a/2 = 1/(4^M − 4^−M).
         let four_m = one.clone().mul_pow2(2 * m as i32);
         let half_a = (four_m.clone() - four_m.recip()).recip();
+        // (a/2)·(2/m1): G's constant factor folded into the weights' scale.
+        let half_a_g = half_a.clone() * &sc.two_over_m1;
         let panel = rules.ep.len();
         let nl = m * panel;
         // Left: s and the weight (a/2)(e^x + e^−x)·w·ln 2 at each node, then f in place of the
@@ -210,6 +212,7 @@ impl<T: Real> GradedSetup<T> {
             let (lf, rest) = rest.split_at_mut(nl);
             let (lsf, lssf) = rest.split_at_mut(nl);
             for j in 0..m {
+                // e^{±x} on panel j: the cached 2^{±(1+t)} times 4^{±j}, exactly.
                 let up = one.clone().mul_pow2(2 * j as i32);
                 let down = one.clone().mul_pow2(-2 * j as i32);
                 let range = j * panel..(j + 1) * panel;
@@ -220,15 +223,15 @@ impl<T: Real> GradedSetup<T> {
                     let ex = up.clone() * ep;
                     let emx = down.clone() * em;
                     *s = ((ex.clone() - &emx) * &half_a).square();
-                    *f = (ex + emx) * &half_a * w;
+                    *f = (ex + emx) * &half_a_g * w;
                 }
             }
             node_map(ls, lf, |s, w| {
                 let pp = one.clone() + s;
                 let (e1, dd, qq) =
-                    sc.left_node(s, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4));
+                    sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2));
                 let h = s.clone() + &sc.eps2;
-                w.clone() * &sc.two_over_m1 * dd * e1.sqrt_div(&(qq * h))
+                w.clone() * dd * e1.sqrt_div(&(qq * h))
             });
             lsf.clone_from_slice(lf);
             node_map(ls, lsf, |s, f| s.clone() * f);
