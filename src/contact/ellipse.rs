@@ -20,8 +20,10 @@
 //! **Precision ladder** ([`solve_ellipse_ladder`]): a solve at high precision is started from
 //! the `f64` root and its F′ (good to ~2^-40). At double-double two chord steps with that F′
 //! reach ε (error 2^-48 → 2^-88 → below 2^-106): two double-double evaluations without
-//! k-derivatives. Above 106 bits a double-double stage comes first, then Newton or chord steps
-//! from its root (error ~2^-100): 2 evaluations at 256 bits, 3 at 512 — a few high-precision
+//! k-derivatives. Above 106 bits a double-double stage comes first (one chord step with the
+//! `f64` F′, then one Newton step, so that it hands on its own F′, good to ~2^-90), then chord
+//! steps from its root (error ~2^-100 → ~2^-190 → below 2^-256): 2 evaluations without
+//! k-derivatives at 256 bits, 3 at 512, 4 at 1024 — a few high-precision
 //! evaluations of the integrals, no search. Test: `tests/contact.rs` (the ladder's k within 10ε
 //! of a 320-bit adaptive-quadrature solve at f64, double-double and 256 bits).
 
@@ -600,8 +602,8 @@ fn finish<T: Real>(
 
 /// The precision ladder: solves at `f64` first (inputs rounded to `f64`), above 106 bits then at
 /// double-double, and refines the root at the working precision of `T` from the last stage's root
-/// and derivative — two chord steps at double-double, two or three Newton or chord steps above
-/// (module docs): a few high-precision evaluations of the integrals instead of a search. For
+/// and derivative — two chord steps at double-double, two at 256 bits, three at 512 (module
+/// docs): a few high-precision evaluations of the integrals instead of a search. For
 /// `T = f64` this is [`solve_ellipse`]. Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit
 /// quadrature solve, `tests/contact.rs`), with an error estimate.
 pub fn solve_ellipse_ladder<T: Real>(
