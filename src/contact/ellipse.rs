@@ -496,8 +496,10 @@ fn solve_core<T: Real>(
         }
         // The next evaluation is expected to be the last (its step ~δ², the stop above then
         // holds with age δ: δ³ ≤ ε/64): it skips the k-derivatives and steps with this
-        // iterate's F′ (a chord step), which costs no convergence at that distance.
-        if allow_chord && was_newton && newton_phase && fresh {
+        // iterate's F′ (a chord step), which costs no convergence at that distance. From the
+        // second evaluation on: a wrong guess here costs no accuracy (the stop above counts the
+        // derivative's age), at most one more evaluation without derivatives.
+        if allow_chord && was_newton && (newton_phase || it >= 1) && fresh {
             let cube = step.clone().square() * &step;
             if cube.mul_i64(64) <= eps.clone() * &scale.clone().square() * &scale {
                 chord = fresh_slope.clone();
@@ -539,6 +541,9 @@ fn log_model_step(lam: f64, f: f64, df: f64) -> Option<f64> {
     let q0 = 1.0 / (2.0 - df);
     let g = |d: f64| f + 2.0 * d - (d / q0).ln_1p();
     let mut d = newton;
+    // Converged when a step falls below 1e-10 (1 + |d|): then |g| ≤ 2·10⁻¹⁰(1 + |d|), as
+    // 0 < g′ ≤ 2 on the branch.
+    let mut converged = false;
     for _ in 0..30 {
         let step = g(d) / (2.0 - 1.0 / (q0 + d));
         d -= step;
@@ -546,11 +551,12 @@ fn log_model_step(lam: f64, f: f64, df: f64) -> Option<f64> {
             return None;
         }
         if step.abs() <= 1e-10 * (1.0 + d.abs()) {
+            converged = true;
             break;
         }
     }
     let ratio = d / newton;
-    (g(d).abs() <= 1e-8 && (0.25..=4.0).contains(&ratio)).then_some(d)
+    (converged && (0.25..=4.0).contains(&ratio)).then_some(d)
 }
 
 /// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′, with F′'s
