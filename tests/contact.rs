@@ -339,7 +339,7 @@ fn ratio_above_one_agrees_with_quadrature_and_uses_the_fast_route_below_k1() {
 #[test]
 fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
     use moving_hertz::routes::{direct::contact_integrals, AxisRatio};
-    let mut worst = 0.0f64;
+    let (mut worst, mut worst_i) = (0.0f64, 0.0f64);
     for nu in [-0.5, 0.2, 0.5] {
         let mat = Material::new(nu).unwrap();
         let matd = Material::new(Dd::from_f64(nu, ())).unwrap();
@@ -365,10 +365,11 @@ fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
                     .abs()
                     .max((s.integrals.i2 / i2 - 1.0).abs())
                     / f64::EPSILON;
-                assert!(e <= 64.0, "{at}: returned I1, I2 off by {e:.1} eps");
+                assert!(e <= 16.0, "{at}: returned I1, I2 off by {e:.1} eps");
                 worst = worst.max(resid / f64::EPSILON);
+                worst_i = worst_i.max(e);
             }
         }
     }
-    println!("worst residual {worst:.1} eps");
+    println!("worst residual {worst:.1} eps, returned I1, I2 worst {worst_i:.1} eps");
 }

@@ -357,6 +357,10 @@ fn solve_core<T: Real>(
     let mut last_step: Option<T> = None;
     let mut chord: Option<Chord<T>> = None;
     let mut fresh_slope: Option<Chord<T>> = None;
+    // The last iterate with derivatives, for the Hermite stop (unseeded solves that may end on
+    // any evaluation).
+    let mut prev: Option<Point<T>> = None;
+    let hermite_stop = allow_chord && seed.is_none();
     if let (Some((c, seed_err)), Some(_)) = (seed_slope, seed) {
         // Chord steps from a lower precision's derivative (relative error r): each multiplies
         // the error by ~r. Taken when two of them bring the seed's error δ0 to ε/64.
@@ -466,6 +470,36 @@ fn solve_core<T: Real>(
             .map(|c| (lam.clone() - &c.lam).abs() + &c.rel_err)
             .unwrap_or_else(|| T::zero(p));
         let fresh = chord.is_none();
+        // Hermite stop: with F, F′ at this and the previous iterate, the cubic through them
+        // gives the root's remaining step h to O(D²h²) (D the distance between the iterates),
+        // and I1, I2 carried by their own Hermite cubics: one evaluation fewer than Newton's
+        // stop where the step is ≲ 10⁻⁶ but not yet ≲ 10⁻⁹.
+        let here = fresh.then(|| Point {
+            lam: lam.clone(),
+            f: f.clone(),
+            df: df.clone(),
+            ints: ci.0.clone(),
+        });
+        if let (true, true, Some(a), Some(b)) = (hermite_stop, was_newton, &prev, &here) {
+            if let Some((lam_root, err, ints)) = hermite_root(a, b, &eps, &scale) {
+                let lam_b = b.lam.clone();
+                let mut ci = ci;
+                ci.0 = ints;
+                return Ok((
+                    finish(lam_root.clone(), &lam_root, ci, err, it + 1),
+                    Some(Chord {
+                        lam: lam_b,
+                        di1: b.ints.di1_dk.clone(),
+                        di2: b.ints.di2_dk.clone(),
+                        df: b.df.clone(),
+                        rel_err: T::zero(p),
+                    }),
+                ));
+            }
+        }
+        if let Some(h) = here {
+            prev = Some(h);
+        }
         if fresh {
             fresh_slope = Some(Chord {
                 lam: lam.clone(),
@@ -569,6 +603,76 @@ fn log_model_step(lam: f64, f: f64, df: f64) -> Option<f64> {
     }
     let ratio = d / newton;
     (converged && (0.25..=4.0).contains(&ratio)).then_some(d)
+}
+
+/// An iterate with its F, F′ and integrals with their k-derivatives (the Hermite stop).
+struct Point<T: Real> {
+    lam: T,
+    f: T,
+    df: T,
+    ints: KIntegrals<T>,
+}
+
+/// The cubic through (x_b, y_b, y′_b) and (x_a, y_a, y′_a), as coefficients c2, c3 of
+/// y(x_b + h) = y_b + y′_b h + c2 h² + c3 h³.
+fn hermite_coefficients<T: Real>(d: &T, ya: &T, yb: &T, dya: &T, dyb: &T) -> (T, T) {
+    let c3 = ((dya.clone() + dyb) * d - (ya.clone() - yb).mul_i64(2)) / (d.square() * d);
+    let c2 = (dya.clone() - dyb) / d.clone().mul_i64(2) - (c3.clone() * d).mul_i64(3).mul_pow2(-1);
+    (c2, c3)
+}
+
+/// The Hermite stop of [`solve_core`]: from iterates `a` (earlier) and `b` (this one, both with
+/// derivatives), the root λ_b + h of the cubic through F, F′ at both, and I1, I2 (with their
+/// k-derivatives) carried to it by the cubics through their values and k-derivatives. Taken when
+/// |h| ≤ |D|/8 (D = λ_a − λ_b) and 8(1 + |c3|)D²h²/F′ ≤ ε·scale, the interpolation error
+/// (F⁗/24)D²h²/F′ with |F⁗| ≤ 24(1 + |c3|) assumed, c3 the cubic's F‴/6 (measured F″, F‴ of
+/// order 0.01–1 in λ); the carry's error is of the same form in k, relative D²h² times
+/// k⁴|I⁗|/I (≲ 10²), below ε where the stop fires (|h| ≲ 10⁻⁷ at |D| ≲ 10⁻²).
+/// Returns λ, the error bound in λ, and the carried integrals.
+fn hermite_root<T: Real>(
+    a: &Point<T>,
+    b: &Point<T>,
+    eps: &T,
+    scale: &T,
+) -> Option<(T, T, KIntegrals<T>)> {
+    let d = a.lam.clone() - &b.lam;
+    if d.is_zero() || !b.df.is_positive() {
+        return None;
+    }
+    let (c2, c3) = hermite_coefficients(&d, &a.f, &b.f, &a.df, &b.df);
+    // h: Newton's step corrected twice by the cubic's terms (|c2 h| ≪ F′ here).
+    let newton = -(b.f.clone() / &b.df);
+    let mut h = newton.clone();
+    for _ in 0..2 {
+        h = newton.clone() - (c2.clone() + c3.clone() * &h) * &h.square() / &b.df;
+    }
+    let (hf, df_, c3f) = (h.to_f64().abs(), d.to_f64().abs(), c3.to_f64().abs());
+    let err = 8.0 * (1.0 + c3f) * df_ * df_ * hf * hf / b.df.to_f64();
+    if !(hf * 8.0 <= df_ && err <= eps.to_f64() * scale.to_f64() && err.is_finite()) {
+        return None;
+    }
+    // The integrals, in k: Hermite cubics from the two iterates' values and k-derivatives.
+    let (ka, kb) = (a.lam.clone().exp(), b.lam.clone().exp());
+    let dk = ka - &kb;
+    let hk = (b.lam.clone() + &h).exp() - &kb;
+    let carry = |ya: &T, yb: &T, dya: &T, dyb: &T| {
+        let (c2, c3) = hermite_coefficients(&dk, ya, yb, dya, dyb);
+        let val = yb.clone() + (dyb.clone() + (c2.clone() + c3.clone() * &hk) * &hk) * &hk;
+        let der = dyb.clone() + (c2.mul_i64(2) + c3.mul_i64(3) * &hk) * &hk;
+        (val, der)
+    };
+    let (ia, ib) = (&a.ints, &b.ints);
+    let (i1, di1) = carry(&ia.i1, &ib.i1, &ia.di1_dk, &ib.di1_dk);
+    let (i2, di2) = carry(&ia.i2, &ib.i2, &ia.di2_dk, &ib.di2_dk);
+    let ints = KIntegrals {
+        i1,
+        i2,
+        di1_dk: di1,
+        di2_dk: di2,
+        error_estimate: ib.error_estimate.clone(),
+        work: ib.work,
+    };
+    Some((b.lam.clone() + h, T::from_f64(err, eps.prec()), ints))
 }
 
 /// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′, with F′'s
