@@ -18,10 +18,10 @@
 //! k-derivatives and steps with the previous F′ (a chord step, error ~δ·|λ − λ_F′|). An
 //! unseeded solve also stops one evaluation earlier where the Hermite cubic through F, F′ at
 //! its last two iterates (distance D) pins the remaining step h to O(D²h²) ≤ ε/8
-//! ([`hermite_root`]; I1, I2 carried by their own cubics in k): 37 of 165 solves one evaluation
+//! (`hermite_root`; I1, I2 carried by their own cubics in k): 37 of 165 solves one evaluation
 //! fewer, none more (ν ∈ {−0.5, 0.2, 0.5} × A1/B1 = 10⁻⁶…10⁶ × M_R = 0…0.9999), returned I1, I2
 //! within 2ε of a double-double adaptive quadrature (`tests/contact.rs`). From A1/B1 = 30 on,
-//! long steps at kε ≥ 5 solve the asymptotic form of (33) for k ≫ 1 ([`log_model_step`]).
+//! long steps at kε ≥ 5 solve the asymptotic form of (33) for k ≫ 1 (`log_model_step`).
 //!
 //! **Precision ladder** ([`solve_ellipse_ladder`]): a solve at high precision is started from
 //! the `f64` root and its F′ (good to ~2^-40). At double-double two chord steps with that F′
