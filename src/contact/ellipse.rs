@@ -386,11 +386,13 @@ fn solve_core<T: Real>(
     // the Rayleigh speed, and the solve starts at the static seed with the asymptotic step of
     // [`log_model_step`] instead (CLI minima over M_R ∈ {0, 0.9, 0.99, 0.9999}: A1/B1 = 10³–10⁶
     // 1.3–2.4 µs instead of 1.7–3.1 µs; A1/B1 = 100 at M_R = 0.99 (k = 8.1) 2.05 µs instead of
-    // 1.91 µs, the one case measured slower).
+    // 1.91 µs, the one case measured slower) — unless the static seed k0 has
+    // k0ε < [`PROBE_BELOW_SEED_K_EPS`], where the speed pulls the root towards or below 1.
     if seed.is_none()
         && method != EllipseMethod::Quadrature
         && lam.is_positive()
-        && ratio.to_f64() < PROBE_BELOW_RATIO
+        && (ratio.to_f64() < PROBE_BELOW_RATIO
+            || lam.to_f64().exp() * pole_width < PROBE_BELOW_SEED_K_EPS)
     {
         let zero = T::zero(p);
         let (f, df, _) = eval(&zero, None, true)?;
@@ -566,6 +568,14 @@ fn solve_core<T: Real>(
 /// Below this curvature ratio an unseeded solve whose static seed lies above k = 1 first
 /// evaluates at k = 1 (see [`solve_core`]).
 const PROBE_BELOW_RATIO: f64 = 30.0;
+
+/// ... and at any ratio when the static seed k0 has k0·ε below this (ε = √(1 − M_R²)): near the
+/// Rayleigh speed the root falls far below the static seed, to k ≈ 0.8 at A1/B1 = 30 and
+/// M_R = 0.9999 (k0 = 8.7, k0ε = 0.12). CLI minima (two interleaved rounds, A1/B1 = 30…10⁴ ×
+/// M_R ∈ {0.99, 0.999, 0.9999}) for thresholds 0, 0.5, 1, 2: A1/B1 = 30 at 0.9999 2.17 µs
+/// without, 1.12–1.16 µs with; the other cells within the machine's noise for 0.5, some slower
+/// for 1 and 2 (A1/B1 = 300 at 0.9999, k0ε = 0.53: 2.21 µs at 1 against 1.97 at 0.5).
+const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
 
 /// The asymptotic step of [`log_model_step`] is taken only when it lands at kε ≥ this
 /// (ε = √(1 − M_R²)): its form assumes the Rayleigh pole's width ε ≫ 1/k. Chosen by counting
