@@ -367,6 +367,9 @@ fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
                     / f64::EPSILON;
                 assert!(e <= 16.0, "{at}: returned I1, I2 off by {e:.1} eps");
                 worst = worst.max(resid / f64::EPSILON);
+                if e > 3.0 {
+                    println!("{at}: I err {e:.1}");
+                }
                 worst_i = worst_i.max(e);
             }
         }

@@ -18,9 +18,10 @@
 //! k-derivatives and steps with the previous F′ (a chord step, error ~δ·|λ − λ_F′|). An
 //! unseeded solve also stops one evaluation earlier where the Hermite cubic through F, F′ at
 //! its last two iterates (distance D) pins the remaining step h to O(D²h²) ≤ ε/8
-//! (`hermite_root`; I1, I2 carried by their own cubics in k): 37 of 165 solves one evaluation
-//! fewer, none more (ν ∈ {−0.5, 0.2, 0.5} × A1/B1 = 10⁻⁶…10⁶ × M_R = 0…0.9999), returned I1, I2
-//! within 2ε of a double-double adaptive quadrature (`tests/contact.rs`). From A1/B1 = 30 on,
+//! (`hermite_root`; I1, I2 carried by their own cubics in k, relative error ≤ 16D²h² ≤ ε): 51
+//! of 165 solves one evaluation fewer, none more (ν ∈ {−0.5, 0.2, 0.5} × A1/B1 = 10⁻⁶…10⁶ ×
+//! M_R = 0…0.9999: 547 → 496 evaluations), returned I1, I2 within 3ε of a double-double
+//! adaptive quadrature (`tests/contact.rs`). From A1/B1 = 30 on,
 //! long steps at kε ≥ 5 solve the asymptotic form of (33) for k ≫ 1 (`log_model_step`).
 //!
 //! **Precision ladder** ([`solve_ellipse_ladder`]): a solve at high precision is started from
@@ -156,16 +157,44 @@ pub fn check_ratio<T: Real>(ratio: &T) -> Result<()> {
     Ok(())
 }
 
-/// A start for Newton: Hamrock & Brewe's approximation of the static Hertz ellipse,
-/// k ≈ (A1/B1)^(2/π) (within a few per cent of the static k for 10^-6 ≤ A1/B1 ≤ 10^6; the
-/// speed lowers k further, which the safeguarded Newton iteration follows).
+/// A start for Newton: the static Hertz ellipse, by Hamrock & Brewe's approximation
+/// k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a few per cent of the static k down to 10⁻⁶) and by
+/// the k ≫ 1 form of static Hertz from 30 on ([`static_seed_wide`]); the speed lowers k further,
+/// which the safeguarded Newton iteration follows.
 fn static_seed(ratio: f64) -> f64 {
+    if !(ratio.is_finite() && ratio > 0.0) {
+        return 1.0;
+    }
+    if ratio >= ASYMPTOTIC_SEED_RATIO {
+        return static_seed_wide(ratio);
+    }
     let k = ratio.powf(std::f64::consts::FRAC_2_PI);
     if k.is_finite() && k > 0.0 {
         k
     } else {
         1.0
     }
+}
+
+/// From this ratio on the static seed is the k ≫ 1 form of static Hertz instead of Hamrock &
+/// Brewe's: at A1/B1 = 30 both are within 1.5 % of the static root, above it Hamrock & Brewe's
+/// overestimates (×1.45 at 10⁴, ×2.3 at 10⁶). A1/B1 = 10⁶, M_R = 0.9 at f64: 2.16 → 1.68 µs (CLI
+/// minima, A/B in one binary); 10³ and 10⁴ unchanged. The mirror image for A1/B1 ≤ 1/30
+/// (k = 1/k(1/ratio)) was measured and not used: faster at rest (1.31 → 1.07 µs at 10⁻⁶) but
+/// slower at speed (1.22 → 1.39 µs at 10⁻⁶, M_R = 0.9999), where the speed lowers k and Hamrock &
+/// Brewe's underestimate of the static k lies nearer the root.
+const ASYMPTOTIC_SEED_RATIO: f64 = 30.0;
+
+/// The static root for A1/B1 = `ratio` ≥ 30 from the k ≫ 1 form of (33) at rest,
+/// A1/B1 = k²/(ln 4k − 1) (I2 ≈ 2g/k, I1 ≈ (2g/k³)(ln 4k − 1)), by four fixed-point steps
+/// k ← √(ratio·(ln 4k − 1)) (a contraction: each step divides the error by ~2(ln 4k − 1)); within
+/// 1.5 % of the static root at A1/B1 = 30 and 0.01 % at 10⁶.
+fn static_seed_wide(ratio: f64) -> f64 {
+    let mut k = ratio.sqrt();
+    for _ in 0..4 {
+        k = (ratio * ((4.0 * k).ln() - 1.0)).sqrt();
+    }
+    k
 }
 
 /// How the integrals inside the ellipse solve are evaluated.
@@ -642,8 +671,8 @@ fn hermite_coefficients<T: Real>(d: &T, ya: &T, yb: &T, dya: &T, dyb: &T) -> (T,
 /// k-derivatives) carried to it by the cubics through their values and k-derivatives. Taken when
 /// |h| ≤ |D|/8 (D = λ_a − λ_b) and 8(1 + |c3|)D²h²/F′ ≤ ε·scale, the interpolation error
 /// (F⁗/24)D²h²/F′ with |F⁗| ≤ 24(1 + |c3|) assumed, c3 the cubic's F‴/6 (measured F″, F‴ of
-/// order 0.01–1 in λ); the carry's error is of the same form in k, relative D²h² times
-/// k⁴|I⁗|/I (≲ 10²), below ε where the stop fires (|h| ≲ 10⁻⁷ at |D| ≲ 10⁻²).
+/// order 0.01–1 in λ); the carry's relative error is (k⁴|I⁗|/24I)·D²h² ≤ 16D²h² (I1 ∝ ln k/k³
+/// gives 15 for k ≫ 1), also required ≤ ε and added to the integrals' error estimate.
 /// Returns λ, the error bound in λ, and the carried integrals.
 fn hermite_root<T: Real>(
     a: &Point<T>,
@@ -664,7 +693,11 @@ fn hermite_root<T: Real>(
     }
     let (hf, df_, c3f) = (h.to_f64().abs(), d.to_f64().abs(), c3.to_f64().abs());
     let err = 8.0 * (1.0 + c3f) * df_ * df_ * hf * hf / b.df.to_f64();
-    if !(hf * 8.0 <= df_ && err <= eps.to_f64() * scale.to_f64() && err.is_finite()) {
+    // The integrals' carry: relative error (k⁴|I⁗|/24I)·D²h² with k⁴|I⁗|/24I ≤ 16 (I1 ∝ ln k/k³
+    // for k ≫ 1 gives 15; measured 6.5ε at D = 0.027, h = 4·10⁻⁷ before this bound was imposed).
+    let carry_err = 16.0 * df_ * df_ * hf * hf;
+    let epsf = eps.to_f64();
+    if !(hf * 8.0 <= df_ && err <= epsf * scale.to_f64() && carry_err <= epsf && err.is_finite()) {
         return None;
     }
     // The integrals, in k: Hermite cubics from the two iterates' values and k-derivatives.
@@ -685,7 +718,7 @@ fn hermite_root<T: Real>(
         i2,
         di1_dk: di1,
         di2_dk: di2,
-        error_estimate: ib.error_estimate.clone(),
+        error_estimate: ib.error_estimate.clone() + &T::from_f64(carry_err, eps.prec()),
         work: ib.work,
     };
     Some((b.lam.clone() + h, T::from_f64(err, eps.prec()), ints))
