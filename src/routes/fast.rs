@@ -1089,9 +1089,8 @@ pub struct FastSetup<T: Real + 'static> {
     rule: RuleRef<T>,
     sc: SpeedConsts<T>,
     b: Vec<T>,
-    /// Left: L = (2/m1) D' √(p − γc) (so that a(s) = L/(Q' u^{3/2})), Q', 1/(s + ε²).
-    left_l: Vec<T>,
-    left_q: Vec<T>,
+    /// Left: L/Q' with L = (2/m1) D' √(p − γc) (so that a(s) = (L/Q') u^{−3/2}), 1/(s + ε²).
+    left_lq: Vec<T>,
     left_ih: Vec<T>,
     /// Right: r = b(σ) − Σ_{j<J} b_j σ^j.
     right_r: Vec<T>,
@@ -1115,15 +1114,10 @@ impl<T: Real> FastSetup<T> {
         let one = T::one(p);
         let l = &rule.left;
         let n = l.len();
-        let (mut left_l, mut left_q, mut left_ih) = (
-            Vec::with_capacity(n),
-            Vec::with_capacity(n),
-            Vec::with_capacity(n),
-        );
+        let (mut left_lq, mut left_ih) = (Vec::with_capacity(n), Vec::with_capacity(n));
         for (s, pp, two_p, four_p) in l.nodes() {
             let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
-            left_q.push(qq);
-            left_l.push(sc.two_over_m1.clone() * dd * e1.sqrt());
+            left_lq.push(sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq));
             left_ih.push((s.clone() + &sc.eps2).recip());
         }
         let r = &rule.right;
@@ -1131,15 +1125,14 @@ impl<T: Real> FastSetup<T> {
         taylor_poly(&b, &r.s, &mut right_r);
         for ((sg, pp, two_p, four_p), ri) in r.nodes().zip(right_r.iter_mut()) {
             let (f1, dd, e) = sc.right_node(sg, pp, two_p, four_p, &one);
-            let bi = sc.two_over_m1.clone() * f1.sqrt() * dd / e;
+            let bi = sc.two_over_m1.clone() * dd * f1.sqrt_div(&e);
             *ri = bi - &*ri;
         }
         Ok(FastSetup {
             rule,
             sc,
             b,
-            left_l,
-            left_q,
+            left_lq,
             left_ih,
             right_r,
         })
@@ -1157,7 +1150,7 @@ impl<T: Real> FastSetup<T> {
 
     fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<IntegralsDk<T>> {
         let n = self
-            .left_l
+            .left_lq
             .len()
             .max(self.right_r.len())
             .max(3 * self.b.len() + 1);
@@ -1180,47 +1173,35 @@ impl<T: Real> FastSetup<T> {
         let mut right = Buf::<T, N>::zeros(nr, p);
         let mut right_dk = Buf::<T, N>::zeros(if dk { nr } else { 0 }, p);
         let ls = &rule.left.s[..nl];
-        let lnodes = ls
-            .iter()
-            .zip(&self.left_l[..nl])
-            .zip(&self.left_q[..nl])
-            .zip(&self.left_ih[..nl]);
+        let lnodes = ls.iter().zip(&self.left_lq[..nl]).zip(&self.left_ih[..nl]);
         if dk {
-            for ((((s, l), q), ih), (r, dr)) in lnodes.zip(left.iter_mut().zip(left_dk.iter_mut()))
-            {
-                // a = L/(Q u √u); inv = 1/(Q u² √u): a = L u inv, a/u = L inv.
+            for (((s, lq), ih), (r, dr)) in lnodes.zip(left.iter_mut().zip(left_dk.iter_mut())) {
+                // a = (L/Q') u^{−3/2}; a/u = (L/Q') u^{−5/2}.
                 let u = one.clone() + kc.k2.clone() * s;
-                let su = u.clone().sqrt();
-                let inv = (q.clone() * &u * &u * su).recip();
-                let au = l.clone() * inv;
-                let a = au.clone() * u;
+                let (v3, v5) = u.pow_m3_2_m5_2();
+                let a = lq.clone() * v3;
+                let au = lq.clone() * v5;
                 *r = (a - &kc.a0) * ih;
                 *dr = (s.clone() * au + &kc.e0) * ih;
             }
         } else {
-            for ((((s, l), q), ih), r) in lnodes.zip(left.iter_mut()) {
+            for (((s, lq), ih), r) in lnodes.zip(left.iter_mut()) {
                 let u = one.clone() + kc.k2.clone() * s;
-                let su = u.clone().sqrt();
-                let a = l.clone() / (q.clone() * &u * su);
+                let a = lq.clone() * u.pow_m3_2();
                 *r = (a - &kc.a0) * ih;
             }
         }
         let rnodes = rule.right.s[..nr].iter().zip(&self.right_r[..nr]);
         if dk {
             for ((sg, rr), (o, od)) in rnodes.zip(right.iter_mut().zip(right_dk.iter_mut())) {
-                // W3 = 1/(hq √hq), 1/hq = W3 √hq.
-                let hq = sg.clone() + &kc.k2;
-                let sh = hq.clone().sqrt();
-                let w3 = (hq * &sh).recip();
-                let rw3 = rr.clone() * &w3;
-                *od = rw3.clone() * w3 * sh;
-                *o = rw3;
+                // W3 = hq^{−3/2}, W3/hq = hq^{−5/2}.
+                let (w3, w5) = (sg.clone() + &kc.k2).pow_m3_2_m5_2();
+                *od = rr.clone() * w5;
+                *o = rr.clone() * w3;
             }
         } else {
             for ((sg, rr), o) in rnodes.zip(right.iter_mut()) {
-                let hq = sg.clone() + &kc.k2;
-                let sh = hq.clone().sqrt();
-                *o = rr.clone() / (hq * sh);
+                *o = rr.clone() * (sg.clone() + &kc.k2).pow_m3_2();
             }
         }
         let v = NodeValues {
