@@ -11,7 +11,8 @@
 //! bracket: F increases with k (checked over ν, M_R and 10^-6 ≤ A1/B1 ≤ 10^6 in
 //! `tests/ellipse.rs`), so a step leaving the bracket is replaced by bisection in λ.
 //!
-//! The start is Hamrock & Brewe's approximation of the static ellipse, k ≈ (A1/B1)^(2/π).
+//! The start is the static ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30, the
+//! k ≫ 1 form of static Hertz, A1/B1 = k²/(ln 4k − 1), from 30 on.
 //!
 //! **Stopping and chord steps.** Once converging, a Newton step δ leaves an error ~δ²: the
 //! iteration stops when 64δ² ≤ ε. The evaluation expected to be the last (64δ³ ≤ ε) skips the
