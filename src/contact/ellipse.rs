@@ -611,7 +611,10 @@ const PROBE_BELOW_RATIO: f64 = 30.0;
 /// M_R = 0.9999 (k0 = 8.7, k0ε = 0.12). CLI minima (two interleaved rounds, A1/B1 = 30…10⁴ ×
 /// M_R ∈ {0.99, 0.999, 0.9999}) for thresholds 0, 0.5, 1, 2: A1/B1 = 30 at 0.9999 2.17 µs
 /// without, 1.12–1.16 µs with; the other cells within the machine's noise for 0.5, some slower
-/// for 1 and 2 (A1/B1 = 300 at 0.9999, k0ε = 0.53: 2.21 µs at 1 against 1.97 at 0.5).
+/// for 1 and 2 (A1/B1 = 300 at 0.9999, k0ε = 0.53: 2.21 µs at 1 against 1.97 at 0.5). Measured
+/// with Hamrock & Brewe's seed; with the k ≫ 1 seed of [`static_seed_wide`] A1/B1 = 300 at
+/// 0.9999 has k0ε = 0.45 and probes too, and with the unclamped Newton step from k = 1 (below)
+/// takes 1.85 µs.
 const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
 
 /// The asymptotic step of [`log_model_step`] is taken only when it lands at kε ≥ this
