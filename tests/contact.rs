@@ -241,14 +241,21 @@ fn ladder_accuracy<T: Real>(p: T::Prec, label: &str) {
         let matq = Material::new(up(&nu)).unwrap();
         let spq = matq.speed(up(&mr)).unwrap();
         let want = solve_ellipse_seeded(&matq, &spq, &up(&ratio), None, EllipseMethod::Quadrature)
-            .unwrap()
-            .k;
-        let e = rel_eps(&s.k, &want.to_float(320));
+            .unwrap();
+        let e = rel_eps(&s.k, &want.k.to_float(320));
         assert!(e <= 10.0, "{label}: k off by {e:.2} eps");
         let est = (s.error_estimate.clone() / T::epsilon(p)).to_f64();
         assert!(
             e <= est,
             "{label}: error {e:.2} eps above its estimate {est:.2} eps"
+        );
+        // The returned integrals, carried to the returned k (first or second order).
+        let ei = rel_eps(&s.integrals.i1, &want.integrals.i1.to_float(320))
+            .max(rel_eps(&s.integrals.i2, &want.integrals.i2.to_float(320)));
+        assert!(ei <= 16.0, "{label}: I1, I2 off by {ei:.2} eps");
+        println!(
+            "{label}: k {e:.2} eps (estimate {est:.2}), I1, I2 {ei:.2} eps, {} evaluations",
+            s.iterations
         );
     }
 }
