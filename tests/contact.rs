@@ -383,3 +383,49 @@ fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
     }
     println!("worst residual {worst:.1} eps, returned I1, I2 worst {worst_i:.1} eps");
 }
+
+/// The double-double ladder (one evaluation and a Halley step from the f64 root where the
+/// f64 stage's second derivatives allow it, else two chord steps) against the 256-bit ladder
+/// (a double-double stage, then two chord steps: a different path to the same root) on a wide
+/// grid: k and the returned I1, I2 to a few double-double ε, within the reported estimates.
+#[test]
+fn dd_ladder_agrees_with_256_bits_on_a_wide_grid() {
+    let p = common::mp(256);
+    let (mut worst_k, mut worst_i, mut one_step, mut n) = (0.0f64, 0.0f64, 0, 0);
+    for nu in ["-0.5", "0.2", "0.5"] {
+        for mr in ["0", "0.5", "0.9", "0.99", "0.9999"] {
+            for ratio in [
+                "1e-6", "1e-3", "0.5", "2", "10", "30", "100", "1e3", "1e4", "1e6",
+            ] {
+                let at = format!("nu={nu} M_R={mr} A1/B1={ratio}");
+                let matd = Material::new(Dd::parse(nu, ()).unwrap()).unwrap();
+                let spd = matd.speed(Dd::parse(mr, ()).unwrap()).unwrap();
+                let s = solve_ellipse_ladder(&matd, &spd, &Dd::parse(ratio, ()).unwrap()).unwrap();
+                // The same inputs (the double-double values) at 256 bits.
+                let up = |x: &Dd| Mp::from_float(&x.to_float(106), p);
+                let matq = Material::new(up(matd.nu())).unwrap();
+                let spq = matq.speed(up(&spd.mr)).unwrap();
+                let want =
+                    solve_ellipse_ladder(&matq, &spq, &up(&Dd::parse(ratio, ()).unwrap())).unwrap();
+                let e = rel_eps(&s.k, &want.k.to_float(256));
+                let est = (s.error_estimate.clone() / Dd::epsilon(())).to_f64();
+                assert!(
+                    e <= 10.0 && e <= est,
+                    "{at}: k off by {e:.2} eps (estimate {est:.2})"
+                );
+                let ei = rel_eps(&s.integrals.i1, &want.integrals.i1.to_float(256))
+                    .max(rel_eps(&s.integrals.i2, &want.integrals.i2.to_float(256)));
+                assert!(ei <= 16.0, "{at}: I1, I2 off by {ei:.2} eps");
+                worst_k = worst_k.max(e);
+                worst_i = worst_i.max(ei);
+                one_step += usize::from(s.iterations == 1);
+                n += 1;
+            }
+        }
+    }
+    println!(
+        "dd ladder against 256 bits: k worst {worst_k:.2} eps, I1, I2 worst {worst_i:.2} eps; \
+         {one_step} of {n} solves in one evaluation"
+    );
+    assert!(one_step > 0, "the one-step path never ran");
+}

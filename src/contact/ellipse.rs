@@ -339,7 +339,7 @@ pub fn solve_ellipse_seeded<T: Real>(
     seed: Option<&T>,
     method: EllipseMethod,
 ) -> Result<EllipseShape<T>> {
-    solve_core(mat, speed, ratio, seed, None, method, true).map(|(s, _)| s)
+    solve_core(mat, speed, ratio, seed, None, method, true, false).map(|(s, _)| s)
 }
 
 /// The Newton iteration of [`solve_ellipse_seeded`]. `seed_slope`: the derivatives at (near)
@@ -355,6 +355,7 @@ fn solve_core<T: Real>(
     seed_slope: Option<(Chord<T>, T)>,
     method: EllipseMethod,
     allow_chord: bool,
+    halley: bool,
 ) -> Result<(EllipseShape<T>, Option<Chord<T>>)> {
     check_ratio(ratio)?;
     let p = ratio.prec();
@@ -397,12 +398,15 @@ fn solve_core<T: Real>(
     // any evaluation).
     let mut prev: Option<Point<T>> = None;
     let hermite_stop = allow_chord && seed.is_none();
+    let mut halley_slope: Option<Chord<T>> = None;
     if let (Some((c, seed_err)), Some(_)) = (seed_slope, seed) {
         // Chord steps from a lower precision's derivative (relative error r): each multiplies
         // the error by ~r. Taken when two of them bring the seed's error δ0 to ε/64.
         let r = c.rel_err.clone() + &(lam.clone() - &c.lam).abs();
         let reach = r.square() * &seed_err.mul_i64(64);
-        if reach <= eps && c.df.is_positive() && c.df.is_finite() {
+        if halley && c.df.is_positive() && c.df.is_finite() && curvature(&c, &lam).is_some() {
+            halley_slope = Some(c);
+        } else if reach <= eps && c.df.is_positive() && c.df.is_finite() {
             chord = Some(c);
         }
     }
@@ -452,6 +456,22 @@ fn solve_core<T: Real>(
                 -two
             };
             hi = Some(zero);
+        }
+    }
+    if let Some(c) = halley_slope {
+        let (f, df, ci) = eval(&lam, None, false)?;
+        spent = 1;
+        let scale = lam.clone().abs().max_of(T::one(p));
+        if let Some((lam_root, err, ints)) = halley_from_f64(&lam, &f, &df, &ci.0, &c, &eps, &scale)
+        {
+            let mut ci = ci;
+            ci.0 = ints;
+            return Ok((finish(lam_root.clone(), &lam_root, ci, err, 1), None));
+        }
+        // The f64 root was too far for one step (near the Rayleigh speed, where the f64 stage
+        // solved inputs rounded to f64): on with Newton from here.
+        if df.is_positive() && df.is_finite() {
+            lam = lam.clone() - f / &df;
         }
     }
     for it in spent..200 {
@@ -538,6 +558,7 @@ fn solve_core<T: Real>(
                         di2: b.ints.di2_dk.clone(),
                         df: b.df.clone(),
                         rel_err: T::zero(p),
+                        before: None,
                     }),
                 ));
             }
@@ -546,12 +567,29 @@ fn solve_core<T: Real>(
             prev = Some(h);
         }
         if fresh {
+            // For the next stage's secants (F″, I″): of the last iterate with derivatives and the
+            // one kept before it, the one whose distance D from this iterate minimises the
+            // secant's error bound r/D + D (r = 2¹²ε, the derivatives' relative error bound).
+            let r = eps.to_f64() * 4096.0;
+            let bound = |x: &T| {
+                let d = (lam.clone() - x).to_f64().abs();
+                if d > 0.0 {
+                    r / d + d
+                } else {
+                    f64::INFINITY
+                }
+            };
+            let before = fresh_slope.as_ref().map(|c| match &c.before {
+                Some(b) if bound(&b[0]) < bound(&c.lam) => b.clone(),
+                _ => Box::new([c.lam.clone(), c.df.clone(), c.di1.clone(), c.di2.clone()]),
+            });
             fresh_slope = Some(Chord {
                 lam: lam.clone(),
                 di1: ci.0.di1_dk.clone(),
                 di2: ci.0.di2_dk.clone(),
                 df: df.clone(),
                 rel_err: T::zero(p),
+                before,
             });
         }
         let lam_old = std::mem::replace(&mut lam, next);
@@ -735,6 +773,92 @@ fn hermite_root<T: Real>(
     Some((b.lam.clone() + h, T::from_f64(err, eps.prec()), ints))
 }
 
+/// F″ and d²I1/dk², d²I2/dk² at λ0 by secants between the lower-precision stage's last two
+/// iterates with derivatives (`c` and `c.before`, F′ and I′ with relative error r = `c.rel_err`),
+/// with bounds on their errors: 2r|F′|/D + (1 + |F″|)(D + |λ0 − λ_c|) for F″ (rounding over the
+/// distance D between the iterates, the secant's truncation with |F‴| ≤ 1 + |F″| assumed), and
+/// 2r|I′|/Δk for I″ (the truncation, 100(I/k³)(Δk + |k0 − k_c|) with |k³I‴| ≤ 100 I assumed —
+/// 60 for I1 ∝ ln k/k³ — is added by [`halley_from_f64`], which has I). `None` when the F″
+/// bound exceeds 0.1 (D too small for the rounding or too large for the truncation).
+fn curvature<T: Real>(c: &Chord<T>, lam0: &T) -> Option<([f64; 3], [f64; 3])> {
+    let b = c.before.as_ref()?;
+    let r = c.rel_err.to_f64();
+    let (la, lb) = (b[0].to_f64(), c.lam.to_f64());
+    let d = (lb - la).abs();
+    if d == 0.0 {
+        return None;
+    }
+    let f2 = (c.df.to_f64() - b[1].to_f64()) / (lb - la);
+    let off = (lam0.to_f64() - lb).abs();
+    let f2_err = 2.0 * r * c.df.to_f64().abs() / d + (1.0 + f2.abs()) * (d + off);
+    if !(f2_err.is_finite() && f2_err <= 0.1) {
+        return None;
+    }
+    let dk = lb.exp() - la.exp();
+    let second = |dia: &T, dib: &T| (dib.to_f64() - dia.to_f64()) / dk;
+    let i_err = |di: &T| 2.0 * r * di.to_f64().abs() / dk.abs();
+    Some((
+        [f2, second(&b[2], &c.di1), second(&b[3], &c.di2)],
+        [f2_err, i_err(&c.di1), i_err(&c.di2)],
+    ))
+}
+
+/// The double-double step of the ladder straight from the `f64` stage: with F, F′ and the
+/// integrals' k-derivatives at the `f64` root λ0 (this precision) and F″, I″ from the `f64`
+/// stage ([`curvature`]), a Halley step h = δ − F″δ²/(2F′) (δ = −F/F′, error ≤
+/// (|ΔF″|/2F′)δ² + |δ|³) and I1, I2 carried to second order (relative error ≤ ½|ΔI″|dk²/I).
+/// Taken when the first bound is ≤ ε·scale/4 and the second ≤ ε: one evaluation with
+/// derivatives instead of two chord evaluations without.
+fn halley_from_f64<T: Real>(
+    lam: &T,
+    f: &T,
+    df: &T,
+    ints: &KIntegrals<T>,
+    c: &Chord<T>,
+    eps: &T,
+    scale: &T,
+) -> Option<(T, T, KIntegrals<T>)> {
+    let ([f2, i1pp, i2pp], [f2_err, i1_err, i2_err]) = curvature(c, lam)?;
+    if !(df.is_positive() && df.is_finite()) {
+        return None;
+    }
+    let p = eps.prec();
+    let newton = -(f.clone() / df);
+    let (nf, dff) = (newton.to_f64().abs(), df.to_f64());
+    let err = f2_err / (2.0 * dff) * nf * nf + nf * nf * nf;
+    let epsf = eps.to_f64();
+    if !(err.is_finite() && err <= epsf * scale.to_f64() / 4.0) {
+        return None;
+    }
+    let h = newton.clone() - T::from_f64(f2, p) * newton.square() / df.clone().mul_i64(2);
+    let k0 = lam.clone().exp();
+    let dk = (lam.clone() + &h).exp() - &k0;
+    let (k0f, dkf) = (k0.to_f64(), dk.to_f64());
+    let dkc = (k0f - c.lam.to_f64().exp()).abs()
+        + (c.lam.to_f64().exp() - c.before.as_ref()?[0].to_f64().exp()).abs();
+    let carry = |i: &T, di: &T, ipp: f64, ipp_err: f64| -> (T, T, f64) {
+        let ipp_t = T::from_f64(ipp, p);
+        let val = i.clone() + (di.clone() + ipp_t.clone().mul_pow2(-1) * &dk) * &dk;
+        let der = di.clone() + ipp_t * &dk;
+        let trunc = 100.0 * i.to_f64() * dkc / k0f.powi(3);
+        (val, der, 0.5 * (ipp_err + trunc) * dkf * dkf / i.to_f64())
+    };
+    let (i1, di1, e1) = carry(&ints.i1, &ints.di1_dk, i1pp, i1_err);
+    let (i2, di2, e2) = carry(&ints.i2, &ints.di2_dk, i2pp, i2_err);
+    if !(e1.is_finite() && e2.is_finite() && e1.max(e2) <= epsf) {
+        return None;
+    }
+    let ints = KIntegrals {
+        i1,
+        i2,
+        di1_dk: di1,
+        di2_dk: di2,
+        error_estimate: ints.error_estimate.clone() + &T::from_f64(e1.max(e2), p),
+        work: ints.work,
+    };
+    Some((lam.clone() + h, T::from_f64(err, p), ints))
+}
+
 /// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′, with F′'s
 /// relative error when it comes from a lower precision (0 otherwise).
 #[derive(Clone)]
@@ -744,6 +868,9 @@ struct Chord<T> {
     di2: T,
     df: T,
     rel_err: T,
+    /// The previous iterate with derivatives: λ, F′, dI1/dk, dI2/dk (for second derivatives by
+    /// secants, [`halley_from_f64`]).
+    before: Option<Box<[T; 4]>>,
 }
 
 /// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`:
@@ -813,11 +940,23 @@ pub fn solve_ellipse_with<T: Real>(
     // rounding-level step from its root and serve the next stage's chord steps.
     let mat64 = Material::new(mat.nu().to_f64())?;
     let mr = speed.mr.to_f64().min(1.0 - f64::EPSILON);
-    let stage64 = Material::speed(&mat64, mr)
-        .and_then(|sp| solve_core(&mat64, &sp, &ratio.to_f64(), None, None, method, false));
+    let stage64 = Material::speed(&mat64, mr).and_then(|sp| {
+        solve_core(
+            &mat64,
+            &sp,
+            &ratio.to_f64(),
+            None,
+            None,
+            method,
+            false,
+            false,
+        )
+    });
     let (k64, slope64) = match stage64 {
         Ok((s, c)) => (s.k, c),
-        Err(_) => return solve_core(mat, speed, ratio, None, None, method, true).map(|(s, _)| s),
+        Err(_) => {
+            return solve_core(mat, speed, ratio, None, None, method, true, false).map(|(s, _)| s)
+        }
     };
     // Above double-double, a double-double stage in between: its root is off by ~2^-100, so
     // the target precision needs one Newton step fewer (two chord steps up to ~600 bits).
@@ -834,17 +973,29 @@ pub fn solve_ellipse_with<T: Real>(
                 slope,
                 method,
                 false,
+                false,
             )
         });
         if let Ok((s, c)) = stage_dd {
             let seed = T::from_float(&s.k.to_float(106), p);
             let slope = c.as_ref().map(|c| lift(c, p, DD_SLOPE, DD_SEED));
-            return solve_core(mat, speed, ratio, Some(&seed), slope, method, true).map(|(s, _)| s);
+            return solve_core(mat, speed, ratio, Some(&seed), slope, method, true, false)
+                .map(|(s, _)| s);
         }
     }
     let seed = T::from_f64(k64, p);
     let slope = slope64.as_ref().map(|c| lift(c, p, F64_SLOPE, F64_SEED));
-    solve_core(mat, speed, ratio, Some(&seed), slope, method, true).map(|(s, _)| s)
+    // Straight from the f64 stage at double-double: one evaluation with derivatives and a Halley
+    // step ([`halley_from_f64`]) — unless the f64 stage's inputs, rounded to f64, moved the
+    // root by more than ~1e-15 (M_R near 1 amplifies its rounding by ~1/(1 − M_R)), where one
+    // step cannot reach ε and two chord steps are cheaper than the Halley attempt and a Newton
+    // step.
+    let moved = |x: &T, x64: f64| (x.clone() - T::from_f64(x64, p)).abs().to_f64();
+    let perturbation = moved(ratio, ratio.to_f64()) / ratio.to_f64()
+        + moved(mat.nu(), mat.nu().to_f64())
+        + moved(&speed.mr, mr) / (1.0 - speed.mr.to_f64());
+    let halley = T::bits(p) <= 106 && perturbation <= 1e-15;
+    solve_core(mat, speed, ratio, Some(&seed), slope, method, true, halley).map(|(s, _)| s)
 }
 
 /// Bounds on a stage's derivative F′ (relative: the k-derivatives' measured 47ε at f64, 53ε at
@@ -870,6 +1021,10 @@ fn lift<S: Real, T: Real>(
             di2: up(&c.di2),
             df: up(&c.df),
             rel_err: T::from_f64(slope_err, p),
+            before: c
+                .before
+                .as_ref()
+                .map(|b| Box::new([0, 1, 2, 3].map(|i| up(&b[i])))),
         },
         T::from_f64(seed_err, p),
     )
