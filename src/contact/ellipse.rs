@@ -26,9 +26,15 @@
 //! long steps at kε ≥ 5 solve the asymptotic form of (33) for k ≫ 1 (`log_model_step`).
 //!
 //! **Precision ladder** ([`solve_ellipse_ladder`]): a solve at high precision is started from
-//! the `f64` root and its F′ (good to ~2^-40). At double-double two chord steps with that F′
-//! reach ε (error 2^-48 → 2^-88 → below 2^-106): two double-double evaluations without
-//! k-derivatives. Above 106 bits a double-double stage comes first (one chord step with the
+//! the `f64` root and its F′ (good to ~2^-40). At double-double one evaluation with
+//! k-derivatives and a Halley step whose F″ (and the integrals' second derivatives, for carrying
+//! I1, I2 to the new k) come by secants from the `f64` stage's iterates (`halley_from_f64`):
+//! the Newton error (F″/2F′)δ² ~ 10⁻³² of an `f64` root off by δ ~ 10⁻¹⁶ shrinks by F″'s
+//! relative accuracy (~10⁻⁵). Where its error bounds do not reach ε, or the inputs' rounding to
+//! `f64` moved the root by more than 10⁻¹⁵ (M_R ≳ 0.999), two chord steps with the `f64` F′
+//! instead (error 2^-48 → 2^-88 → below 2^-106): two evaluations without k-derivatives. On 150
+//! cases (`tests/contact.rs`, against the 256-bit ladder) 119 take the single evaluation; k
+//! within 2ε, I1, I2 within 4.1ε. Above 106 bits a double-double stage comes first (one chord step with the
 //! `f64` F′, then one Newton step, so that it hands on its own F′, good to ~2^-90), then chord
 //! steps from its root (error ~2^-100 → ~2^-190 → below 2^-256): 2 evaluations without
 //! k-derivatives at 256 bits, 3 at 512, 4 at 1024 — a few high-precision
@@ -911,8 +917,8 @@ fn finish<T: Real>(
 
 /// The precision ladder: solves at `f64` first (inputs rounded to `f64`), above 106 bits then at
 /// double-double, and refines the root at the working precision of `T` from the last stage's root
-/// and derivative — two chord steps at double-double, two at 256 bits, three at 512 (module
-/// docs): a few high-precision evaluations of the integrals instead of a search. For
+/// and derivative — one Halley step or two chord steps at double-double, two chord steps at 256
+/// bits, three at 512 (module docs): a few high-precision evaluations of the integrals instead of a search. For
 /// `T = f64` this is [`solve_ellipse`]. Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit
 /// quadrature solve, `tests/contact.rs`), with an error estimate.
 pub fn solve_ellipse_ladder<T: Real>(
