@@ -585,10 +585,14 @@ fn solve_core<T: Real>(
                     f64::INFINITY
                 }
             };
-            let before = fresh_slope.as_ref().map(|c| match &c.before {
-                Some(b) if bound(&b[0]) < bound(&c.lam) => b.clone(),
-                _ => Box::new([c.lam.clone(), c.df.clone(), c.di1.clone(), c.di2.clone()]),
-            });
+            // Only a ladder stage (`allow_chord` false) hands its derivatives on.
+            let before = fresh_slope
+                .as_ref()
+                .filter(|_| !allow_chord)
+                .map(|c| match &c.before {
+                    Some(b) if bound(&b[0]) < bound(&c.lam) => b.clone(),
+                    _ => [c.lam.clone(), c.df.clone(), c.di1.clone(), c.di2.clone()],
+                });
             fresh_slope = Some(Chord {
                 lam: lam.clone(),
                 di1: ci.0.di1_dk.clone(),
@@ -876,7 +880,7 @@ struct Chord<T> {
     rel_err: T,
     /// The previous iterate with derivatives: λ, F′, dI1/dk, dI2/dk (for second derivatives by
     /// secants, [`halley_from_f64`]).
-    before: Option<Box<[T; 4]>>,
+    before: Option<[T; 4]>,
 }
 
 /// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`:
@@ -1027,10 +1031,7 @@ fn lift<S: Real, T: Real>(
             di2: up(&c.di2),
             df: up(&c.df),
             rel_err: T::from_f64(slope_err, p),
-            before: c
-                .before
-                .as_ref()
-                .map(|b| Box::new([0, 1, 2, 3].map(|i| up(&b[i])))),
+            before: c.before.as_ref().map(|b| [0, 1, 2, 3].map(|i| up(&b[i]))),
         },
         T::from_f64(seed_err, p),
     )
