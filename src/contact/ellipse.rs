@@ -410,7 +410,7 @@ fn solve_core<T: Real>(
         // the error by ~r. Taken when two of them bring the seed's error δ0 to ε/64.
         let r = c.rel_err.clone() + &(lam.clone() - &c.lam).abs();
         let reach = r.square() * &seed_err.mul_i64(64);
-        if halley && c.df.is_positive() && c.df.is_finite() && curvature(&c, &lam).is_some() {
+        if halley && c.df.is_positive() && c.df.is_finite() && f_second(&c, &lam).is_some() {
             halley_slope = Some(c);
         } else if reach <= eps && c.df.is_positive() && c.df.is_finite() {
             chord = Some(c);
@@ -725,6 +725,14 @@ fn hermite_coefficients<T: Real>(d: &T, ya: &T, yb: &T, dya: &T, dyb: &T) -> (T,
     (c2, c3)
 }
 
+/// y(x + h) and y′(x + h) for y(x + h) = y + y′h + c2h² + c3h³: the integrals carried from an
+/// evaluated iterate to the root (the Hermite stop and the double-double Halley step).
+fn carry_cubic<T: Real>(y: &T, dy: &T, c2: &T, c3: &T, h: &T) -> (T, T) {
+    let val = y.clone() + (dy.clone() + (c2.clone() + c3.clone() * h) * h) * h;
+    let der = dy.clone() + (c2.clone().mul_i64(2) + c3.clone().mul_i64(3) * h) * h;
+    (val, der)
+}
+
 /// The Hermite stop of [`solve_core`]: from iterates `a` (earlier) and `b` (this one, both with
 /// derivatives), the root λ_b + h of the cubic through F, F′ at both, and I1, I2 (with their
 /// k-derivatives) carried to it by the cubics through their values and k-derivatives. Taken when
@@ -765,9 +773,7 @@ fn hermite_root<T: Real>(
     let hk = (b.lam.clone() + &h).exp() - &kb;
     let carry = |ya: &T, yb: &T, dya: &T, dyb: &T| {
         let (c2, c3) = hermite_coefficients(&dk, ya, yb, dya, dyb);
-        let val = yb.clone() + (dyb.clone() + (c2.clone() + c3.clone() * &hk) * &hk) * &hk;
-        let der = dyb.clone() + (c2.mul_i64(2) + c3.mul_i64(3) * &hk) * &hk;
-        (val, der)
+        carry_cubic(yb, dyb, &c2, &c3, &hk)
     };
     let (ia, ib) = (&a.ints, &b.ints);
     let (i1, di1) = carry(&ia.i1, &ib.i1, &ia.di1_dk, &ib.di1_dk);
@@ -783,16 +789,10 @@ fn hermite_root<T: Real>(
     Some((b.lam.clone() + h, T::from_f64(err, eps.prec()), ints))
 }
 
-/// F″ and d²I1/dk², d²I2/dk² at λ0 by secants between the lower-precision stage's last two
-/// iterates with derivatives (`c` and `c.before`, F′ and I′ with relative error r = `c.rel_err`),
-/// with bounds on their errors: 2r|F′|/D + (1 + |F″|)(D + |λ0 − λ_c|) for F″ (rounding over the
-/// distance D between the iterates, the secant's truncation with |F‴| ≤ 1 + |F″| assumed), and
-/// 2r|I′|/Δk for I″ (the truncation, 100(I/k³)(Δk + |k0 − k_c|) with |k³I‴| ≤ 100 I assumed —
-/// 60 for I1 ∝ ln k/k³ — is added by [`halley_from_f64`], which has I). `None` when the F″
-/// bound exceeds 0.1 (D too small for the rounding or too large for the truncation).
-fn curvature<T: Real>(c: &Chord<T>, lam0: &T) -> Option<([f64; 3], [f64; 3])> {
+/// F″ at λ0 and its error bound, the first part of [`curvature`] (which needs no evaluation at
+/// λ0, so that the ladder decides before evaluating whether the Halley step can work).
+fn f_second<T: Real>(c: &Chord<T>, lam0: &T) -> Option<(f64, f64)> {
     let b = c.before.as_ref()?;
-    let r = c.rel_err.to_f64();
     let (la, lb) = (b[0].to_f64(), c.lam.to_f64());
     let d = (lb - la).abs();
     if d == 0.0 {
@@ -800,16 +800,36 @@ fn curvature<T: Real>(c: &Chord<T>, lam0: &T) -> Option<([f64; 3], [f64; 3])> {
     }
     let f2 = (c.df.to_f64() - b[1].to_f64()) / (lb - la);
     let off = (lam0.to_f64() - lb).abs();
-    let f2_err = 2.0 * r * c.df.to_f64().abs() / d + (1.0 + f2.abs()) * (d + off);
-    if !(f2_err.is_finite() && f2_err <= 0.1) {
-        return None;
-    }
-    let dk = lb.exp() - la.exp();
+    let f2_err = 2.0 * c.rel_err.to_f64() * c.df.to_f64().abs() / d + (1.0 + f2.abs()) * (d + off);
+    (f2_err.is_finite() && f2_err <= 0.1).then_some((f2, f2_err))
+}
+
+/// F″ and d²I1/dk², d²I2/dk² at λ0 by secants between the lower-precision stage's last two
+/// iterates with derivatives (`c` and `c.before`, F′ and I′ with relative error r = `c.rel_err`),
+/// with bounds on their errors: 2r|F′|/D + (1 + |F″|)(D + |λ0 − λ_c|) for F″ (rounding over the
+/// distance D between the iterates, the secant's truncation with |F‴| ≤ 1 + |F″| assumed), and
+/// 2r|I′|/Δk + 100(I/k³)(Δk + |k0 − k_c|) for I″ (|k³I‴| ≤ 100 I assumed: 60 for
+/// I1 ∝ ln k/k³; `ints` gives I at λ0). `None` when the F″ bound exceeds 0.1 (D too small for the
+/// rounding or too large for the truncation).
+fn curvature<T: Real>(
+    c: &Chord<T>,
+    lam0: &T,
+    ints: &KIntegrals<T>,
+) -> Option<([f64; 3], [f64; 3])> {
+    let (f2, f2_err) = f_second(c, lam0)?;
+    let b = c.before.as_ref()?;
+    let r = c.rel_err.to_f64();
+    let (la, lb) = (b[0].to_f64(), c.lam.to_f64());
+    let (ka, kb, k0) = (la.exp(), lb.exp(), lam0.to_f64().exp());
+    let dk = kb - ka;
+    let reach = dk.abs() + (k0 - kb).abs();
     let second = |dia: &T, dib: &T| (dib.to_f64() - dia.to_f64()) / dk;
-    let i_err = |di: &T| 2.0 * r * di.to_f64().abs() / dk.abs();
+    let i_err = |di: &T, i: &T| {
+        2.0 * r * di.to_f64().abs() / dk.abs() + 100.0 * i.to_f64() * reach / k0.powi(3)
+    };
     Some((
         [f2, second(&b[2], &c.di1), second(&b[3], &c.di2)],
-        [f2_err, i_err(&c.di1), i_err(&c.di2)],
+        [f2_err, i_err(&c.di1, &ints.i1), i_err(&c.di2, &ints.i2)],
     ))
 }
 
@@ -828,7 +848,7 @@ fn halley_from_f64<T: Real>(
     eps: &T,
     scale: &T,
 ) -> Option<(T, T, KIntegrals<T>)> {
-    let ([f2, i1pp, i2pp], [f2_err, i1_err, i2_err]) = curvature(c, lam)?;
+    let ([f2, i1pp, i2pp], [f2_err, i1_err, i2_err]) = curvature(c, lam, ints)?;
     if !(df.is_positive() && df.is_finite()) {
         return None;
     }
@@ -843,15 +863,11 @@ fn halley_from_f64<T: Real>(
     let h = newton.clone() - T::from_f64(f2, p) * newton.square() / df.clone().mul_i64(2);
     let k0 = lam.clone().exp();
     let dk = (lam.clone() + &h).exp() - &k0;
-    let (k0f, dkf) = (k0.to_f64(), dk.to_f64());
-    let dkc = (k0f - c.lam.to_f64().exp()).abs()
-        + (c.lam.to_f64().exp() - c.before.as_ref()?[0].to_f64().exp()).abs();
+    let dkf = dk.to_f64();
+    let zero = T::zero(p);
     let carry = |i: &T, di: &T, ipp: f64, ipp_err: f64| -> (T, T, f64) {
-        let ipp_t = T::from_f64(ipp, p);
-        let val = i.clone() + (di.clone() + ipp_t.clone().mul_pow2(-1) * &dk) * &dk;
-        let der = di.clone() + ipp_t * &dk;
-        let trunc = 100.0 * i.to_f64() * dkc / k0f.powi(3);
-        (val, der, 0.5 * (ipp_err + trunc) * dkf * dkf / i.to_f64())
+        let (val, der) = carry_cubic(i, di, &T::from_f64(ipp / 2.0, p), &zero, &dk);
+        (val, der, 0.5 * ipp_err * dkf * dkf / i.to_f64())
     };
     let (i1, di1, e1) = carry(&ints.i1, &ints.di1_dk, i1pp, i1_err);
     let (i2, di2, e2) = carry(&ints.i2, &ints.di2_dk, i2pp, i2_err);
