@@ -192,12 +192,61 @@ fn choose_runs_the_graded_route_for_k_above_one() {
     let inputs = Inputs::parse("0.25", "0.99", "3").unwrap();
     assert_eq!(choose::choose_method(&inputs, 1e-12), Method::Quadrature);
     let a = choose::integrals(&inputs, 1e-10, MethodRequest::Auto).unwrap();
-    // Whole left panels of left_nodes plus the right half's one panel of panel_nodes.
-    let (nl, nr) = (graded::left_nodes(53), graded::panel_nodes(53));
-    let whole = |w: usize| w > nr && (w - nr) % nl == 0;
+    // The left panels of some left_plan plus the right half's one panel of panel_nodes.
+    let nr = graded::panel_nodes(53);
+    let plan_nodes = |u: usize| -> usize {
+        let plan = graded::left_plan(53, u);
+        plan.iter().map(|&l| graded::left_nodes(53, l)).sum()
+    };
+    let whole = |w: usize| w > nr && (1..64).any(|u| plan_nodes(u) == w - nr);
     assert_eq!(a.precision, Precision::F64);
-    assert!(whole(a.work), "work {} not panels of {nl} + {nr}", a.work);
+    assert!(whole(a.work), "work {} not a left plan + {nr}", a.work);
     // At tolerance 0 (the studies' reference) the adaptive route runs.
     let r = choose::run_at::<f64>(&inputs, (), Method::Quadrature, 0.0).unwrap();
     assert!(!whole(r.work));
+}
+
+/// The panel plan: covers the x-range, and takes no more nodes than any other choice of panel
+/// lengths — every composition by brute force up to 18 units, every uniform plan (including
+/// the equal panels of ln 4 it replaced) up to 90 units — at f64, double-double, 128 and 256 bits.
+#[test]
+fn left_plan_takes_the_fewest_nodes() {
+    fn fewest(bits: u32, units: usize) -> usize {
+        // Every composition of a total in units..units + MAX_UNITS − 1.
+        fn go(bits: u32, left: i64, acc: usize, best: &mut usize) {
+            if left <= 0 {
+                *best = (*best).min(acc);
+                return;
+            }
+            for l in 1..=graded::MAX_UNITS {
+                go(
+                    bits,
+                    left - l as i64,
+                    acc + graded::left_nodes(bits, l),
+                    best,
+                );
+            }
+        }
+        let mut best = usize::MAX;
+        go(bits, units as i64, 0, &mut best);
+        best
+    }
+    for bits in [53u32, 106, 128, 256] {
+        for units in 1..=90 {
+            let plan = graded::left_plan(bits, units);
+            let nodes: usize = plan.iter().map(|&l| graded::left_nodes(bits, l)).sum();
+            assert!(
+                plan.iter().sum::<usize>() >= units,
+                "{bits} bits, {units}: {plan:?}"
+            );
+            assert!(plan.iter().all(|&l| (1..=graded::MAX_UNITS).contains(&l)));
+            for l in 1..=graded::MAX_UNITS {
+                let uniform = units.div_ceil(l) * graded::left_nodes(bits, l);
+                assert!(nodes <= uniform, "{bits} bits, {units}: {plan:?} vs {l}s");
+            }
+            if units <= 18 {
+                assert_eq!(nodes, fewest(bits, units), "{bits} bits, {units}: {plan:?}");
+            }
+        }
+    }
 }

@@ -13,20 +13,27 @@
 //! ±i√(1 − γc), and the zeros of Q′ near ±0.8i–±i, complex only slightly off the axis for
 //! ν > 0.26) at heights ≥ a, a ≤ min(4/(5k), ε, δ). The map w = a sinh x sends every point iy,
 //! y ≥ a, to the line Im x = π/2: in x the integrand is analytic in the strip |Im x| < π/2
-//! whatever k and ε are, and decays like e^{−2x} past the k-peak. The left half is cut into M
-//! equal panels of length ln 4 in x (M = ⌈asinh(1/a)/ln 4⌉, a made 1/sinh(M ln 4)); on each, the
-//! strip lies outside the Bernstein ellipse ρ = 4.74, so an n-point rule converges like
-//! ρ^{−2n}: [`left_nodes`] (14 at `f64`, 26 at double-double, 60 at 256 bits). Equal lengths of
-//! ln 4 make every node's e^{±x} a product of a cached 2^{±(1+t)} by 4^{±j}: no exponential a
+//! whatever k and ε are, and decays like e^{−2x} past the k-peak. The left half, x from 0 to
+//! asinh(1/a), is cut into panels whose lengths are whole multiples ℓ·ln 2 of ln 2, ℓ = 1…8
+//! (the x-range rounded up to C units, a made 1/sinh(C ln 2)); on a panel of length ℓ ln 2 the
+//! strip lies outside the Bernstein ellipse ρ = h + √(h² + 1), h = π/(ℓ ln 2) (9.2 at ℓ = 1,
+//! 4.74 at 2, 1.72 at 8), so an n-point rule converges like ρ^{−2n}: [`left_nodes`]. Longer
+//! panels need fewer nodes per unit of x (at double-double 18 for ℓ = 1, 13 a unit at ℓ = 2,
+//! 9.25 at ℓ = 8) but round the x-range up further; [`left_plan`] picks the lengths with the
+//! fewest nodes in all (dynamic programming over C, cached per precision up to C = 96). Panel
+//! boundaries at whole multiples of ln 2 make every node's e^{±x} a product of a cached
+//! 2^{±(1+t)ℓ/2} by 2^{±c}: no exponential a node. (Equal panels of ln 4, the layout this
+//! replaced, took 21–41 % more left nodes for k ≥ 3.)
 //! node. The right half, for k ≥ 1, has its nearest singularities at v = ±i (the factor
 //! (1 + σ)^{−1/2} of b) and ±ik: one panel of [`panel_nodes`] (17 at `f64`, 36 at double-double,
 //! 86 at 256 bits; 23 at double-double gave 6500ε in dI/dk at k = 1). The integrands are
 //! positive: no cancellation, rounding error a few ε.
 //!
-//! **Cost.** M·[`left_nodes`] + [`panel_nodes`] evaluations of G (two square roots and one
-//! division each): at `f64` 31 at M_R = 0, k = 1; 45 at M_R = 0.9, k = 3 (51 with the
-//! geometric panels in w this replaced); 73 at M_R = 0.9999, k = 3 (102); 101 at k = 10³ (119);
-//! 171 at k = 10⁶ (204). The layout (G at the nodes) takes 0.27–0.66 µs at `f64` for k ≤ 3000. [`GradedSetup`] keeps the
+//! **Cost.** The plan's left nodes + [`panel_nodes`] evaluations of G (two square roots and
+//! one division each): at `f64` 31 at M_R = 0, k = 1; 35 at M_R = 0.9, k = 3 (45 with panels of
+//! ln 4, 51 with the geometric panels in w before them); 57 at M_R = 0.9999, k = 3 (73, 102);
+//! 78 at k = 10³ (101, 119); 127 at k = 10⁶ (171, 204); at double-double 62, 69, 110, 150, 240.
+//! [`GradedSetup`] keeps the
 //! layout for every k up to 5/4 of the k it was laid out for, so that a further k costs one
 //! square root and one division a node (the ellipse solve's Newton iterates; 0.08–0.26 µs with
 //! the derivatives). The Gauss–Legendre rules come from the shared cache.
@@ -36,11 +43,12 @@
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
 //! checked against the adaptive route at 400 bits in `tests/graded.rs` over ν ∈ {−0.9, 0, 0.25,
 //! 0.5}, M_R ∈ {0, 0.5, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {1, 1.5, 3, 10, 10³, 10⁶}, with the
-//! derivatives: worst 3.6ε at `f64`, 1.5ε at double-double, 2.8ε and 2.5ε at MPFR 128 and 256
-//! bits (derivatives, ≤ 128 bits: 2.3ε, 1.4ε, 2.7ε); a layout for another k_ref (k at 5/4 of
-//! it, or 16 times below it): 3.6ε, 2.5ε, 3.6ε, 3.3ε. The left node count has a margin of one
-//! node at `f64`: 13 give 4.3ε and 12 give 74ε in dI/dk (ν = −0.9, M_R = 0, k = 1.5, where the
-//! branch points of u^{−5/2} and of G sit on the strip's edge).
+//! derivatives: worst 4.1ε at `f64`, 2.9ε at double-double, 2.7ε and 3.2ε at MPFR 128 and 256
+//! bits (derivatives, ≤ 128 bits: 2.9ε, 2.8ε, 2.5ε); a layout for another k_ref (k at 5/4 of
+//! it, or 16 times below it): 4.1ε, 2.8ε, 3.4ε, 3.4ε. The node counts' margin, measured on
+//! this grid with every panel of one length ℓ = 1…8 in turn: with 2^{−bits−8} (the counts of
+//! [`left_nodes`]) the worst error is 4.9ε, dI/dk 5.9ε; with 2^{−bits−6} dI/dk reaches 17ε,
+//! with 2^{−bits−4} 32ε, with 2^{−bits} 370ε.
 
 use super::fast::{IntegralsDk, SpeedConsts};
 use super::{AxisRatio, Integrals, Method};
@@ -65,29 +73,109 @@ pub fn panel_nodes(bits: u32) -> usize {
     }
 }
 
-/// Nodes of each left panel (length ln 4 in x, w = a sinh x) at `bits` bits: 14 at `f64`,
-/// ⌈0.2227·bits + 2⌉ above (26 at double-double, 60 at 256 bits). Every singularity lies at
-/// |Im x| ≥ π/2, so ρ ≥ 4.74 on every panel and ρ^{−2n} ≤ 2^{−bits}/2^7 needs
-/// n ≥ 0.2227·bits + 2.25 (the 2^7 covers the measured constant of the u^{−5/2} branch points).
-pub fn left_nodes(bits: u32) -> usize {
-    let b = bits.max(24) as usize;
-    if b <= 53 {
-        14
-    } else {
-        (2227 * b + 20000).div_ceil(10000)
-    }
+/// The longest left panel, in units of ln 2 (the plan in [`left_plan`] mixes lengths 1…8).
+pub const MAX_UNITS: usize = 8;
+
+/// Nodes of a left panel of length `units`·ln 2 in x (w = a sinh x) at `bits` bits:
+/// ⌈c·(bits + 8)⌉ with c = ln 2/(2 ln ρ) and ρ = h + √(h² + 1), h = π/(units·ln 2), the
+/// Bernstein ellipse of the panel that just reaches the strip |Im x| < π/2 where every
+/// singularity lies: ρ^{−2n} ≤ 2^{−bits−8}. The 2^8 covers the measured constant of the u^{−5/2}
+/// branch points on the strip's edge with a margin of about two bits (module docs). At `f64`
+/// 10, 14, 18, 22, 26, 31, 35, 40 for units 1…8; at double-double 18, 26, 33, 41, 49, 57, 65,
+/// 74; at 256 bits 42, 59, 77, 95, 113, 132, 151, 170.
+pub fn left_nodes(bits: u32, units: usize) -> usize {
+    let b = bits.max(24) as f64;
+    let h = std::f64::consts::PI / (units.max(1) as f64 * std::f64::consts::LN_2);
+    let rho = h + (h * h + 1.0).sqrt();
+    (std::f64::consts::LN_2 / (2.0 * rho.ln()) * (b + 8.0)).ceil() as usize
 }
 
-/// The fixed tables of the graded route at one precision, cached per (n_left, precision): for
-/// each left node of a panel of length ln 4 in x (panel j covers [j ln 4, (j + 1) ln 4]), with t
-/// the Gauss–Legendre node on [−1, 1], e^{x − j ln 4} = 2^{1+t} (`ep`), e^{−x − j ln 4} =
-/// 2^{−1−t} (`em`) and the weight times ln 2 (`lw`), so that e^{±x} on panel j is a product by
-/// 4^{±j} (exact); for the right half's single panel [0, 1] in v, σ = v² and the weights.
-struct Rules<T: Real> {
-    prec: T::Prec,
+/// The left half's panels for an x-range of `units`·ln 2 (or a little more): lengths in units
+/// of ln 2, each at most [`MAX_UNITS`], summing to at least `units`, with the fewest nodes
+/// ([`left_nodes`]) and, among those, the fewest panels; longest first.
+pub fn left_plan(bits: u32, units: usize) -> Vec<usize> {
+    let cost: Vec<usize> = (1..=MAX_UNITS).map(|l| left_nodes(bits, l)).collect();
+    pick_plan(&plan_table(&cost, units.max(1) + MAX_UNITS), units)
+}
+
+/// Totals the cached plan table of [`Rules`] covers (in units of ln 2): x-ranges up to
+/// (PLANNED − [`MAX_UNITS`])·ln 2 ≈ 61, i.e. a ≥ 10^-26, without a search per layout.
+const PLANNED: usize = 96;
+
+/// One entry of the plan table: the fewest nodes and panels for an exact total, and the length
+/// of the last panel on the way there.
+#[derive(Clone, Copy, Debug)]
+struct Best {
+    nodes: usize,
+    panels: usize,
+    last: usize,
+}
+
+/// The fewest nodes for every exact total 0…`len` − 1 of panel lengths 1…[`MAX_UNITS`]
+/// (`cost[ℓ − 1]` nodes each): dynamic programming over the total.
+fn plan_table(cost: &[usize], len: usize) -> Vec<Best> {
+    let none = Best {
+        nodes: usize::MAX,
+        panels: usize::MAX,
+        last: 0,
+    };
+    let mut best = vec![none; len];
+    best[0] = Best {
+        nodes: 0,
+        panels: 0,
+        last: 0,
+    };
+    for c in 1..len {
+        for (l, &n) in cost.iter().enumerate().map(|(i, n)| (i + 1, n)).take(c) {
+            let b = best[c - l];
+            let cand = Best {
+                nodes: b.nodes + n,
+                panels: b.panels + 1,
+                last: l,
+            };
+            if (cand.nodes, cand.panels) < (best[c].nodes, best[c].panels) {
+                best[c] = cand;
+            }
+        }
+    }
+    best
+}
+
+/// The plan for at least `units` from a table covering `units` + [`MAX_UNITS`] − 1.
+fn pick_plan(table: &[Best], units: usize) -> Vec<usize> {
+    let lo = units.max(1);
+    let hi = (lo + MAX_UNITS).min(table.len());
+    let total = (lo..hi)
+        .min_by_key(|&c| (table[c].nodes, table[c].panels, c))
+        .unwrap_or(lo);
+    let mut plan = Vec::with_capacity(table[total].panels);
+    let mut c = total;
+    while c > 0 {
+        plan.push(table[c].last);
+        c -= table[c].last;
+    }
+    plan.sort_unstable_by(|a, b| b.cmp(a));
+    plan
+}
+
+/// One left panel's fixed table: with t the Gauss–Legendre node on [−1, 1] and ℓ the panel's
+/// length in units of ln 2, e^{x − x0} = 2^{(1+t)ℓ/2} (`ep`), e^{−(x − x0)} = 2^{−(1+t)ℓ/2}
+/// (`em`) and the weight times ℓ ln 2/2 (`lw`), so that e^{±x} on a panel starting at
+/// x0 = c ln 2 is a product by 2^{±c} (exact).
+struct LeftRule<T: Real> {
     ep: Vec<T>,
     em: Vec<T>,
     lw: Vec<T>,
+}
+
+/// The fixed tables of the graded route at one precision, cached per precision: a
+/// [`LeftRule`] for each panel length 1…[`MAX_UNITS`] (units of ln 2) and, for the right
+/// half's single panel [0, 1] in v, σ = v² and the weights.
+struct Rules<T: Real> {
+    prec: T::Prec,
+    left: Vec<LeftRule<T>>,
+    /// [`plan_table`] for totals up to [`PLANNED`].
+    plans: Vec<Best>,
     right_s: Vec<T>,
     right_w: Vec<T>,
 }
@@ -95,32 +183,38 @@ struct Rules<T: Real> {
 impl<T: Real> Rules<T> {
     fn get(p: T::Prec) -> Result<Arc<Self>> {
         let bits = T::bits(p);
-        let nl = left_nodes(bits);
         cached(
-            nl,
+            0,
             p,
             |r: &Self| r.prec,
             || {
-                let left = GaussLegendre::<T>::get(nl, p)?;
-                let right = GaussLegendre::<T>::get(panel_nodes(bits), p)?;
                 let ln2 = T::ln2(p);
                 let one = T::one(p);
-                let (mut ep, mut em, mut lw) = (Vec::new(), Vec::new(), Vec::new());
-                for_panel_nodes(&left, &-one.clone(), &one, |t, w| {
-                    ep.push(((one.clone() + &t) * &ln2).exp());
-                    em.push(((one.clone() + &t) * &ln2).neg().exp());
-                    lw.push(w.clone() * &ln2);
-                });
+                let mut left = Vec::with_capacity(MAX_UNITS);
+                for l in 1..=MAX_UNITS {
+                    let gl = GaussLegendre::<T>::get(left_nodes(bits, l), p)?;
+                    // (1 + t)·ℓ ln 2/2 and the weight's factor ℓ ln 2/2.
+                    let half = ln2.clone() * &T::from_ratio(l as i64, 2, p);
+                    let (mut ep, mut em, mut lw) = (Vec::new(), Vec::new(), Vec::new());
+                    for_panel_nodes(&gl, &-one.clone(), &one, |t, w| {
+                        let x = (one.clone() + &t) * &half;
+                        ep.push(x.clone().exp());
+                        em.push(x.neg().exp());
+                        lw.push(w.clone() * &half);
+                    });
+                    left.push(LeftRule { ep, em, lw });
+                }
+                let right = GaussLegendre::<T>::get(panel_nodes(bits), p)?;
                 let (mut right_s, mut right_w) = (Vec::new(), Vec::new());
                 for_panel_nodes(&right, &T::zero(p), &one, |v, w| {
                     right_s.push(v.square());
                     right_w.push(w.clone());
                 });
+                let cost: Vec<usize> = left.iter().map(|r| r.ep.len()).collect();
                 Ok(Rules {
                     prec: p,
-                    ep,
-                    em,
-                    lw,
+                    plans: plan_table(&cost, PLANNED),
+                    left,
                     right_s,
                     right_w,
                 })
@@ -169,8 +263,6 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 #[derive(Clone, Debug)]
 pub struct GradedSetup<T: Real> {
     k_max: T,
-    /// Nodes a left panel.
-    panel: usize,
     /// The left nodes' s, f, s·f, s²·f, one after the other (4 × the node count).
     left: Vec<T>,
     /// The right nodes' σ, f, σ·f (3 × the node count).
@@ -179,8 +271,8 @@ pub struct GradedSetup<T: Real> {
 
 impl<T: Real> GradedSetup<T> {
     /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^40, else [`Error::Domain`]) and evaluates
-    /// G at their nodes: M·[`left_nodes`] + [`panel_nodes`] evaluations of G, with
-    /// M = ⌈asinh(1/min(4/(5 k_ref), ε, δ))/ln 4⌉ panels on the left.
+    /// G at their nodes: the [`left_plan`] for C = ⌈asinh(1/min(4/(5 k_ref), ε, δ))/ln 2⌉
+    /// units of ln 2 on the left, and [`panel_nodes`] on the right.
     pub fn new(mat: &Material<T>, speed: &Speed<T>, k_ref: &T) -> Result<Self> {
         check_k(k_ref)?;
         let p = k_ref.prec();
@@ -189,42 +281,53 @@ impl<T: Real> GradedSetup<T> {
         let sc = SpeedConsts::new(mat, speed);
         // The scale a of w = a sinh x: at most the lowest singularity height for every
         // k ≤ (5/4) k_ref (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points
-        // ±iδ), made 1/sinh(M ln 4) for a whole number M of panels.
+        // ±iδ), made 1/sinh(C ln 2) for the plan's whole number C of units ln 2.
         let k_max = k_ref.clone() * &T::from_ratio(5, 4, p);
         let a_max = k_max
             .to_f64()
             .recip()
             .min(sc.eps2.to_f64().sqrt())
             .min(sc.d2.to_f64().sqrt());
-        let m = ((1.0 / a_max).asinh() / 4f64.ln()).ceil().max(1.0) as usize;
-        // a/2 = 1/(4^M − 4^−M).
-        let four_m = one.clone().mul_pow2(2 * m as i32);
-        let half_a = (four_m.clone() - four_m.recip()).recip();
+        let units = ((1.0 / a_max).asinh() / std::f64::consts::LN_2)
+            .ceil()
+            .max(1.0) as usize;
+        let plan = if units + MAX_UNITS <= rules.plans.len() {
+            pick_plan(&rules.plans, units)
+        } else {
+            left_plan(T::bits(p), units)
+        };
+        let total: usize = plan.iter().sum();
+        // a/2 = 1/(2^C − 2^−C), C = the panels' total length in units of ln 2.
+        let two_c = one.clone().mul_pow2(total as i32);
+        let half_a = (two_c.clone() - two_c.recip()).recip();
         // (a/2)·(2/m1): G's constant factor folded into the weights' scale.
         let half_a_g = half_a.clone() * &sc.two_over_m1;
-        let panel = rules.ep.len();
-        let nl = m * panel;
-        // Left: s and the weight (a/2)(e^x + e^−x)·w·ln 2 at each node, then f in place of the
-        // weight, then s·f and s²·f.
+        let nl: usize = plan.iter().map(|&l| rules.left[l - 1].ep.len()).sum();
+        // Left: s and the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 at each node, then f in place of
+        // the weight, then s·f and s²·f.
         let mut left = vec![T::zero(p); 4 * nl];
         {
             let (ls, rest) = left.split_at_mut(nl);
             let (lf, rest) = rest.split_at_mut(nl);
             let (lsf, lssf) = rest.split_at_mut(nl);
-            for j in 0..m {
-                // e^{±x} on panel j: the cached 2^{±(1+t)} times 4^{±j}, exactly.
-                let up = one.clone().mul_pow2(2 * j as i32);
-                let down = one.clone().mul_pow2(-2 * j as i32);
-                let range = j * panel..(j + 1) * panel;
+            let (mut start, mut i0) = (0i32, 0usize);
+            for &l in &plan {
+                // e^{±x} on a panel from x0 = c ln 2: the cached 2^{±(1+t)ℓ/2} times 2^{±c},
+                // exactly.
+                let rule = &rules.left[l - 1];
+                let up = one.clone().mul_pow2(start);
+                let down = one.clone().mul_pow2(-start);
+                let range = i0..i0 + rule.ep.len();
                 let nodes = ls[range.clone()].iter_mut().zip(&mut lf[range]);
-                for ((s, f), ((ep, em), w)) in
-                    nodes.zip(rules.ep.iter().zip(&rules.em).zip(&rules.lw))
+                for ((s, f), ((ep, em), w)) in nodes.zip(rule.ep.iter().zip(&rule.em).zip(&rule.lw))
                 {
                     let ex = up.clone() * ep;
                     let emx = down.clone() * em;
                     *s = ((ex.clone() - &emx) * &half_a).square();
                     *f = (ex + emx) * &half_a_g * w;
                 }
+                start += l as i32;
+                i0 += rule.ep.len();
             }
             node_map(ls, lf, |s, w| {
                 let pp = one.clone() + s;
@@ -261,12 +364,7 @@ impl<T: Real> GradedSetup<T> {
             // σ·f in place of σ's copy.
             node_map(rf, rsf, |f, sg| sg.clone() * f);
         }
-        Ok(GradedSetup {
-            k_max,
-            panel,
-            left,
-            right,
-        })
+        Ok(GradedSetup { k_max, left, right })
     }
 
     /// Whether `k` lies in the range this layout serves, 1 ≤ k ≤ (5/4)·k_ref.
@@ -299,15 +397,13 @@ impl<T: Real> GradedSetup<T> {
         // Σ s² f u^{−5/2}, u = 1 + k²s.
         let nl = self.left.len() / 4;
         let [ls, lf, lsf, lssf] = [0, 1, 2, 3].map(|i| &self.left[i * nl..(i + 1) * nl]);
-        let left = power_sums(ls, [lf, lsf, lsf, lssf], self.panel, dk, p, |s| {
+        let left = power_sums(ls, [lf, lsf, lsf, lssf], dk, p, |s| {
             one.clone() + axes.k2.clone() * s
         });
         // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
         let nr = self.right.len() / 3;
         let [rs, rf, rsf] = [0, 1, 2].map(|i| &self.right[i * nr..(i + 1) * nr]);
-        let right = power_sums(rs, [rf, rsf, rf, rsf], nr, dk, p, |sg| {
-            sg.clone() + &axes.k2
-        });
+        let right = power_sums(rs, [rf, rsf, rf, rsf], dk, p, |sg| sg.clone() + &axes.k2);
         let [i2l, i1l, d2l, d1l] = left;
         let [i1r, i2r, d1r, d2r] = right;
         let i1 = i1l + &i1r;
@@ -343,12 +439,11 @@ const CHUNK: usize = 32;
 
 /// Σ a x^{−3/2}, Σ b x^{−3/2} and, with `dk`, Σ c x^{−5/2}, Σ d x^{−5/2} over the nodes, with
 /// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node),
-/// summed in groups of `panel` nodes (each group's sum added to the total).
+/// summed in chunks of [`CHUNK`] nodes (each chunk's sum added to the total).
 #[inline(always)]
 fn power_sums<T: Real>(
     nodes: &[T],
     factors: [&[T]; 4],
-    panel: usize,
     dk: bool,
     p: T::Prec,
     shift: impl Fn(&T) -> T,
@@ -359,36 +454,33 @@ fn power_sums<T: Real>(
     let mut t5 = [(); CHUNK].map(|_| T::zero(p));
     let mut i0 = 0;
     while i0 < nodes.len() {
-        let end = (i0 + panel).min(nodes.len());
-        let mut part = zero();
+        let m = CHUNK.min(nodes.len() - i0);
+        let xs = &nodes[i0..i0 + m];
         // Node values first, sums after: the node loop carries no dependence, so that at f64
         // the compiler packs two nodes into one SSE2 square root and division.
-        while i0 < end {
-            let m = CHUNK.min(end - i0);
-            let xs = &nodes[i0..i0 + m];
+        if dk {
+            for ((x, v3), v5) in xs.iter().zip(&mut t3).zip(&mut t5) {
+                (*v3, *v5) = shift(x).pow_m3_2_m5_2();
+            }
+        } else {
+            for (x, v3) in xs.iter().zip(&mut t3) {
+                *v3 = shift(x).pow_m3_2();
+            }
+        }
+        let [a, b, c, d] = factors.map(|f| &f[i0..i0 + m]);
+        let mut part = zero();
+        for j in 0..m {
+            part[0] += &(a[j].clone() * &t3[j]);
+            part[1] += &(b[j].clone() * &t3[j]);
             if dk {
-                for ((x, v3), v5) in xs.iter().zip(&mut t3).zip(&mut t5) {
-                    (*v3, *v5) = shift(x).pow_m3_2_m5_2();
-                }
-            } else {
-                for (x, v3) in xs.iter().zip(&mut t3) {
-                    *v3 = shift(x).pow_m3_2();
-                }
+                part[2] += &(c[j].clone() * &t5[j]);
+                part[3] += &(d[j].clone() * &t5[j]);
             }
-            let [a, b, c, d] = factors.map(|f| &f[i0..i0 + m]);
-            for j in 0..m {
-                part[0] += &(a[j].clone() * &t3[j]);
-                part[1] += &(b[j].clone() * &t3[j]);
-                if dk {
-                    part[2] += &(c[j].clone() * &t5[j]);
-                    part[3] += &(d[j].clone() * &t5[j]);
-                }
-            }
-            i0 += m;
         }
         for (s, q) in acc.iter_mut().zip(part) {
             *s += &q;
         }
+        i0 += m;
     }
     acc
 }
@@ -405,8 +497,8 @@ fn run<T: Real>(
 /// I1, I2 of (34) in the normalisation of (37) for k ≥ 1 by graded fixed panels (module docs).
 ///
 /// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^40, else [`Error::Domain`]. Accuracy: relative
-/// error below [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: (2 + ⌈log₄ 1/min(1/k, ε)⌉)
-/// panels of [`panel_nodes`] nodes.
+/// error below [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: the [`left_plan`] for
+/// x up to asinh(1/min(4/(5k), ε, δ)) plus [`panel_nodes`] nodes.
 pub fn integrals<T: Real>(
     mat: &Material<T>,
     speed: &Speed<T>,
