@@ -315,14 +315,12 @@ impl<T: Real> GradedSetup<T> {
                 // e^{±x} on a panel from x0 = c ln 2: the cached 2^{±(1+t)ℓ/2} times 2^{±c},
                 // exactly.
                 let rule = &rules.left[l - 1];
-                let up = one.clone().mul_pow2(start);
-                let down = one.clone().mul_pow2(-start);
                 let range = i0..i0 + rule.ep.len();
                 let nodes = ls[range.clone()].iter_mut().zip(&mut lf[range]);
                 for ((s, f), ((ep, em), w)) in nodes.zip(rule.ep.iter().zip(&rule.em).zip(&rule.lw))
                 {
-                    let ex = up.clone() * ep;
-                    let emx = down.clone() * em;
+                    let ex = ep.clone().mul_pow2(start);
+                    let emx = em.clone().mul_pow2(-start);
                     *s = ((ex.clone() - &emx) * &half_a).square();
                     *f = (ex + emx) * &half_a_g * w;
                 }
