@@ -39,8 +39,13 @@ def order(prec):
 
 def main():
     prefix = sys.argv[1]
+    # Only <prefix>_<precision>: "ellipse" must not pick up the "ellipse_wide_*" groups.
     groups = sorted(
-        (g[len(prefix) + 1:] for g in os.listdir(ROOT) if g.startswith(prefix + "_")),
+        (
+            g[len(prefix) + 1:]
+            for g in os.listdir(ROOT)
+            if g.startswith(prefix + "_") and re.fullmatch(r"f64|dd|mpfr\d+", g[len(prefix) + 1:])
+        ),
         key=order,
     )
     benches = sorted({b for g in groups for b in os.listdir(os.path.join(ROOT, f"{prefix}_{g}")) if b != "report"})
