@@ -98,8 +98,8 @@ pub fn left_plan(bits: u32, units: usize) -> Vec<usize> {
     pick_plan(&plan_table(&cost, units.max(1) + MAX_UNITS), units)
 }
 
-/// Totals the cached plan table of [`Rules`] covers (in units of ln 2): x-ranges up to
-/// (PLANNED − [`MAX_UNITS`])·ln 2 ≈ 61, i.e. a ≥ 10^-26, without a search per layout.
+/// x-ranges (in units of ln 2) whose plans [`Rules`] keeps: up to (PLANNED − [`MAX_UNITS`])·ln 2
+/// ≈ 61, i.e. a ≥ 10^-26, without a search or an allocation per layout.
 const PLANNED: usize = 96;
 
 /// One entry of the plan table: the fewest nodes and panels for an exact total, and the length
@@ -174,8 +174,8 @@ struct LeftRule<T: Real> {
 struct Rules<T: Real> {
     prec: T::Prec,
     left: Vec<LeftRule<T>>,
-    /// [`plan_table`] for totals up to [`PLANNED`].
-    plans: Vec<Best>,
+    /// `plans[c]`: the [`left_plan`] for c units, c < [`PLANNED`] − [`MAX_UNITS`].
+    plans: Vec<Vec<usize>>,
     right_s: Vec<T>,
     right_w: Vec<T>,
 }
@@ -213,7 +213,12 @@ impl<T: Real> Rules<T> {
                 let cost: Vec<usize> = left.iter().map(|r| r.ep.len()).collect();
                 Ok(Rules {
                     prec: p,
-                    plans: plan_table(&cost, PLANNED),
+                    plans: {
+                        let table = plan_table(&cost, PLANNED);
+                        (0..PLANNED - MAX_UNITS)
+                            .map(|c| pick_plan(&table, c))
+                            .collect()
+                    },
                     left,
                     right_s,
                     right_w,
@@ -291,10 +296,13 @@ impl<T: Real> GradedSetup<T> {
         let units = ((1.0 / a_max).asinh() / std::f64::consts::LN_2)
             .ceil()
             .max(1.0) as usize;
-        let plan = if units + MAX_UNITS <= rules.plans.len() {
-            pick_plan(&rules.plans, units)
-        } else {
-            left_plan(T::bits(p), units)
+        let far;
+        let plan: &[usize] = match rules.plans.get(units) {
+            Some(plan) => plan,
+            None => {
+                far = left_plan(T::bits(p), units);
+                &far
+            }
         };
         let total: usize = plan.iter().sum();
         // a/2 = 1/(2^C − 2^−C), C = the panels' total length in units of ln 2.
@@ -311,7 +319,7 @@ impl<T: Real> GradedSetup<T> {
             let (lf, rest) = rest.split_at_mut(nl);
             let (lsf, lssf) = rest.split_at_mut(nl);
             let (mut start, mut i0) = (0i32, 0usize);
-            for &l in &plan {
+            for &l in plan {
                 // e^{±x} on a panel from x0 = c ln 2: the cached 2^{±(1+t)ℓ/2} times 2^{±c},
                 // exactly.
                 let rule = &rules.left[l - 1];
