@@ -206,19 +206,21 @@ fn choose_runs_the_graded_route_for_k_above_one() {
     assert!(!whole(r.work));
 }
 
-/// The panel plan: covers the x-range, and takes no more nodes than any other choice of panel
-/// lengths — every composition by brute force up to 18 units, every uniform plan (including
-/// the equal panels of ln 4 it replaced) up to 90 units — at f64, double-double, 128 and 256 bits.
+/// The panel plan: covers the x-range, and takes no more nodes than any other choice of the
+/// allowed panel lengths — every composition by brute force up to 18 units, every uniform plan
+/// (including the equal panels of ln 4 it replaced) up to 90 units — at f64, double-double, 128,
+/// 256, 512 and 1024 bits; above 256 bits the lengths are capped so that no rule exceeds
+/// MAX_RULE_NODES nodes (its O(n²) construction).
 #[test]
 fn left_plan_takes_the_fewest_nodes() {
     fn fewest(bits: u32, units: usize) -> usize {
-        // Every composition of a total in units..units + MAX_UNITS − 1.
+        // Every composition of a total in units..units + max_units − 1.
         fn go(bits: u32, left: i64, acc: usize, best: &mut usize) {
             if left <= 0 {
                 *best = (*best).min(acc);
                 return;
             }
-            for l in 1..=graded::MAX_UNITS {
+            for l in 1..=graded::max_units(bits) {
                 go(
                     bits,
                     left - l as i64,
@@ -231,7 +233,16 @@ fn left_plan_takes_the_fewest_nodes() {
         go(bits, units as i64, 0, &mut best);
         best
     }
-    for bits in [53u32, 106, 128, 256] {
+    assert_eq!(
+        [53, 106, 128, 256, 512, 1024].map(graded::max_units),
+        [8, 8, 8, 8, 3, 2]
+    );
+    for bits in [53u32, 106, 128, 256, 512, 1024] {
+        let longest = graded::max_units(bits);
+        assert!((2..=graded::MAX_UNITS).contains(&longest));
+        for l in 3..=longest {
+            assert!(graded::left_nodes(bits, l) <= graded::MAX_RULE_NODES);
+        }
         for units in 1..=90 {
             let plan = graded::left_plan(bits, units);
             let nodes: usize = plan.iter().map(|&l| graded::left_nodes(bits, l)).sum();
@@ -239,8 +250,8 @@ fn left_plan_takes_the_fewest_nodes() {
                 plan.iter().sum::<usize>() >= units,
                 "{bits} bits, {units}: {plan:?}"
             );
-            assert!(plan.iter().all(|&l| (1..=graded::MAX_UNITS).contains(&l)));
-            for l in 1..=graded::MAX_UNITS {
+            assert!(plan.iter().all(|&l| (1..=longest).contains(&l)));
+            for l in 1..=longest {
                 let uniform = units.div_ceil(l) * graded::left_nodes(bits, l);
                 assert!(nodes <= uniform, "{bits} bits, {units}: {plan:?} vs {l}s");
             }

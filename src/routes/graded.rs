@@ -56,7 +56,7 @@ use crate::error::{Error, Result};
 use crate::numerics::quadrature::{cached, GaussLegendre};
 use crate::physics::{Material, Speed};
 use crate::scalar::{short, Real};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
 pub const BOUND_EPS: i64 = 32;
@@ -90,12 +90,33 @@ pub fn left_nodes(bits: u32, units: usize) -> usize {
     (std::f64::consts::LN_2 / (2.0 * rho.ln()) * (b + 8.0)).ceil() as usize
 }
 
+/// The most nodes a left panel's rule may have when a longer panel would save nodes: building
+/// an n-point Gauss–Legendre rule costs O(n²) operations at the working precision (once per
+/// precision, but a single call at 1024 bits would wait seconds for rules of 300–600 nodes).
+pub const MAX_RULE_NODES: usize = 180;
+
+/// The longest panel the plans use at `bits` bits, in units of ln 2: the longest whose rule has
+/// at most [`MAX_RULE_NODES`] nodes, and at least 2 (8 up to 256 bits, 3 at 512, 2 at 1024).
+pub fn max_units(bits: u32) -> usize {
+    (3..=MAX_UNITS)
+        .take_while(|&l| left_nodes(bits, l) <= MAX_RULE_NODES)
+        .last()
+        .unwrap_or(2)
+}
+
+/// The node counts of the panel lengths 1…[`max_units`] at `bits` bits.
+fn length_costs(bits: u32) -> Vec<usize> {
+    (1..=max_units(bits)).map(|l| left_nodes(bits, l)).collect()
+}
+
 /// The left half's panels for an x-range of `units`·ln 2 (or a little more): lengths in units
-/// of ln 2, each at most [`MAX_UNITS`], summing to at least `units`, with the fewest nodes
+/// of ln 2, each at most [`max_units`], summing to at least `units`, with the fewest nodes
 /// ([`left_nodes`]) and, among those, the fewest panels; longest first.
 pub fn left_plan(bits: u32, units: usize) -> Vec<usize> {
-    let cost: Vec<usize> = (1..=MAX_UNITS).map(|l| left_nodes(bits, l)).collect();
-    pick_plan(&plan_table(&cost, units.max(1) + MAX_UNITS), units)
+    pick_plan(
+        &plan_table(&length_costs(bits), units.max(1) + MAX_UNITS),
+        units,
+    )
 }
 
 /// x-ranges (in units of ln 2) whose plans [`Rules`] keeps: up to (PLANNED − [`MAX_UNITS`])·ln 2
@@ -111,7 +132,7 @@ struct Best {
     last: usize,
 }
 
-/// The fewest nodes for every exact total 0…`len` − 1 of panel lengths 1…[`MAX_UNITS`]
+/// The fewest nodes for every exact total 0…`len` − 1 of panel lengths 1…`cost.len()`
 /// (`cost[ℓ − 1]` nodes each): dynamic programming over the total.
 fn plan_table(cost: &[usize], len: usize) -> Vec<Best> {
     let none = Best {
@@ -169,11 +190,12 @@ struct LeftRule<T: Real> {
 }
 
 /// The fixed tables of the graded route at one precision, cached per precision: a
-/// [`LeftRule`] for each panel length 1…[`MAX_UNITS`] (units of ln 2) and, for the right
-/// half's single panel [0, 1] in v, σ = v² and the weights.
+/// [`LeftRule`] for each panel length 1…[`max_units`] (units of ln 2), each built the first time
+/// a plan uses it (a Gauss–Legendre rule costs O(n²) operations to build), the plans, and, for
+/// the right half's single panel [0, 1] in v, σ = v² and the weights.
 struct Rules<T: Real> {
     prec: T::Prec,
-    left: Vec<LeftRule<T>>,
+    left: Vec<OnceLock<LeftRule<T>>>,
     /// `plans[c]`: the [`left_plan`] for c units, c < [`PLANNED`] − [`MAX_UNITS`].
     plans: Vec<Vec<usize>>,
     right_s: Vec<T>,
@@ -188,43 +210,47 @@ impl<T: Real> Rules<T> {
             p,
             |r: &Self| r.prec,
             || {
-                let ln2 = T::ln2(p);
                 let one = T::one(p);
-                let mut left = Vec::with_capacity(MAX_UNITS);
-                for l in 1..=MAX_UNITS {
-                    let gl = GaussLegendre::<T>::get(left_nodes(bits, l), p)?;
-                    // (1 + t)·ℓ ln 2/2 and the weight's factor ℓ ln 2/2.
-                    let half = ln2.clone() * &T::from_ratio(l as i64, 2, p);
-                    let (mut ep, mut em, mut lw) = (Vec::new(), Vec::new(), Vec::new());
-                    for_panel_nodes(&gl, &-one.clone(), &one, |t, w| {
-                        let x = (one.clone() + &t) * &half;
-                        ep.push(x.clone().exp());
-                        em.push(x.neg().exp());
-                        lw.push(w.clone() * &half);
-                    });
-                    left.push(LeftRule { ep, em, lw });
-                }
                 let right = GaussLegendre::<T>::get(panel_nodes(bits), p)?;
                 let (mut right_s, mut right_w) = (Vec::new(), Vec::new());
                 for_panel_nodes(&right, &T::zero(p), &one, |v, w| {
                     right_s.push(v.square());
                     right_w.push(w.clone());
                 });
-                let cost: Vec<usize> = left.iter().map(|r| r.ep.len()).collect();
+                let table = plan_table(&length_costs(bits), PLANNED);
                 Ok(Rules {
                     prec: p,
-                    plans: {
-                        let table = plan_table(&cost, PLANNED);
-                        (0..PLANNED - MAX_UNITS)
-                            .map(|c| pick_plan(&table, c))
-                            .collect()
-                    },
-                    left,
+                    left: (0..MAX_UNITS).map(|_| OnceLock::new()).collect(),
+                    plans: (0..PLANNED - MAX_UNITS)
+                        .map(|c| pick_plan(&table, c))
+                        .collect(),
                     right_s,
                     right_w,
                 })
             },
         )
+    }
+
+    /// The table of a left panel of length `l`·ln 2 (1 ≤ l ≤ [`max_units`]), built on first use.
+    fn left_rule(&self, l: usize) -> Result<&LeftRule<T>> {
+        let cell = &self.left[l - 1];
+        if let Some(rule) = cell.get() {
+            return Ok(rule);
+        }
+        let p = self.prec;
+        let gl = GaussLegendre::<T>::get(left_nodes(T::bits(p), l), p)?;
+        let one = T::one(p);
+        // (1 + t)·ℓ ln 2/2 and the weight's factor ℓ ln 2/2.
+        let half = T::ln2(p) * &T::from_ratio(l as i64, 2, p);
+        let (mut ep, mut em, mut lw) = (Vec::new(), Vec::new(), Vec::new());
+        for_panel_nodes(&gl, &-one.clone(), &one, |t, w| {
+            let x = (one.clone() + &t) * &half;
+            ep.push(x.clone().exp());
+            em.push(x.neg().exp());
+            lw.push(w.clone() * &half);
+        });
+        // Another thread may have built it meanwhile: the first one stored wins.
+        Ok(cell.get_or_init(|| LeftRule { ep, em, lw }))
     }
 }
 
@@ -310,7 +336,10 @@ impl<T: Real> GradedSetup<T> {
         let half_a = (two_c.clone() - two_c.recip()).recip();
         // (a/2)·(2/m1): G's constant factor folded into the weights' scale.
         let half_a_g = half_a.clone() * &sc.two_over_m1;
-        let nl: usize = plan.iter().map(|&l| rules.left[l - 1].ep.len()).sum();
+        let nl = plan
+            .iter()
+            .map(|&l| rules.left_rule(l).map(|r| r.ep.len()))
+            .sum::<Result<usize>>()?;
         // Left: s and the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 at each node, then f in place of
         // the weight, then s·f and s²·f.
         let mut left = vec![T::zero(p); 4 * nl];
@@ -322,7 +351,7 @@ impl<T: Real> GradedSetup<T> {
             for &l in plan {
                 // e^{±x} on a panel from x0 = c ln 2: the cached 2^{±(1+t)ℓ/2} times 2^{±c},
                 // exactly.
-                let rule = &rules.left[l - 1];
+                let rule = rules.left_rule(l)?;
                 let range = i0..i0 + rule.ep.len();
                 let nodes = ls[range.clone()].iter_mut().zip(&mut lf[range]);
                 for ((s, f), ((ep, em), w)) in nodes.zip(rule.ep.iter().zip(&rule.em).zip(&rule.lw))
