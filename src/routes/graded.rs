@@ -20,7 +20,9 @@
 //! 4.74 at 2, 1.72 at 8), so an n-point rule converges like ρ^{−2n}: [`left_nodes`]. Longer
 //! panels need fewer nodes per unit of x (at double-double 18 for ℓ = 1, 13 a unit at ℓ = 2,
 //! 9.25 at ℓ = 8) but round the x-range up further; [`left_plan`] picks the lengths with the
-//! fewest nodes in all (dynamic programming over C, cached per precision up to C = 96). Panel
+//! fewest nodes in all (dynamic programming over C, cached per precision up to C = 96; above 256
+//! bits only lengths whose rule has at most [`MAX_RULE_NODES`] nodes, [`max_units`], since a
+//! rule's construction grows like n² and the rules are built on first use). Panel
 //! boundaries at whole multiples of ln 2 make every node's e^{±x} a product of a cached
 //! 2^{±(1+t)ℓ/2} by 2^{±c}: no exponential a node. (Equal panels of ln 4, the layout this
 //! replaced, took 1.4–1.6 times the left nodes for k ≥ 3 at `f64`, 1.4–1.5 at double-double.)
