@@ -1,0 +1,354 @@
+//! The command line of issue 6, run as a user runs it (the built `moving-hertz` binary):
+//! `ellipse` and `contact` print the library's results with every digit of the working precision
+//! (JSON keys as specified, decimal strings), `--repeat` adds timings, decimal arguments are
+//! parsed at the working precision, the summaries without `--json` name the axes and the units,
+//! and a bad argument prints one line and exits non-zero.
+
+use moving_hertz::contact::ellipse::{solve_ellipse_with, EllipseMethod};
+use moving_hertz::contact::{solve_contact, Loading};
+use moving_hertz::physics::Material;
+use moving_hertz::prelude::*;
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_moving-hertz"))
+        .args(args)
+        .output()
+        .expect("the moving-hertz binary runs")
+}
+
+/// The fields of the CLI's flat JSON object (one `"key": "value"` a line, string values).
+fn fields(out: &Output) -> Vec<(String, String)> {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout.clone()).expect("utf-8");
+    let body = text.trim();
+    assert!(
+        body.starts_with('{') && body.ends_with('}'),
+        "not an object: {body}"
+    );
+    body.lines()
+        .filter_map(|line| {
+            let line = line.trim().trim_end_matches(',');
+            let (k, v) = line.split_once("\": \"")?;
+            Some((
+                k.trim_start_matches('"').into(),
+                v.trim_end_matches('"').into(),
+            ))
+        })
+        .collect()
+}
+
+fn get<'a>(f: &'a [(String, String)], key: &str) -> &'a str {
+    f.iter()
+        .find(|(k, _)| k == key)
+        .map(|(_, v)| v.as_str())
+        .unwrap_or_else(|| panic!("key {key} missing from {f:?}"))
+}
+
+/// Significant digits of a decimal string such as "4.4305662497521886e-1".
+fn digits(s: &str) -> usize {
+    let mantissa = s.split(['e', 'E']).next().unwrap_or("");
+    mantissa
+        .chars()
+        .filter(char::is_ascii_digit)
+        .collect::<String>()
+        .trim_start_matches('0')
+        .len()
+}
+
+/// `ellipse --json` at one precision against the library's ladder on the same parsed inputs.
+fn ellipse_matches<T: Real>(p: T::Prec, flag: &str, min_digits: usize) {
+    let (nu, mr, ratio) = ("0.2", "0.9", "0.5");
+    let out = run(&[
+        "ellipse",
+        "--nu",
+        nu,
+        "--speed",
+        mr,
+        "--ratio",
+        ratio,
+        "--precision",
+        flag,
+        "--json",
+    ]);
+    let f = fields(&out);
+    let keys: Vec<&str> = f.iter().map(|(k, _)| k.as_str()).collect();
+    for key in [
+        "k",
+        "e",
+        "I1",
+        "I2",
+        "method",
+        "precision",
+        "error_estimate",
+    ] {
+        assert!(keys.contains(&key), "{flag}: key {key} missing: {keys:?}");
+    }
+    let mat = Material::new(T::parse(nu, p).unwrap()).unwrap();
+    let sp = mat.speed(T::parse(mr, p).unwrap()).unwrap();
+    let lib =
+        solve_ellipse_with(&mat, &sp, &T::parse(ratio, p).unwrap(), EllipseMethod::Auto).unwrap();
+    assert_eq!(get(&f, "k"), lib.k.to_decimal(), "{flag}: k");
+    assert_eq!(get(&f, "e"), lib.e.to_decimal(), "{flag}: e");
+    assert_eq!(get(&f, "I1"), lib.integrals.i1.to_decimal(), "{flag}: I1");
+    assert_eq!(get(&f, "I2"), lib.integrals.i2.to_decimal(), "{flag}: I2");
+    assert_eq!(get(&f, "method"), lib.method.label());
+    for key in ["k", "e", "I1", "I2"] {
+        let d = digits(get(&f, key));
+        assert!(d >= min_digits, "{flag}: {key} has {d} digits");
+    }
+    let est: f64 = get(&f, "error_estimate").parse().expect("a number");
+    let eps = T::epsilon(p).to_f64();
+    assert!(est > 0.0 && est <= 100.0 * eps, "{flag}: estimate {est}");
+}
+
+#[test]
+fn ellipse_json_is_the_library_result_with_every_digit() {
+    ellipse_matches::<f64>((), "f64", 16);
+    ellipse_matches::<Dd>((), "dd", 31);
+    ellipse_matches::<Mp>(MpPrec::new(256).unwrap(), "256", 76);
+}
+
+#[test]
+fn repeat_adds_the_median_and_the_minimum_time() {
+    let out = run(&[
+        "ellipse", "--nu", "0.2", "--speed", "0.9", "--ratio", "10", "--repeat", "5", "--json",
+    ]);
+    let f = fields(&out);
+    let median: u64 = get(&f, "median_ns").parse().expect("an integer");
+    let min: u64 = get(&f, "min_ns").parse().expect("an integer");
+    assert!(min > 0 && min <= median, "min {min}, median {median}");
+    let plain = fields(&run(&[
+        "ellipse", "--nu", "0.2", "--speed", "0.9", "--ratio", "10", "--json",
+    ]));
+    assert!(plain.iter().all(|(k, _)| k != "median_ns" && k != "min_ns"));
+    assert_eq!(get(&f, "k"), get(&plain, "k"));
+}
+
+/// `contact --json` with a load and with an approach against `solve_contact`.
+fn contact_matches<T: Real>(p: T::Prec, flag: &str, loading: (&str, &str)) {
+    let (nu, mr, r1, r2, mu) = ("0.3", "0.5", "0.05", "0.02", "80e9");
+    let out = run(&[
+        "contact",
+        "--nu",
+        nu,
+        "--speed",
+        mr,
+        "--r-along",
+        r1,
+        "--r-across",
+        r2,
+        loading.0,
+        loading.1,
+        "--shear-modulus",
+        mu,
+        "--precision",
+        flag,
+        "--json",
+    ]);
+    let f = fields(&out);
+    let num = |t: &str| T::parse(t, p).unwrap();
+    let mat = Material::new(num(nu)).unwrap();
+    let sp = mat.speed(num(mr)).unwrap();
+    let load = match loading.0 {
+        "--load" => Loading::Load(num(loading.1)),
+        _ => Loading::Approach(num(loading.1)),
+    };
+    let lib = solve_contact(&mat, &sp, &num(r1), &num(r2), &load, &num(mu), None).unwrap();
+    for (key, want) in [
+        ("a", &lib.a),
+        ("b", &lib.b),
+        ("k", &lib.shape.k),
+        ("e", &lib.shape.e),
+        ("p0", &lib.p0),
+        ("d0", &lib.d0),
+        ("load", &lib.load),
+    ] {
+        assert_eq!(
+            get(&f, key),
+            want.to_decimal(),
+            "{flag} {}: {key}",
+            loading.0
+        );
+    }
+    // a along the motion, b across: the punch is more curved across (R2 < R1), so b < a.
+    assert!(lib.b < lib.a);
+}
+
+#[test]
+fn contact_json_is_the_library_result() {
+    contact_matches::<f64>((), "f64", ("--load", "1000"));
+    contact_matches::<Dd>((), "dd", ("--approach", "7e-6"));
+    contact_matches::<Mp>(MpPrec::new(256).unwrap(), "256", ("--load", "1000"));
+}
+
+/// "0.1" at 256 bits is the 256-bit number nearest 1/10, not the f64 0.1: the CLI's k is the
+/// library's from the parsed decimal and differs from the one from the f64.
+#[test]
+fn decimal_arguments_are_parsed_at_the_working_precision() {
+    let p = MpPrec::new(256).unwrap();
+    let out = run(&[
+        "ellipse",
+        "--nu",
+        "0.2",
+        "--speed",
+        "0.9",
+        "--ratio",
+        "0.1",
+        "--precision",
+        "256",
+        "--json",
+    ]);
+    let k = get(&fields(&out), "k").to_string();
+    let mat = Material::new(Mp::parse("0.2", p).unwrap()).unwrap();
+    let sp = mat.speed(Mp::parse("0.9", p).unwrap()).unwrap();
+    let solve = |ratio: Mp| {
+        solve_ellipse_with(&mat, &sp, &ratio, EllipseMethod::Auto)
+            .unwrap()
+            .k
+            .to_decimal()
+    };
+    assert_eq!(k, solve(Mp::parse("0.1", p).unwrap()));
+    assert_ne!(k, solve(Mp::from_f64(0.1, p)));
+}
+
+#[test]
+fn summaries_name_the_axes_and_the_units() {
+    let out = run(&["ellipse", "--nu", "0.2", "--speed", "0.9", "--ratio", "0.5"]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("across/along the motion"), "{text}");
+    assert!(text.contains("major axis along the motion"), "{text}");
+    let out = run(&[
+        "contact",
+        "--nu",
+        "0.3",
+        "--speed",
+        "0.5",
+        "--r-along",
+        "0.05",
+        "--r-across",
+        "0.02",
+        "--load",
+        "1000",
+        "--shear-modulus",
+        "80e9",
+    ]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    for want in [
+        "semi-axis along the motion",
+        "semi-axis across the motion",
+        "central pressure p0",
+        "m, Pa, N",
+    ] {
+        assert!(text.contains(want), "{want:?} missing from {text}");
+    }
+}
+
+/// Each bad argument: a non-zero exit, nothing on standard output, one line on standard error
+/// that names what is wrong (the given text where there is one).
+#[test]
+fn a_bad_argument_prints_one_line_and_fails() {
+    let ell = |extra: &[&'static str]| -> Vec<&'static str> {
+        let mut v = vec!["ellipse", "--nu", "0.2", "--speed", "0.9", "--ratio", "0.5"];
+        v.extend_from_slice(extra);
+        v
+    };
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec!["ellipse", "--nu", "0.7", "--speed", "0.9", "--ratio", "0.5"],
+            "0.7",
+        ),
+        (
+            vec!["ellipse", "--nu", "0.2", "--speed", "1", "--ratio", "0.5"],
+            "1",
+        ),
+        (
+            vec!["ellipse", "--nu", "0.2", "--speed", "0.9", "--ratio", "-2"],
+            "-2",
+        ),
+        (
+            vec!["ellipse", "--nu", "0.2", "--speed", "0.9", "--ratio", "nan"],
+            "ratio",
+        ),
+        (
+            vec!["ellipse", "--nu", "0.2", "--speed", "0.9", "--ratio", "abc"],
+            "abc",
+        ),
+        (vec!["ellipse", "--nu", "0.2", "--speed", "0.9"], "ratio"),
+        (ell(&["--precision", "10"]), "10"),
+        (ell(&["--method", "bogus"]), "bogus"),
+        (ell(&["--repeat", "x"]), "x"),
+        (ell(&["--frobnicate"]), "frobnicate"),
+        (
+            vec![
+                "contact",
+                "--nu",
+                "0.3",
+                "--speed",
+                "0.5",
+                "--r-along",
+                "0.05",
+                "--r-across",
+                "0.02",
+                "--shear-modulus",
+                "80e9",
+            ],
+            "--load",
+        ),
+        (
+            vec![
+                "contact",
+                "--nu",
+                "0.3",
+                "--speed",
+                "0.5",
+                "--r-along",
+                "0",
+                "--r-across",
+                "0.02",
+                "--load",
+                "1",
+                "--shear-modulus",
+                "80e9",
+            ],
+            "0",
+        ),
+        (
+            vec![
+                "contact",
+                "--nu",
+                "0.3",
+                "--speed",
+                "0.5",
+                "--r-along",
+                "0.05",
+                "--r-across",
+                "0.02",
+                "--load",
+                "1",
+                "--shear-modulus",
+                "-1",
+            ],
+            "-1",
+        ),
+        (vec!["no-such-command"], "no-such-command"),
+    ];
+    for (args, named) in cases {
+        let out = run(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{args:?} succeeded");
+        assert!(out.stdout.is_empty(), "{args:?} printed {:?}", out.stdout);
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+        assert!(
+            err.contains(named),
+            "{args:?}: {err:?} does not name {named:?}"
+        );
+    }
+}
