@@ -49,6 +49,28 @@ fn get<'a>(f: &'a [(String, String)], key: &str) -> &'a str {
         .unwrap_or_else(|| panic!("key {key} missing from {f:?}"))
 }
 
+/// The inputs of the `contact` runs: ν, M_R, R1 (along), R2 (across), μ.
+const CONTACT: [&str; 5] = ["0.3", "0.5", "0.05", "0.02", "80e9"];
+
+/// `contact` with [`CONTACT`]'s inputs, `r_along` and `mu` replaced where given, the loading
+/// flag and value, and `extra` arguments.
+fn contact_args<'a>(
+    r_along: Option<&'a str>,
+    loading: Option<(&'a str, &'a str)>,
+    mu: Option<&'a str>,
+    extra: &[&'a str],
+) -> Vec<&'a str> {
+    let [nu, mr, r1, r2, mu0] = CONTACT;
+    let mut v = vec!["contact", "--nu", nu, "--speed", mr, "--r-along"];
+    v.extend([r_along.unwrap_or(r1), "--r-across", r2]);
+    if let Some((flag, value)) = loading {
+        v.extend([flag, value]);
+    }
+    v.extend(["--shear-modulus", mu.unwrap_or(mu0)]);
+    v.extend_from_slice(extra);
+    v
+}
+
 /// Significant digits of a decimal string such as "4.4305662497521886e-1".
 fn digits(s: &str) -> usize {
     let mantissa = s.split(['e', 'E']).next().unwrap_or("");
@@ -131,25 +153,13 @@ fn repeat_adds_the_median_and_the_minimum_time() {
 
 /// `contact --json` with a load and with an approach against `solve_contact`.
 fn contact_matches<T: Real>(p: T::Prec, flag: &str, loading: (&str, &str)) {
-    let (nu, mr, r1, r2, mu) = ("0.3", "0.5", "0.05", "0.02", "80e9");
-    let out = run(&[
-        "contact",
-        "--nu",
-        nu,
-        "--speed",
-        mr,
-        "--r-along",
-        r1,
-        "--r-across",
-        r2,
-        loading.0,
-        loading.1,
-        "--shear-modulus",
-        mu,
-        "--precision",
-        flag,
-        "--json",
-    ]);
+    let [nu, mr, r1, r2, mu] = CONTACT;
+    let out = run(&contact_args(
+        None,
+        Some(loading),
+        None,
+        &["--precision", flag, "--json"],
+    ));
     let f = fields(&out);
     let num = |t: &str| T::parse(t, p).unwrap();
     let mat = Material::new(num(nu)).unwrap();
@@ -223,21 +233,7 @@ fn summaries_name_the_axes_and_the_units() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("across/along the motion"), "{text}");
     assert!(text.contains("major axis along the motion"), "{text}");
-    let out = run(&[
-        "contact",
-        "--nu",
-        "0.3",
-        "--speed",
-        "0.5",
-        "--r-along",
-        "0.05",
-        "--r-across",
-        "0.02",
-        "--load",
-        "1000",
-        "--shear-modulus",
-        "80e9",
-    ]);
+    let out = run(&contact_args(None, Some(("--load", "1000")), None, &[]));
     assert!(out.status.success());
     let text = String::from_utf8_lossy(&out.stdout);
     for want in [
@@ -285,56 +281,13 @@ fn a_bad_argument_prints_one_line_and_fails() {
         (ell(&["--method", "bogus"]), "bogus"),
         (ell(&["--repeat", "x"]), "x"),
         (ell(&["--frobnicate"]), "frobnicate"),
+        (contact_args(None, None, None, &[]), "--load"),
         (
-            vec![
-                "contact",
-                "--nu",
-                "0.3",
-                "--speed",
-                "0.5",
-                "--r-along",
-                "0.05",
-                "--r-across",
-                "0.02",
-                "--shear-modulus",
-                "80e9",
-            ],
-            "--load",
-        ),
-        (
-            vec![
-                "contact",
-                "--nu",
-                "0.3",
-                "--speed",
-                "0.5",
-                "--r-along",
-                "0",
-                "--r-across",
-                "0.02",
-                "--load",
-                "1",
-                "--shear-modulus",
-                "80e9",
-            ],
+            contact_args(Some("0"), Some(("--load", "1")), None, &[]),
             "0",
         ),
         (
-            vec![
-                "contact",
-                "--nu",
-                "0.3",
-                "--speed",
-                "0.5",
-                "--r-along",
-                "0.05",
-                "--r-across",
-                "0.02",
-                "--load",
-                "1",
-                "--shear-modulus",
-                "-1",
-            ],
+            contact_args(None, Some(("--load", "1")), Some("-1"), &[]),
             "-1",
         ),
         (vec!["no-such-command"], "no-such-command"),
