@@ -1,14 +1,8 @@
-//! The `moving-hertz` command-line tool. Run `moving-hertz help` for the commands.
+//! The `moving-hertz` command-line tool. Run `moving-hertz --help` for the commands.
 
 mod cli;
+mod studies;
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match cli::run(&args) {
-        Ok(()) => {}
-        Err(msg) => {
-            eprintln!("moving-hertz: {msg}");
-            std::process::exit(2);
-        }
-    }
+    std::process::exit(cli::main());
 }

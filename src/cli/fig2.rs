@@ -2,7 +2,7 @@
 
 use super::args::Args;
 use super::progress::Progress;
-use moving_hertz::studies::{self, fig2};
+use crate::studies::{self, fig2};
 use moving_hertz::with_precision;
 use std::path::PathBuf;
 

@@ -3,64 +3,57 @@
 
 use super::args::Args;
 use super::json::{s, Json};
-use moving_hertz::routes::choose::{self, Inputs, MethodRequest};
-use moving_hertz::scalar::{Field, Real};
-use moving_hertz::with_precision;
+use moving_hertz::scalar::Real;
+use moving_hertz::{
+    integrals, integrals_to_tolerance, with_precision, ExactInputs, IntegralOptions, Method,
+    RelError,
+};
 
 pub fn run(args: &Args) -> Result<(), String> {
-    let inputs = Inputs::parse(
+    let inputs = ExactInputs::parse(
         args.required("nu")?,
         args.required("speed")?,
         args.required("k")?,
     )
     .map_err(|e| e.to_string())?;
-    let request = MethodRequest::parse(args.optional("method").unwrap_or("auto"))
+    let method = Method::parse(args.optional("method").unwrap_or("auto"))
         .map_err(|e| format!("--method: {e}"))?;
     let json = args.flag("json");
     let tol = match args.optional("tol") {
-        Some(t) => Some(
-            t.trim()
-                .parse::<f64>()
-                .map_err(|_| format!("--tol: cannot parse {t:?}"))?,
-        ),
+        Some(t) => Some(RelError::parse(t).map_err(|e| format!("--tol: {e}"))?),
         None => None,
     };
-    // (I1, I2, error estimate, method, precision, work), values printed at the working precision.
-    let (i1, i2, est, method, prec, work) = match (tol, args.optional("precision")) {
+    let r = match (tol, args.optional("precision")) {
         (Some(tol), None) => {
-            let a = choose::integrals(&inputs, tol, request).map_err(|e| e.to_string())?;
-            let (i1, i2) = with_precision!(a.precision, T, p => {
-                (T::from_float(&a.i1, p).to_decimal(), T::from_float(&a.i2, p).to_decimal())
-            });
-            (i1, i2, a.error_estimate, a.method, a.precision, a.work)
+            integrals_to_tolerance(&inputs, tol, method).map_err(|e| e.to_string())?
         }
         (tol, _) => {
             let prec = args.precision()?;
-            let method = match request {
-                MethodRequest::Auto => choose::choose_method(
-                    &inputs,
-                    tol.unwrap_or_else(|| 2f64.powi(1 - prec.bits() as i32))
-                        .max(1e-300),
-                ),
-                MethodRequest::Fixed(m) => m,
-            };
             with_precision!(prec, T, p => {
-                let r = choose::run_at::<T>(&inputs, p, method, tol.unwrap_or(0.0))
-                    .map_err(|e| e.to_string())?;
-                let eps = T::epsilon(p).to_f64();
-                let est = r.error_estimate.to_f64() + inputs.condition() * eps;
-                (r.i1.to_decimal(), r.i2.to_decimal(), est, r.method, prec, r.work)
+                let (sp, k) = inputs.at::<T>(p).map_err(|e| e.to_string())?;
+                let opts = IntegralOptions { method, tolerance: tol, ..Default::default() };
+                let r = integrals(&sp, &k, &opts).map_err(|e| e.to_string())?;
+                let bits = T::bits(p) + 64;
+                let up = |e: moving_hertz::Estimated<T>| moving_hertz::Estimated::new(
+                    moving_hertz::Mp::from_float(&e.value.to_float(bits), moving_hertz::MpPrec::clamped(bits)), e.error);
+                moving_hertz::Integrals { i1: up(r.i1), i2: up(r.i2), di1_dk: None, di2_dk: None, j0: None, route: r.route, precision: r.precision, work: r.work }
             })
         }
     };
+    let prec = r.precision;
+    let (i1, i2) = with_precision!(prec, T, p => {
+        (T::from_float(&r.i1.value.to_float(T::bits(p) + 64), p).to_decimal(),
+         T::from_float(&r.i2.value.to_float(T::bits(p) + 64), p).to_decimal())
+    });
+    let est = r.i1.error.max(r.i2.error);
     if json {
         let obj = Json::Obj(vec![
             ("I1".into(), s(i1)),
             ("I2".into(), s(i2)),
-            ("method".into(), s(method.label())),
+            ("method".into(), s(r.route.label())),
             ("precision".into(), s(prec.label())),
-            ("error_estimate".into(), s(format!("{est:.3e}"))),
-            ("work".into(), s(work.to_string())),
+            ("error_estimate".into(), s(format!("{est}"))),
+            ("work".into(), s(r.work.to_string())),
         ]);
         println!("{}", obj.render());
     } else {
@@ -68,11 +61,11 @@ pub fn run(args: &Args) -> Result<(), String> {
         println!("I2 = {i2}");
         println!("A1/B1 = I2/I1 for this k; normalisation of (37) (pi times the paper's (34))");
         println!(
-            "method {} at {} ({} bits), {} evaluations/terms, relative error estimate {:.2e}",
-            method.label(),
+            "route {} at {} ({} bits), {} evaluations/terms, relative error estimate {}",
+            r.route.label(),
             prec.label(),
             prec.bits(),
-            work,
+            r.work,
             est
         );
     }

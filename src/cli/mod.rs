@@ -52,6 +52,18 @@ COMMANDS:
 Numbers are parsed from their decimal text at the working precision and printed with every
 digit of it. --precision takes f64, dd (double-double) or a number of MPFR bits (24 or more).";
 
+/// Runs the command line; returns the process's exit code.
+pub fn main() -> i32 {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(()) => 0,
+        Err(msg) => {
+            eprintln!("moving-hertz: {msg}");
+            2
+        }
+    }
+}
+
 /// Runs the command in `argv`; an `Err` is one line for the user.
 pub fn run(argv: &[String]) -> Result<(), String> {
     let Some(cmd) = argv.first() else {

@@ -3,8 +3,8 @@
 
 use super::args::Args;
 use super::progress::Progress;
-use moving_hertz::contact::ellipse::EllipseMethod;
-use moving_hertz::studies::{self, integrals, pareto, poisson, rayleigh, series, stability};
+use crate::studies::{self, integrals, pareto, poisson, rayleigh, series, stability};
+use moving_hertz::Method;
 use std::path::PathBuf;
 
 pub fn run(name: &str, args: &Args) -> Result<(), String> {
@@ -214,7 +214,7 @@ fn study_poisson(out: &std::path::Path) -> Result<(), String> {
 }
 
 fn study_pareto(out: &std::path::Path) -> Result<(), String> {
-    let methods = [EllipseMethod::Fast, EllipseMethod::Quadrature];
+    let methods = [Method::Fixed, Method::Adaptive];
     let rows = pareto::run(&methods, 200.0, |what| eprintln!("pareto: {what} ..."))
         .map_err(|e| e.to_string())?;
     let csv: Vec<Vec<String>> = rows

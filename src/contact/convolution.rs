@@ -15,8 +15,8 @@
 
 use super::solution::ContactSolution;
 use crate::error::Result;
-use crate::numerics::quadrature::{integrate, Limits};
-use crate::physics::{GreenFunction, Material, Speed};
+use crate::numerics::quadrature::{integrate, Limits, Quadrature};
+use crate::physics::GreenFunction;
 use crate::scalar::Real;
 
 /// ∫ √(A − 2BR − CR²) dR over the part of the ray R ≥ 0 inside the ellipse, for the ray of
@@ -26,8 +26,8 @@ use crate::scalar::Real;
 fn ray_integral<T: Real>(sol: &ContactSolution<T>, x: &T, y: &T, cphi: &T, sphi: &T) -> T {
     let p = x.prec();
     let one = T::one(p);
-    let ia2 = sol.a.clone().square().recip();
-    let ib2 = sol.b.clone().square().recip();
+    let ia2 = sol.a.value.clone().square().recip();
+    let ib2 = sol.b.value.clone().square().recip();
     let a = one - x.square() * &ia2 - y.square() * &ib2;
     let b = x.clone() * cphi * &ia2 + y.clone() * sphi * &ib2;
     let c = cphi.square() * &ia2 + sphi.square() * &ib2;
@@ -52,29 +52,28 @@ fn ray_integral<T: Real>(sol: &ContactSolution<T>, x: &T, y: &T, cphi: &T, sphi:
     c.sqrt() * (prim(&u_hi) - prim(&u_lo))
 }
 
-/// u_z(x, y) by the convolution (7) at relative tolerance `tol` (see the module docs). Works
-/// inside and outside the contact.
+/// u_z(x, y) by the convolution (7) at relative tolerance `tol` (see the module docs), with the
+/// quadrature's estimate of its absolute error. Works inside and outside the contact.
 pub fn displacement<T: Real>(
     sol: &ContactSolution<T>,
-    mat: &Material<T>,
-    speed: &Speed<T>,
     x: &T,
     y: &T,
     tol: &T,
-) -> Result<T> {
+) -> Result<Quadrature<T>> {
     let p = x.prec();
-    let green = GreenFunction::new(mat);
+    let speed = &sol.problem().speed;
+    let green = GreenFunction::new(speed.material());
     let pi = T::pi(p);
     let one = T::one(p);
     let f = |phi: &T| -> T {
         let (s, c) = phi.clone().sin_cos();
-        let t = speed.mr2.clone() * s.square();
-        let omt = (one.clone() - &t).max_of(speed.one_minus_mr2.clone());
+        let t = speed.mr2().clone() * s.square();
+        let omt = (one.clone() - &t).max_of(speed.one_minus_mr2().clone());
         let g = green.g_normalised(&t, &omt);
         g * ray_integral(sol, x, y, &c, &s)
     };
     // Breakpoints: 0, π/2 ± graded offsets, π, 3π/2 ± offsets, 2π, plus tangent angles.
-    let eps = speed.one_minus_mr2.clone().sqrt();
+    let eps = speed.one_minus_mr2().clone().sqrt();
     let half_pi = pi.clone().mul_pow2(-1);
     let mut pts = vec![T::zero(p), pi.clone(), pi.clone().mul_pow2(1)];
     for centre in [half_pi.clone(), half_pi.clone() * T::from_i64(3, p)] {
@@ -92,7 +91,12 @@ pub fn displacement<T: Real>(
     pts.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
     pts.dedup_by(|a, b| *a == *b);
     let q = integrate(f, &pts, tol, Limits::default())?;
-    Ok(sol.p0.clone() * q.value / (pi.mul_pow2(1) * &sol.mu))
+    let scale = sol.p0.value.clone() / (pi.mul_pow2(1) * &sol.problem().shear_modulus);
+    Ok(Quadrature {
+        value: q.value * &scale,
+        error: q.error * &scale,
+        evaluations: q.evaluations,
+    })
 }
 
 /// The directions φ ∈ [0, 2π) of the two rays from an outside point tangent to the ellipse:
@@ -100,8 +104,8 @@ pub fn displacement<T: Real>(
 fn tangent_angles<T: Real>(sol: &ContactSolution<T>, x: &T, y: &T, pi: &T) -> Vec<T> {
     let p = x.prec();
     let one = T::one(p);
-    let ia2 = sol.a.clone().square().recip();
-    let ib2 = sol.b.clone().square().recip();
+    let ia2 = sol.a.value.clone().square().recip();
+    let ib2 = sol.b.value.clone().square().recip();
     let a = one - x.square() * &ia2 - y.square() * &ib2; // < 0 outside
                                                          // B² + AC = P cos² + 2Q cos sin + S sin².
     let pp = x.square() * ia2.square() + a.clone() * &ia2;

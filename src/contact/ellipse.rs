@@ -25,7 +25,7 @@
 //! adaptive quadrature (`tests/contact.rs`). From A1/B1 = 30 on,
 //! long steps at kε ≥ 5 solve the asymptotic form of (33) for k ≫ 1 (`log_model_step`).
 //!
-//! **Precision ladder** ([`solve_ellipse_ladder`]): a solve at high precision is started from
+//! **Precision ladder** ([`solve_ladder`]): a solve at high precision is started from
 //! the `f64` root and its F′ (good to ~2^-40). At double-double one evaluation with
 //! k-derivatives and a Halley step whose F″ (and the integrals' second derivatives, for carrying
 //! I1, I2 to the new k) come by secants from the `f64` stage's iterates (`halley_from_f64`):
@@ -42,72 +42,11 @@
 //! of a 320-bit adaptive-quadrature solve at f64, double-double and 256 bits).
 
 use crate::error::{Error, Result};
-use crate::physics::{Material, Speed};
-use crate::routes::direct::{contact_integrals, ContactIntegrals};
-use crate::routes::fast::{self, FastSetup, IntegralsDk};
-use crate::routes::graded::GradedSetup;
-use crate::routes::{AxisRatio, Integrals};
+use crate::estimate::{Estimated, RelError};
+use crate::physics::Speed;
+use crate::routes::evaluate::{Evaluator, IntegralOptions};
+use crate::routes::{fast, AxisRatio, Evaluation, Integrals, Method};
 use crate::scalar::{check_finite, short, Dd, Real};
-use std::cell::{OnceCell, RefCell};
-
-/// I1, I2 (normalisation of (37)) and their derivatives with respect to the axis ratio k at one
-/// k, with the larger relative error estimate of I1, I2 and the work spent.
-#[derive(Clone, Debug)]
-pub struct KIntegrals<T: Real> {
-    /// I1.
-    pub i1: T,
-    /// I2.
-    pub i2: T,
-    /// ∂I1/∂k.
-    pub di1_dk: T,
-    /// ∂I2/∂k.
-    pub di2_dk: T,
-    /// Relative error estimate of I1, I2.
-    pub error_estimate: T,
-    /// Integrand evaluations.
-    pub work: usize,
-}
-
-impl<T: Real> From<ContactIntegrals<T>> for KIntegrals<T> {
-    fn from(c: ContactIntegrals<T>) -> Self {
-        KIntegrals {
-            i1: c.i1,
-            i2: c.i2,
-            di1_dk: c.di1_dk,
-            di2_dk: c.di2_dk,
-            error_estimate: c.error_estimate,
-            work: c.work,
-        }
-    }
-}
-
-impl<T: Real> From<Integrals<T>> for KIntegrals<T> {
-    /// I1, I2 without their derivatives (set to zero).
-    fn from(c: Integrals<T>) -> Self {
-        let z = T::zero(c.i1.prec());
-        KIntegrals {
-            i1: c.i1,
-            i2: c.i2,
-            di1_dk: z.clone(),
-            di2_dk: z,
-            error_estimate: c.error_estimate,
-            work: c.work,
-        }
-    }
-}
-
-impl<T: Real> From<IntegralsDk<T>> for KIntegrals<T> {
-    fn from(c: IntegralsDk<T>) -> Self {
-        KIntegrals {
-            i1: c.integrals.i1,
-            i2: c.integrals.i2,
-            di1_dk: c.di1_dk,
-            di2_dk: c.di2_dk,
-            error_estimate: c.integrals.error_estimate,
-            work: c.integrals.work,
-        }
-    }
-}
 
 /// Which axis of the contact ellipse is the longer one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -128,27 +67,94 @@ impl MajorAxis {
     }
 }
 
-/// The solved shape of the contact ellipse.
+/// Options of [`solve_ellipse`] (and of [`crate::contact::ContactProblem::solve`]): every
+/// field has a default, so a call names only what it changes,
+/// `Options { method: Method::Adaptive, ..Default::default() }`.
 #[derive(Clone, Debug)]
-pub struct EllipseShape<T: Real> {
-    /// k = b/a, b across the motion, a along it.
-    pub k: T,
-    /// Eccentricity √(1 − (minor/major)²).
-    pub e: T,
+pub struct Options<T> {
+    /// How the integrals are evaluated at each Newton iterate: [`Method::Auto`] (default: the
+    /// fixed rules where they apply, the adaptive quadrature elsewhere), [`Method::Fixed`] (the
+    /// fixed rules only; an iterate outside 2⁻⁴⁰ ≤ k ≤ 2⁴⁰ is an error) or [`Method::Adaptive`].
+    /// The series and the adaptive subtracted routes give no k-derivatives and are refused.
+    pub method: Method,
+    /// A starting value for k. Without one (the default) the solve starts from the static
+    /// ellipse and, above `f64`, climbs the precision ladder (`f64`, then double-double, then
+    /// the working precision: a few high-precision evaluations, no search); with one it runs
+    /// Newton's method at the working precision from the seed.
+    pub seed: Option<T>,
+    /// The relative accuracy wanted for k; `None` (the default) asks for the working
+    /// precision's floor (a few ε). A tolerance below 4ε is refused before any work
+    /// ([`Error::Unreachable`]).
+    pub tolerance: Option<RelError>,
+}
+
+impl<T> Default for Options<T> {
+    fn default() -> Self {
+        Options {
+            method: Method::Auto,
+            seed: None,
+            tolerance: None,
+        }
+    }
+}
+
+/// The solved shape of the contact ellipse (33), each quantity with a bound on its error.
+#[derive(Clone, Debug)]
+pub struct Ellipse<T: Real> {
+    /// k = b/a (b across the motion, a along it), with a bound on its relative error for the
+    /// inputs as represented at the working precision (see [`solve_ellipse`] for the speed's
+    /// rounding).
+    pub k: Estimated<T>,
+    /// The eccentricity √(1 − (minor/major)²) ∈ [0, 1). Its bound is on the *absolute* error
+    /// |ẽ − e| (e vanishes for a circular contact, where δe ≈ δk/e: a relative bound would be
+    /// unbounded there); since e < 1 it also bounds e's error relative to 1.
+    pub e: Estimated<T>,
     /// Which axis is the major one.
     pub major: MajorAxis,
-    /// The integrals at the solution (normalisation of (37)) and their k-derivatives.
-    pub integrals: KIntegrals<T>,
-    /// The method that evaluated them.
-    pub method: EllipseMethod,
-    /// Estimated relative error of k (from the integrals' error and the last Newton step), for
-    /// the inputs as represented at the working precision. Near the Rayleigh speed k is
-    /// ill-conditioned in M_R (condition number ~ 1/(2(1 − M_R))): a decimal speed such as
-    /// 0.999999 rounded to the working precision moves k by up to ε/(2(1 − M_R)) more, which
-    /// this estimate does not include (it is the input's error, not the solver's).
-    pub error_estimate: T,
-    /// Newton iterations (integral evaluations) spent.
+    /// I1, I2 at the solution (normalisation of (37)) with their k-derivatives and the route
+    /// of the last evaluation.
+    pub integrals: Integrals<T>,
+    /// Evaluations of the integrals spent (all stages of the precision ladder included).
     pub iterations: usize,
+}
+
+/// The solve's internal result: k, the integrals at k, the error estimate of k, the work.
+#[derive(Clone, Debug)]
+struct Shape<T: Real> {
+    k: T,
+    integrals: Evaluation<T>,
+    error_estimate: T,
+    iterations: usize,
+}
+
+impl<T: Real> Shape<T> {
+    /// The public result: e and its absolute bound from k's, everything checked finite.
+    fn publish(self) -> Result<Ellipse<T>> {
+        let p = self.k.prec();
+        let one = T::one(p);
+        let (q, major) = if self.k <= one {
+            (self.k.clone(), MajorAxis::Along)
+        } else {
+            (self.k.clone().recip(), MajorAxis::Across)
+        };
+        let e = ((one.clone() - &q) * (one + &q)).sqrt();
+        // δ(e²) = 2q²·δk/k; |δe| ≤ min(δ(e²)/(2e), √δ(e²)), plus e's own rounding.
+        let (ef, qf) = (e.to_f64(), q.to_f64());
+        let de2 = RelError::of(&self.error_estimate).scale(2.0 * qf * qf);
+        let de = if ef > 0.0 {
+            de2.scale(0.5 / ef).min(de2.sqrt())
+        } else {
+            de2.sqrt()
+        };
+        let e_err = de.add(RelError::eps::<T>(4, p).scale(ef));
+        Ok(Ellipse {
+            k: Estimated::new(self.k, RelError::of(&self.error_estimate)).checked("k = b/a")?,
+            e: Estimated::new(e, e_err).checked("eccentricity e")?,
+            major,
+            integrals: self.integrals.publish()?,
+            iterations: self.iterations,
+        })
+    }
 }
 
 /// Checks a curvature ratio A1/B1 = R2/R1: positive and finite.
@@ -204,195 +210,143 @@ fn static_seed_wide(ratio: f64) -> f64 {
     k
 }
 
-/// How the integrals inside the ellipse solve are evaluated.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum EllipseMethod {
-    /// The fixed-rule routes wherever they apply (the fast route for 2^-40 ≤ k ≤ 1, the graded
-    /// panels for 1 < k ≤ 2^40), the adaptive quadrature elsewhere.
-    Auto,
-    /// Adaptive vector quadrature of (46)–(47) and their k-derivatives
-    /// ([`crate::routes::direct::contact_integrals`]).
-    Quadrature,
-    /// The fixed-rule routes: [`crate::routes::fast`] for 2^-40 ≤ k ≤ 1, with its k-independent
-    /// part precomputed once per solve, and [`crate::routes::graded`] for 1 < k ≤ 2^40 (a Newton
-    /// iterate outside 2^-40 ≤ k ≤ 2^40 is an error).
-    Fast,
-}
-
-impl EllipseMethod {
-    /// `auto`, `quadrature` or `fast`.
-    pub fn label(&self) -> &'static str {
-        match self {
-            EllipseMethod::Auto => "auto",
-            EllipseMethod::Quadrature => "quadrature",
-            EllipseMethod::Fast => "fast",
-        }
-    }
-    /// Parses a label.
-    pub fn parse(s: &str) -> Result<EllipseMethod> {
-        match s {
-            "auto" => Ok(EllipseMethod::Auto),
-            "quadrature" => Ok(EllipseMethod::Quadrature),
-            "fast" => Ok(EllipseMethod::Fast),
-            _ => Err(Error::Parse {
-                text: s.to_string(),
-                reason: "expected auto, quadrature or fast",
-            }),
-        }
-    }
-}
-
-/// The evaluator of one solve: the fast route's precomputed k-independent part when the method
-/// allows it.
-struct Evaluator<'a, T: Real + 'static> {
-    method: EllipseMethod,
-    /// The fast route's k-independent part, built at the first evaluation below k = 1 that is
-    /// not a probe (none for [`EllipseMethod::Quadrature`]).
-    fast: OnceCell<Result<FastSetup<T>>>,
-    graded: RefCell<Option<GradedSetup<T>>>,
-    mat: &'a Material<T>,
-    speed: &'a Speed<T>,
-}
-
-impl<'a, T: Real> Evaluator<'a, T> {
-    fn new(method: EllipseMethod, mat: &'a Material<T>, speed: &'a Speed<T>) -> Self {
-        Evaluator {
-            method,
-            fast: OnceCell::new(),
-            graded: RefCell::new(None),
-            mat,
-            speed,
-        }
-    }
-
-    /// I1, I2 and, with `dk`, their k-derivatives at `axes` (zero without), and the method that
-    /// produced them. The adaptive fallback always returns the derivatives. A `probe` (one
-    /// evaluation at k = 1 before the iteration goes above it) runs the fast route once without
-    /// building its k-independent part.
-    fn eval(
-        &self,
-        axes: &AxisRatio<T>,
-        dk: bool,
-        probe: bool,
-    ) -> Result<(KIntegrals<T>, EllipseMethod)> {
-        if self.method != EllipseMethod::Quadrature {
-            // k > 1: the graded fixed panels ([`crate::routes::graded`]) instead, their layout
-            // kept while the iterates stay within its range.
-            let above = axes.k > T::one(axes.k.prec());
-            let r: Result<KIntegrals<T>> = if above {
-                self.graded(axes, dk)
-            } else if probe && self.fast.get().is_none() {
-                fast::integrals_with_dk(self.mat, self.speed, axes).map(Into::into)
-            } else {
-                match self
-                    .fast
-                    .get_or_init(|| FastSetup::new(self.mat, self.speed))
-                {
-                    Ok(f) if dk => f.integrals_with_dk(axes).map(Into::into),
-                    Ok(f) => f.integrals(axes).map(Into::into),
-                    Err(e) => Err(e.clone()),
-                }
-            };
-            match r {
-                Ok(r) => return Ok((r, EllipseMethod::Fast)),
-                Err(e) if self.method == EllipseMethod::Fast => return Err(e),
-                Err(_) => {}
-            }
-        }
-        let c = contact_integrals(self.mat, self.speed, axes, &T::zero(axes.k.prec()))?;
-        Ok((c.into(), EllipseMethod::Quadrature))
-    }
-
-    /// The graded route at k > 1 from the kept layout, laid out anew (for 9/8 of this k, so
-    /// that iterates up to 45/32 k reuse it) when k lies outside its range.
-    fn graded(&self, axes: &AxisRatio<T>, dk: bool) -> Result<KIntegrals<T>> {
-        let mut kept = self.graded.borrow_mut();
-        let g = match kept.take() {
-            Some(g) if g.covers(&axes.k) => kept.insert(g),
-            _ => {
-                let p = axes.k.prec();
-                let k_ref =
-                    (axes.k.clone() * &T::from_ratio(9, 8, p)).min_of(T::from_i64(1 << 40, p));
-                kept.insert(GradedSetup::new(self.mat, self.speed, &k_ref)?)
-            }
-        };
-        if dk {
-            g.integrals_with_dk(axes).map(Into::into)
-        } else {
-            g.integrals(axes).map(Into::into)
-        }
-    }
-}
-
-/// Solves (33) for the axis ratio at the working precision of `ratio`, optionally from a seed
-/// (the precision ladder: an `f64` root converted to `T`), with the integrals by
-/// [`EllipseMethod::Auto`]. Accuracy: k to a few ε times the conditioning
-/// |d ln k/d ln(A1/B1)| (≈ 1/2 for small k), with an error estimate.
+/// Solves (33), I2(k)/I1(k) = A1/B1, for the axis ratio k = b/a at the working precision of
+/// `ratio` = A1/B1 = R2/R1, for the material and speed of `speed`.
+///
+/// Without a seed (the default) the solve climbs the precision ladder above `f64`
+/// ([`solve_ladder`]): a few evaluations of the integrals at the working precision, no search.
+///
+/// Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit quadrature solve,
+/// `tests/contact.rs`), I1, I2 at k to a few ε, with error bounds. The bound on k is for the
+/// inputs as represented at the working precision: near the Rayleigh speed k is ill-conditioned
+/// in M_R (condition number ~M_R/(4(1 − M_R))) but well conditioned in the gap 1 − M_R, which a
+/// speed made by [`crate::physics::Material::parse_speed`] or
+/// [`crate::physics::Material::speed_from_gap`] carries to within ε.
+///
+/// Errors: [`Error::Domain`] for a ratio that is not positive and finite, for the series or the
+/// adaptive subtracted method (no k-derivatives); [`Error::Unreachable`] for a tolerance below
+/// 4ε; [`Error::NoConvergence`] if Newton's method fails (not observed).
 pub fn solve_ellipse<T: Real>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     ratio: &T,
-    seed: Option<&T>,
-) -> Result<EllipseShape<T>> {
-    solve_ellipse_seeded(mat, speed, ratio, seed, EllipseMethod::Auto)
+    opts: &Options<T>,
+) -> Result<Ellipse<T>> {
+    check_ratio(ratio)?;
+    let p = ratio.prec();
+    if matches!(opts.method, Method::Series | Method::AdaptiveSubtracted) {
+        return Err(Error::Domain {
+            name: "method for the ellipse solve",
+            value: opts.method.label().into(),
+            bound: "auto, adaptive or fixed (the series and adaptive-subtracted routes give no k-derivatives)",
+        });
+    }
+    let floor = RelError::eps::<T>(4, p);
+    if let Some(t) = opts.tolerance {
+        if t < floor {
+            return Err(Error::Unreachable {
+                what: "the axis ratio k",
+                tolerance: t.to_string(),
+                reason: format!("below 4 eps = {floor} of the working precision"),
+            });
+        }
+    }
+    let tol = opts.tolerance.map(|t| t.to_real::<T>(p));
+    let shape = match &opts.seed {
+        Some(seed) => {
+            let stage = Stage {
+                seed: Some(seed),
+                tol,
+                ..Stage::final_stage()
+            };
+            solve_core(speed, ratio, opts.method, stage)?.0
+        }
+        None => solve_ladder(speed, ratio, opts.method, tol)?,
+    };
+    shape.publish()
 }
 
-/// [`solve_ellipse`] with a chosen method for the integrals.
-pub fn solve_ellipse_seeded<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    ratio: &T,
-    seed: Option<&T>,
-    method: EllipseMethod,
-) -> Result<EllipseShape<T>> {
-    solve_core(mat, speed, ratio, seed, None, method, true, false).map(|(s, _)| s)
+/// How one stage of the solve runs: its seed and the derivatives handed on by the stage below,
+/// whether its last evaluation may skip the k-derivatives (`allow_chord`; false for a stage that
+/// hands its derivatives on), whether a Halley step from the `f64` stage is tried, and the
+/// tolerance on k (`None`: the working precision's floor).
+struct Stage<'s, T: Real> {
+    seed: Option<&'s T>,
+    seed_slope: Option<(Chord<T>, T)>,
+    allow_chord: bool,
+    halley: bool,
+    tol: Option<T>,
 }
 
-/// The Newton iteration of [`solve_ellipse_seeded`]. `seed_slope`: the derivatives at (near)
+impl<T: Real> Stage<'_, T> {
+    /// The last (or only) stage: no seed, chord steps allowed.
+    fn final_stage() -> Self {
+        Stage {
+            seed: None,
+            seed_slope: None,
+            allow_chord: true,
+            halley: false,
+            tol: None,
+        }
+    }
+}
+
+/// The Newton iteration of one stage ([`Stage`]). `seed_slope`: the derivatives at (near)
 /// the seed from a lower precision and a bound on the seed's error in λ, used for chord steps
 /// when two of them reach ε. `allow_chord`:
 /// whether the evaluation expected to be the last may skip the k-derivatives. Returns the shape
 /// and the derivatives of the last evaluation that computed them.
 fn solve_core<T: Real>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     ratio: &T,
-    seed: Option<&T>,
-    seed_slope: Option<(Chord<T>, T)>,
-    method: EllipseMethod,
-    allow_chord: bool,
-    halley: bool,
-) -> Result<(EllipseShape<T>, Option<Chord<T>>)> {
+    method: Method,
+    stage: Stage<'_, T>,
+) -> Result<(Shape<T>, Option<Chord<T>>)> {
+    let Stage {
+        seed,
+        seed_slope,
+        allow_chord,
+        halley,
+        tol,
+    } = stage;
     check_ratio(ratio)?;
     let p = ratio.prec();
     let k0 = match seed {
         Some(s) if s.is_positive() && s.is_finite() => s.clone(),
         _ => T::from_f64(static_seed(ratio.to_f64()), p),
     };
-    let evaluator = Evaluator::new(method, mat, speed);
+    let evaluator = Evaluator::new(
+        speed,
+        IntegralOptions {
+            method,
+            derivatives: true,
+            ..Default::default()
+        },
+    )?;
     // F(λ) = ln(I2/(I1·A1/B1)) at λ = ln k, and F′ = k(I2′/I2 − I1′/I1). With `chord` (the
     // derivatives dI1/dk, dI2/dk and F′ kept from an earlier iterate) the derivatives are not
     // evaluated again: a chord step instead of a Newton step. `probe`: see [`Evaluator::eval`].
-    let eval = |lnk: &T,
-                chord: Option<&Chord<T>>,
-                probe: bool|
-     -> Result<(T, T, (KIntegrals<T>, EllipseMethod))> {
+    let eval = |lnk: &T, chord: Option<&Chord<T>>, probe: bool| -> Result<(T, T, Evaluation<T>)> {
         let ax = AxisRatio::new(lnk.clone().exp())?;
-        let mut ci = evaluator.eval(&ax, chord.is_none(), probe)?;
-        let f = (ci.0.i2.clone() / &ci.0.i1 / ratio).ln();
+        let mut ci = evaluator.for_newton(&ax, chord.is_none(), probe)?;
+        let f = (ci.i2.clone() / &ci.i1 / ratio).ln();
         let df = match chord {
             Some(c) => {
-                ci.0.di1_dk = c.di1.clone();
-                ci.0.di2_dk = c.di2.clone();
+                // Derivatives kept from an earlier iterate: their relative error grows by
+                // ≲ 8|Δλ| (module docs of `finish`).
+                ci.dk = Some([c.di1.clone(), c.di2.clone()]);
+                let age = (lnk.clone() - &c.lam).abs().mul_i64(8) + &c.rel_err;
+                ci.extra_error = age + &T::epsilon(p).mul_i64(fast::DK_BOUND_EPS);
                 c.df.clone()
             }
-            None => {
-                ax.k.clone() * (ci.0.di2_dk.clone() / &ci.0.i2 - ci.0.di1_dk.clone() / &ci.0.i1)
-            }
+            None => ax.k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1),
         };
         Ok((f, df, ci))
     };
-    let eps = T::epsilon(p);
+    // The stopping rules' unit: ε, or the tolerance asked for.
+    let eps = match tol {
+        Some(t) => t.max_of(T::epsilon(p)),
+        None => T::epsilon(p),
+    };
     let mut lam = k0.ln();
     // Bracket [lo, hi] in λ with F(lo) < 0 < F(hi), grown as evaluations reveal signs.
     let mut lo: Option<T> = None;
@@ -417,7 +371,7 @@ fn solve_core<T: Real>(
         }
     }
     // ε = √(1 − M_R²), the width of G's Rayleigh pole: the asymptotic step needs kε ≫ 1.
-    let pole_width = speed.one_minus_mr2.to_f64().sqrt();
+    let pole_width = speed.one_minus_mr2().to_f64().sqrt();
     let mut spent = 0;
     // An unseeded start above k = 1 with 1 < A1/B1 < 30: at speed the root may still lie below
     // k = 1, where the fast route applies, while iterates above it pay graded layouts. One
@@ -430,7 +384,7 @@ fn solve_core<T: Real>(
     // k0ε < [`PROBE_BELOW_SEED_K_EPS`], where the speed pulls the root towards or below 1.
     let near_rayleigh = lam.to_f64().exp() * pole_width < PROBE_BELOW_SEED_K_EPS;
     if seed.is_none()
-        && method != EllipseMethod::Quadrature
+        && method != Method::Adaptive
         && lam.is_positive()
         && (ratio.to_f64() < PROBE_BELOW_RATIO || near_rayleigh)
     {
@@ -468,11 +422,8 @@ fn solve_core<T: Real>(
         let (f, df, ci) = eval(&lam, None, false)?;
         spent = 1;
         let scale = lam.clone().abs().max_of(T::one(p));
-        if let Some((lam_root, err, ints)) = halley_from_f64(&lam, &f, &df, &ci.0, &c, &eps, &scale)
-        {
-            let mut ci = ci;
-            ci.0 = ints;
-            return Ok((finish(lam_root.clone(), &lam_root, ci, err, 1), None));
+        if let Some((lam_root, err, ints)) = halley_from_f64(&lam, &f, &df, &ci, &c, &eps, &scale) {
+            return Ok((finish(lam_root.clone(), &lam_root, ints, err, 1), None));
         }
         // The f64 root was too far for one step (near the Rayleigh speed, where the f64 stage
         // solved inputs rounded to f64): on with Newton from here.
@@ -549,19 +500,17 @@ fn solve_core<T: Real>(
             lam: lam.clone(),
             f: f.clone(),
             df: df.clone(),
-            ints: ci.0.clone(),
+            ints: ci.clone(),
         });
         if let (true, true, Some(a), Some(b)) = (hermite_stop, was_newton, &prev, &here) {
             if let Some((lam_root, err, ints)) = hermite_root(a, b, &eps, &scale) {
                 let lam_b = b.lam.clone();
-                let mut ci = ci;
-                ci.0 = ints;
                 return Ok((
-                    finish(lam_root.clone(), &lam_root, ci, err, it + 1),
+                    finish(lam_root.clone(), &lam_root, ints, err, it + 1),
                     Some(Chord {
                         lam: lam_b,
-                        di1: b.ints.di1_dk.clone(),
-                        di2: b.ints.di2_dk.clone(),
+                        di1: b.ints.di1_dk(),
+                        di2: b.ints.di2_dk(),
                         df: b.df.clone(),
                         rel_err: T::zero(p),
                         before: None,
@@ -595,8 +544,8 @@ fn solve_core<T: Real>(
                 });
             fresh_slope = Some(Chord {
                 lam: lam.clone(),
-                di1: ci.0.di1_dk.clone(),
-                di2: ci.0.di2_dk.clone(),
+                di1: ci.di1_dk(),
+                di2: ci.di2_dk(),
                 df: df.clone(),
                 rel_err: T::zero(p),
                 before,
@@ -714,7 +663,7 @@ struct Point<T: Real> {
     lam: T,
     f: T,
     df: T,
-    ints: KIntegrals<T>,
+    ints: Evaluation<T>,
 }
 
 /// The cubic through (x_b, y_b, y′_b) and (x_a, y_a, y′_a), as coefficients c2, c3 of
@@ -746,7 +695,7 @@ fn hermite_root<T: Real>(
     b: &Point<T>,
     eps: &T,
     scale: &T,
-) -> Option<(T, T, KIntegrals<T>)> {
+) -> Option<(T, T, Evaluation<T>)> {
     let d = a.lam.clone() - &b.lam;
     if d.is_zero() || !b.df.is_positive() {
         return None;
@@ -776,15 +725,16 @@ fn hermite_root<T: Real>(
         carry_cubic(yb, dyb, &c2, &c3, &hk)
     };
     let (ia, ib) = (&a.ints, &b.ints);
-    let (i1, di1) = carry(&ia.i1, &ib.i1, &ia.di1_dk, &ib.di1_dk);
-    let (i2, di2) = carry(&ia.i2, &ib.i2, &ia.di2_dk, &ib.di2_dk);
-    let ints = KIntegrals {
+    let (i1, di1) = carry(&ia.i1, &ib.i1, &ia.di1_dk(), &ib.di1_dk());
+    let (i2, di2) = carry(&ia.i2, &ib.i2, &ia.di2_dk(), &ib.di2_dk());
+    let carried = T::from_f64(carry_err, eps.prec());
+    let ints = Evaluation {
         i1,
         i2,
-        di1_dk: di1,
-        di2_dk: di2,
-        error_estimate: ib.error_estimate.clone() + &T::from_f64(carry_err, eps.prec()),
-        work: ib.work,
+        dk: Some([di1, di2]),
+        error_estimate: ib.error_estimate.clone() + &carried,
+        extra_error: ib.extra_error.clone() + &carried.sqrt(),
+        ..ib.clone()
     };
     Some((b.lam.clone() + h, T::from_f64(err, eps.prec()), ints))
 }
@@ -814,7 +764,7 @@ fn f_second<T: Real>(c: &Chord<T>, lam0: &T) -> Option<(f64, f64)> {
 fn curvature<T: Real>(
     c: &Chord<T>,
     lam0: &T,
-    ints: &KIntegrals<T>,
+    ints: &Evaluation<T>,
 ) -> Option<([f64; 3], [f64; 3])> {
     let (f2, f2_err) = f_second(c, lam0)?;
     let b = c.before.as_ref()?;
@@ -843,11 +793,11 @@ fn halley_from_f64<T: Real>(
     lam: &T,
     f: &T,
     df: &T,
-    ints: &KIntegrals<T>,
+    ints: &Evaluation<T>,
     c: &Chord<T>,
     eps: &T,
     scale: &T,
-) -> Option<(T, T, KIntegrals<T>)> {
+) -> Option<(T, T, Evaluation<T>)> {
     let ([f2, i1pp, i2pp], [f2_err, i1_err, i2_err]) = curvature(c, lam, ints)?;
     if !(df.is_positive() && df.is_finite()) {
         return None;
@@ -869,18 +819,19 @@ fn halley_from_f64<T: Real>(
         let (val, der) = carry_cubic(i, di, &T::from_f64(ipp / 2.0, p), &zero, &dk);
         (val, der, 0.5 * ipp_err * dkf * dkf / i.to_f64())
     };
-    let (i1, di1, e1) = carry(&ints.i1, &ints.di1_dk, i1pp, i1_err);
-    let (i2, di2, e2) = carry(&ints.i2, &ints.di2_dk, i2pp, i2_err);
+    let (i1, di1, e1) = carry(&ints.i1, &ints.di1_dk(), i1pp, i1_err);
+    let (i2, di2, e2) = carry(&ints.i2, &ints.di2_dk(), i2pp, i2_err);
     if !(e1.is_finite() && e2.is_finite() && e1.max(e2) <= epsf) {
         return None;
     }
-    let ints = KIntegrals {
+    let carried = T::from_f64(e1.max(e2), p);
+    let ints = Evaluation {
         i1,
         i2,
-        di1_dk: di1,
-        di2_dk: di2,
-        error_estimate: ints.error_estimate.clone() + &T::from_f64(e1.max(e2), p),
-        work: ints.work,
+        dk: Some([di1, di2]),
+        error_estimate: ints.error_estimate.clone() + &carried,
+        extra_error: ints.extra_error.clone() + &carried.sqrt(),
+        ..ints.clone()
     };
     Some((lam.clone() + h, T::from_f64(err, p), ints))
 }
@@ -905,123 +856,126 @@ struct Chord<T> {
 fn finish<T: Real>(
     lam: T,
     lam_old: &T,
-    (mut ci, method): (KIntegrals<T>, EllipseMethod),
+    mut ci: Evaluation<T>,
     last_step: T,
     iterations: usize,
-) -> EllipseShape<T> {
+) -> Shape<T> {
     let p = lam.prec();
-    let one = T::one(p);
     let k = lam.exp();
     let dk = k.clone() - lam_old.clone().exp();
-    ci.i1 += &(ci.di1_dk.clone() * &dk);
-    ci.i2 += &(ci.di2_dk.clone() * &dk);
-    let (e, major) = if k <= one {
-        (((one.clone() - &k) * (one + &k)).sqrt(), MajorAxis::Along)
-    } else {
-        let r = k.clone().recip();
-        (((one.clone() - &r) * (one + &r)).sqrt(), MajorAxis::Across)
-    };
+    ci.i1 += &(ci.di1_dk() * &dk);
+    ci.i2 += &(ci.di2_dk() * &dk);
+    // The derivatives stay those of the previous iterate: relative error ≲ |k I″/I′|·|dk/k|,
+    // with |k I″/I′| ≤ 8 (5 for I1 ∝ ln k/k³).
+    ci.extra_error += &(dk.clone() / &k).abs().mul_i64(8);
     // δk/k ≈ (δI2/I2 + δI1/I1)/F′ + last step; F′ ≥ ~1 here, keep it simple and safe.
-    let df = k.clone() * (ci.di2_dk.clone() / &ci.i2 - ci.di1_dk.clone() / &ci.i1);
+    let df = k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1);
     let prop = ci.error_estimate.clone().mul_i64(2) / df.abs().max_of(T::from_ratio(1, 4, p));
-    EllipseShape {
+    Shape {
         error_estimate: prop + last_step.mul_i64(2) + &T::epsilon(p).mul_i64(4),
         k,
-        e,
-        major,
         integrals: ci,
-        method,
         iterations,
     }
 }
 
-/// The precision ladder: solves at `f64` first (inputs rounded to `f64`), above 106 bits then at
-/// double-double, and refines the root at the working precision of `T` from the last stage's root
-/// and derivative — one Halley step or two chord steps at double-double, two chord steps at 256
-/// bits, three at 512 (module docs): a few high-precision evaluations of the integrals instead of a search. For
-/// `T = f64` this is [`solve_ellipse`]. Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit
-/// quadrature solve, `tests/contact.rs`), with an error estimate.
-pub fn solve_ellipse_ladder<T: Real>(
-    mat: &Material<T>,
+/// The precision ladder: solves at `f64` first (inputs rounded to `f64`, the speed by its gap),
+/// above 106 bits then at double-double, and refines the root at the working precision of `T`
+/// from the last stage's root and derivative — one Halley step or two chord steps at
+/// double-double, two chord steps at 256 bits, three at 512 (module docs): a few high-precision
+/// evaluations of the integrals instead of a search. At `f64` it is the plain solve. If a lower
+/// stage fails (inputs beyond its range), the working precision solves on its own from the
+/// static seed. `tol`: the tolerance on k at the working precision (`None`: its floor).
+fn solve_ladder<T: Real>(
     speed: &Speed<T>,
     ratio: &T,
-) -> Result<EllipseShape<T>> {
-    solve_ellipse_with(mat, speed, ratio, EllipseMethod::Auto)
-}
-
-/// The precision ladder with a chosen method for the integrals (the `f64` seed uses the same
-/// method).
-pub fn solve_ellipse_with<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    ratio: &T,
-    method: EllipseMethod,
-) -> Result<EllipseShape<T>> {
-    check_ratio(ratio)?;
+    method: Method,
+    tol: Option<T>,
+) -> Result<Shape<T>> {
     let p = ratio.prec();
+    let alone = |tol: Option<T>| {
+        let stage = Stage {
+            tol,
+            ..Stage::final_stage()
+        };
+        solve_core(speed, ratio, method, stage).map(|(s, _)| s)
+    };
     if T::bits(p) <= 53 {
-        return solve_ellipse_seeded(mat, speed, ratio, None, method);
+        return alone(tol);
     }
     // Each stage ends on a Newton step (no chord), so that its last derivatives lie one
     // rounding-level step from its root and serve the next stage's chord steps.
-    let mat64 = Material::new(mat.nu().to_f64())?;
-    let mr = speed.mr.to_f64().min(1.0 - f64::EPSILON);
-    let stage64 = Material::speed(&mat64, mr).and_then(|sp| {
-        solve_core(
-            &mat64,
-            &sp,
-            &ratio.to_f64(),
-            None,
-            None,
-            method,
-            false,
-            false,
-        )
-    });
-    let (k64, slope64) = match stage64 {
-        Ok((s, c)) => (s.k, c),
-        Err(_) => {
-            return solve_core(mat, speed, ratio, None, None, method, true, false).map(|(s, _)| s)
+    fn handing_on<'s, S: Real>() -> Stage<'s, S> {
+        Stage {
+            allow_chord: false,
+            ..Stage::final_stage()
         }
+    }
+    let ratio64 = ratio.to_f64();
+    let stage64 = speed
+        .at::<f64>(())
+        .and_then(|sp| solve_core(&sp, &ratio64, method, handing_on()));
+    let (k64, slope64, spent64) = match stage64 {
+        Ok((s, c)) => (s.k, c, s.iterations),
+        Err(_) => return alone(tol),
     };
     // Above double-double, a double-double stage in between: its root is off by ~2^-100, so
     // the target precision needs one Newton step fewer (two chord steps up to ~600 bits).
     if T::bits(p) > 106 {
-        let to_dd = |x: &T| Dd::from_float(&x.to_float(T::bits(p)), ());
-        let stage_dd = Material::new(to_dd(mat.nu())).and_then(|m| {
-            let sp = m.speed(to_dd(&speed.mr))?;
-            let slope = slope64.as_ref().map(|c| lift(c, (), F64_SLOPE, F64_SEED));
+        let seed_dd = Dd::from_f64(k64, ());
+        let stage_dd = speed.at::<Dd>(()).and_then(|sp| {
+            let stage = Stage {
+                seed: Some(&seed_dd),
+                seed_slope: slope64.as_ref().map(|c| lift(c, (), F64_SLOPE, F64_SEED)),
+                ..handing_on()
+            };
             solve_core(
-                &m,
                 &sp,
-                &to_dd(ratio),
-                Some(&Dd::from_f64(k64, ())),
-                slope,
+                &Dd::from_float(&ratio.to_float(T::bits(p)), ()),
                 method,
-                false,
-                false,
+                stage,
             )
         });
         if let Ok((s, c)) = stage_dd {
             let seed = T::from_float(&s.k.to_float(106), p);
-            let slope = c.as_ref().map(|c| lift(c, p, DD_SLOPE, DD_SEED));
-            return solve_core(mat, speed, ratio, Some(&seed), slope, method, true, false)
-                .map(|(s, _)| s);
+            let stage = Stage {
+                seed: Some(&seed),
+                seed_slope: c.as_ref().map(|c| lift(c, p, DD_SLOPE, DD_SEED)),
+                tol,
+                ..Stage::final_stage()
+            };
+            return solve_core(speed, ratio, method, stage)
+                .map(|(r, _)| r.spent_before(spent64 + s.iterations));
         }
     }
     let seed = T::from_f64(k64, p);
-    let slope = slope64.as_ref().map(|c| lift(c, p, F64_SLOPE, F64_SEED));
     // Straight from the f64 stage at double-double: one evaluation with derivatives and a Halley
     // step ([`halley_from_f64`]) — unless the f64 stage's inputs, rounded to f64, moved the
-    // root by more than ~1e-15 (M_R near 1 amplifies its rounding by ~1/(1 − M_R)), where one
-    // step cannot reach ε and two chord steps are cheaper than the Halley attempt and a Newton
-    // step.
-    let moved = |x: &T, x64: f64| (x.clone() - T::from_f64(x64, p)).abs().to_f64();
-    let perturbation = moved(ratio, ratio.to_f64()) / ratio.to_f64()
-        + moved(mat.nu(), mat.nu().to_f64())
-        + moved(&speed.mr, mr) / (1.0 - speed.mr.to_f64());
-    let halley = T::bits(p) <= 106 && perturbation <= 1e-15;
-    solve_core(mat, speed, ratio, Some(&seed), slope, method, true, halley).map(|(s, _)| s)
+    // root by more than ~1e-15, where one step cannot reach ε and two chord steps are cheaper
+    // than the Halley attempt and a Newton step. k's sensitivity to the relative change of the
+    // gap 1 − M_R is about 1/4.
+    let moved = |x: &T| {
+        let x64 = x.to_f64();
+        (x.clone() - T::from_f64(x64, p)).abs().to_f64() / x64.abs().max(f64::MIN_POSITIVE)
+    };
+    let mat = speed.material();
+    let perturbation = moved(ratio) + moved(mat.nu()) + moved(speed.gap());
+    let stage = Stage {
+        seed: Some(&seed),
+        seed_slope: slope64.as_ref().map(|c| lift(c, p, F64_SLOPE, F64_SEED)),
+        halley: T::bits(p) <= 106 && perturbation <= 1e-15,
+        tol,
+        ..Stage::final_stage()
+    };
+    solve_core(speed, ratio, method, stage).map(|(r, _)| r.spent_before(spent64))
+}
+
+impl<T: Real> Shape<T> {
+    /// Counts the evaluations of the lower stages in.
+    fn spent_before(mut self, lower: usize) -> Self {
+        self.iterations += lower;
+        self
+    }
 }
 
 /// Bounds on a stage's derivative F′ (relative: the k-derivatives' measured 47ε at f64, 53ε at
@@ -1061,17 +1015,23 @@ mod tests {
     /// 1.5 % at A1/B1 = 30 and 0.01 % at 10⁶, Hamrock & Brewe's 2.3× too large at 10⁶.
     #[test]
     fn static_seeds_against_the_static_root() {
-        let mat = Material::new(0.2f64).unwrap();
+        let mat = crate::physics::Material::new(0.2f64).unwrap();
         let sp = mat.speed(0.0).unwrap();
+        let solve = |ratio: f64| {
+            solve_ellipse(&sp, &ratio, &Options::default())
+                .unwrap()
+                .k
+                .value
+        };
         for (ratio, tol) in [(30.0, 0.015), (1e3, 0.002), (1e6, 1e-4)] {
-            let k = solve_ellipse(&mat, &sp, &ratio, None).unwrap().k;
+            let k = solve(ratio);
             let seed = static_seed(ratio);
             assert!(
                 (seed / k - 1.0).abs() <= tol,
                 "A1/B1 = {ratio}: seed {seed}, root {k}"
             );
         }
-        let k = solve_ellipse(&mat, &sp, &1e6, None).unwrap().k;
+        let k = solve(1e6);
         let hb = 1e6f64.powf(std::f64::consts::FRAC_2_PI);
         assert!(
             hb / k > 2.2 && hb / k < 2.4,

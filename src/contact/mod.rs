@@ -6,9 +6,9 @@
 //! k = b/a; R1 (A1 = 1/(2R1)) is the punch's radius of curvature along the motion, R2
 //! (B1 = 1/(2R2)) across it.
 
-pub mod convolution;
-pub mod ellipse;
-pub mod solution;
+mod convolution;
+mod ellipse;
+mod solution;
 
-pub use ellipse::{solve_ellipse, solve_ellipse_ladder, EllipseShape, MajorAxis};
-pub use solution::{solve_contact, ContactSolution, Loading};
+pub use ellipse::{check_ratio, solve_ellipse, Ellipse, MajorAxis, Options};
+pub use solution::{ContactProblem, ContactSolution, Loading};

@@ -17,10 +17,18 @@
 //! Given the approach: a = (d0 I1/(B1 J0))^{1/2}, p0 = 4μ a B1/(k I1), P = (2/3)π p0 a b.
 //! In the static limit these are Johnson's (Contact Mechanics §4.2) with E* = 2μ/(1 − ν):
 //! A1 = p0 b (K − E)/(E* e² a²), d0 = p0 b K/E* (tested to a few ε in `tests/contact.rs`).
+//!
+//! **Error bounds.** Each returned quantity carries a bound on its relative error, propagated
+//! to first order from the ellipse's bounds on k and I1, the bound on J0, the sensitivity of
+//! I1 and J0 to k (|k I1′/I1| ≈ 3, |k J0′/J0| ≤ 1, taken from the computed derivatives) and the
+//! rounding of each operation (a few ε): a = (·)^{1/3} divides I1's error by 3, p0 and the load
+//! add those of a and b, and so on (see [`ContactProblem::solve`]).
 
-use super::ellipse::{solve_ellipse, solve_ellipse_ladder, EllipseShape};
+use super::convolution;
+use super::ellipse::{solve_ellipse, Ellipse, Options};
 use crate::error::{Error, Result};
-use crate::physics::{Material, Speed};
+use crate::estimate::{Estimated, RelError};
+use crate::physics::Speed;
 use crate::routes::direct::contact_integrals;
 use crate::routes::AxisRatio;
 use crate::scalar::{check_finite, short, Real};
@@ -34,27 +42,60 @@ pub enum Loading<T> {
     Approach(T),
 }
 
-/// The solved contact.
+/// The moving-punch contact problem of section 4: a rigid punch with principal radii of
+/// curvature R1 along the motion and R2 across it, pressed by a load (or to an approach) into
+/// the half-space of the speed's material with shear modulus μ, sliding at that speed. Units
+/// are the caller's (SI in, SI out).
+///
+/// ```
+/// use moving_hertz::{ContactProblem, Loading, Material, Options};
+/// let speed = Material::new(0.3)?.speed(0.9)?;
+/// let sol = ContactProblem {
+///     speed,
+///     radius_along: 0.05,
+///     radius_across: 0.02,
+///     loading: Loading::Load(1000.0),
+///     shear_modulus: 80e9,
+/// }
+/// .solve(&Options::default())?;
+/// assert!(sol.a.value > sol.b.value && sol.a.error.to_f64() < 1e-14);
+/// # Ok::<(), moving_hertz::Error>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct ContactProblem<T: Real> {
+    /// The punch's speed, which carries the material.
+    pub speed: Speed<T>,
+    /// R1: the punch's radius of curvature along the motion (A1 = 1/(2R1)).
+    pub radius_along: T,
+    /// R2: its radius of curvature across the motion (B1 = 1/(2R2)).
+    pub radius_across: T,
+    /// The load P or the approach d0.
+    pub loading: Loading<T>,
+    /// The half-space's shear modulus μ.
+    pub shear_modulus: T,
+}
+
+/// The solved contact: the ellipse, its size, the central pressure, the approach and the load,
+/// each with a bound on its relative error, and the pressure and displacement fields.
 #[derive(Clone, Debug)]
 pub struct ContactSolution<T: Real> {
-    /// The ellipse's shape (k, e, the integrals).
-    pub shape: EllipseShape<T>,
-    /// Semi-axis along the motion.
-    pub a: T,
-    /// Semi-axis across the motion.
-    pub b: T,
-    /// Central pressure p0 of (9) with m = 1.
-    pub p0: T,
-    /// Approach d0.
-    pub d0: T,
-    /// Load P.
-    pub load: T,
-    /// A1 = 1/(2 R1) (curvature along the motion).
-    pub a1: T,
-    /// B1 = 1/(2 R2) (curvature across the motion).
-    pub b1: T,
-    /// Shear modulus μ.
-    pub mu: T,
+    /// The ellipse's shape: k, e, the integrals.
+    pub ellipse: Ellipse<T>,
+    /// Semi-axis a along the motion.
+    pub a: Estimated<T>,
+    /// Semi-axis b across the motion.
+    pub b: Estimated<T>,
+    /// Central pressure p0 of (9) (m = 1).
+    pub p0: Estimated<T>,
+    /// Approach d0 (32).
+    pub d0: Estimated<T>,
+    /// Load P (31).
+    pub load: Estimated<T>,
+    /// J0 of (32) at the solved k.
+    pub j0: Estimated<T>,
+    problem: ContactProblem<T>,
+    a1: T,
+    b1: T,
 }
 
 fn positive<T: Real>(name: &'static str, x: &T) -> Result<()> {
@@ -69,130 +110,239 @@ fn positive<T: Real>(name: &'static str, x: &T) -> Result<()> {
     Ok(())
 }
 
-/// Solves the moving-punch Hertz problem: radii of curvature `r_along` (R1) and `r_across`
-/// (R2), the load or the approach, shear modulus `mu`, for `mat` at `speed`; `seed` is an
-/// optional starting k (without one, above `f64` the precision ladder supplies it). Accuracy: the ellipse's error estimate propagates
-/// to a, b, p0 with factors of order one; every result carries `shape.error_estimate`.
-pub fn solve_contact<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    r_along: &T,
-    r_across: &T,
-    loading: &Loading<T>,
-    mu: &T,
-    seed: Option<&T>,
-) -> Result<ContactSolution<T>> {
-    positive("radius along the motion R1", r_along)?;
-    positive("radius across the motion R2", r_across)?;
-    positive("shear modulus mu", mu)?;
-    match loading {
-        Loading::Load(pl) => positive("load P", pl)?,
-        Loading::Approach(d) => positive("approach d0", d)?,
+/// The inputs' names and the message for a quantity that overflows or underflows the working
+/// type although every input is valid (a radius of 1e-320, a load of 1e300).
+const RESCALE: &str = "(overflow or underflow: rescale the inputs)";
+
+impl<T: Real> ContactProblem<T> {
+    /// Solves the problem: the ellipse (33) by [`solve_ellipse`] with `opts`, J0 of (32) at the
+    /// solved k by adaptive quadrature, then a, b, p0, d0 and the load in closed form (module
+    /// docs).
+    ///
+    /// Accuracy: every quantity to a few ε of the working precision (measured against Johnson's
+    /// static solution and a 320-bit solve in `tests/contact.rs`), each with a bound.
+    /// Errors: [`Error::Domain`] / [`Error::NotFinite`] for a radius, load, approach or modulus
+    /// that is not positive and finite, and for a result that overflows or underflows the
+    /// working type; the ellipse solve's errors.
+    pub fn solve(&self, opts: &Options<T>) -> Result<ContactSolution<T>> {
+        positive("radius along the motion R1", &self.radius_along)?;
+        positive("radius across the motion R2", &self.radius_across)?;
+        positive("shear modulus mu", &self.shear_modulus)?;
+        match &self.loading {
+            Loading::Load(pl) => positive("load P", pl)?,
+            Loading::Approach(d) => positive("approach d0", d)?,
+        }
+        let p = self.shear_modulus.prec();
+        let a1 = self.radius_along.clone().mul_pow2(1).recip();
+        let b1 = self.radius_across.clone().mul_pow2(1).recip();
+        for (name, v) in [
+            ("curvature A1 = 1/(2 R1)", &a1),
+            ("curvature B1 = 1/(2 R2)", &b1),
+        ] {
+            if !v.is_finite() || !v.is_positive() {
+                return Err(Error::NotFinite {
+                    name,
+                    value: short(v),
+                });
+            }
+        }
+        let ratio = self.radius_across.clone() / &self.radius_along;
+        let ellipse = solve_ellipse(&self.speed, &ratio, opts)?;
+        let k = ellipse.k.value.clone();
+        let j0 = contact_integrals(&self.speed, &AxisRatio::new(k.clone())?, &T::zero(p))?;
+        let j0 = Estimated::new(
+            j0.j0.unwrap_or_else(|| T::zero(p)),
+            RelError::of(&j0.extra_error),
+        )
+        .checked("J0")?;
+        let sizes = Sizes::new(self, &ellipse, &j0, &a1, &b1);
+        Ok(ContactSolution {
+            a: sizes.a.checked("semi-axis a")?,
+            b: sizes.b.checked("semi-axis b")?,
+            p0: sizes.p0.checked("central pressure p0")?,
+            d0: sizes.d0.checked("approach d0")?,
+            load: sizes.load.checked("load P")?,
+            ellipse,
+            j0,
+            problem: self.clone(),
+            a1,
+            b1,
+        })
+        .and_then(ContactSolution::check_range)
     }
-    let p = mu.prec();
-    let a1 = r_along.clone().mul_pow2(1).recip();
-    let b1 = r_across.clone().mul_pow2(1).recip();
-    let ratio = r_across.clone() / r_along;
-    let shape = match seed {
-        Some(s) => solve_ellipse(mat, speed, &ratio, Some(s))?,
-        None => solve_ellipse_ladder(mat, speed, &ratio)?,
-    };
-    let ci = &shape.integrals;
-    let k = shape.k.clone();
-    // J0 of (32) at the solved k, by the adaptive vector quadrature (one evaluation).
-    let j0 = contact_integrals(mat, speed, &AxisRatio::new(k.clone())?, &T::zero(p))?.j0;
-    let pi = T::pi(p);
-    let four_mu = mu.clone().mul_i64(4);
-    let (a, load) = match loading {
-        Loading::Load(pl) => {
-            // a³ = 3 P I1 / (8 π μ B1).
-            let a3 = pl.clone().mul_i64(3) * &ci.i1 / (pi.clone().mul_i64(8) * mu * &b1);
-            (a3.cbrt(), pl.clone())
-        }
-        Loading::Approach(d0) => {
-            let a = (d0.clone() * &ci.i1 / (b1.clone() * &j0)).sqrt();
-            let p0 = four_mu.clone() * &a * &b1 / (k.clone() * &ci.i1);
-            let b = k.clone() * &a;
-            let load = pi.clone().mul_i64(2).div_i64(3) * p0 * &a * b;
-            (a, load)
-        }
-    };
-    let b = k.clone() * &a;
-    let p0 = load.clone().mul_i64(3) / (pi.mul_i64(2) * &a * &b);
-    let d0 = p0.clone() * &b * &j0 / &four_mu;
-    // Inputs at the edge of the format (a radius of 1e-320, a load of 1e300) can overflow or
-    // underflow the scaling even though each is valid: report it rather than return ∞ or 0.
-    for (name, v) in [
-        ("curvature A1 = 1/(2 R1)", &a1),
-        ("curvature B1 = 1/(2 R2)", &b1),
-        (
-            "semi-axis a (overflow or underflow: rescale the inputs)",
-            &a,
-        ),
-        (
-            "semi-axis b (overflow or underflow: rescale the inputs)",
-            &b,
-        ),
-        (
-            "central pressure p0 (overflow or underflow: rescale the inputs)",
-            &p0,
-        ),
-        (
-            "approach d0 (overflow or underflow: rescale the inputs)",
-            &d0,
-        ),
-        ("load P (overflow or underflow: rescale the inputs)", &load),
-    ] {
-        if !v.is_finite() || !v.is_positive() {
-            return Err(Error::NotFinite {
-                name,
-                value: short(v),
-            });
+}
+
+/// a, b, p0, d0 and the load with their relative error bounds (module docs).
+struct Sizes<T: Real> {
+    a: Estimated<T>,
+    b: Estimated<T>,
+    p0: Estimated<T>,
+    d0: Estimated<T>,
+    load: Estimated<T>,
+}
+
+impl<T: Real> Sizes<T> {
+    fn new(pb: &ContactProblem<T>, el: &Ellipse<T>, j0: &Estimated<T>, a1: &T, b1: &T) -> Self {
+        let p = a1.prec();
+        let eps = |n: u32| RelError::eps::<T>(n, p);
+        let k = &el.k.value;
+        let ints = &el.integrals;
+        let i1 = &ints.i1.value;
+        // The integrals' errors at the computed k, plus their change over k's error
+        // (|k I1′/I1| from the computed derivative, |k J0′/J0| ≤ 1), plus the ratio's
+        // rounding (|d ln k/d ln(A1/B1)| ≤ 1).
+        let dk = el.k.error.add(eps(2));
+        let sens = |d: &Option<Estimated<T>>| {
+            d.as_ref()
+                .map_or(4.0, |d| (k.to_f64() * d.value.to_f64() / i1.to_f64()).abs())
+        };
+        let e_i1 = ints.i1.error.add(dk.scale(sens(&ints.di1_dk)));
+        let e_j0 = j0.error.add(dk);
+        let pi = T::pi(p);
+        let mu = &pb.shear_modulus;
+        let four_mu = mu.clone().mul_i64(4);
+        let est = Estimated::new;
+        match &pb.loading {
+            Loading::Load(pl) => {
+                // a³ = 3 P I1 / (8 π μ B1).
+                let a3 = pl.clone().mul_i64(3) * i1 / (pi.clone().mul_i64(8) * mu * b1);
+                let a = est(a3.cbrt(), e_i1.add(eps(8)).scale(1.0 / 3.0).add(eps(2)));
+                let b = est(k.clone() * &a.value, a.error.add(dk).add(eps(1)));
+                let p0v = pl.clone().mul_i64(3) / (pi.mul_i64(2) * &a.value * &b.value);
+                let p0 = est(p0v, a.error.add(b.error).add(eps(4)));
+                let d0v = p0.value.clone() * &b.value * &j0.value / &four_mu;
+                let d0 = est(d0v, p0.error.add(b.error).add(e_j0).add(eps(4)));
+                let load = est(pl.clone(), RelError::ZERO);
+                Sizes { a, b, p0, d0, load }
+            }
+            Loading::Approach(d0v) => {
+                // a² = d0 I1/(B1 J0), p0 = 4μ a B1/(k I1), P = (2/3)π p0 a b.
+                let a2 = d0v.clone() * i1 / (b1.clone() * &j0.value);
+                let a = est(a2.sqrt(), e_i1.add(e_j0).add(eps(4)).scale(0.5).add(eps(1)));
+                let b = est(k.clone() * &a.value, a.error.add(dk).add(eps(1)));
+                let p0v = four_mu * &a.value * b1 / (k.clone() * i1);
+                let p0 = est(p0v, a.error.add(dk).add(e_i1).add(eps(4)));
+                let lv = pi.mul_i64(2).div_i64(3) * &p0.value * &a.value * &b.value;
+                let load = est(lv, p0.error.add(a.error).add(b.error).add(eps(5)));
+                let d0 = est(d0v.clone(), RelError::ZERO);
+                Sizes { a, b, p0, d0, load }
+            }
         }
     }
-    Ok(ContactSolution {
-        shape,
-        a,
-        b,
-        p0,
-        d0,
-        load,
-        a1,
-        b1,
-        mu: mu.clone(),
-    })
 }
 
 impl<T: Real> ContactSolution<T> {
+    /// Inputs at the edge of the format can overflow or underflow the scaling although each is
+    /// valid: reported rather than returned as ∞ or 0.
+    fn check_range(self) -> Result<Self> {
+        for (name, v) in [
+            ("semi-axis a", &self.a),
+            ("semi-axis b", &self.b),
+            ("central pressure p0", &self.p0),
+            ("approach d0", &self.d0),
+            ("load P", &self.load),
+        ] {
+            if !v.value.is_positive() || v.value < T::min_positive(v.value.prec()) {
+                return Err(Error::Domain {
+                    name,
+                    value: short(&v.value),
+                    bound: RESCALE,
+                });
+            }
+        }
+        Ok(self)
+    }
+
+    /// The problem this solves.
+    pub fn problem(&self) -> &ContactProblem<T> {
+        &self.problem
+    }
+    /// k = b/a with its bound (the ellipse's).
+    pub fn k(&self) -> &Estimated<T> {
+        &self.ellipse.k
+    }
+    /// The eccentricity with its bound (absolute: see [`Ellipse::e`]).
+    pub fn e(&self) -> &Estimated<T> {
+        &self.ellipse.e
+    }
+    /// A1 = 1/(2 R1) (curvature along the motion).
+    pub fn a1(&self) -> &T {
+        &self.a1
+    }
+    /// B1 = 1/(2 R2) (curvature across the motion).
+    pub fn b1(&self) -> &T {
+        &self.b1
+    }
+
     /// True when (x, y) lies in the closed contact ellipse.
     pub fn inside(&self, x: &T, y: &T) -> bool {
-        let p = x.prec();
-        let r = (x.clone() / &self.a).square() + (y.clone() / &self.b).square();
-        r <= T::one(p)
+        self.q(x, y) >= T::zero(x.prec())
     }
 
-    /// The contact pressure p(x, y) = p0 (1 − x²/a² − y²/b²)^{1/2} of (9) (m = 1); zero outside.
-    pub fn pressure(&self, x: &T, y: &T) -> T {
+    /// 1 − x²/a² − y²/b².
+    fn q(&self, x: &T, y: &T) -> T {
         let p = x.prec();
-        let q = T::one(p) - (x.clone() / &self.a).square() - (y.clone() / &self.b).square();
-        if q.is_positive() {
-            self.p0.clone() * q.sqrt()
+        T::one(p) - (x.clone() / &self.a.value).square() - (y.clone() / &self.b.value).square()
+    }
+
+    /// The contact pressure p(x, y) = p0 (1 − x²/a² − y²/b²)^{1/2} of (9) (m = 1), zero
+    /// outside. Its bound is relative to p0 (the pressure vanishes on the edge, where a relative
+    /// bound would be unbounded): |p̃ − p| ≤ error·p0, from p0's bound and the shift of the edge
+    /// by a's and b's.
+    pub fn pressure(&self, x: &T, y: &T) -> Estimated<T> {
+        let p = x.prec();
+        let q = self.q(x, y);
+        let (xa, yb) = (
+            (x.clone() / &self.a.value).square().to_f64(),
+            (y.clone() / &self.b.value).square().to_f64(),
+        );
+        // |δq| ≤ 2(x²/a²)δa + 2(y²/b²)δb + 4ε; |δ√q| ≤ min(√|δq|, |δq|/(2√q)).
+        let dq = self
+            .a
+            .error
+            .scale(2.0 * xa)
+            .add(self.b.error.scale(2.0 * yb))
+            .add(RelError::eps::<T>(4, p));
+        let qf = q.to_f64().max(0.0);
+        let droot = if qf > 0.0 {
+            dq.sqrt().min(dq.scale(0.5 / qf.sqrt()))
+        } else {
+            dq.sqrt()
+        };
+        let value = if q.is_positive() {
+            self.p0.value.clone() * q.sqrt()
         } else {
             T::zero(p)
-        }
+        };
+        let err = self
+            .p0
+            .error
+            .scale(qf.sqrt())
+            .add(droot)
+            .add(RelError::eps::<T>(2, p));
+        Estimated::new(value, err)
     }
 
-    /// The surface displacement in the contact, u_z = d0 − A1 x² − B1 y² (27); outside the
-    /// contact the displacement is not a polynomial ([`super::convolution`] evaluates it there),
-    /// so points outside give [`Error::Domain`].
-    pub fn displacement_in_contact(&self, x: &T, y: &T) -> Result<T> {
-        if !self.inside(x, y) {
-            return Err(Error::Domain {
-                name: "point (x/a)^2 + (y/b)^2",
-                value: short(&((x.clone() / &self.a).square() + (y.clone() / &self.b).square())),
-                bound: "[0, 1] (inside the contact)",
-            });
+    /// The surface displacement u_z(x, y): inside the contact the punch's surface
+    /// d0 − A1 x² − B1 y² (27); outside it the convolution (7) of the pressure with the
+    /// moving-load Green's function (4), by adaptive quadrature to relative tolerance `tol`
+    /// (module [`convolution`]; unused inside). Its bound is relative to d0 (the displacement
+    /// decays to zero far away).
+    pub fn displacement(&self, x: &T, y: &T, tol: &RelError) -> Result<Estimated<T>> {
+        let p = x.prec();
+        let eps = RelError::eps::<T>(4, p);
+        if self.inside(x, y) {
+            let curv = self.a1.clone() * x.square() + self.b1.clone() * y.square();
+            let scale = (curv.clone() / &self.d0.value).to_f64();
+            let err = self.d0.error.add(eps.scale(1.0 + scale));
+            return Ok(Estimated::new(self.d0.value.clone() - curv, err));
         }
-        Ok(self.d0.clone() - self.a1.clone() * x.square() - self.b1.clone() * y.square())
+        let t = tol.max(eps).to_real::<T>(p);
+        let q = convolution::displacement(self, x, y, &t)?;
+        // The quadrature's error, and the pressure's: p0's bound and the edge's shift.
+        let err = RelError::of(&(q.error / &self.d0.value))
+            .add(self.p0.error)
+            .add(self.a.error.add(self.b.error).scale(2.0));
+        Estimated::new(q.value, err).checked("displacement u_z")
     }
 }

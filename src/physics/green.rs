@@ -98,7 +98,7 @@ impl<T: Real> GreenFunction<T> {
 
     /// Γ(V) of (5) for the speed `v`, as −G/(1 − M_R²) (44). Negative; Γ(0) = −(1 − ν)/π.
     pub fn gamma(&self, v: &Speed<T>) -> T {
-        -(self.g_regular(&v.mr2) / &v.one_minus_mr2)
+        -(self.g_regular(v.mr2()) / v.one_minus_mr2())
     }
 
     /// g = −πΓ = π G/(1 − t) at t = (V'/c_R)², given also 1 − t (formed by the caller without
@@ -111,9 +111,9 @@ impl<T: Real> GreenFunction<T> {
     /// Γ by (5)–(6) exactly as printed: M2²√(1 − M1²)/(π R). For comparison only: as V → 0
     /// it divides two vanishing quantities and loses all digits; at V = 0 it is 0/0.
     pub fn gamma_direct(&self, v: &Speed<T>) -> T {
-        let p = v.mr.prec();
-        let r = rayleigh_function_direct(&self.gamma, &v.m2sq);
-        v.m2sq.clone() * (T::one(p) - &v.m1sq).sqrt() / (self.pi.clone() * r)
+        let p = v.mr().prec();
+        let r = rayleigh_function_direct(&self.gamma, v.m2sq());
+        v.m2sq().clone() * (T::one(p) - v.m1sq()).sqrt() / (self.pi.clone() * r)
     }
 
     /// The static value Γ(0) = −(1 − ν)/π.
@@ -130,14 +130,14 @@ impl<T: Real> GreenFunction<T> {
 /// The stable Rayleigh function R(V) = x (x − m1)(x² − s x + q)/D of the rationalised form,
 /// accurate to a few ε for every 0 ≤ M_R < 1 (the printed (6) loses everything as V → 0).
 pub fn rayleigh_function<T: Real>(mat: &Material<T>, v: &Speed<T>) -> T {
-    let p = v.mr.prec();
+    let p = v.mr().prec();
     let one = T::one(p);
-    let x = v.m2sq.clone();
-    let a = one.clone() - &v.m1sq;
+    let x = v.m2sq().clone();
+    let a = one.clone() - v.m1sq();
     let b = one - &x;
     let d = (T::from_i64(2, p) - &x).square() + (a * b).sqrt().mul_i64(4);
     let r = mat.roots();
     let quad = x.clone() * (x.clone() - &r.sum23) + &r.prod23;
     // x − m1 = −m1 (1 − M_R²).
-    -(x * &r.m1 * &v.one_minus_mr2 * quad / d)
+    -(x * &r.m1 * v.one_minus_mr2() * quad / d)
 }

@@ -1,13 +1,22 @@
 //! The elastic material (Poisson's ratio, wave-speed ratio) and the punch speed as Mach numbers.
+//!
+//! A [`Speed`] is made by its [`Material`] and carries it: every function that needs both takes
+//! the speed alone, so a speed of one material can never be used with another. Near the Rayleigh
+//! speed the answer is governed by the gap 1 − M_R (I2 ~ (1 − M_R²)^{−1/2}, and k's condition
+//! number in M_R is about M_R/(4(1 − M_R))), so a speed holds the gap as a number of its own,
+//! formed exactly from the input: [`Material::speed_from_gap`] takes it directly, and
+//! [`Material::parse_speed`] forms it from the decimal text of M_R before anything is rounded.
 
 use super::rayleigh::RayleighRoots;
 use crate::error::{Error, Result};
-use crate::scalar::{check_finite, short, Real};
+use crate::scalar::{check_finite, decimal_to_rational, short, Precision, Real};
+use rug::Rational;
 
 /// An isotropic elastic half-space, described by Poisson's ratio ν ∈ (−1, 1/2].
 ///
 /// Holds γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)) and the roots of the Rayleigh cubic
-/// ([`RayleighRoots`]), computed once at construction to within 4 ε of the working precision.
+/// ([`RayleighRoots`], section 3 of the paper), computed once at construction to within 4 ε of
+/// the working precision.
 #[derive(Clone, Debug)]
 pub struct Material<T: Real> {
     nu: T,
@@ -16,18 +25,20 @@ pub struct Material<T: Real> {
     roots: RayleighRoots<T>,
 }
 
+const NU_NAME: &str = "nu (Poisson's ratio)";
+const NU_BOUND: &str = "(-1, 1/2]";
+
 impl<T: Real> Material<T> {
     /// The material with Poisson's ratio `nu`; [`Error::Domain`] unless −1 < ν ≤ 1/2,
     /// [`Error::NotFinite`] for NaN or ∞.
     pub fn new(nu: T) -> Result<Self> {
-        check_finite("nu", &nu)?;
+        check_finite(NU_NAME, &nu)?;
         let p = nu.prec();
-        let half = T::from_ratio(1, 2, p);
-        if nu <= T::from_i64(-1, p) || nu > half {
+        if nu <= T::from_i64(-1, p) || nu > T::from_ratio(1, 2, p) {
             return Err(Error::Domain {
-                name: "nu (Poisson's ratio)",
+                name: NU_NAME,
                 value: short(&nu),
-                bound: "(-1, 1/2]",
+                bound: NU_BOUND,
             });
         }
         let one = T::one(p);
@@ -40,6 +51,32 @@ impl<T: Real> Material<T> {
             one_minus_nu,
             gamma,
             roots,
+        })
+    }
+
+    /// The material whose Poisson's ratio is the decimal text `nu` (or `p/q`), checked exactly
+    /// before it is rounded to the precision `p`: errors quote the text as given
+    /// (`nu (Poisson's ratio) = 0.5000000000000000001 is outside its domain (-1, 1/2]`), and a
+    /// value inside the domain that rounds onto its edge at this precision says so.
+    pub fn parse(nu: &str, p: T::Prec) -> Result<Self> {
+        Material::from_exact(&decimal_to_rational(nu)?, nu, p)
+    }
+
+    /// The material with the exact Poisson's ratio `nu`, rounded once to precision `p`; `text`
+    /// is the input as given, for error messages.
+    pub(crate) fn from_exact(nu: &Rational, text: &str, p: T::Prec) -> Result<Self> {
+        if *nu <= -1 || *nu > Rational::from((1, 2)) {
+            return Err(Error::Domain {
+                name: NU_NAME,
+                value: text.trim().to_string(),
+                bound: NU_BOUND,
+            });
+        }
+        let x: T = round_rational(nu, p);
+        Material::new(x.clone()).map_err(|_| Error::Domain {
+            name: NU_NAME,
+            value: rounds_to(text, &x),
+            bound: NU_BOUND,
         })
     }
 
@@ -91,17 +128,89 @@ impl<T: Real> Material<T> {
     }
 
     /// The speed with Rayleigh Mach number `mr` = V/c_R; [`Error::Domain`] unless 0 ≤ M_R < 1.
+    /// The gap 1 − M_R is formed from `mr` exactly (for M_R ≥ 1/2 the subtraction is exact in
+    /// binary); a decimal speed near 1 is better given as text ([`Material::parse_speed`]) or by
+    /// its gap ([`Material::speed_from_gap`]), so that it is not rounded first.
     pub fn speed(&self, mr: T) -> Result<Speed<T>> {
-        check_finite("speed M_R", &mr)?;
+        check_finite(MR_NAME, &mr)?;
         let p = mr.prec();
         if mr.is_negative() || mr >= T::one(p) {
             return Err(Error::Domain {
-                name: "speed M_R = V/c_R",
+                name: MR_NAME,
                 value: short(&mr),
-                bound: "[0, 1) (sub-Rayleigh)",
+                bound: MR_BOUND,
             });
         }
-        Ok(Speed::new(self, mr))
+        let gap = T::one(p) - &mr;
+        Speed::new(self, mr, gap)
+    }
+
+    /// The speed whose gap to the Rayleigh speed is `gap` = 1 − M_R ∈ (0, 1]: the input that
+    /// keeps every digit near the Rayleigh speed (as scipy's `ellipkm1` takes 1 − m).
+    pub fn speed_from_gap(&self, gap: T) -> Result<Speed<T>> {
+        check_finite(GAP_NAME, &gap)?;
+        let p = gap.prec();
+        if !gap.is_positive() || gap > T::one(p) {
+            return Err(Error::Domain {
+                name: GAP_NAME,
+                value: short(&gap),
+                bound: GAP_BOUND,
+            });
+        }
+        let mr = T::one(p) - &gap;
+        Speed::new(self, mr, gap)
+    }
+
+    /// The speed whose M_R is the decimal text `mr` (or `p/q`): the gap 1 − M_R is formed
+    /// exactly from the text, then M_R and the gap are each rounded once to the working
+    /// precision, so that at `f64` the answer is accurate to the decimal given even at
+    /// M_R = 0.999999999999. Errors quote the text.
+    pub fn parse_speed(&self, mr: &str) -> Result<Speed<T>> {
+        let r = decimal_to_rational(mr)?;
+        if r < 0 || r >= 1 {
+            return Err(Error::Domain {
+                name: MR_NAME,
+                value: mr.trim().to_string(),
+                bound: MR_BOUND,
+            });
+        }
+        self.speed_from_exact(&r, mr)
+    }
+
+    /// The speed whose gap 1 − M_R is the decimal text `gap` (or `p/q`), checked exactly
+    /// (0 < gap ≤ 1); errors quote the text.
+    pub fn parse_gap(&self, gap: &str) -> Result<Speed<T>> {
+        let g = decimal_to_rational(gap)?;
+        if g <= 0 || g > 1 {
+            return Err(Error::Domain {
+                name: GAP_NAME,
+                value: gap.trim().to_string(),
+                bound: GAP_BOUND,
+            });
+        }
+        self.speed_from_exact(&(Rational::from(1) - g), gap)
+    }
+
+    /// The speed with the exact M_R `mr` (0 ≤ M_R < 1): M_R and 1 − M_R each rounded once.
+    /// `text` is the input as given, for error messages.
+    pub(crate) fn speed_from_exact(&self, mr: &Rational, text: &str) -> Result<Speed<T>> {
+        let p = self.nu.prec();
+        let gap_exact = Rational::from(1) - mr;
+        let gap: T = round_rational(&gap_exact, p);
+        let m: T = round_rational(mr, p);
+        if !gap.is_positive() || gap < T::min_positive(p) {
+            return Err(Error::Domain {
+                name: GAP_NAME,
+                value: format!(
+                    "{} (for the speed {}; below the smallest normal number at {})",
+                    rug::Float::with_val(64, &gap_exact).to_string_radix(10, Some(6)),
+                    text.trim(),
+                    Precision::of::<T>(p)
+                ),
+                bound: GAP_BOUND,
+            });
+        }
+        Speed::new(self, m, gap)
     }
 
     /// The speed with shear Mach number `m2` = V/c2 (must be below c_R/c2).
@@ -122,7 +231,7 @@ impl<T: Real> Material<T> {
                 bound: "[0, c_R/c2) (sub-Rayleigh)",
             });
         }
-        Ok(Speed::new(self, mr))
+        self.speed(mr)
     }
 
     /// The speed `v` in the units of the shear-wave speed `c2` (both positive, v < c_R).
@@ -145,38 +254,112 @@ impl<T: Real> Material<T> {
         }
         self.speed_from_m2(v / c2)
     }
+
+    /// This material at another precision `q` (ν rounded once). Used by the precision ladder's
+    /// lower stages, whose roots only seed the working precision: a ν that rounds onto the edge
+    /// −1 there is moved one unit inside.
+    pub(crate) fn at<S: Real>(&self, q: S::Prec) -> Result<Material<S>> {
+        let mut nu: S = S::from_float(&self.nu.to_float(T::bits(self.nu.prec()) + 8), q);
+        let minus_one = S::from_i64(-1, q);
+        if nu <= minus_one {
+            nu = minus_one + S::epsilon(q);
+        }
+        Material::new(nu)
+    }
 }
 
-/// A punch speed below the Rayleigh speed, in the Mach numbers the formulas use.
+const MR_NAME: &str = "speed M_R = V/c_R";
+const MR_BOUND: &str = "[0, 1) (sub-Rayleigh)";
+const GAP_NAME: &str = "speed gap 1 - M_R";
+const GAP_BOUND: &str = "(0, 1]";
+
+/// The rational `r` rounded once to precision `p` (through MPFR with 64 guard bits).
+pub(crate) fn round_rational<T: Real>(r: &Rational, p: T::Prec) -> T {
+    T::from_float(&rug::Float::with_val(T::bits(p) + 64, r), p)
+}
+
+/// `text (rounds to x at this precision)`: the message for an input inside its domain that
+/// rounds onto the edge at the working precision.
+fn rounds_to<T: Real>(text: &str, x: &T) -> String {
+    format!(
+        "{} (rounds to {} at {})",
+        text.trim(),
+        short(x),
+        Precision::of::<T>(x.prec())
+    )
+}
+
+/// A punch speed below the Rayleigh speed, made by (and carrying) its [`Material`]: the Mach
+/// numbers the formulas use, with the gap 1 − M_R held as a number of its own.
+///
+/// Accessors give M_R, 1 − M_R, M_R², 1 − M_R² (formed as (1 − M_R)(1 + M_R) from the gap,
+/// so accurate to a few ε relative however close M_R is to 1), M2² = m1·M_R² and
+/// M1² = γ·M2².
 #[derive(Clone, Debug)]
 pub struct Speed<T: Real> {
-    /// M_R = V/c_R ∈ [0, 1).
-    pub mr: T,
-    /// M_R².
-    pub mr2: T,
-    /// 1 − M_R², formed as (1 − M_R)(1 + M_R) without cancellation.
-    pub one_minus_mr2: T,
-    /// x = M2² = m1·M_R².
-    pub m2sq: T,
-    /// M1² = γ·x.
-    pub m1sq: T,
+    material: Material<T>,
+    mr: T,
+    gap: T,
+    mr2: T,
+    one_minus_mr2: T,
+    m2sq: T,
+    m1sq: T,
 }
 
 impl<T: Real> Speed<T> {
-    fn new(mat: &Material<T>, mr: T) -> Speed<T> {
+    /// From M_R and its gap, both at the working precision (validated by the caller).
+    fn new(mat: &Material<T>, mr: T, gap: T) -> Result<Speed<T>> {
         let p = mr.prec();
         let one = T::one(p);
         let mr2 = mr.square();
-        let one_minus_mr2 = (one.clone() - &mr) * (one + &mr);
+        let one_minus_mr2 = gap.clone() * (one + &mr);
+        if one_minus_mr2 < T::min_positive(p) {
+            return Err(Error::Domain {
+                name: GAP_NAME,
+                value: short(&gap),
+                bound: "1 - M_R^2 a normal number of the working precision",
+            });
+        }
         let m2sq = mat.m1().clone() * &mr2;
         let m1sq = mat.gamma().clone() * &m2sq;
-        Speed {
+        Ok(Speed {
+            material: mat.clone(),
             mr,
+            gap,
             mr2,
             one_minus_mr2,
             m2sq,
             m1sq,
-        }
+        })
+    }
+
+    /// The material this speed belongs to.
+    pub fn material(&self) -> &Material<T> {
+        &self.material
+    }
+    /// M_R = V/c_R ∈ [0, 1).
+    pub fn mr(&self) -> &T {
+        &self.mr
+    }
+    /// 1 − M_R ∈ (0, 1], as given or formed exactly from the input.
+    pub fn gap(&self) -> &T {
+        &self.gap
+    }
+    /// M_R².
+    pub fn mr2(&self) -> &T {
+        &self.mr2
+    }
+    /// 1 − M_R² = (1 − M_R)(1 + M_R), without cancellation.
+    pub fn one_minus_mr2(&self) -> &T {
+        &self.one_minus_mr2
+    }
+    /// x = M2² = m1·M_R² (the squared shear Mach number).
+    pub fn m2sq(&self) -> &T {
+        &self.m2sq
+    }
+    /// M1² = γ·M2².
+    pub fn m1sq(&self) -> &T {
+        &self.m1sq
     }
     /// M2 = V/c2.
     pub fn m2(&self) -> T {
@@ -185,5 +368,15 @@ impl<T: Real> Speed<T> {
     /// M1 = V/c1.
     pub fn m1(&self) -> T {
         self.m1sq.clone().sqrt()
+    }
+
+    /// This speed (and its material) at another precision `q`, the gap rounded on its own: the
+    /// precision ladder's lower stages and the guarded precision of the series route.
+    pub(crate) fn at<S: Real>(&self, q: S::Prec) -> Result<Speed<S>> {
+        let mat = self.material.at::<S>(q)?;
+        let bits = T::bits(self.mr.prec()) + 8;
+        let gap: S = S::from_float(&self.gap.to_float(bits), q);
+        let mr: S = S::from_float(&self.mr.to_float(bits), q);
+        Speed::new(&mat, mr, gap)
     }
 }

@@ -1,282 +1,266 @@
-//! Choosing the cheapest method and the lowest precision that reach a requested accuracy.
+//! I1, I2 to a requested accuracy at the lowest sufficient precision, from inputs held exactly.
 //!
-//! [`integrals`] takes the inputs exactly (as rationals: a decimal "0.2" is 1/5), a relative
-//! tolerance and a method request, and
+//! [`integrals_to_tolerance`] takes the inputs as exact rationals ([`ExactInputs`]: a decimal
+//! "0.2" is 1/5, the speed's gap 1 − M_R formed exactly), a relative tolerance of any size
+//! ([`RelError`]: 10⁻¹⁰⁰⁰⁰ is fine) and a method, and
 //!
-//! 1. picks the precision from the tolerance and the conditioning of the problem: the inputs are
-//!    rounded once to the working precision, which perturbs I2 by about κ·ε with
-//!    κ ≈ 4 + M_R²/(1 − M_R²) (I2 ~ (1 − M_R²)^(−1/2)); the methods' own error is a few ε. The
-//!    precision is the smallest of f64 (53 bits), double-double (106) or MPFR (a multiple of 32
-//!    bits) with 64·κ·ε ≤ tol — so a 1e-6 request runs in f64 and a 1e-60 request at about 220
-//!    bits;
-//! 2. picks the method: for k ≤ 1 the direct quadrature with the singular parts subtracted, run
-//!    by the fixed-rule fast route ([`crate::routes::fast`], [`direct::fast`]) when its a-priori
-//!    bound (16ε) is within the tolerance, else by the adaptive (48) with S by (53); for k > 1 the
-//!    plain quadrature, by the graded fixed panels ([`crate::routes::graded`]) when their bound
-//!    (32ε) is within the tolerance, else adaptive;
-//! 3. runs it, and accepts the result when its error estimate plus the input-rounding term κ·ε is
-//!    within the tolerance; otherwise it moves up one precision and tries again (at most three
-//!    times) before returning [`Error::Unreachable`].
+//! 1. picks the precision from the tolerance's binary exponent (never through an `f64`, which
+//!    would overflow): the inputs are rounded once to the working precision, which perturbs
+//!    I1, I2 by at most [`INPUT_KAPPA`]·ε (each input's rounding moves them by at most a few ε:
+//!    k by ≤ 3ε as I1 ~ k⁻³, the gap by ≤ ε/2 as I2 ~ (1 − M_R²)^{−1/2}, M_R and ν by O(ε)); the
+//!    route gets two thirds of the tolerance and adds at most its bound (16ε for the fixed rule).
+//!    The precision is the lowest of `f64` (53 bits), double-double (106, cheaper than MPFR at
+//!    any precision) and MPFR in steps of 8 bits whose (3/2·16 + κ)·ε meets the tolerance, so
+//!    that the reported estimate lies within a factor 2⁹ of the tolerance instead of paying for
+//!    digits nobody asked for;
+//! 2. runs [`crate::routes::evaluate::integrals`] there with two thirds of the tolerance, and
+//!    accepts the
+//!    result when its estimate plus κε is within the tolerance; otherwise (an adaptive route that
+//!    stopped above it) it moves up by a quarter of the precision and tries again, at most three
+//!    times, before returning [`Error::Unreachable`].
 //!
 //! The returned error estimate bounds the error relative to the exact integrals of the exact
 //! inputs (tested against computations at higher precision in `tests/choose.rs`).
 
-use super::fast::FastRule;
-use super::{direct, graded, AxisRatio, Integrals, Method};
+use super::evaluate::{IntegralOptions, FLOOR_EPS};
+use super::{fast, AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
-use crate::physics::Material;
-use crate::scalar::{decimal_to_rational, Field, MpPrec, Precision, Real};
-use rug::{Float, Rational};
+use crate::estimate::{Estimated, RelError};
+use crate::physics::material::round_rational;
+use crate::physics::{Material, Speed};
+use crate::scalar::{decimal_to_rational, Mp, MpPrec, Precision, Real};
+use rug::Rational;
 
-/// The inputs of I1, I2, held exactly.
+/// The inputs of I1, I2 held exactly, with the text they were given as (for messages).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Inputs {
-    /// Poisson's ratio ν ∈ (−1, 1/2].
-    pub nu: Rational,
-    /// M_R = V/c_R ∈ [0, 1).
-    pub mr: Rational,
-    /// Axis ratio k = b/a > 0.
-    pub k: Rational,
+pub struct ExactInputs {
+    nu: Rational,
+    mr: Rational,
+    k: Rational,
+    text: [String; 3],
 }
 
-impl Inputs {
-    /// Parses decimal (or p/q) text exactly and validates the ranges.
-    pub fn parse(nu: &str, mr: &str, k: &str) -> Result<Inputs> {
-        Inputs::new(
+/// The amplification of the inputs' rounding in I1, I2, in units of ε (module docs).
+pub const INPUT_KAPPA: u32 = 8;
+
+impl ExactInputs {
+    /// Parses decimal (or p/q) text exactly: Poisson's ratio, the speed M_R, the axis ratio k.
+    pub fn parse(nu: &str, mr: &str, k: &str) -> Result<ExactInputs> {
+        ExactInputs::new(
             decimal_to_rational(nu)?,
             decimal_to_rational(mr)?,
             decimal_to_rational(k)?,
+            [nu, mr, k],
+        )
+    }
+
+    /// As [`ExactInputs::parse`] with the speed given by its gap 1 − M_R.
+    pub fn parse_gap(nu: &str, gap: &str, k: &str) -> Result<ExactInputs> {
+        let g = decimal_to_rational(gap)?;
+        let text = format!("1 - {}", gap.trim());
+        ExactInputs::new(
+            decimal_to_rational(nu)?,
+            Rational::from(1) - g,
+            decimal_to_rational(k)?,
+            [nu, &text, k],
         )
     }
 
     /// The exact values of three `f64` (NaN and ∞ are typed errors).
-    pub fn from_f64(nu: f64, mr: f64, k: f64) -> Result<Inputs> {
+    pub fn from_f64(nu: f64, mr: f64, k: f64) -> Result<ExactInputs> {
         let conv = |name: &'static str, x: f64| {
             Rational::from_f64(x).ok_or_else(|| Error::NotFinite {
                 name,
                 value: format!("{x}"),
             })
         };
-        Inputs::new(
+        let text = [nu, mr, k].map(|x| format!("{x:e}"));
+        ExactInputs::new(
             conv("nu", nu)?,
             conv("speed M_R", mr)?,
             conv("axis ratio k", k)?,
+            [&text[0], &text[1], &text[2]],
         )
     }
 
-    /// Validates the ranges: −1 < ν ≤ 1/2, 0 ≤ M_R < 1, k > 0.
-    pub fn new(nu: Rational, mr: Rational, k: Rational) -> Result<Inputs> {
-        let dom = |name, v: &Rational, bound| Error::Domain {
+    /// Validates the ranges exactly: −1 < ν ≤ 1/2, 0 ≤ M_R < 1, k > 0.
+    fn new(nu: Rational, mr: Rational, k: Rational, text: [&str; 3]) -> Result<ExactInputs> {
+        let dom = |name, i: usize, bound| Error::Domain {
             name,
-            value: format!("{}", v.to_f64()),
+            value: text[i].trim().to_string(),
             bound,
         };
         if nu <= -1 || nu > Rational::from((1, 2)) {
-            return Err(dom("nu (Poisson's ratio)", &nu, "(-1, 1/2]"));
+            return Err(dom("nu (Poisson's ratio)", 0, "(-1, 1/2]"));
         }
         if !(0..1).contains(&mr) {
-            return Err(dom("speed M_R = V/c_R", &mr, "[0, 1) (sub-Rayleigh)"));
+            return Err(dom("speed M_R = V/c_R", 1, "[0, 1) (sub-Rayleigh)"));
         }
         if k <= 0 {
-            return Err(dom("axis ratio k = b/a", &k, "(0, inf)"));
+            return Err(dom("axis ratio k = b/a", 2, "(0, inf)"));
         }
-        Ok(Inputs { nu, mr, k })
+        Ok(ExactInputs {
+            nu,
+            mr,
+            k,
+            text: text.map(|t| t.trim().to_string()),
+        })
     }
 
-    /// The inputs rounded to precision `p`.
-    pub fn at<T: Real>(
-        &self,
-        p: T::Prec,
-    ) -> Result<(Material<T>, crate::physics::Speed<T>, AxisRatio<T>)> {
+    /// Poisson's ratio ν.
+    pub fn nu(&self) -> &Rational {
+        &self.nu
+    }
+    /// The speed M_R.
+    pub fn mr(&self) -> &Rational {
+        &self.mr
+    }
+    /// The axis ratio k.
+    pub fn k(&self) -> &Rational {
+        &self.k
+    }
+
+    /// The inputs as rounded to precision `p`, held exactly: ν and k rounded, the gap 1 − M_R
+    /// rounded and M_R its exact complement (for studies that measure a route's own error
+    /// against a reference for the very inputs it saw).
+    pub fn rounded<T: Real>(&self, p: T::Prec) -> Result<ExactInputs> {
         let bits = T::bits(p) + 64;
-        let conv = |r: &Rational| T::from_float(&Float::with_val(bits, r), p);
-        let mat = Material::new(conv(&self.nu))?;
-        let speed = mat.speed(conv(&self.mr))?;
-        let axes = AxisRatio::new(conv(&self.k))?;
-        Ok((mat, speed, axes))
+        let r = |q: &Rational| -> Rational {
+            let t: T = round_rational(q, p);
+            t.to_float(bits).to_rational().unwrap_or_default()
+        };
+        let gap = r(&(Rational::from(1) - &self.mr));
+        let text = [&self.nu, &self.mr, &self.k].map(|q| r(q).to_string());
+        ExactInputs::new(
+            r(&self.nu),
+            Rational::from(1) - gap,
+            r(&self.k),
+            [&text[0], &text[1], &text[2]],
+        )
     }
 
-    /// κ ≈ 4 + M_R²/(1 − M_R²): the amplification of a relative perturbation of the inputs in
-    /// I1, I2 (their sensitivity to M_R dominates near M_R = 1; to k and ν it is O(1)).
-    pub fn condition(&self) -> f64 {
-        let m2 = self.mr.to_f64().powi(2);
-        let one_minus = (Rational::from(1) - self.mr.clone() * &self.mr).to_f64();
-        4.0 + m2 / one_minus
-    }
-}
-
-/// What the caller asks for: a method, or the automatic choice.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MethodRequest {
-    /// The cheapest method that reaches the tolerance.
-    Auto,
-    /// A given method.
-    Fixed(Method),
-}
-
-impl MethodRequest {
-    /// Parses `auto`, `series`, `quadrature` or `subtracted`.
-    pub fn parse(s: &str) -> Result<MethodRequest> {
-        match s {
-            "auto" => Ok(MethodRequest::Auto),
-            "series" => Ok(MethodRequest::Fixed(Method::Series)),
-            "quadrature" => Ok(MethodRequest::Fixed(Method::Quadrature)),
-            "subtracted" => Ok(MethodRequest::Fixed(Method::Subtracted)),
-            _ => Err(Error::Parse {
-                text: s.to_string(),
-                reason: "expected auto, series, quadrature or subtracted",
-            }),
-        }
+    /// The inputs rounded once to precision `p`: the speed (with its material) and k.
+    pub fn at<T: Real>(&self, p: T::Prec) -> Result<(Speed<T>, T)> {
+        let mat = Material::<T>::from_exact(&self.nu, &self.text[0], p)?;
+        let speed = mat.speed_from_exact(&self.mr, &self.text[1])?;
+        let k: T = round_rational(&self.k, p);
+        AxisRatio::new(k.clone())?;
+        Ok((speed, k))
     }
 }
 
-/// I1 and I2 from [`integrals`], held as MPFR numbers that carry the value computed at the
-/// working precision exactly.
-#[derive(Clone, Debug)]
-pub struct Answer {
-    /// I1 (normalisation of (37)).
-    pub i1: Float,
-    /// I2.
-    pub i2: Float,
-    /// Bound on the relative error of I1 and I2 with respect to the exact inputs.
-    pub error_estimate: f64,
-    /// The method used.
-    pub method: Method,
-    /// The precision used.
-    pub precision: Precision,
-    /// Series terms or integrand evaluations spent in the accepted run.
-    pub work: usize,
-}
-
-/// The method the automatic choice takes for these inputs and tolerance:
-/// [`Method::Subtracted`] for k ≤ 1 (run by the fast route, ~0.25 µs at f64), and
-/// [`Method::Quadrature`] for k > 1 (run by the graded fixed panels of [`crate::routes::graded`],
-/// 0.3–1 µs at f64, when their bound meets the tolerance; the series, 6–12 µs at f64 even where it
-/// needs few terms, is never cheaper).
-pub fn choose_method(inputs: &Inputs, _tol: f64) -> Method {
-    if inputs.k <= 1 {
-        Method::Subtracted
-    } else {
-        Method::Quadrature
+/// The lowest precision whose (route bound + κ)·ε meets `tol` (module docs): bits from the
+/// tolerance's binary exponent, MPFR in steps of 8 bits.
+pub fn choose_precision(tol: RelError) -> Result<Precision> {
+    // The route gets 2/3 of the tolerance, the inputs' rounding the rest:
+    // (3/2·16 + κ)·2^(1 − bits) ≤ tol  ⇔  bits ≥ 1 + log2(3/2·16 + κ) − log2(tol).
+    let bound = (fast::BOUND_EPS as u32).max(FLOOR_EPS) * 3 / 2 + INPUT_KAPPA;
+    let need = 1.0 + (bound as f64).log2() - tol.log2();
+    if !need.is_finite() {
+        return Err(Error::Domain {
+            name: "relative tolerance",
+            value: tol.to_string(),
+            bound: "(0, 1)",
+        });
     }
-}
-
-/// The lowest precision whose 64·κ·ε is within `tol`.
-pub fn choose_precision(inputs: &Inputs, tol: f64) -> Result<Precision> {
-    let need = (64.0 * inputs.condition() / tol).log2().ceil().max(1.0) as u64;
+    let need = need.ceil().max(1.0) as u64;
     Ok(if need <= 53 {
         Precision::F64
     } else if need <= 106 {
         Precision::DoubleDouble
     } else {
-        Precision::Mpfr(MpPrec::new(need.div_ceil(32) * 32)?)
+        Precision::Mpfr(MpPrec::new(need.div_ceil(8) * 8)?)
     })
 }
 
-/// The next precision up the ladder: f64 → double-double → MPFR, growing by half.
+/// The next precision up: f64 → double-double → MPFR, growing by a quarter.
 fn next_precision(p: Precision) -> Result<Precision> {
     Ok(match p {
         Precision::F64 => Precision::DoubleDouble,
-        Precision::DoubleDouble => Precision::Mpfr(MpPrec::new(160)?),
+        Precision::DoubleDouble => Precision::Mpfr(MpPrec::new(136)?),
         Precision::Mpfr(q) => {
-            Precision::Mpfr(MpPrec::new((q.bits() as u64 * 3 / 2).div_ceil(32) * 32)?)
+            Precision::Mpfr(MpPrec::new((q.bits() as u64 * 5 / 4).div_ceil(8) * 8)?)
         }
     })
 }
 
-/// Runs one method at one precision (tolerance `tol` relative, as `f64`; 0 asks for the
-/// precision's floor).
+/// I1, I2 (normalisation of (37)) of the exact `inputs` to relative tolerance `tol` (0 < tol
+/// < 1) by `method` at the lowest precision that reaches it (module docs). The values are
+/// returned as MPFR numbers carrying the working precision's result exactly, with
+/// [`Integrals::precision`] the precision that ran; each bound is relative to the exact
+/// integrals of the exact inputs.
 ///
-/// [`Method::Subtracted`] runs the fast fixed-rule route ([`direct::fast`]) when k is in its
-/// domain (2^−40 ≤ k ≤ 1) and its bound ([`FastRule::bound_eps`], 16ε) is within `tol` (or `tol`
-/// is 0), and the adaptive [`direct::subtracted`] otherwise. [`Method::Quadrature`] runs the
-/// graded fixed panels ([`graded::integrals`]) when k ≥ 1, `tol` > 0 and their bound
-/// ([`graded::BOUND_EPS`]·ε) is within `tol`, and the adaptive [`direct::quadrature`] otherwise
-/// (`tol` = 0, the precision's floor, always runs the adaptive route: the studies' reference).
-pub fn run_at<T: Real>(
-    inputs: &Inputs,
-    p: T::Prec,
+/// ```
+/// use moving_hertz::{integrals_to_tolerance, ExactInputs, Method, RelError};
+/// let inputs = ExactInputs::parse("0.25", "0.999", "0.5")?;
+/// let r = integrals_to_tolerance(&inputs, RelError::parse("1e-40")?, Method::Auto)?;
+/// assert!(r.i1.error <= RelError::parse("1e-40")?);
+/// # Ok::<(), moving_hertz::Error>(())
+/// ```
+pub fn integrals_to_tolerance(
+    inputs: &ExactInputs,
+    tol: RelError,
     method: Method,
-    tol: f64,
-) -> Result<Integrals<T>> {
-    let (mat, speed, axes) = inputs.at::<T>(p)?;
-    let t = T::from_f64(tol, p);
-    match method {
-        Method::Quadrature => {
-            // k ≥ 1 with a tolerance the graded panels' bound meets: the fixed rule.
-            let bound = T::epsilon(p).mul_i64(graded::BOUND_EPS);
-            if tol > 0.0 && bound <= t && axes.k >= T::one(p) {
-                if let Ok(r) = graded::integrals(&mat, &speed, &axes) {
-                    return Ok(r);
-                }
-            }
-            direct::quadrature(&mat, &speed, &axes, &t)
-        }
-        Method::Subtracted => {
-            let bound = T::epsilon(p).mul_i64(FastRule::<T>::get(p)?.bound_eps() as i64);
-            if tol == 0.0 || bound <= t {
-                if let Ok(r) = direct::fast(&mat, &speed, &axes) {
-                    return Ok(r);
-                }
-            }
-            direct::subtracted(&mat, &speed, &axes, &t)
-        }
-        Method::Series => {
-            let opts = super::series::SeriesOptions {
-                rel_tol: (tol > 0.0).then_some(t),
-                ..Default::default()
-            };
-            super::series::integrals(&mat, &speed, &axes, &opts)
-        }
-    }
-}
-
-/// I1, I2 to relative tolerance `tol` (0 < tol < 1) by the cheapest method and lowest precision
-/// that reach it (see the module docs).
-pub fn integrals(inputs: &Inputs, tol: f64, request: MethodRequest) -> Result<Answer> {
-    if !(tol > 0.0 && tol < 1.0) {
+) -> Result<Integrals<Mp>> {
+    if tol >= RelError::from_f64(1.0) {
         return Err(Error::Domain {
-            name: "tolerance",
-            value: format!("{tol}"),
+            name: "relative tolerance",
+            value: tol.to_string(),
             bound: "(0, 1)",
         });
     }
-    let method = match request {
-        MethodRequest::Auto => choose_method(inputs, tol),
-        MethodRequest::Fixed(m) => m,
-    };
-    let mut prec = choose_precision(inputs, tol)?;
-    let kappa = inputs.condition();
+    let mut prec = choose_precision(tol)?;
     let mut last = String::new();
     for _ in 0..4 {
-        let attempt: Result<(Float, Float, f64, usize)> = crate::with_precision!(prec, T, p => {
-            run_at::<T>(inputs, p, method, tol / 4.0).map(|r| {
-                let bits = T::bits(p) + 64;
-                let eps = T::epsilon(p).to_f64();
-                let est = r.error_estimate.to_f64() + kappa * eps;
-                (r.i1.to_float(bits), r.i2.to_float(bits), est, r.work)
-            })
-        });
+        let attempt = crate::with_precision!(prec, T, p => run_at::<T>(inputs, p, method, tol));
         match attempt {
-            Ok((i1, i2, est, work)) if est <= tol => {
-                return Ok(Answer {
-                    i1,
-                    i2,
-                    error_estimate: est,
-                    method,
-                    precision: prec,
-                    work,
-                });
-            }
-            Ok((_, _, est, _)) => last = format!("estimate {est:.2e} at {}", prec.label()),
-            Err(e @ Error::Unreachable { .. }) => return Err(e),
+            Ok(r) if r.i1.error <= tol && r.i2.error <= tol => return Ok(r),
+            Ok(r) => last = format!("estimate {} at {}", r.i1.error.max(r.i2.error), prec),
+            Err(e @ (Error::Domain { .. } | Error::NotFinite { .. })) => return Err(e),
             Err(e) => last = e.to_string(),
         }
         prec = next_precision(prec)?;
     }
     Err(Error::Unreachable {
         what: "I1, I2",
-        tolerance: format!("{tol:e}"),
+        tolerance: tol.to_string(),
         reason: last,
+    })
+}
+
+/// One attempt at the precision `p`: the route's result, its bounds enlarged by the inputs'
+/// rounding κε, carried to MPFR exactly.
+fn run_at<T: Real>(
+    inputs: &ExactInputs,
+    p: T::Prec,
+    method: Method,
+    tol: RelError,
+) -> Result<Integrals<Mp>> {
+    let (speed, k) = inputs.at::<T>(p)?;
+    let kappa = RelError::eps::<T>(INPUT_KAPPA, p);
+    // The route's share of the tolerance (module docs); below its floor, the floor.
+    let route_tol = tol.scale(2.0 / 3.0);
+    let opts = IntegralOptions {
+        method,
+        tolerance: Some(route_tol).filter(|t| *t >= RelError::eps::<T>(FLOOR_EPS, p)),
+        ..Default::default()
+    };
+    let r = super::evaluate::integrals(&speed, &k, &opts)?;
+    let bits = T::bits(p) + 64;
+    let up = |e: Estimated<T>| {
+        Estimated::new(
+            Mp::from_float(&e.value.to_float(bits), MpPrec::clamped(bits)),
+            e.error.add(kappa),
+        )
+    };
+    Ok(Integrals {
+        i1: up(r.i1),
+        i2: up(r.i2),
+        di1_dk: r.di1_dk.map(up),
+        di2_dk: r.di2_dk.map(up),
+        j0: r.j0.map(up),
+        route: r.route,
+        precision: r.precision,
+        work: r.work,
     })
 }

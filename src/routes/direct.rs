@@ -31,11 +31,11 @@
 //! so the quadrature needs an absolute accuracy ~tol·I2 on an O(1) quantity instead of a
 //! relative one on a peak of height 1/ε².
 
-use super::{AxisRatio, Integrals, Method};
+use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::elliptic::{ellipd_mc, heuman_lambda_c_mc};
 use crate::numerics::quadrature::{integrate, Limits};
-use crate::physics::{GreenFunction, Material, Speed};
+use crate::physics::{GreenFunction, Speed};
 use crate::scalar::{short, Real};
 
 /// The constants of the integrands for one (material, speed, axis ratio).
@@ -55,13 +55,13 @@ pub struct DirectSetup<T: Real> {
 
 impl<T: Real> DirectSetup<T> {
     /// Precomputes the constants.
-    pub fn new(mat: &Material<T>, speed: &Speed<T>, axes: &AxisRatio<T>) -> Self {
-        let p = speed.mr.prec();
+    pub fn new(speed: &Speed<T>, axes: &AxisRatio<T>) -> Self {
+        let p = speed.mr().prec();
         DirectSetup {
-            green: GreenFunction::new(mat),
-            mr2: speed.mr2.clone(),
-            eps2: speed.one_minus_mr2.clone(),
-            eps: speed.one_minus_mr2.clone().sqrt(),
+            green: GreenFunction::new(speed.material()),
+            mr2: speed.mr2().clone(),
+            eps2: speed.one_minus_mr2().clone(),
+            eps: speed.one_minus_mr2().clone().sqrt(),
             k: axes.k.clone(),
             k2: axes.k2.clone(),
             two_pi: T::pi(p).mul_pow2(1),
@@ -191,13 +191,12 @@ fn limits<T: Real>(tol: &T) -> Limits {
 /// −1 < ν ≤ 1/2; the reported error estimate bounds the true error in the tests. Work grows like
 /// log(1/ε) + |log k| panels.
 pub fn quadrature<T: Real>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
     tol: &T,
-) -> Result<Integrals<T>> {
-    let s = DirectSetup::new(mat, speed, axes);
-    integrate_halves(&s, false, tol, Method::Quadrature, None)
+) -> Result<Evaluation<T>> {
+    let s = DirectSetup::new(speed, axes);
+    integrate_halves(&s, false, tol, Route::Adaptive, None)
 }
 
 /// The four half-range integrals, optionally with G(M_R²) subtracted from I2's integrand and
@@ -206,9 +205,9 @@ fn integrate_halves<T: Real>(
     s: &DirectSetup<T>,
     subtract: bool,
     tol: &T,
-    method: Method,
+    route: Route,
     extra_i2: Option<T>,
-) -> Result<Integrals<T>> {
+) -> Result<Evaluation<T>> {
     let p = tol.prec();
     let lp = s.breakpoints(&s.left_scales());
     let rp = s.breakpoints(&s.right_scales());
@@ -251,13 +250,14 @@ fn integrate_halves<T: Real>(
     let e2 = (i2l.error.clone() + &i2r.error) / &i2;
     // Rounding floor of the integrands themselves (a few ε per evaluation of G and the weights).
     let floor = T::epsilon(p).mul_i64(8);
-    Ok(Integrals {
+    let work = i1l.evaluations + i1r.evaluations + i2l.evaluations + i2r.evaluations;
+    Ok(Evaluation::pair(
         i1,
         i2,
-        error_estimate: e1.max_of(e2) + &floor,
-        method,
-        work: i1l.evaluations + i1r.evaluations + i2l.evaluations + i2r.evaluations,
-    })
+        e1.max_of(e2) + &floor,
+        route,
+        work,
+    ))
 }
 
 /// S of (49) by the closed form (53):
@@ -272,7 +272,7 @@ fn integrate_halves<T: Real>(
 /// Valid for k ≤ 1 (the Heuman form needs 0 ≤ e² ≤ 1) and k²ε² < 1; otherwise
 /// [`Error::Domain`]. Accuracy: a few ε.
 pub fn s_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T> {
-    let p = speed.mr.prec();
+    let p = speed.mr().prec();
     let one = T::one(p);
     if axes.k > one {
         return Err(Error::Domain {
@@ -281,88 +281,68 @@ pub fn s_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T
             bound: "(0, 1]",
         });
     }
-    let eps2 = speed.one_minus_mr2.clone();
+    let eps2 = speed.one_minus_mr2().clone();
     let q = one - axes.k2.clone() * &eps2;
     // K − E = e² D(e²) with mc = k².
     let kme = axes.e2.clone() * ellipd_mc(&axes.k2)?;
     let first = kme / &q;
-    if speed.mr.is_zero() {
+    if speed.mr().is_zero() {
         return Ok(first);
     }
     let eps = eps2.sqrt();
     // β = arccos M_R = atan2(ε, M_R), accurate as M_R → 1.
-    let beta = eps.clone().atan2(&speed.mr);
+    let beta = eps.clone().atan2(speed.mr());
     let bracket = T::pi(p).mul_pow2(-1) * heuman_lambda_c_mc(&beta, &axes.k2)?;
-    let second = speed.mr.clone() * bracket / (eps * q.clone() * q.sqrt());
+    let second = speed.mr().clone() * bracket / (eps * q.clone() * q.sqrt());
     Ok(first + second)
 }
 
 /// S1 of (51) by the closed form (52): S1 = bracket / (M_R ε √(1 − k²ε²)), same bracket and
 /// conventions as [`s_closed_form`]. For M_R > 0.
 pub fn s1_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T> {
-    let p = speed.mr.prec();
+    let p = speed.mr().prec();
     let one = T::one(p);
-    if axes.k > one || !speed.mr.is_positive() {
+    if axes.k > one || !speed.mr().is_positive() {
         return Err(Error::Domain {
             name: "closed form (52) needs 0 < k <= 1 and M_R > 0; k",
             value: short(&axes.k),
             bound: "(0, 1]",
         });
     }
-    let eps = speed.one_minus_mr2.clone().sqrt();
-    let q = one - axes.k2.clone() * &speed.one_minus_mr2;
-    let beta = eps.clone().atan2(&speed.mr);
+    let eps = speed.one_minus_mr2().clone().sqrt();
+    let q = one - axes.k2.clone() * speed.one_minus_mr2();
+    let beta = eps.clone().atan2(speed.mr());
     let bracket = T::pi(p).mul_pow2(-1) * heuman_lambda_c_mc(&beta, &axes.k2)?;
-    Ok(bracket / (speed.mr.clone() * eps * q.sqrt()))
+    Ok(bracket / (speed.mr().clone() * eps * q.sqrt()))
 }
 
 /// I1, I2 with I2 by the subtraction (48) and S by (53); I1 by quadrature of (46). Valid where
 /// (53) is (k ≤ 1). Same tolerance semantics as [`quadrature`].
 pub fn subtracted<T: Real>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
     tol: &T,
-) -> Result<Integrals<T>> {
-    let s = DirectSetup::new(mat, speed, axes);
+) -> Result<Evaluation<T>> {
+    let s = DirectSetup::new(speed, axes);
     let g0 = s.g_at_speed();
     let sing = s.two_pi.clone() * &g0 * s_closed_form(speed, axes)?;
-    integrate_halves(&s, true, tol, Method::Subtracted, Some(sing))
+    integrate_halves(&s, true, tol, Route::AdaptiveSubtracted, Some(sing))
 }
 
 /// The five integrals the contact solution needs, at one (material, speed, axis ratio), in the
 /// normalisation of (37): I1, I2 (34), J0 = ∫_0^π g(V sin φ)/(k² cos²φ + sin²φ)^{1/2} dφ (the
 /// integral of (28)₁/(32) for the approach d0), and ∂I1/∂k, ∂I2/∂k (differentiated under the
-/// integral sign: ∂/∂k (cos²α + k² sin²α)^{−3/2} = −3k sin²α (…)^{−5/2}).
-#[derive(Clone, Debug)]
-pub struct ContactIntegrals<T: Real> {
-    /// I1.
-    pub i1: T,
-    /// I2.
-    pub i2: T,
-    /// J0.
-    pub j0: T,
-    /// ∂I1/∂k.
-    pub di1_dk: T,
-    /// ∂I2/∂k.
-    pub di2_dk: T,
-    /// The largest relative error estimate of the five.
-    pub error_estimate: T,
-    /// Integrand evaluations (each serving all five).
-    pub work: usize,
-}
-
-/// [`ContactIntegrals`] by adaptive vector quadrature in the variables of the module docs (one
+/// integral sign: ∂/∂k (cos²α + k² sin²α)^{−3/2} = −3k sin²α (…)^{−5/2}),
+/// by adaptive vector quadrature in the variables of the module docs (one
 /// evaluation of G per node serves all five integrals); relative tolerance `tol` (0: the
 /// precision's floor). Accuracy as [`quadrature`].
 pub fn contact_integrals<T: Real>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
     tol: &T,
-) -> Result<ContactIntegrals<T>> {
+) -> Result<Evaluation<T>> {
     use crate::numerics::vquad::integrate_vec;
-    let s = DirectSetup::new(mat, speed, axes);
+    let s = DirectSetup::new(speed, axes);
     let p = tol.prec();
     let lim = limits(tol);
     let three_k = s.k.clone().mul_i64(3);
@@ -414,29 +394,15 @@ pub fn contact_integrals<T: Real>(
         }
     }
     let [i1, i2, j0, di1_dk, di2_dk] = v;
-    Ok(ContactIntegrals {
+    let est = est + &T::epsilon(p).mul_i64(8);
+    Ok(Evaluation {
         i1,
         i2,
-        j0,
-        di1_dk,
-        di2_dk,
-        error_estimate: est + &T::epsilon(p).mul_i64(8),
+        dk: Some([di1_dk, di2_dk]),
+        j0: Some(j0),
+        error_estimate: est.clone(),
+        extra_error: est,
+        route: Route::Adaptive,
         work: l.evaluations + r.evaluations,
     })
-}
-
-/// I1, I2 by the fast fixed-rule route of [`crate::routes::fast`]: the singular parts of
-/// (46)–(47) subtracted and integrated in closed form (the Rayleigh pole at α = 0, the peak of
-/// Δ⁻³ at α = π/2 through Taylor terms of the regular factor), the rest by Gauss–Legendre rules
-/// whose sizes follow the working precision. Reported as [`Method::Subtracted`].
-///
-/// Domain: 2^−40 ≤ k ≤ 1 (else [`Error::Domain`]; [`quadrature`] covers every k). Accuracy:
-/// relative error of I1 and I2 ≤ 16ε (the reported `error_estimate`), measured ≤ 5.5ε at `f64`,
-/// double-double and MPFR. Work: 32 evaluations of G at `f64` (about 0.23 µs), no allocation.
-pub fn fast<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-) -> Result<Integrals<T>> {
-    super::fast::integrals(mat, speed, axes)
 }

@@ -87,7 +87,7 @@
 //!
 //! **Accuracy.** The node counts are fixed functions of the working precision
 //! ([`RuleSizes::for_bits`]), chosen so that the truncation error is below 1ε over the whole
-//! domain; [`FastRule::bound_eps`] = 16 is the a-priori bound on the relative error of I1 and I2
+//! domain; [`BOUND_EPS`] = 16 is the a-priori bound on the relative error of I1 and I2
 //! in units of ε, checked against the adaptive route at 400 bits over ν ∈ {−0.9, 0, 0.25, 0.5},
 //! M_R ∈ {0, 0.3, 0.7, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {10⁻⁶, 10⁻⁴, 0.01, 0.1, 0.3, 0.5, 0.7, 1}
 //! (`tests/fast.rs`): worst 2.8ε at `f64` (6·10⁻¹⁶), 5.5ε at double-double, 1.9ε and 2.8ε at
@@ -95,10 +95,10 @@
 //! (near k = 1, M_R = 0, where the closed forms of the (σ + k²)^{−5/2} moments cancel most; no
 //! guard precision is spent on them below MPFR), 2.3ε at MPFR 128 bits.
 
-use super::{AxisRatio, Integrals, Method};
+use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::{cached, GaussLegendre};
-use crate::physics::{Material, Speed};
+use crate::physics::Speed;
 use crate::scalar::{short, Dd, Field, Real};
 use std::any::{Any, TypeId};
 use std::ops::Deref;
@@ -234,7 +234,6 @@ pub struct FastRule<T: Real> {
     /// 1/(2j) and (2j − 1)/(2j) for j = 1..=J (index j − 1): the N_j recurrence.
     inv_2j: Vec<T>,
     ratio_2j: Vec<T>,
-    bound_eps: u32,
 }
 
 /// A borrowed or shared [`FastRule`].
@@ -327,7 +326,6 @@ impl<T: Real> FastRule<T> {
             sqrt_binomial,
             inv_2j,
             ratio_2j,
-            bound_eps: bound_eps_for(T::bits(p)),
         })
     }
 
@@ -340,22 +338,19 @@ impl<T: Real> FastRule<T> {
     pub fn prec(&self) -> T::Prec {
         self.prec
     }
-
-    /// The a-priori bound on the relative error of I1 and I2, in units of ε of the working
-    /// precision, valid on the whole domain of the route for the default sizes (calibrated in
-    /// `tests/fast.rs`; see the module docs).
-    pub fn bound_eps(&self) -> u32 {
-        self.bound_eps
-    }
 }
 
-/// The a-priori error bound in ε for the default sizes: 16ε at every precision. Measured over
-/// the test grid (`tests/fast.rs`): at most 2.8ε at `f64`, 5.5ε at double-double, 1.9ε and 2.8ε at
-/// MPFR 128 and 256 bits (1.4ε at 512 bits on a sub-grid); the truncation error of the default
-/// rules is below 1ε everywhere on the domain (module docs), the rest is rounding.
-fn bound_eps_for(_bits: u32) -> u32 {
-    16
-}
+/// The a-priori bound on the relative error of I1 and I2 for the default sizes, in units of ε of
+/// the working precision, valid on the whole domain of the route at every precision. Measured
+/// over the test grid (`tests/fast.rs`): at most 2.8ε at `f64`, 5.5ε at double-double, 1.9ε and
+/// 2.8ε at MPFR 128 and 256 bits (1.4ε at 512 bits on a sub-grid); the truncation error of the
+/// default rules is below 1ε everywhere on the domain (module docs), the rest is rounding.
+pub const BOUND_EPS: i64 = 16;
+
+/// The bound on the relative error of the k-derivatives, in units of ε: measured ≤ 47ε at
+/// `f64`, ≤ 53ε at double-double (near k = 1, M_R = 0), ≤ 3ε at MPFR; asserted in
+/// `tests/fast.rs`.
+pub const DK_BOUND_EPS: i64 = 128;
 
 // ---------------------------------------------------------------------------------------------
 // Constants of one (material, speed)
@@ -383,19 +378,20 @@ pub(super) struct SpeedConsts<T: Real> {
 }
 
 impl<T: Real> SpeedConsts<T> {
-    pub(super) fn new(mat: &Material<T>, speed: &Speed<T>) -> Self {
-        let p = speed.mr.prec();
+    pub(super) fn new(speed: &Speed<T>) -> Self {
+        let mat = speed.material();
+        let p = speed.mr().prec();
         let one = T::one(p);
         let roots = mat.roots();
         let m1 = roots.m1.clone();
         let gamma = mat.gamma().clone();
-        let c = speed.m2sq.clone();
+        let c = speed.m2sq().clone();
         let s23 = roots.sum23.clone();
         let q = roots.prod23.clone();
         let two_over_m1 = T::from_i64(2, p) / &m1;
         let a1 = one.clone() - gamma.clone() * &c;
         let d2 = one.clone() - &c;
-        let eps2 = speed.one_minus_mr2.clone();
+        let eps2 = speed.one_minus_mr2().clone();
         // The pole is subtracted only when it is near the interval (ε ≤ 1/2, i.e. M_R ≥ √3/2);
         // farther out the plain rule converges as fast, and for M_R → 0, k → 1 the pole at
         // w = iε would meet the branch point of u^{−3/2} at w = i/k, where a0 is unbounded.
@@ -413,7 +409,7 @@ impl<T: Real> SpeedConsts<T> {
             let two_m1 = T::from_i64(2, p) - &m1;
             let d1 = two_m1.square() + (g1.clone() * &b1).sqrt().mul_i64(4);
             let q1 = m1.clone() * (m1.clone() - &s23) + &q;
-            let g0 = two_over_m1.clone() * &speed.mr * g1.sqrt() * d1 / q1;
+            let g0 = two_over_m1.clone() * speed.mr() * g1.sqrt() * d1 / q1;
             (g0, pole_t, pole_1)
         } else {
             (T::zero(p), T::zero(p), T::zero(p))
@@ -740,18 +736,6 @@ fn dot<T: Real>(w: &[T], x: &[T]) -> T {
 // ---------------------------------------------------------------------------------------------
 // The result and the k-dependent constants
 
-/// I1, I2 with their derivatives with respect to the axis ratio k (for Newton's method on the
-/// ellipse equation (33)).
-#[derive(Clone, Debug)]
-pub struct IntegralsDk<T: Real> {
-    /// I1, I2, the error estimate (relative, for I1 and I2), the method and the work.
-    pub integrals: Integrals<T>,
-    /// dI1/dk.
-    pub di1_dk: T,
-    /// dI2/dk.
-    pub di2_dk: T,
-}
-
 /// The k-dependent constants shared by both evaluation paths.
 struct KConsts<T: Real> {
     k: T,
@@ -760,42 +744,6 @@ struct KConsts<T: Real> {
     /// of the left integrand, divided by 3k).
     a0: T,
     e0: T,
-}
-
-impl<T: Real> IntegralsDk<T> {
-    /// The result of a fixed rule (this route or [`crate::routes::graded`]): I1 and I2 checked
-    /// finite and positive (else [`Error::NoConvergence`] naming `route`), the derivatives, the
-    /// a-priori bound `bound_eps`·ε as the estimate, the method and the node count.
-    pub(super) fn from_rule(
-        route: &'static str,
-        [i1, i2]: [T; 2],
-        [di1_dk, di2_dk]: [T; 2],
-        bound_eps: i64,
-        method: Method,
-        work: usize,
-    ) -> Result<Self> {
-        for x in [&i1, &i2] {
-            if !x.is_finite() || !x.is_positive() {
-                return Err(Error::NoConvergence {
-                    what: route,
-                    iterations: 0,
-                    reached: short(x),
-                });
-            }
-        }
-        let error_estimate = T::epsilon(i1.prec()).mul_i64(bound_eps);
-        Ok(IntegralsDk {
-            integrals: Integrals {
-                i1,
-                i2,
-                error_estimate,
-                method,
-                work,
-            },
-            di1_dk,
-            di2_dk,
-        })
-    }
 }
 
 /// The domain of the route in k: [2^−40, 1].
@@ -851,8 +799,7 @@ fn combine<T: Real, const N: usize>(
     b: &[T],
     v: &NodeValues<'_, T>,
     dk: bool,
-) -> Result<IntegralsDk<T>> {
-    let p = rule.prec;
+) -> Result<Evaluation<T>> {
     let (l, r) = (&rule.left, &rule.right);
     // Left: I2_L = a0 atan(1/ε)/ε + Σω R, I1_L = a0 (1 − ε atan(1/ε)) + Σωs R.
     let i2l = kc.a0.clone() * &sc.pole_t + &dot(&l.w, v.left);
@@ -863,7 +810,7 @@ fn combine<T: Real, const N: usize>(
     let i2r = dot(&r.ws, v.right) + &s2;
     let i1 = i1l + &i1r;
     let i2 = i2l + &i2r;
-    let (di1, di2) = if dk {
+    let dks = dk.then(|| {
         // Left: dI2_L = 3k (e0 atan(1/ε)/ε − Σω R'), dI1_L = 3k (e0 (1 − ε atan(1/ε)) − Σωs R').
         let three_k = kc.k.clone().mul_i64(3);
         let d2l = (kc.e0.clone() * &sc.pole_t - &dot(&l.w, v.left_dk)) * &three_k;
@@ -871,16 +818,14 @@ fn combine<T: Real, const N: usize>(
         // Right: dI_R = −3k (∫ P W5 + Σω r W5) (and with σ).
         let s1 = dot(&r.w, v.right_dk) + &sd1;
         let s2 = dot(&r.ws, v.right_dk) + &sd2;
-        (d1l - &(s1 * &three_k), d2l - &(s2 * &three_k))
-    } else {
-        (T::zero(p), T::zero(p))
-    };
-    IntegralsDk::from_rule(
+        [d1l - &(s1 * &three_k), d2l - &(s2 * &three_k)]
+    });
+    Evaluation::from_rule(
         "fast route: I1 and I2 (finite, positive)",
         [i1, i2],
-        [di1, di2],
-        rule.bound_eps as i64,
-        Method::Subtracted,
+        dks,
+        [BOUND_EPS, DK_BOUND_EPS],
+        Route::FixedRule,
         rule.sizes.nodes(),
     )
 }
@@ -982,15 +927,14 @@ fn taylor_poly<T: Real>(b: &[T], s: &[T], out: &mut [T]) {
 }
 
 fn one_shot<T: Real, const N: usize>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
     rule: &FastRule<T>,
     dk: bool,
-) -> Result<IntegralsDk<T>> {
+) -> Result<Evaluation<T>> {
     check_axes(axes)?;
     let p = rule.prec;
-    let sc = SpeedConsts::new(mat, speed);
+    let sc = SpeedConsts::new(speed);
     let kc = KConsts::new(&sc, axes);
     let (nl, nr) = (rule.left.len(), rule.right.len());
     let mut b = Buf::<T, N>::zeros(rule.sizes.taylor, p);
@@ -1014,21 +958,20 @@ fn one_shot<T: Real, const N: usize>(
 /// [`one_shot`] with inline buffers sized for the rule: 24 values at `f64`, 48 at
 /// double-double (heap buffers beyond, and for MPFR).
 fn run<T: Real>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
     rule: &FastRule<T>,
     dk: bool,
-) -> Result<IntegralsDk<T>> {
+) -> Result<Evaluation<T>> {
     let n = rule
         .left
         .len()
         .max(rule.right.len())
         .max(3 * rule.sizes.taylor + 1);
     if n <= 32 {
-        one_shot::<T, 32>(mat, speed, axes, rule, dk)
+        one_shot::<T, 32>(speed, axes, rule, dk)
     } else {
-        one_shot::<T, 48>(mat, speed, axes, rule, dk)
+        one_shot::<T, 48>(speed, axes, rule, dk)
     }
 }
 
@@ -1036,43 +979,34 @@ fn run<T: Real>(
 /// the default rule of the working precision.
 ///
 /// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 2^−40 ≤ k ≤ 1, else [`Error::Domain`]. Accuracy: relative
-/// error of I1 and I2 below [`FastRule::bound_eps`]·ε = 16ε, reported as `error_estimate` (at
+/// error of I1 and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate` (at
 /// `f64` 3.6e-15; measured ≤ 2.8ε). Work: [`RuleSizes::nodes`] evaluations of G (32 at `f64`,
 /// about 0.23 µs; 70 at double-double), no allocation at `f64` and double-double once the rule
 /// is built. The method reported is
 /// [`Method::Subtracted`] (a fixed-rule form of the singularity-subtracted quadrature).
-pub fn integrals<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-) -> Result<Integrals<T>> {
+pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
     let rule = FastRule::<T>::get(axes.k.prec())?;
-    run(mat, speed, axes, &rule, false).map(|r| r.integrals)
+    run(speed, axes, &rule, false)
 }
 
 /// I1, I2 (as [`integrals`]) and dI1/dk, dI2/dk, differentiated under the integral sign on the
 /// same nodes (see the module docs). The derivatives' relative error is not bounded by the
 /// reported estimate (which is for I1, I2): measured ≤ 47ε at `f64`, ≤ 53ε at double-double
 /// (near k = 1, M_R = 0), ≤ 3ε at MPFR; tested ≤ 128ε. Cost: about 15 % more than [`integrals`].
-pub fn integrals_with_dk<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-) -> Result<IntegralsDk<T>> {
+pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
     let rule = FastRule::<T>::get(axes.k.prec())?;
-    run(mat, speed, axes, &rule, true)
+    run(speed, axes, &rule, true)
 }
 
 /// As [`integrals_with_dk`] with an explicit rule (from [`FastRule::build`]): for convergence
 /// studies. The reported `error_estimate` is the default rule's bound and does not apply to
 /// smaller rules.
 pub fn integrals_with_rule<T: Real>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
     rule: &FastRule<T>,
-) -> Result<IntegralsDk<T>> {
-    run(mat, speed, axes, rule, true)
+) -> Result<Evaluation<T>> {
+    run(speed, axes, rule, true)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1103,12 +1037,12 @@ impl<T: Real> std::fmt::Debug for RuleRef<T> {
 }
 
 impl<T: Real> FastSetup<T> {
-    /// Precomputes the k-independent part for `mat` and `speed` with the default rule of the
+    /// Precomputes the k-independent part for `speed` (and its material) with the default rule of the
     /// working precision (cost about that of one [`integrals`] call).
-    pub fn new(mat: &Material<T>, speed: &Speed<T>) -> Result<Self> {
-        let p = speed.mr.prec();
+    pub fn new(speed: &Speed<T>) -> Result<Self> {
+        let p = speed.mr().prec();
         let rule = FastRule::<T>::get(p)?;
-        let sc = SpeedConsts::new(mat, speed);
+        let sc = SpeedConsts::new(speed);
         let mut b = vec![T::zero(p); rule.sizes.taylor];
         taylor_b(&sc, &rule, &mut b);
         let one = T::one(p);
@@ -1139,16 +1073,16 @@ impl<T: Real> FastSetup<T> {
     }
 
     /// I1, I2 at the axis ratio `axes` (same domain and accuracy as [`integrals`]).
-    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Integrals<T>> {
-        self.run(axes, false).map(|r| r.integrals)
+    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
+        self.run(axes, false)
     }
 
     /// I1, I2, dI1/dk, dI2/dk at the axis ratio `axes` (as [`integrals_with_dk`]).
-    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<IntegralsDk<T>> {
+    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.run(axes, true)
     }
 
-    fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<IntegralsDk<T>> {
+    fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         let n = self
             .left_lq
             .len()
@@ -1161,7 +1095,7 @@ impl<T: Real> FastSetup<T> {
         }
     }
 
-    fn eval<const N: usize>(&self, axes: &AxisRatio<T>, dk: bool) -> Result<IntegralsDk<T>> {
+    fn eval<const N: usize>(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         check_axes(axes)?;
         let rule = &*self.rule;
         let p = rule.prec;
@@ -1217,6 +1151,7 @@ impl<T: Real> FastSetup<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::physics::Material;
     use crate::routes::coefficients::GreenSeries;
     use crate::scalar::{Mp, MpPrec};
     use rug::Rational;
@@ -1228,7 +1163,7 @@ mod tests {
         let p = MpPrec::new(512).unwrap();
         let mat = Material::new(Mp::from_f64(nu, p)).unwrap();
         let sp = mat.speed(Mp::from_f64(mr, p)).unwrap();
-        let c = GreenSeries::new(mat.nu(), sp.m2sq.clone()).take(j_max);
+        let c = GreenSeries::new(mat.nu(), sp.m2sq().clone()).take(j_max);
         (0..j_max)
             .map(|j| {
                 let mut sum = Mp::zero(p);
@@ -1255,7 +1190,7 @@ mod tests {
             let want = composed_b(nu, mr, j_max);
             let mat = Material::new(T::from_f64(nu, p)).unwrap();
             let sp = mat.speed(T::from_f64(mr, p)).unwrap();
-            let sc = SpeedConsts::new(&mat, &sp);
+            let sc = SpeedConsts::new(&sp);
             let mut b = vec![T::zero(p); j_max];
             taylor_b(&sc, &rule, &mut b);
             // b_j may cancel (which does not matter: the same polynomial is subtracted at the

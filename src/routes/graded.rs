@@ -52,11 +52,11 @@
 //! [`left_nodes`]) the worst error is 4.9ε, dI/dk 5.9ε; with 2^{−bits−6} dI/dk reaches 17ε,
 //! with 2^{−bits−4} 32ε, with 2^{−bits} 370ε.
 
-use super::fast::{IntegralsDk, SpeedConsts};
-use super::{AxisRatio, Integrals, Method};
+use super::fast::SpeedConsts;
+use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::{cached, GaussLegendre};
-use crate::physics::{Material, Speed};
+use crate::physics::Speed;
 use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
 
@@ -306,12 +306,12 @@ impl<T: Real> GradedSetup<T> {
     /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^40, else [`Error::Domain`]) and evaluates
     /// G at their nodes: the [`left_plan`] for C = ⌈asinh(1/min(4/(5 k_ref), ε, δ))/ln 2⌉
     /// units of ln 2 on the left, and [`panel_nodes`] on the right.
-    pub fn new(mat: &Material<T>, speed: &Speed<T>, k_ref: &T) -> Result<Self> {
+    pub fn new(speed: &Speed<T>, k_ref: &T) -> Result<Self> {
         check_k(k_ref)?;
         let p = k_ref.prec();
         let one = T::one(p);
         let rules = Rules::<T>::get(p)?;
-        let sc = SpeedConsts::new(mat, speed);
+        let sc = SpeedConsts::new(speed);
         // The scale a of w = a sinh x: at most the lowest singularity height for every
         // k ≤ (5/4) k_ref (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points
         // ±iδ), made 1/sinh(C ln 2) for the plan's whole number C of units ln 2.
@@ -410,16 +410,16 @@ impl<T: Real> GradedSetup<T> {
     }
 
     /// I1, I2 at `axes` ([`integrals`]' accuracy); [`Error::Domain`] outside [`Self::covers`].
-    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Integrals<T>> {
-        self.eval(axes, false).map(|r| r.integrals)
+    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
+        self.eval(axes, false)
     }
 
     /// I1, I2, dI1/dk, dI2/dk at `axes` ([`integrals_with_dk`]' accuracy).
-    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<IntegralsDk<T>> {
+    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.eval(axes, true)
     }
 
-    fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<IntegralsDk<T>> {
+    fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         check_k(&axes.k)?;
         if axes.k > self.k_max {
             return Err(Error::Domain {
@@ -445,18 +445,16 @@ impl<T: Real> GradedSetup<T> {
         let [i1r, i2r, d1r, d2r] = right;
         let i1 = i1l + &i1r;
         let i2 = i2l + &i2r;
-        let (di1, di2) = if dk {
+        let dks = dk.then(|| {
             let m3k = -axes.k.clone().mul_i64(3);
-            ((d1l + &d1r) * &m3k, (d2l + &d2r) * &m3k)
-        } else {
-            (T::zero(p), T::zero(p))
-        };
-        IntegralsDk::from_rule(
+            [(d1l + &d1r) * &m3k, (d2l + &d2r) * &m3k]
+        });
+        Evaluation::from_rule(
             "graded route: I1 and I2 (finite, positive)",
             [i1, i2],
-            [di1, di2],
-            BOUND_EPS,
-            Method::Quadrature,
+            dks,
+            [BOUND_EPS, BOUND_EPS],
+            Route::GradedRule,
             nl + nr,
         )
     }
@@ -522,13 +520,8 @@ fn power_sums<T: Real>(
     acc
 }
 
-fn run<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-    dk: bool,
-) -> Result<IntegralsDk<T>> {
-    GradedSetup::new(mat, speed, &axes.k)?.eval(axes, dk)
+fn run<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
+    GradedSetup::new(speed, &axes.k)?.eval(axes, dk)
 }
 
 /// I1, I2 of (34) in the normalisation of (37) for k ≥ 1 by graded fixed panels (module docs).
@@ -536,20 +529,12 @@ fn run<T: Real>(
 /// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^40, else [`Error::Domain`]. Accuracy: relative
 /// error below [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: the [`left_plan`] for
 /// x up to asinh(1/min(4/(5k), ε, δ)) plus [`panel_nodes`] nodes.
-pub fn integrals<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-) -> Result<Integrals<T>> {
-    run(mat, speed, axes, false).map(|r| r.integrals)
+pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
+    run(speed, axes, false)
 }
 
 /// [`integrals`] with dI1/dk, dI2/dk differentiated under the integral sign on the same nodes
 /// (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵); their relative error is of the same order (positive integrands).
-pub fn integrals_with_dk<T: Real>(
-    mat: &Material<T>,
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-) -> Result<IntegralsDk<T>> {
-    run(mat, speed, axes, true)
+pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
+    run(speed, axes, true)
 }

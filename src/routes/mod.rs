@@ -16,20 +16,31 @@
 //! The series route: [`coefficients`] (f_n of (35)–(36)), [`moments`] (L_n, M_n of (39)–(42)),
 //! [`series`] (I1, I2 by (37) with truncation control); findings in `docs/series.md`.
 
+#[doc(hidden)]
 pub mod asymptotic;
 pub mod choose;
+#[doc(hidden)]
 pub mod coefficients;
+#[doc(hidden)]
 pub mod direct;
+pub mod evaluate;
+#[doc(hidden)]
 pub mod fast;
+#[doc(hidden)]
 pub mod graded;
 mod guard;
+#[doc(hidden)]
 pub mod moments;
+#[doc(hidden)]
 pub mod series;
 
+pub use choose::{integrals_to_tolerance, ExactInputs};
 pub use coefficients::{GreenSeries, SpeedCoefficients};
+pub use evaluate::{integrals, Evaluator, IntegralOptions};
 
 use crate::error::{Error, Result};
-use crate::scalar::{check_finite, short, Real};
+use crate::estimate::{Estimated, RelError};
+use crate::scalar::{check_finite, short, Precision, Real};
 
 /// The contact ellipse's axis ratio k = b/a (b across the motion, a along it), with k² and
 /// e² = 1 − k² = (1 − k)(1 + k) formed without cancellation. e² < 0 when k > 1 (the contact is
@@ -77,39 +88,237 @@ impl<T: Real> AxisRatio<T> {
     }
 }
 
-/// Which route produced a pair of integrals.
+/// The route that actually ran to produce a pair of integrals: the five ways the crate evaluates
+/// I1, I2 of (34).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Method {
-    /// The series (37) with L_n by (39)–(42): section 5.
+pub enum Route {
+    /// The series (37) with the moments L_n, M_n by (39)–(42): section 5 of the paper.
     Series,
-    /// Direct quadrature of (46)–(47).
-    Quadrature,
-    /// (46) by quadrature, (47) by the subtraction (48) with S in closed form (53).
-    Subtracted,
+    /// Adaptive Gauss–Legendre quadrature of (46)–(47) on geometrically graded panels.
+    Adaptive,
+    /// (46) by adaptive quadrature, (47) by the subtraction (48) with S in closed form (53);
+    /// k ≤ 1.
+    AdaptiveSubtracted,
+    /// Fixed Gauss–Legendre rules after the Rayleigh pole and the peak of Δ⁻³ are taken out in
+    /// closed form (the fast route); 2⁻⁴⁰ ≤ k ≤ 1.
+    FixedRule,
+    /// Fixed rules on sinh-graded panels for the long contact across the motion; 1 ≤ k ≤ 2⁴⁰.
+    GradedRule,
 }
 
-impl Method {
-    /// `series`, `quadrature` or `subtracted`.
+impl Route {
+    /// `series`, `adaptive`, `adaptive-subtracted`, `fixed-rule` or `graded-rule`.
     pub fn label(&self) -> &'static str {
         match self {
-            Method::Series => "series",
-            Method::Quadrature => "quadrature",
-            Method::Subtracted => "subtracted",
+            Route::Series => "series",
+            Route::Adaptive => "adaptive",
+            Route::AdaptiveSubtracted => "adaptive-subtracted",
+            Route::FixedRule => "fixed-rule",
+            Route::GradedRule => "graded-rule",
         }
     }
 }
 
-/// I1 and I2 (normalisation of (37)) with a bound on their relative error.
+impl std::fmt::Display for Route {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.label())
+    }
+}
+
+/// The route a caller asks for. [`Method::Auto`] (the default) takes the cheapest route that
+/// meets the request: the fixed rules where they apply and their bound meets the tolerance, the
+/// adaptive quadratures otherwise.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// The cheapest route that meets the request.
+    #[default]
+    Auto,
+    /// [`Route::Series`] (I1, I2 only: no k-derivatives, no J0).
+    Series,
+    /// [`Route::Adaptive`] (every k; with k-derivatives and J0).
+    Adaptive,
+    /// [`Route::AdaptiveSubtracted`] (k ≤ 1; I1, I2 only).
+    AdaptiveSubtracted,
+    /// The fixed rules: [`Route::FixedRule`] for 2⁻⁴⁰ ≤ k ≤ 1, [`Route::GradedRule`] for
+    /// 1 < k ≤ 2⁴⁰ (with k-derivatives).
+    Fixed,
+}
+
+impl Method {
+    /// Every method, in the order of [`Method::label`]'s list.
+    pub const ALL: [Method; 5] = [
+        Method::Auto,
+        Method::Series,
+        Method::Adaptive,
+        Method::AdaptiveSubtracted,
+        Method::Fixed,
+    ];
+
+    /// `auto`, `series`, `adaptive`, `adaptive-subtracted` or `fixed`.
+    pub fn label(&self) -> &'static str {
+        match self {
+            Method::Auto => "auto",
+            Method::Series => "series",
+            Method::Adaptive => "adaptive",
+            Method::AdaptiveSubtracted => "adaptive-subtracted",
+            Method::Fixed => "fixed",
+        }
+    }
+
+    /// Parses a label of [`Method::label`].
+    pub fn parse(s: &str) -> Result<Method> {
+        Method::ALL
+            .into_iter()
+            .find(|m| m.label() == s.trim())
+            .ok_or_else(|| Error::Parse {
+                text: s.to_string(),
+                reason: "expected auto, series, adaptive, adaptive-subtracted or fixed",
+            })
+    }
+}
+
+impl std::fmt::Display for Method {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.label())
+    }
+}
+
+/// I1, I2 (normalisation of (37)) as a route computes them at the working precision, with
+/// optionally their k-derivatives and J0, and relative error estimates in the working type: the
+/// one internal result of every route, turned into the public [`Integrals`] by
+/// [`Evaluation::publish`].
 #[derive(Clone, Debug)]
-pub struct Integrals<T: Real> {
+pub struct Evaluation<T: Real> {
     /// I1 (the cos² integral).
     pub i1: T,
     /// I2 (the sin² integral).
     pub i2: T,
-    /// An estimate of the larger relative error of the two.
+    /// ∂I1/∂k and ∂I2/∂k, when the route computed them.
+    pub dk: Option<[T; 2]>,
+    /// J0 = ∫_0^π g(V sin φ)/(k² cos²φ + sin²φ)^{1/2} dφ (of (32)), when computed.
+    pub j0: Option<T>,
+    /// Relative error estimate of I1 and I2 (the larger of the two).
     pub error_estimate: T,
-    /// The route used.
-    pub method: Method,
+    /// Relative error estimate of the k-derivatives and J0 (zero when absent).
+    pub extra_error: T,
+    /// The route that ran.
+    pub route: Route,
+    /// Work done: series terms or integrand evaluations.
+    pub work: usize,
+}
+
+impl<T: Real> Evaluation<T> {
+    /// I1, I2 with an error estimate, nothing else.
+    pub fn pair(i1: T, i2: T, error_estimate: T, route: Route, work: usize) -> Self {
+        let z = T::zero(i1.prec());
+        Evaluation {
+            i1,
+            i2,
+            dk: None,
+            j0: None,
+            error_estimate,
+            extra_error: z,
+            route,
+            work,
+        }
+    }
+
+    /// The result of a fixed rule ([`fast`] or [`graded`]): I1 and I2 checked finite and
+    /// positive (else [`Error::NoConvergence`] naming `what`), the a-priori bounds
+    /// `bounds[0]`·ε on I1, I2 and `bounds[1]`·ε on the k-derivatives, the route and the nodes.
+    pub(crate) fn from_rule(
+        what: &'static str,
+        [i1, i2]: [T; 2],
+        dk: Option<[T; 2]>,
+        bounds: [i64; 2],
+        route: Route,
+        work: usize,
+    ) -> Result<Self> {
+        for x in [&i1, &i2] {
+            if !x.is_finite() || !x.is_positive() {
+                return Err(Error::NoConvergence {
+                    what,
+                    iterations: 0,
+                    reached: short(x),
+                });
+            }
+        }
+        let eps = T::epsilon(i1.prec());
+        let extra = if dk.is_some() {
+            eps.clone().mul_i64(bounds[1])
+        } else {
+            T::zero(i1.prec())
+        };
+        Ok(Evaluation {
+            i1,
+            i2,
+            dk,
+            j0: None,
+            error_estimate: eps.mul_i64(bounds[0]),
+            extra_error: extra,
+            route,
+            work,
+        })
+    }
+
+    /// ∂I1/∂k (zero when not computed).
+    pub fn di1_dk(&self) -> T {
+        self.dk
+            .as_ref()
+            .map_or_else(|| T::zero(self.i1.prec()), |d| d[0].clone())
+    }
+
+    /// ∂I2/∂k (zero when not computed).
+    pub fn di2_dk(&self) -> T {
+        self.dk
+            .as_ref()
+            .map_or_else(|| T::zero(self.i1.prec()), |d| d[1].clone())
+    }
+
+    /// The public result: every value finite and every estimate finite (else a typed error
+    /// naming the route), estimates as [`RelError`].
+    pub fn publish(self) -> Result<Integrals<T>> {
+        let what = self.route.label();
+        let precision = Precision::of::<T>(self.i1.prec());
+        let est = |x: T, e: &T| Estimated::new(x, RelError::of(e)).checked(what);
+        let err = self.error_estimate.clone();
+        let extra = self.extra_error.clone();
+        let dk = match self.dk {
+            Some([a, b]) => Some([est(a, &extra)?, est(b, &extra)?]),
+            None => None,
+        };
+        Ok(Integrals {
+            i1: est(self.i1, &err)?,
+            i2: est(self.i2, &err)?,
+            di1_dk: dk.as_ref().map(|d| d[0].clone()),
+            di2_dk: dk.map(|[_, b]| b),
+            j0: self.j0.map(|j| est(j, &extra)).transpose()?,
+            route: self.route,
+            precision,
+            work: self.work,
+        })
+    }
+}
+
+/// I1, I2 of (34) in the normalisation of (37) at one axis ratio k, each with a bound on its
+/// relative error, optionally with ∂I1/∂k, ∂I2/∂k and J0 (of (32)), and the route that ran.
+/// Returned by [`integrals`] and [`Evaluator::at`].
+#[derive(Clone, Debug)]
+pub struct Integrals<T: Real> {
+    /// I1 (the cos² integral, (46)).
+    pub i1: Estimated<T>,
+    /// I2 (the sin² integral, (47)).
+    pub i2: Estimated<T>,
+    /// ∂I1/∂k, when asked for ([`IntegralOptions::derivatives`]).
+    pub di1_dk: Option<Estimated<T>>,
+    /// ∂I2/∂k, when asked for.
+    pub di2_dk: Option<Estimated<T>>,
+    /// J0 of (32) (the approach integral), when asked for ([`IntegralOptions::j0`]).
+    pub j0: Option<Estimated<T>>,
+    /// The route that ran.
+    pub route: Route,
+    /// The precision it ran at.
+    pub precision: Precision,
     /// Work done: series terms or integrand evaluations.
     pub work: usize,
 }

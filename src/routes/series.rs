@@ -30,10 +30,10 @@
 use super::coefficients::SpeedCoefficients;
 use super::guard::{run_guarded, GuardedJob};
 use super::moments::{plan, table_at, MAX_INDEX};
-use super::{AxisRatio, Integrals, Method};
+use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::series::sum_series_with_tail;
-use crate::physics::{Material, Speed};
+use crate::physics::Speed;
 use crate::scalar::{short, Real};
 
 /// Default cap on the number of series terms.
@@ -86,11 +86,10 @@ pub fn terms_estimate(q: f64, tol: f64) -> u64 {
 /// exceed `opts.max_terms`; [`Error::Domain`] for a cap above 10⁶ or a negative tolerance;
 /// errors of the moments and the Rayleigh roots.
 pub fn integrals<T: Real>(
-    mat: &Material<T>,
     speed: &Speed<T>,
     axis: &AxisRatio<T>,
     opts: &SeriesOptions<T>,
-) -> Result<Integrals<T>> {
+) -> Result<Evaluation<T>> {
     let p = axis.k.prec();
     let eps = T::epsilon(p);
     let tol = match &opts.rel_tol {
@@ -114,7 +113,7 @@ pub fn integrals<T: Real>(
             bound: "1 <= max_terms <= 1000000",
         });
     }
-    let q = speed.mr2.to_f64();
+    let q = speed.mr2().to_f64();
     let tol_f = tol.to_f64();
     let est = terms_estimate(q, tol_f);
     let cap = opts.max_terms;
@@ -133,7 +132,6 @@ pub fn integrals<T: Real>(
             p,
             pl.guard_bits,
             SeriesJob {
-                mat,
                 speed,
                 axis,
                 tol: &tol,
@@ -157,7 +155,6 @@ pub fn integrals<T: Real>(
 }
 
 struct SeriesJob<'a, T: Real> {
-    mat: &'a Material<T>,
     speed: &'a Speed<T>,
     axis: &'a AxisRatio<T>,
     tol: &'a T,
@@ -167,23 +164,24 @@ struct SeriesJob<'a, T: Real> {
 
 impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
     /// `None` when the table to `n_max` was too short for the tolerance.
-    type Output = Option<Integrals<T>>;
+    type Output = Option<Evaluation<T>>;
 
     fn run<W: Real>(
         self,
         pw: W::Prec,
         up: &dyn Fn(&T) -> W,
         down: &dyn Fn(&W) -> T,
-    ) -> Result<Option<Integrals<T>>> {
+    ) -> Result<Option<Evaluation<T>>> {
         let n = self.n_max;
         let one = W::one(pw);
-        let nu = up(self.mat.nu());
-        let mr = up(&self.speed.mr);
+        let mat = self.speed.material();
+        let nu = up(mat.nu());
+        let mr = up(self.speed.mr());
         let k = up(&self.axis.k);
         let mc = k.square();
-        let m1 = polish_m1(&nu, up(self.mat.m1()));
+        let m1 = polish_m1(&nu, up(mat.m1()));
         let mr2 = mr.square();
-        let one_minus_mr2 = (one.clone() - &mr) * (one.clone() + &mr);
+        let one_minus_mr2 = up(self.speed.gap()) * (one.clone() + &mr);
         let h_lim = green_limit(&nu, &m1);
         let tab = table_at(&mc, n + 1, self.method)?;
         // Binomial terms below ε·2⁻³⁰ (of the guarded precision) cannot change h_n ≥ H ≈ 0.2.
@@ -228,13 +226,13 @@ impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
         }
         let eps = T::epsilon(self.axis.k.prec());
         let tail = s1.last_rel.max_of(s2.last_rel);
-        Ok(Some(Integrals {
-            i1: down(&s1.sum.mul_i64(2)),
-            i2: down(&s2.sum.mul_i64(2)),
-            error_estimate: down(&tail) + eps,
-            method: Method::Series,
-            work: s1.terms.max(s2.terms),
-        }))
+        Ok(Some(Evaluation::pair(
+            down(&s1.sum.mul_i64(2)),
+            down(&s2.sum.mul_i64(2)),
+            down(&tail) + eps,
+            Route::Series,
+            s1.terms.max(s2.terms),
+        )))
     }
 }
 

@@ -366,6 +366,19 @@ pub enum Precision {
 }
 
 impl Precision {
+    /// The precision of the backend `T` at the token `p`.
+    pub fn of<T: Real>(p: T::Prec) -> Precision {
+        use std::any::TypeId;
+        let id = TypeId::of::<T>();
+        if id == TypeId::of::<f64>() {
+            Precision::F64
+        } else if id == TypeId::of::<Dd>() {
+            Precision::DoubleDouble
+        } else {
+            Precision::Mpfr(MpPrec::clamped(T::bits(p)))
+        }
+    }
+
     /// Parses `f64`, `dd` (or `double-double`) or a bit count such as `256`.
     pub fn parse(s: &str) -> Result<Self> {
         match s.trim().to_ascii_lowercase().as_str() {
@@ -443,13 +456,42 @@ pub fn check_finite<T: Real>(name: &'static str, x: &T) -> Result<()> {
     }
 }
 
-/// A value as error messages show it: the shortest decimal that identifies its nearest `f64`
-/// (so `0.7` prints as `0.7`), or every digit when it lies outside the `f64` range.
+/// A value as error messages show it: the shortest decimal that identifies an `f64` (`0.7`
+/// prints as `0.7`, `1e-300` as `1e-300`), and for a value of higher precision that is not an
+/// `f64`, or lies outside the `f64` range, 20 significant digits (`5.0000000000000000001e-1`,
+/// `1e400`): never a page of digits, never a value rounded onto a misleading neighbour.
 pub fn short<T: Real>(x: &T) -> String {
-    let f = x.to_f64();
-    if f == 0.0 || !f.is_finite() || (f.abs() < 1e300 && f.abs() > 1e-300) {
-        format!("{f}")
-    } else {
-        x.to_decimal()
+    if x.is_nan() {
+        return "NaN".into();
     }
+    if !x.is_finite() {
+        return if x.is_negative() { "-inf" } else { "inf" }.into();
+    }
+    let f = x.to_f64();
+    let is_f64 = f.is_finite() && (f != 0.0 || x.is_zero()) && T::from_f64(f, x.prec()) == *x;
+    if is_f64 {
+        let a = f.abs();
+        return if a != 0.0 && !(1e-5..1e16).contains(&a) {
+            format!("{f:e}")
+        } else {
+            format!("{f}")
+        };
+    }
+    let s = x.to_float(T::bits(x.prec())).to_string_radix(10, Some(20));
+    trim_mantissa(&s)
+}
+
+/// `5.0000000000000000010e-1` → `5.000000000000000001e-1`: trailing zeros of the mantissa
+/// dropped.
+fn trim_mantissa(s: &str) -> String {
+    let (mant, exp) = match s.find('e') {
+        Some(i) => (&s[..i], &s[i..]),
+        None => (s, ""),
+    };
+    let mant = if mant.contains('.') {
+        mant.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        mant
+    };
+    format!("{mant}{exp}")
 }

@@ -4,51 +4,25 @@
 
 use super::median_ns;
 use super::svg::{Chart, Series, Style};
-use crate::physics::{Material, Speed};
-use crate::routes::choose::{run_at, Inputs};
-use crate::routes::series::{self, SeriesOptions};
-use crate::routes::{direct, AxisRatio, Integrals, Method};
-
-type Prepared<T> = (Material<T>, Speed<T>, AxisRatio<T>);
-use crate::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use moving_hertz::routes::series::{self, SeriesOptions};
+use moving_hertz::routes::{direct, fast, AxisRatio, Evaluation};
+use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use moving_hertz::{integrals, ExactInputs, IntegralOptions, Method, Route, Speed};
 use rug::Float;
-use rug::Rational;
 
-/// The routes the study compares (the crate's `Method::Subtracted` runs `Fast` where it applies
-/// and `Subtracted` otherwise; here they are measured separately).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Route {
-    /// The series (37).
-    Series,
-    /// Adaptive quadrature of (46)–(47).
-    Quadrature,
-    /// Adaptive quadrature with the subtraction (48) and S by (53).
-    Subtracted,
-    /// The fixed-rule fast route (`routes::fast`).
-    Fast,
-}
+type Prepared<T> = (Speed<T>, AxisRatio<T>);
 
-impl Route {
-    /// A short label.
-    pub fn label(&self) -> &'static str {
-        match self {
-            Route::Series => "series",
-            Route::Quadrature => "quadrature",
-            Route::Subtracted => "subtracted",
-            Route::Fast => "fast",
-        }
-    }
-    /// Runs the route on inputs already rounded to the working precision (so that timings do
-    /// not include the conversion of the inputs nor the material's Rayleigh roots).
-    fn run<T: Real>(self, prepared: &Prepared<T>) -> crate::Result<Integrals<T>> {
-        let (m, s, a) = prepared;
-        let zero = T::zero(a.k.prec());
-        match self {
-            Route::Series => series::integrals(m, s, a, &SeriesOptions::default()),
-            Route::Quadrature => direct::quadrature(m, s, a, &zero),
-            Route::Subtracted => direct::subtracted(m, s, a, &zero),
-            Route::Fast => direct::fast(m, s, a),
-        }
+/// Runs a route on inputs already rounded to the working precision (so that timings do not
+/// include the conversion of the inputs nor the material's Rayleigh roots), at the working
+/// precision's floor, without the automatic choice of [`moving_hertz::integrals`].
+fn run_route<T: Real>(route: Route, (s, a): &Prepared<T>) -> moving_hertz::Result<Evaluation<T>> {
+    let zero = T::zero(a.k.prec());
+    match route {
+        Route::Series => series::integrals(s, a, &SeriesOptions::default()),
+        Route::Adaptive => direct::quadrature(s, a, &zero),
+        Route::AdaptiveSubtracted => direct::subtracted(s, a, &zero),
+        Route::FixedRule => fast::integrals(s, a),
+        Route::GradedRule => moving_hertz::routes::graded::integrals(s, a),
     }
 }
 
@@ -75,53 +49,51 @@ pub struct Row {
 
 /// The speeds of the study: 0.1, 0.5, 0.9, 0.99, 0.999, 0.9999, 1 − 10^-8.
 pub const SPEEDS: [&str; 7] = ["0.1", "0.5", "0.9", "0.99", "0.999", "0.9999", "0.99999999"];
-/// The routes compared.
+/// The routes compared (k ≤ 1: the graded rule does not apply).
 pub const METHODS: [Route; 4] = [
     Route::Series,
-    Route::Quadrature,
-    Route::Subtracted,
-    Route::Fast,
+    Route::Adaptive,
+    Route::AdaptiveSubtracted,
+    Route::FixedRule,
 ];
 
-/// The inputs as rounded to precision `p`, held exactly: the reference is computed for them, so
-/// that the study measures the methods' error, not the conditioning of the rounded inputs (which
-/// `routes::choose` accounts for separately).
-fn rounded<T: Real>(inputs: &Inputs, p: T::Prec) -> crate::Result<Inputs> {
-    let r = |q: &Rational| {
-        let t = T::from_float(&Float::with_val(T::bits(p) + 64, q), p);
-        t.to_float(T::bits(p) + 64)
-            .to_rational()
-            .unwrap_or_default()
+/// I1, I2 at 512 bits by the fixed rule, for inputs held exactly (the inputs as rounded to the
+/// precision under study, [`ExactInputs::rounded`]: the study measures the routes' own error,
+/// not the conditioning of the rounded inputs, which `routes::choose` accounts for).
+fn reference(inputs: &ExactInputs) -> moving_hertz::Result<(Float, Float)> {
+    let (sp, k) = inputs.at::<Mp>(MpPrec::clamped(512))?;
+    let opts = IntegralOptions {
+        method: Method::Fixed,
+        ..Default::default()
     };
-    Inputs::new(r(&inputs.nu), r(&inputs.mr), r(&inputs.k))
-}
-
-fn reference(inputs: &Inputs) -> crate::Result<(Float, Float)> {
-    let r = run_at::<Mp>(inputs, MpPrec::clamped(512), Method::Subtracted, 0.0)?;
-    Ok((r.i1.to_float(600), r.i2.to_float(600)))
+    let r = integrals(&sp, &k, &opts)?;
+    Ok((r.i1.value.to_float(600), r.i2.value.to_float(600)))
 }
 
 fn measure<T: Real>(
-    exact: &Inputs,
+    exact: &ExactInputs,
     p: T::Prec,
     label: Precision,
     method: Route,
     budget_ms: f64,
 ) -> Row {
-    let Ok(inputs) = rounded::<T>(exact, p) else {
+    let Ok(inputs) = exact.rounded::<T>(p) else {
         return failed(exact, method, label, "inputs not representable".into());
     };
     let reference = match reference(&inputs) {
         Ok(r) => r,
         Err(e) => return failed(exact, method, label, e.to_string()),
     };
-    let prepared = match inputs.at::<T>(p) {
+    let prepared = match inputs
+        .at::<T>(p)
+        .and_then(|(s, k)| Ok((s, AxisRatio::new(k)?)))
+    {
         Ok(x) => x,
         Err(e) => return failed(exact, method, label, e.to_string()),
     };
     let reference = &reference;
-    let mr = format!("{}", exact.mr.to_f64());
-    match method.run::<T>(&prepared) {
+    let mr = format!("{}", exact.mr().to_f64());
+    match run_route::<T>(method, &prepared) {
         Ok(r) => {
             let bits = 600;
             let err = |got: &T, want: &Float| {
@@ -129,7 +101,9 @@ fn measure<T: Real>(
                 d.abs().to_f64()
             };
             let error = err(&r.i1, &reference.0).max(err(&r.i2, &reference.1));
-            let time_ns = median_ns(budget_ms, || method.run::<T>(&prepared).map(|r| r.work));
+            let time_ns = median_ns(budget_ms, || {
+                run_route::<T>(method, &prepared).map(|r| r.work)
+            });
             Row {
                 mr,
                 method,
@@ -145,9 +119,9 @@ fn measure<T: Real>(
     }
 }
 
-fn failed(exact: &Inputs, method: Route, precision: Precision, why: String) -> Row {
+fn failed(exact: &ExactInputs, method: Route, precision: Precision, why: String) -> Row {
     Row {
-        mr: format!("{}", exact.mr.to_f64()),
+        mr: format!("{}", exact.mr().to_f64()),
         method,
         precision,
         error: f64::NAN,
@@ -166,11 +140,11 @@ pub fn run(
     k: &str,
     budget_ms: f64,
     mut progress: impl FnMut(&str),
-) -> crate::Result<Vec<Row>> {
+) -> moving_hertz::Result<Vec<Row>> {
     let mut rows = Vec::new();
     for mr in SPEEDS {
         progress(mr);
-        let inputs = Inputs::parse(nu, mr, k)?;
+        let inputs = ExactInputs::parse(nu, mr, k)?;
         for method in METHODS {
             rows.push(measure::<f64>(
                 &inputs,

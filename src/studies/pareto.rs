@@ -5,10 +5,9 @@
 
 use super::median_ns;
 use super::svg::{Chart, Series, Style};
-use crate::contact::ellipse::{solve_ellipse_with, EllipseMethod};
-use crate::contact::solve_ellipse_ladder;
-use crate::physics::Material;
-use crate::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use moving_hertz::physics::Material;
+use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use moving_hertz::{solve_ellipse, Method, Options};
 use rug::Float;
 
 /// One measurement.
@@ -17,7 +16,7 @@ pub struct Row {
     /// M_R.
     pub mr: f64,
     /// The method.
-    pub method: EllipseMethod,
+    pub method: Method,
     /// The precision.
     pub precision: Precision,
     /// Relative error of k against the 1536-bit reference (NaN on failure).
@@ -41,7 +40,7 @@ fn measure<T: Real>(
     ratio: f64,
     p: T::Prec,
     label: Precision,
-    method: EllipseMethod,
+    method: Method,
     reference: &Float,
     budget_ms: f64,
 ) -> Row {
@@ -61,19 +60,23 @@ fn measure<T: Real>(
         return fail("speed".into());
     };
     let r = T::from_f64(ratio, p);
-    match solve_ellipse_with(&mat, &sp, &r, method) {
+    let opts = Options {
+        method,
+        ..Default::default()
+    };
+    match solve_ellipse(&sp, &r, &opts) {
         Ok(s) => {
             let bits = 1600;
-            let err = Float::with_val(bits, &s.k.to_float(bits) - reference) / reference;
+            let err = Float::with_val(bits, &s.k.value.to_float(bits) - reference) / reference;
             let time_ns = median_ns(budget_ms, || {
-                solve_ellipse_with(&mat, &sp, &r, method).map(|s| s.iterations)
+                solve_ellipse(&sp, &r, &opts).map(|s| s.iterations)
             });
             Row {
                 mr,
                 method,
                 precision: label,
                 error: err.abs().to_f64(),
-                estimate: s.error_estimate.to_f64(),
+                estimate: s.k.error.to_f64(),
                 time_ns,
                 failure: None,
             }
@@ -84,10 +87,10 @@ fn measure<T: Real>(
 
 /// Runs the study at ν = 0.2, A1/B1 = 0.5 (exact binary inputs) for every method in `methods`.
 pub fn run(
-    methods: &[EllipseMethod],
+    methods: &[Method],
     budget_ms: f64,
     mut progress: impl FnMut(&str),
-) -> crate::Result<Vec<Row>> {
+) -> moving_hertz::Result<Vec<Row>> {
     let (nu, ratio) = (0.2, 0.5);
     let mut rows = Vec::new();
     for mr in SPEEDS {
@@ -95,8 +98,9 @@ pub fn run(
         let pr = MpPrec::clamped(1536);
         let mat = Material::new(Mp::from_f64(nu, pr))?;
         let sp = mat.speed(Mp::from_f64(mr, pr))?;
-        let reference = solve_ellipse_ladder(&mat, &sp, &Mp::from_f64(ratio, pr))?
+        let reference = solve_ellipse(&sp, &Mp::from_f64(ratio, pr), &Options::default())?
             .k
+            .value
             .to_float(1600);
         for &m in methods {
             rows.push(measure::<f64>(
@@ -139,7 +143,7 @@ pub fn run(
 
 /// Pareto charts (error against time, one line per method through its precisions, one chart per
 /// speed) and the cost of precision (time per solve against bits, one line per speed).
-pub fn charts(rows: &[Row], methods: &[EllipseMethod]) -> Vec<(String, String)> {
+pub fn charts(rows: &[Row], methods: &[Method]) -> Vec<(String, String)> {
     let mut out = Vec::new();
     for (i, mr) in SPEEDS.iter().enumerate() {
         let mut c = Chart::new(

@@ -6,8 +6,8 @@
 //! m2 and m3 (the worse of the two is reported).
 
 use super::svg::{Chart, Series, Style};
-use crate::physics::{ClosedForm, RayleighRoots};
-use crate::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use moving_hertz::physics::{ClosedForm, RayleighRoots};
+use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
 use rug::Float;
 
 /// One measurement.

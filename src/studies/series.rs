@@ -14,13 +14,13 @@
 
 use super::median_ns;
 use super::svg::{Chart, Heatmap, Series, Style};
-use crate::error::Result;
-use crate::numerics::elliptic::ellipke_mc;
-use crate::physics::Material;
-use crate::routes::moments::{ke_condition_bits, moments_with, KeForm, MomentMethod};
-use crate::routes::series::{integrals, terms_estimate, SeriesOptions};
-use crate::routes::AxisRatio;
-use crate::scalar::{Field, Mp, MpPrec, Precision, Real};
+use moving_hertz::error::Result;
+use moving_hertz::numerics::elliptic::ellipke_mc;
+use moving_hertz::physics::Material;
+use moving_hertz::routes::moments::{ke_condition_bits, moments_with, KeForm, MomentMethod};
+use moving_hertz::routes::series::{integrals, terms_estimate, SeriesOptions};
+use moving_hertz::routes::AxisRatio;
+use moving_hertz::scalar::{Field, Mp, MpPrec, Precision, Real};
 use rug::Float;
 
 // ---------------------------------------------------------------------------------------------
@@ -83,7 +83,7 @@ fn reference(mr: f64) -> Result<(Float, Float)> {
         rel_tol: Some(Mp::parse("1e-100", p)?),
         max_terms: 300_000,
     };
-    let r = integrals(&mat, &speed, &axis, &opts)?;
+    let r = integrals(&speed, &axis, &opts)?;
     Ok((r.i1.to_float(420), r.i2.to_float(420)))
 }
 
@@ -105,7 +105,7 @@ fn terms_at<T: Real>(
     let axis = AxisRatio::new(T::from_f64(TERMS_K, p))?;
     let opts = SeriesOptions {
         rel_tol: Some(T::parse(&format!("{target:e}"), p)?),
-        max_terms: crate::routes::series::DEFAULT_MAX_TERMS,
+        max_terms: moving_hertz::routes::series::DEFAULT_MAX_TERMS,
     };
     let estimate = terms_estimate(mr * mr, target);
     let mut row = TermsRow {
@@ -118,14 +118,14 @@ fn terms_at<T: Real>(
         error: f64::NAN,
         error_estimate: f64::NAN,
     };
-    match integrals(&mat, &speed, &axis, &opts) {
+    match integrals(&speed, &axis, &opts) {
         Ok(r) => {
             row.terms = r.work;
             row.error = rel_err(&r.i1, &refs.0).max(rel_err(&r.i2, &refs.1));
             row.error_estimate = r.error_estimate.to_f64();
-            row.time_ns = median_ns(budget_ms, || integrals(&mat, &speed, &axis, &opts));
+            row.time_ns = median_ns(budget_ms, || integrals(&speed, &axis, &opts));
         }
-        Err(crate::Error::TermCap { .. }) => {}
+        Err(moving_hertz::Error::TermCap { .. }) => {}
         Err(e) => return Err(e),
     }
     Ok(row)
@@ -138,7 +138,7 @@ pub fn terms_study(speeds: &[f64], budget_ms: f64) -> Result<Vec<TermsRow>> {
     for &mr in speeds {
         let refs = reference(mr)?;
         for (target, prec) in targets() {
-            let row = crate::with_precision!(prec, T, p => terms_at::<T>(p, prec, target, mr, &refs, budget_ms))?;
+            let row = moving_hertz::with_precision!(prec, T, p => terms_at::<T>(p, prec, target, mr, &refs, budget_ms))?;
             out.push(row);
         }
     }
@@ -389,7 +389,7 @@ pub fn forward_study() -> Result<(Vec<ForwardPoint>, Vec<Growth>)> {
         let refs = exact_form_reference(mc, n_max, bits)?;
         let ns = sample(n_max);
         for prec in recursion_precisions() {
-            let g = crate::with_precision!(prec, T, p => forward_at::<T>(p, prec, mc, &refs, &ns, &mut points))?;
+            let g = moving_hertz::with_precision!(prec, T, p => forward_at::<T>(p, prec, mc, &refs, &ns, &mut points))?;
             growth.push(g);
         }
     }

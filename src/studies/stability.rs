@@ -10,13 +10,12 @@
 //!   would write first) against the crate's graded quadrature.
 
 use super::svg::Heatmap;
-use crate::numerics::quadrature::GaussLegendre;
-use crate::physics::GreenFunction;
-use crate::routes::choose::{run_at, Inputs};
-use crate::routes::moments::{moments, moments_with, MomentMethod};
-use crate::routes::Method;
-use crate::scalar::{Dd, Mp, MpPrec, Precision, Real};
-use rug::{Float, Rational};
+use moving_hertz::numerics::quadrature::GaussLegendre;
+use moving_hertz::physics::GreenFunction;
+use moving_hertz::routes::moments::{moments, moments_with, MomentMethod};
+use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use moving_hertz::{integrals, ExactInputs, IntegralOptions, Integrals, Method};
+use rug::Float;
 
 /// A map: digits on a grid, for one method and precision.
 #[derive(Clone, Debug)]
@@ -110,13 +109,18 @@ fn dyadic(x: f64) -> f64 {
     (x * q).round() / q
 }
 
-fn inputs(nu: f64, mr: f64, k: f64) -> Option<Inputs> {
-    Inputs::new(
-        Rational::from_f64(nu)?,
-        Rational::from_f64(mr)?,
-        Rational::from_f64(k)?,
-    )
-    .ok()
+fn inputs(nu: f64, mr: f64, k: f64) -> Option<ExactInputs> {
+    ExactInputs::from_f64(nu, mr, k).ok()
+}
+
+/// I1, I2 by `method` at precision `p` and its floor.
+fn run_at<T: Real>(inputs: &ExactInputs, p: T::Prec, method: Method) -> Option<Integrals<T>> {
+    let (sp, k) = inputs.at::<T>(p).ok()?;
+    let opts = IntegralOptions {
+        method,
+        ..Default::default()
+    };
+    integrals(&sp, &k, &opts).ok()
 }
 
 /// The 256-bit reference (I1, I2) for exact binary inputs, cached per thread.
@@ -130,14 +134,8 @@ fn reference(nu: f64, mr: f64, k: f64) -> Option<(Float, Float)> {
     if let Some(v) = CACHE.with(|c| c.borrow().get(&key).cloned()) {
         return Some(v);
     }
-    let r = run_at::<Mp>(
-        &inputs(nu, mr, k)?,
-        MpPrec::clamped(256),
-        Method::Quadrature,
-        0.0,
-    )
-    .ok()?;
-    let v = (r.i1.to_float(320), r.i2.to_float(320));
+    let r = run_at::<Mp>(&inputs(nu, mr, k)?, MpPrec::clamped(256), Method::Adaptive)?;
+    let v = (r.i1.value.to_float(320), r.i2.value.to_float(320));
     CACHE.with(|c| c.borrow_mut().insert(key, v.clone()));
     Some(v)
 }
@@ -147,11 +145,10 @@ fn integral_error<T: Real>(p: T::Prec, nu: f64, mr: f64, k: f64, method: Method)
     let (Some(inputs), Some((r1, r2))) = (inputs(nu, mr, k), reference(nu, mr, k)) else {
         return f64::NAN;
     };
-    let got = match run_at::<T>(&inputs, p, method, 0.0) {
-        Ok(g) => g,
-        Err(_) => return f64::NAN,
+    let Some(got) = run_at::<T>(&inputs, p, method) else {
+        return f64::NAN;
     };
-    rel(&got.i1, &r1).max(rel(&got.i2, &r2))
+    rel(&got.i1.value, &r1).max(rel(&got.i2.value, &r2))
 }
 
 fn rel<T: Real>(got: &T, want: &Float) -> f64 {
@@ -165,20 +162,21 @@ fn naive_error<T: Real>(p: T::Prec, nu: f64, mr: f64, k: f64) -> f64 {
     let (Some(inputs), Some((r1, r2))) = (inputs(nu, mr, k), reference(nu, mr, k)) else {
         return f64::NAN;
     };
-    let Ok((mat, sp, ax)) = inputs.at::<T>(p) else {
+    let Ok((sp, k)) = inputs.at::<T>(p) else {
         return f64::NAN;
     };
+    let k2 = k.square();
     let Ok(rule) = GaussLegendre::<T>::get(64, p) else {
         return f64::NAN;
     };
-    let g = GreenFunction::new(&mat);
+    let g = GreenFunction::new(sp.material());
     let two_pi = T::pi(p).mul_pow2(1);
     let integrand = |a: &T, pick_cos: bool| {
         let (s, c) = a.clone().sin_cos();
         let (s2, c2) = (s.square(), c.square());
-        let t = sp.mr2.clone() * &c2;
-        let omt = sp.one_minus_mr2.clone() + sp.mr2.clone() * &s2;
-        let d2 = c2.clone() + ax.k2.clone() * &s2;
+        let t = sp.mr2().clone() * &c2;
+        let omt = sp.one_minus_mr2().clone() + sp.mr2().clone() * &s2;
+        let d2 = c2.clone() + k2.clone() * &s2;
         let w = if pick_cos { c2 } else { s2 };
         two_pi.clone() * g.g_regular(&t) * w / (omt * d2.clone() * d2.sqrt())
     };
@@ -306,14 +304,14 @@ pub fn run(mut tick: impl FnMut()) -> Vec<DigitMap> {
         Precision::F64,
         "quadrature",
         "Graded quadrature (crate)",
-        |mr, k| integral_error::<f64>((), nu, mr, k, Method::Quadrature),
+        |mr, k| integral_error::<f64>((), nu, mr, k, Method::Adaptive),
         &mut tick,
     ));
     out.push(integral_map(
         Precision::DoubleDouble,
         "quadrature",
         "Graded quadrature (crate)",
-        |mr, k| integral_error::<Dd>((), nu, mr, k, Method::Quadrature),
+        |mr, k| integral_error::<Dd>((), nu, mr, k, Method::Adaptive),
         &mut tick,
     ));
     out.push(recursion_map::<f64>((), Precision::F64, &mut tick));

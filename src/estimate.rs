@@ -1,0 +1,364 @@
+//! Relative error bounds that neither underflow nor overflow at any precision, and values that
+//! carry one.
+//!
+//! Every result of the crate comes with an estimate of its relative error: a bound on
+//! |x̃ − x|/|x|, x the exact value for the inputs as given (or as represented at the working
+//! precision, where a page says so) and x̃ the value returned. At 4096 bits such a bound is
+//! about 2⁻⁴⁰⁹⁰ ≈ 10⁻¹²³², far below the smallest `f64`; [`RelError`] holds it as an `f64`
+//! mantissa and an `i64` binary exponent, so that it survives at every MPFR precision and prints
+//! as a decimal string (`3.1e-1232`). The same type carries a requested tolerance, which can then
+//! be as small as 10⁻¹⁰⁰⁰⁰ or 10⁻¹⁰⁰⁰⁰⁰⁰.
+//!
+//! Arithmetic on bounds ([`RelError::add`], [`RelError::mul`], …) rounds upwards (each result is
+//! enlarged by 2⁻⁵⁰ relative), so a sum of bounds stays a bound.
+
+use crate::error::{Error, Result};
+use crate::scalar::{decimal_to_rational, Real};
+use std::cmp::Ordering;
+use std::fmt;
+
+/// A non-negative relative error bound m·2^e (m ∈ [1/2, 1), or 0, or +∞ for "unbounded").
+///
+/// `Copy`, ordered, and exact in its exponent: 2⁻¹⁰⁰⁰⁰⁰⁰ is as representable as 2⁻⁵². Built from a
+/// value of any precision ([`RelError::of`]), from ε ([`RelError::eps`]), from decimal text
+/// ([`RelError::parse`], e.g. a tolerance `1e-10000`) or from an `f64`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RelError {
+    /// Mantissa in [1/2, 1), or 0, or +∞.
+    m: f64,
+    /// Binary exponent (0 when m is 0 or +∞).
+    e: i64,
+}
+
+/// Enlarges a bound by 2⁻⁵⁰ relative: every operation on bounds rounds upwards.
+const UP: f64 = 1.0 + 1.0 / (1u64 << 50) as f64;
+
+impl RelError {
+    /// No error (an exact result).
+    pub const ZERO: RelError = RelError { m: 0.0, e: 0 };
+    /// An unbounded error: never part of a successful result (the boundary of every public
+    /// function turns it into an [`Error`]).
+    pub const INFINITE: RelError = RelError {
+        m: f64::INFINITY,
+        e: 0,
+    };
+
+    /// m·2^e normalised (m ≥ 0 finite).
+    fn normal(m: f64, e: i64) -> RelError {
+        if m == 0.0 {
+            return RelError::ZERO;
+        }
+        if !m.is_finite() {
+            return RelError::INFINITE;
+        }
+        let (f, x) = frexp(m);
+        RelError { m: f, e: e + x }
+    }
+
+    /// The bound |x| for an `f64` (NaN and ±∞ give [`RelError::INFINITE`]).
+    pub fn from_f64(x: f64) -> RelError {
+        if x.is_nan() {
+            return RelError::INFINITE;
+        }
+        RelError::normal(x.abs(), 0)
+    }
+
+    /// The bound |x| for a value of any precision, without underflow (NaN and ±∞ give
+    /// [`RelError::INFINITE`]).
+    pub fn of<T: Real>(x: &T) -> RelError {
+        let f = x.to_f64();
+        if f.is_normal() {
+            return RelError::from_f64(f);
+        }
+        if x.is_zero() {
+            return RelError::ZERO;
+        }
+        if !x.is_finite() {
+            return RelError::INFINITE;
+        }
+        // Beyond the f64 exponent range (MPFR): read mantissa and exponent from the value.
+        let (m, e) = x.to_float(64).to_f64_exp();
+        RelError::normal(m.abs(), e as i64)
+    }
+
+    /// n·ε of the precision `p` (ε = 2^(1 − bits)).
+    pub fn eps<T: Real>(n: u32, p: T::Prec) -> RelError {
+        RelError::normal(n as f64, 1 - T::bits(p) as i64)
+    }
+
+    /// 2^e.
+    pub fn pow2(e: i64) -> RelError {
+        RelError { m: 0.5, e: e + 1 }
+    }
+
+    /// Parses a positive decimal bound such as `1e-10000` or `0.001` exactly (rounded upwards
+    /// to the representation); [`Error::Parse`] for text that is not a number, [`Error::Domain`]
+    /// for a value ≤ 0.
+    pub fn parse(text: &str) -> Result<RelError> {
+        let r = decimal_to_rational(text)?;
+        if r <= 0 {
+            return Err(Error::Domain {
+                name: "relative tolerance",
+                value: text.trim().to_string(),
+                bound: "(0, inf)",
+            });
+        }
+        let f = rug::Float::with_val_round(64, &r, rug::float::Round::Up).0;
+        let (m, e) = f.to_f64_exp();
+        Ok(RelError::normal(m * UP, e as i64))
+    }
+
+    /// True unless unbounded.
+    pub fn is_finite(&self) -> bool {
+        self.m.is_finite()
+    }
+
+    /// True for the zero bound.
+    pub fn is_zero(&self) -> bool {
+        self.m == 0.0
+    }
+
+    /// The bound of a sum of two errors.
+    #[allow(clippy::should_implement_trait)]
+    pub fn add(self, o: RelError) -> RelError {
+        if self.is_zero() {
+            return o;
+        }
+        if o.is_zero() {
+            return self;
+        }
+        if !self.is_finite() || !o.is_finite() {
+            return RelError::INFINITE;
+        }
+        let (big, small) = if self >= o { (self, o) } else { (o, self) };
+        let shift = (big.e - small.e).min(2000) as i32;
+        RelError::normal((big.m + small.m * 2f64.powi(-shift)) * UP, big.e)
+    }
+
+    /// The bound of a product of two relative factors (1 + a)(1 + b) − 1 ≤ a + b + ab: use
+    /// [`RelError::add`] for compounding; this is the plain product a·b (a bound scaled by a
+    /// condition number, say).
+    #[allow(clippy::should_implement_trait)]
+    pub fn mul(self, o: RelError) -> RelError {
+        if self.is_zero() || o.is_zero() {
+            return RelError::ZERO;
+        }
+        if !self.is_finite() || !o.is_finite() {
+            return RelError::INFINITE;
+        }
+        RelError::normal(self.m * o.m * UP, self.e + o.e)
+    }
+
+    /// The bound times a non-negative factor (NaN or ∞ give [`RelError::INFINITE`]).
+    pub fn scale(self, f: f64) -> RelError {
+        self.mul(RelError::from_f64(f))
+    }
+
+    /// The larger of two bounds.
+    pub fn max(self, o: RelError) -> RelError {
+        if o > self {
+            o
+        } else {
+            self
+        }
+    }
+
+    /// The smaller of two bounds.
+    pub fn min(self, o: RelError) -> RelError {
+        if o < self {
+            o
+        } else {
+            self
+        }
+    }
+
+    /// The square root of the bound (rounded upwards).
+    pub fn sqrt(self) -> RelError {
+        if self.is_zero() || !self.is_finite() {
+            return self;
+        }
+        // m·2^e with e even: √m·2^(e/2).
+        let (m, e) = if self.e % 2 == 0 {
+            (self.m, self.e)
+        } else {
+            (self.m * 2.0, self.e - 1)
+        };
+        RelError::normal(m.sqrt() * UP, e / 2)
+    }
+
+    /// log₂ of the bound (−∞ for zero, +∞ when unbounded).
+    pub fn log2(&self) -> f64 {
+        if self.is_zero() {
+            f64::NEG_INFINITY
+        } else if !self.is_finite() {
+            f64::INFINITY
+        } else {
+            self.e as f64 + self.m.log2()
+        }
+    }
+
+    /// The bound as an `f64`: 0 below the `f64` range, ∞ above it (for charts and quick
+    /// comparisons; [`fmt::Display`] prints every bound faithfully).
+    pub fn to_f64(&self) -> f64 {
+        if !self.is_finite() {
+            return f64::INFINITY;
+        }
+        let e = self.e.clamp(-2000, 2000) as i32;
+        // Two steps so that neither factor overflows or underflows prematurely.
+        self.m * 2f64.powi(e / 2) * 2f64.powi(e - e / 2)
+    }
+
+    /// The bound at the precision `p` (rounded upwards in the last place; 0 if it underflows
+    /// the type, as it may at `f64`).
+    pub fn to_real<T: Real>(&self, p: T::Prec) -> T {
+        if !self.is_finite() {
+            return T::from_f64(f64::INFINITY, p);
+        }
+        let e = self.e.clamp(i32::MIN as i64 / 2, i32::MAX as i64 / 2) as i32;
+        T::from_f64(self.m * UP, p).mul_pow2(e)
+    }
+}
+
+impl PartialOrd for RelError {
+    fn partial_cmp(&self, o: &RelError) -> Option<Ordering> {
+        let rank = |x: &RelError| match (x.is_zero(), x.is_finite()) {
+            (true, _) => 0,
+            (_, false) => 2,
+            _ => 1,
+        };
+        match rank(self).cmp(&rank(o)) {
+            Ordering::Equal if rank(self) == 1 => {
+                Some(self.e.cmp(&o.e).then(self.m.total_cmp(&o.m)))
+            }
+            ord => Some(ord),
+        }
+    }
+}
+
+impl fmt::Display for RelError {
+    /// Three significant digits, rounded upwards, with an exponent of any size: `2.3e-1232`
+    /// (`0` for an exact result, `inf` when unbounded). `{:.N}` asks for N + 1 digits.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.is_zero() {
+            return f.write_str("0");
+        }
+        if !self.is_finite() {
+            return f.write_str("inf");
+        }
+        let digits = f.precision().unwrap_or(2).min(12) as i32;
+        let l10 = self.log2() * std::f64::consts::LOG10_2;
+        let mut exp10 = l10.floor();
+        let scale = 10f64.powi(digits);
+        // The mantissa rounded upwards to `digits` decimals (a bound stays a bound), after
+        // forgiving the ~10⁻¹¹ relative error of log₁₀ at exponents of 10⁶ (so that a parsed
+        // `1e-10000` prints as itself).
+        let mut mant = (10f64.powf(l10 - exp10) * scale * (1.0 - 1e-9)).ceil() / scale;
+        if mant >= 10.0 {
+            mant /= 10.0;
+            exp10 += 1.0;
+        }
+        write!(f, "{mant:.prec$}e{}", exp10 as i64, prec = digits as usize)
+    }
+}
+
+/// A value with a bound on its relative error.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Estimated<T> {
+    /// The value at the working precision.
+    pub value: T,
+    /// A bound on its relative error |value − exact|/|exact| (see the module docs).
+    pub error: RelError,
+}
+
+impl<T: Real> Estimated<T> {
+    /// A value and its bound.
+    pub fn new(value: T, error: RelError) -> Self {
+        Estimated { value, error }
+    }
+
+    /// The value as a decimal with every digit of the working precision.
+    pub fn to_decimal(&self) -> String {
+        self.value.to_decimal()
+    }
+
+    /// [`Error::NotFinite`] naming `what` unless the value and its bound are finite: the check
+    /// every public function makes before returning a result.
+    pub fn checked(self, what: &'static str) -> Result<Self> {
+        if !self.value.is_finite() {
+            return Err(Error::NotFinite {
+                name: what,
+                value: crate::scalar::short(&self.value),
+            });
+        }
+        if !self.error.is_finite() {
+            return Err(Error::NoConvergence {
+                what,
+                iterations: 0,
+                reached: "an unbounded error estimate".into(),
+            });
+        }
+        Ok(self)
+    }
+}
+
+impl<T: Real> fmt::Display for Estimated<T> {
+    /// `value (relative error ≤ bound)`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} (relative error <= {})",
+            self.value.to_decimal(),
+            self.error
+        )
+    }
+}
+
+/// (m, e) with x = m·2^e, m ∈ [1/2, 1), for a finite positive `f64` (subnormals included).
+fn frexp(x: f64) -> (f64, i64) {
+    let bits = x.to_bits();
+    let exp = ((bits >> 52) & 0x7ff) as i64;
+    if exp == 0 {
+        // Subnormal: scale into the normal range first.
+        let (m, e) = frexp(x * 2f64.powi(64));
+        return (m, e - 64);
+    }
+    let m = f64::from_bits((bits & !(0x7ffu64 << 52)) | (1022u64 << 52));
+    (m, exp - 1022)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::{Field, Mp, MpPrec};
+
+    #[test]
+    fn round_trips_and_order() {
+        for x in [1.0, 0.75, 3e-300, 5e-324, 1.7e308, 2f64.powi(-52)] {
+            let r = RelError::from_f64(x);
+            assert_eq!(r.to_f64(), x, "{x}");
+        }
+        let a = RelError::from_f64(1e-20);
+        let b = RelError::parse("1e-10000").unwrap();
+        assert!(b < a && a < RelError::INFINITE && RelError::ZERO < b);
+        assert!((b.log2() - (-10000.0 / std::f64::consts::LOG10_2)).abs() < 1e-6);
+        assert_eq!(format!("{b}"), "1.00e-10000");
+        assert_eq!(format!("{}", RelError::from_f64(2.345e-7)), "2.35e-7");
+        assert_eq!(format!("{}", RelError::from_f64(9.9999e-7)), "1.00e-6");
+    }
+
+    #[test]
+    fn below_the_f64_range() {
+        let p = MpPrec::new(8192).unwrap();
+        let eps = <Mp as Real>::epsilon(p);
+        let r = RelError::of(&eps);
+        assert_eq!(r, RelError::eps::<Mp>(1, p));
+        assert!((r.log2() + 8191.0).abs() < 1e-12);
+        assert!(r.to_f64() == 0.0 && r.is_finite() && !r.is_zero());
+        let back: Mp = r.to_real(p);
+        assert!(back >= eps && back <= eps.clone().mul_i64(2));
+        // Sums round upwards and keep the larger exponent.
+        let s = r.add(r);
+        assert!(s > r && (s.log2() + 8190.0).abs() < 1e-9);
+        assert_eq!(format!("{r}"), format!("{}", r));
+    }
+}

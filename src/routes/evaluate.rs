@@ -1,0 +1,318 @@
+//! The one evaluator of I1, I2 (and, on request, their k-derivatives and J0) at the working
+//! precision: [`integrals`] for one k, [`Evaluator`] for many k at one speed (the fixed rules'
+//! k-independent set-up kept between calls).
+//!
+//! **Which route runs.** [`Method::Auto`] takes, at k ≤ 1, the fixed rule ([`Route::FixedRule`],
+//! a-priori bound 16ε) and at k > 1 the graded rule ([`Route::GradedRule`], 32ε), when the
+//! tolerance allows their bound and k lies in 2⁻⁴⁰ … 2⁴⁰; otherwise the adaptive quadratures
+//! (the subtracted form (48) at k ≤ 1 when neither derivatives nor J0 are asked for). J0 only
+//! comes from [`Route::Adaptive`] (one evaluation of G serves all five integrals). A named
+//! method runs that route, and a request it cannot serve is refused before any work: the series
+//! and the adaptive subtracted route give no derivatives or J0, the subtracted one and the
+//! fixed rules have a range of k, and no route goes below 16ε of the working precision.
+
+use super::fast::{self, FastSetup};
+use super::graded::{self, GradedSetup};
+use super::series::{self, SeriesOptions};
+use super::{direct, AxisRatio, Evaluation, Integrals, Method, Route};
+use crate::error::{Error, Result};
+use crate::estimate::RelError;
+use crate::physics::Speed;
+use crate::scalar::{short, Precision, Real};
+use std::cell::{OnceCell, RefCell};
+
+/// Options of [`integrals`] and [`Evaluator`]; every field has a default.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct IntegralOptions {
+    /// The route ([`Method::Auto`] by default).
+    pub method: Method,
+    /// The relative accuracy wanted for I1 and I2; `None` (the default) asks for the working
+    /// precision's floor. Below 16ε of the working precision: [`Error::Unreachable`] before any
+    /// work (a higher precision reaches it: [`crate::integrals_to_tolerance`] picks one).
+    pub tolerance: Option<RelError>,
+    /// Also ∂I1/∂k and ∂I2/∂k (differentiated under the integral sign on the same nodes).
+    pub derivatives: bool,
+    /// Also J0 of (32) (the approach integral).
+    pub j0: bool,
+}
+
+/// The smallest tolerance any route meets, in units of ε of the working precision.
+pub const FLOOR_EPS: u32 = 16;
+
+/// Evaluates I1, I2 at many axis ratios for one speed: the fixed rules' k-independent part
+/// (G at every node) is built on first use and kept, so that a further k costs a square root and
+/// a division a node.
+///
+/// ```
+/// use moving_hertz::{Evaluator, IntegralOptions, Material};
+/// let speed = Material::new(0.25)?.speed(0.5)?;
+/// let ev = Evaluator::new(&speed, IntegralOptions::default())?;
+/// for k in [0.25, 0.5, 1.0, 2.0] {
+///     let r = ev.at(&k)?;
+///     assert!(r.i1.error.to_f64() < 1e-14);
+/// }
+/// # Ok::<(), moving_hertz::Error>(())
+/// ```
+pub struct Evaluator<'a, T: Real + 'static> {
+    speed: &'a Speed<T>,
+    opts: IntegralOptions,
+    /// The tolerance at the working precision (`None`: its floor).
+    tol: Option<T>,
+    fast: OnceCell<Result<FastSetup<T>>>,
+    graded: RefCell<Option<GradedSetup<T>>>,
+}
+
+/// I1, I2 of (34) (normalisation of (37)) at the axis ratio `k` = b/a for the speed (and
+/// material) `speed`, by the route of `opts` (module docs).
+///
+/// Accuracy: relative error of each returned quantity below its bound (fixed rules: 16ε, 32ε,
+/// derivatives 128ε, 32ε; adaptive routes: their estimate, a few ε; series: its tail bound),
+/// and within `opts.tolerance` when one is given.
+///
+/// ```
+/// use moving_hertz::{integrals, IntegralOptions, Material, Method, Route};
+/// let speed = Material::new(0.25)?.parse_speed("0.999")?;
+/// let opts = IntegralOptions { method: Method::Adaptive, j0: true, ..Default::default() };
+/// let r = integrals(&speed, &0.5, &opts)?;
+/// assert_eq!(r.route, Route::Adaptive);
+/// assert!(r.j0.is_some() && r.i2.value > r.i1.value);
+/// # Ok::<(), moving_hertz::Error>(())
+/// ```
+pub fn integrals<T: Real>(speed: &Speed<T>, k: &T, opts: &IntegralOptions) -> Result<Integrals<T>> {
+    Evaluator::new(speed, *opts)?.at(k)
+}
+
+impl<'a, T: Real> Evaluator<'a, T> {
+    /// The evaluator for `speed` with `opts`; [`Error::Unreachable`] for a tolerance below
+    /// [`FLOOR_EPS`]·ε, [`Error::Domain`] for a method that cannot give what `opts` asks for.
+    pub fn new(speed: &'a Speed<T>, opts: IntegralOptions) -> Result<Self> {
+        let p = speed.mr().prec();
+        check_method(&opts)?;
+        let tol = match opts.tolerance {
+            Some(t) => {
+                let floor = RelError::eps::<T>(FLOOR_EPS, p);
+                if t < floor {
+                    return Err(Error::Unreachable {
+                        what: "I1, I2",
+                        tolerance: t.to_string(),
+                        reason: format!(
+                            "below {FLOOR_EPS} eps = {floor} at {}; a higher precision reaches it",
+                            Precision::of::<T>(p)
+                        ),
+                    });
+                }
+                Some(t.to_real::<T>(p))
+            }
+            None => None,
+        };
+        Ok(Evaluator {
+            speed,
+            opts,
+            tol,
+            fast: OnceCell::new(),
+            graded: RefCell::new(None),
+        })
+    }
+
+    /// I1, I2 (and what the options ask for) at the axis ratio `k` = b/a > 0.
+    pub fn at(&self, k: &T) -> Result<Integrals<T>> {
+        let axes = AxisRatio::new(k.clone())?;
+        let route = self.route_for(&axes)?;
+        let r = self.run(route, &axes)?;
+        self.check_tolerance(&r)?;
+        r.publish()
+    }
+
+    /// The route for `axes`, checked against the method's domain before any work.
+    fn route_for(&self, axes: &AxisRatio<T>) -> Result<Route> {
+        let p = axes.k.prec();
+        let one = T::one(p);
+        let below = axes.k <= one;
+        let fixed_range = in_fixed_range(&axes.k);
+        let (dk, j0) = (self.opts.derivatives, self.opts.j0);
+        let bound_ok = |eps: i64| {
+            self.tol
+                .as_ref()
+                .is_none_or(|t| T::epsilon(p).mul_i64(eps) <= *t)
+        };
+        Ok(match self.opts.method {
+            Method::Auto if !j0 && fixed_range && below && bound_ok(fast::BOUND_EPS) => {
+                Route::FixedRule
+            }
+            Method::Auto if !j0 && fixed_range && !below && bound_ok(graded::BOUND_EPS) => {
+                Route::GradedRule
+            }
+            Method::Auto if below && !dk && !j0 => Route::AdaptiveSubtracted,
+            Method::Auto | Method::Adaptive => Route::Adaptive,
+            Method::Series => Route::Series,
+            Method::AdaptiveSubtracted if below => Route::AdaptiveSubtracted,
+            Method::AdaptiveSubtracted => {
+                return Err(domain(axes, "(0, 1] for adaptive-subtracted"))
+            }
+            Method::Fixed if !fixed_range => return Err(domain(axes, "[2^-40, 2^40] for fixed")),
+            Method::Fixed => {
+                let (r, bound) = if below {
+                    (Route::FixedRule, fast::BOUND_EPS)
+                } else {
+                    (Route::GradedRule, graded::BOUND_EPS)
+                };
+                if !bound_ok(bound) {
+                    return Err(self.unreachable(bound));
+                }
+                r
+            }
+        })
+    }
+
+    /// The tolerance is below a fixed rule's bound.
+    fn unreachable(&self, bound: i64) -> Error {
+        Error::Unreachable {
+            what: "I1, I2 by the fixed rules",
+            tolerance: self.opts.tolerance.unwrap_or(RelError::ZERO).to_string(),
+            reason: format!("the rules' bound is {bound} eps of the working precision"),
+        }
+    }
+
+    /// Runs `route` at `axes`.
+    fn run(&self, route: Route, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
+        let sp = self.speed;
+        let p = axes.k.prec();
+        // The adaptive routes aim at half the tolerance (their estimate must meet it).
+        let tol = self
+            .tol
+            .clone()
+            .map_or_else(|| T::zero(p), |t| t.mul_pow2(-1));
+        let dk = self.opts.derivatives;
+        match route {
+            Route::FixedRule => self.fixed(axes, dk, false),
+            Route::GradedRule => self.graded(axes, dk),
+            Route::Adaptive if dk || self.opts.j0 => direct::contact_integrals(sp, axes, &tol),
+            Route::Adaptive => direct::quadrature(sp, axes, &tol),
+            Route::AdaptiveSubtracted => direct::subtracted(sp, axes, &tol),
+            Route::Series => {
+                let opts = SeriesOptions {
+                    rel_tol: self.tol.is_some().then_some(tol),
+                    ..Default::default()
+                };
+                series::integrals(sp, axes, &opts)
+            }
+        }
+    }
+
+    /// [`Error::Unreachable`] when a result's estimate misses the tolerance asked for.
+    fn check_tolerance(&self, r: &Evaluation<T>) -> Result<()> {
+        match (&self.tol, self.opts.tolerance) {
+            (Some(t), Some(tol)) if r.error_estimate > *t => Err(Error::Unreachable {
+                what: "I1, I2",
+                tolerance: tol.to_string(),
+                reason: format!(
+                    "the {} route's estimate is {}",
+                    r.route,
+                    RelError::of(&r.error_estimate)
+                ),
+            }),
+            _ => Ok(()),
+        }
+    }
+
+    /// The fixed rule at k ≤ 1. A `probe` runs it once without building the k-independent
+    /// part (the ellipse solve's first evaluation at k = 1, which may be its only one below 1).
+    pub(crate) fn fixed(
+        &self,
+        axes: &AxisRatio<T>,
+        dk: bool,
+        probe: bool,
+    ) -> Result<Evaluation<T>> {
+        if probe && self.fast.get().is_none() {
+            return fast::integrals_with_dk(self.speed, axes);
+        }
+        match self.fast.get_or_init(|| FastSetup::new(self.speed)) {
+            Ok(f) if dk => f.integrals_with_dk(axes),
+            Ok(f) => f.integrals(axes),
+            Err(e) => Err(e.clone()),
+        }
+    }
+
+    /// The graded rule at k > 1 from the kept layout, laid out anew (for 9/8 of this k, so
+    /// that iterates up to 45/32 k reuse it) when k lies outside its range.
+    pub(crate) fn graded(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
+        let mut kept = self.graded.borrow_mut();
+        let g = match kept.take() {
+            Some(g) if g.covers(&axes.k) => kept.insert(g),
+            _ => {
+                let p = axes.k.prec();
+                let k_ref =
+                    (axes.k.clone() * &T::from_ratio(9, 8, p)).min_of(T::from_i64(1 << 40, p));
+                kept.insert(GradedSetup::new(self.speed, &k_ref)?)
+            }
+        };
+        if dk {
+            g.integrals_with_dk(axes)
+        } else {
+            g.integrals(axes)
+        }
+    }
+
+    /// The ellipse solve's evaluation at a Newton iterate: I1, I2 and, with `dk`, their
+    /// k-derivatives, by the fixed rules wherever they apply (the graded rule above k = 1) unless
+    /// the method is [`Method::Adaptive`], by the adaptive quadrature (always with derivatives)
+    /// elsewhere — or, for [`Method::Fixed`], an error. `probe`: see [`Evaluator::fixed`].
+    pub(crate) fn for_newton(
+        &self,
+        axes: &AxisRatio<T>,
+        dk: bool,
+        probe: bool,
+    ) -> Result<Evaluation<T>> {
+        if self.opts.method != Method::Adaptive {
+            let r = if axes.k > T::one(axes.k.prec()) {
+                self.graded(axes, dk)
+            } else {
+                self.fixed(axes, dk, probe)
+            };
+            match r {
+                Ok(r) => return Ok(r),
+                Err(e) if self.opts.method == Method::Fixed => return Err(e),
+                Err(_) => {}
+            }
+        }
+        direct::contact_integrals(self.speed, axes, &T::zero(axes.k.prec()))
+    }
+
+    /// The speed this evaluator serves.
+    pub fn speed(&self) -> &Speed<T> {
+        self.speed
+    }
+}
+
+/// Whether k lies in the fixed rules' range 2⁻⁴⁰ ≤ k ≤ 2⁴⁰.
+fn in_fixed_range<T: Real>(k: &T) -> bool {
+    let p = k.prec();
+    *k >= T::from_ratio(1, 1 << 40, p) && *k <= T::from_i64(1 << 40, p)
+}
+
+fn domain<T: Real>(axes: &AxisRatio<T>, bound: &'static str) -> Error {
+    Error::Domain {
+        name: "axis ratio k for the method",
+        value: short(&axes.k),
+        bound,
+    }
+}
+
+/// What each method can give: the series and the adaptive subtracted route neither
+/// derivatives nor J0, the fixed rules no J0.
+fn check_method(opts: &IntegralOptions) -> Result<()> {
+    let refuse = |bound| {
+        Err(Error::Domain {
+            name: "method",
+            value: opts.method.label().into(),
+            bound,
+        })
+    };
+    match opts.method {
+        Method::Series | Method::AdaptiveSubtracted if opts.derivatives || opts.j0 => {
+            refuse("auto, adaptive or fixed (this route gives neither k-derivatives nor J0)")
+        }
+        Method::Fixed if opts.j0 => refuse("auto or adaptive (only the adaptive route gives J0)"),
+        _ => Ok(()),
+    }
+}
