@@ -5,11 +5,10 @@
 //! Run: `cargo bench --bench ellipse -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use moving_hertz::contact::ellipse::{solve_ellipse_with, EllipseMethod};
-use moving_hertz::physics::Material;
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
+use moving_hertz::{solve_ellipse, Material, Method, Options};
 
-fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, methods: &[EllipseMethod]) {
+fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, methods: &[Method]) {
     let mut g = c.benchmark_group(format!("ellipse/{label}"));
     if T::bits(p) > 200 {
         g.sample_size(10);
@@ -18,9 +17,13 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, methods: &[EllipseMe
     let ratio = T::parse("0.5", p).expect("ratio");
     for mr in ["0.5", "0.9", "0.999", "0.9999"] {
         let sp = mat.speed(T::parse(mr, p).expect("speed")).expect("speed");
-        for &m in methods {
-            g.bench_function(format!("{}_M={mr}", m.label()), |b| {
-                b.iter(|| solve_ellipse_with(black_box(&mat), black_box(&sp), black_box(&ratio), m))
+        for &method in methods {
+            let opts = Options {
+                method,
+                ..Default::default()
+            };
+            g.bench_function(format!("{}_M={mr}", method.label()), |b| {
+                b.iter(|| solve_ellipse(black_box(&sp), black_box(&ratio), &opts))
             });
         }
     }
@@ -28,14 +31,14 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, methods: &[EllipseMe
 }
 
 fn bench(c: &mut Criterion) {
-    let both = [EllipseMethod::Fast, EllipseMethod::Quadrature];
+    let both = [Method::Fixed, Method::Adaptive];
     run::<f64>(c, "f64", (), &both);
     run::<Dd>(c, "dd", (), &both);
     run::<Mp>(
         c,
         "mpfr256",
         MpPrec::new(256).expect("precision"),
-        &[EllipseMethod::Fast],
+        &[Method::Fixed],
     );
 }
 

@@ -25,30 +25,30 @@ const MRS: [(&str, f64); 4] = [
 ];
 const KS: [(&str, f64); 3] = [("0.01", 0.01), ("0.3", 0.3), ("1", 1.0)];
 
-fn inputs<T: Real>(mr: f64, k: f64, p: T::Prec) -> (Material<T>, Speed<T>, AxisRatio<T>) {
+fn inputs<T: Real>(mr: f64, k: f64, p: T::Prec) -> (Speed<T>, AxisRatio<T>) {
     let mat = Material::new(T::from_ratio(1, 4, p)).expect("nu");
     let sp = mat.speed(T::from_f64(mr, p)).expect("speed");
     let ax = AxisRatio::new(T::from_f64(k, p)).expect("k");
-    (mat, sp, ax)
+    (sp, ax)
 }
 
 fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, slow_samples: usize) {
     let mut g = c.benchmark_group(format!("fast_{label}"));
     for (ms, mr) in MRS {
         for (ks, k) in KS {
-            let (mat, sp, ax) = inputs::<T>(mr, k, p);
+            let (sp, ax) = inputs::<T>(mr, k, p);
             g.bench_function(format!("fast/M={ms},k={ks}"), |b| {
-                b.iter(|| fast::integrals(black_box(&mat), black_box(&sp), black_box(&ax)))
+                b.iter(|| fast::integrals(black_box(&sp), black_box(&ax)))
             });
             g.bench_function(format!("fast_dk/M={ms},k={ks}"), |b| {
-                b.iter(|| fast::integrals_with_dk(black_box(&mat), black_box(&sp), black_box(&ax)))
+                b.iter(|| fast::integrals_with_dk(black_box(&sp), black_box(&ax)))
             });
         }
-        let (mat, sp, ax) = inputs::<T>(mr, 0.3, p);
+        let (sp, ax) = inputs::<T>(mr, 0.3, p);
         g.bench_function(format!("setup/M={ms}"), |b| {
-            b.iter(|| FastSetup::new(black_box(&mat), black_box(&sp)))
+            b.iter(|| FastSetup::new(black_box(&sp)))
         });
-        let setup = FastSetup::new(&mat, &sp).expect("setup");
+        let setup = FastSetup::new(&sp).expect("setup");
         g.bench_function(format!("at_dk/M={ms},k=0.3"), |b| {
             b.iter(|| setup.integrals_with_dk(black_box(&ax)))
         });
@@ -59,16 +59,9 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, slow_samples: usize)
     let zero = T::zero(p);
     for (ms, mr) in MRS {
         for (ks, k) in KS {
-            let (mat, sp, ax) = inputs::<T>(mr, k, p);
+            let (sp, ax) = inputs::<T>(mr, k, p);
             g.bench_function(format!("adaptive/M={ms},k={ks}"), |b| {
-                b.iter(|| {
-                    direct::quadrature(
-                        black_box(&mat),
-                        black_box(&sp),
-                        black_box(&ax),
-                        black_box(&zero),
-                    )
-                })
+                b.iter(|| direct::quadrature(black_box(&sp), black_box(&ax), black_box(&zero)))
             });
         }
     }

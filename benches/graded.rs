@@ -7,10 +7,10 @@
 //! Run: `cargo bench --bench graded -- --warm-up-time 1 --measurement-time 2`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use moving_hertz::contact::ellipse::{solve_ellipse_with, EllipseMethod};
 use moving_hertz::physics::Material;
 use moving_hertz::routes::{graded, AxisRatio};
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
+use moving_hertz::{solve_ellipse, Options};
 
 fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
     let mat = Material::new(T::parse("0.2", p).expect("nu")).expect("material");
@@ -27,7 +27,7 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
         let sp = mat.speed(T::parse(mr, p).expect("speed")).expect("speed");
         let ax = AxisRatio::new(T::parse(k, p).expect("k")).expect("k");
         g.bench_function(format!("M={mr}_k={k}"), |b| {
-            b.iter(|| graded::integrals_with_dk(black_box(&mat), black_box(&sp), black_box(&ax)))
+            b.iter(|| graded::integrals_with_dk(black_box(&sp), black_box(&ax)))
         });
     }
     g.finish();
@@ -49,14 +49,7 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
         let ratio = T::parse(r, p).expect("ratio");
         let sp = mat.speed(T::parse(mr, p).expect("speed")).expect("speed");
         g.bench_function(format!("ratio={r}_M={mr}"), |b| {
-            b.iter(|| {
-                solve_ellipse_with(
-                    black_box(&mat),
-                    black_box(&sp),
-                    black_box(&ratio),
-                    EllipseMethod::Auto,
-                )
-            })
+            b.iter(|| solve_ellipse(black_box(&sp), black_box(&ratio), &Options::default()))
         });
     }
     g.finish();

@@ -17,7 +17,7 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
         .speed(T::parse("0.9", p).expect("speed"))
         .expect("speed");
     let green = GreenFunction::new(&mat);
-    let t = speed.mr2.clone();
+    let t = speed.mr2().clone();
     let mut g = c.benchmark_group(label.to_string());
     g.bench_function("roots/default", |b| {
         b.iter(|| RayleighRoots::new(black_box(&nu)))

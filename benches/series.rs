@@ -41,7 +41,7 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
         let speed = mat.speed(T::parse(mr, p).expect("mr")).expect("speed");
         let opts = SeriesOptions::default();
         g.bench_function(format!("integrals/M_R={mr}"), |b| {
-            b.iter(|| integrals(&mat, black_box(&speed), &axis, &opts).expect("series"))
+            b.iter(|| integrals(black_box(&speed), &axis, &opts).expect("series"))
         });
     }
     g.finish();

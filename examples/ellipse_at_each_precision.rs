@@ -1,23 +1,22 @@
 //! One library call — the shape of the contact ellipse — at f64, double-double and MPFR 256 bits,
-//! with the inputs parsed from decimal text at each precision.
+//! with the inputs parsed from decimal text at each precision (the speed's gap 1 − M_R formed
+//! exactly from its text).
 //!
 //! Run: `cargo run --release --example ellipse_at_each_precision`
 
-use moving_hertz::contact::solve_ellipse_ladder;
-use moving_hertz::physics::Material;
 use moving_hertz::prelude::*;
+use moving_hertz::solve_ellipse;
 
 /// ν = 0.2, M_R = 0.99, A1/B1 = 0.5 at precision `p` of backend `T`.
 fn solve<T: Real>(label: &str, p: T::Prec) -> Result<()> {
-    let mat = Material::new(T::parse("0.2", p)?)?;
-    let speed = mat.speed(T::parse("0.99", p)?)?;
-    let shape = solve_ellipse_ladder(&mat, &speed, &T::parse("0.5", p)?)?;
+    let speed = Material::<T>::parse("0.2", p)?.parse_speed("0.99")?;
+    let shape = solve_ellipse(&speed, &T::parse("0.5", p)?, &Options::default())?;
     println!("{label:>9}: k = {}", shape.k.to_decimal());
     println!(
-        "{:>9}  e = {}  (error estimate {:.1e}, {} Newton steps)",
+        "{:>9}  e = {}  (k's relative error <= {}, {} evaluations at this precision)",
         "",
         shape.e.to_decimal(),
-        shape.error_estimate.to_f64(),
+        shape.k.error,
         shape.iterations
     );
     Ok(())

@@ -1,36 +1,71 @@
-//! The automatic choice of method and precision: a loose request runs in f64, a tight one at the
-//! lowest sufficient precision, and the returned error estimate bounds the true error, measured
+//! The automatic choice of precision: a loose request runs in f64, a tight one at the lowest
+//! sufficient precision, and the returned error estimate bounds the true error, measured
 //! against a computation 64 bits above the one used, from the same exact inputs.
 
 use moving_hertz::prelude::*;
-use moving_hertz::routes::choose::{self, Inputs, MethodRequest};
-use moving_hertz::routes::Method;
+use moving_hertz::routes::choose::choose_precision;
+use moving_hertz::{integrals, integrals_to_tolerance, ExactInputs, Route};
 use rug::Float;
+
+fn tol(text: &str) -> RelError {
+    RelError::parse(text).unwrap()
+}
 
 #[test]
 fn precision_follows_the_request() {
-    let i = Inputs::parse("0.2", "0.5", "0.5").unwrap();
-    assert_eq!(choose::choose_precision(&i, 1e-6).unwrap(), Precision::F64);
-    assert_eq!(choose::choose_precision(&i, 1e-12).unwrap(), Precision::F64);
+    assert_eq!(choose_precision(tol("1e-6")).unwrap(), Precision::F64);
+    assert_eq!(choose_precision(tol("1e-12")).unwrap(), Precision::F64);
     assert_eq!(
-        choose::choose_precision(&i, 1e-20).unwrap(),
+        choose_precision(tol("1e-20")).unwrap(),
         Precision::DoubleDouble
     );
-    match choose::choose_precision(&i, 1e-60).unwrap() {
+    match choose_precision(tol("1e-60")).unwrap() {
         Precision::Mpfr(p) => assert!((200..=256).contains(&p.bits()), "{}", p.bits()),
         other => panic!("1e-60 answered at {other}"),
     }
-    // Near the Rayleigh speed the inputs' rounding is amplified: 1e-12 needs double-double.
-    let fast = Inputs::parse("0.2", "0.99999999", "0.01").unwrap();
-    assert_eq!(
-        choose::choose_precision(&fast, 1e-12).unwrap(),
-        Precision::DoubleDouble
-    );
-    // And the runs themselves land there.
-    let a = choose::integrals(&i, 1e-6, MethodRequest::Auto).unwrap();
-    assert_eq!(a.precision, Precision::F64);
-    let a = choose::integrals(&i, 1e-60, MethodRequest::Auto).unwrap();
+    // Tolerances far below the f64 range: bits from the exponent, no overflow.
+    for (t, lo, hi) in [("1e-300", 990, 1010), ("1e-5000", 16600, 16630)] {
+        match choose_precision(tol(t)).unwrap() {
+            Precision::Mpfr(p) => assert!((lo..=hi).contains(&p.bits()), "{t}: {}", p.bits()),
+            other => panic!("{t} answered at {other}"),
+        }
+    }
+    // Near the Rayleigh speed the gap 1 − M_R is formed exactly from the text: 1e-12 is met
+    // at f64, as far from it.
+    let i = ExactInputs::parse("0.2", "0.5", "0.5").unwrap();
+    let fast = ExactInputs::parse("0.2", "0.99999999", "0.01").unwrap();
+    for inputs in [&i, &fast] {
+        let a = integrals_to_tolerance(inputs, tol("1e-12"), Method::Auto).unwrap();
+        assert_eq!(a.precision, Precision::F64);
+    }
+    let a = integrals_to_tolerance(&i, tol("1e-60"), Method::Auto).unwrap();
     assert!(matches!(a.precision, Precision::Mpfr(p) if p.bits() <= 256));
+    // The precision is not oversized: the estimate lies within 10³ of the tolerance.
+    assert!(a.i1.error.scale(1000.0) >= tol("1e-60"), "{}", a.i1.error);
+}
+
+/// The reference: the adaptive quadrature 64 bits above the precision `a` ran at.
+fn check_against_reference(inputs: &ExactInputs, a: &moving_hertz::Integrals<Mp>, what: &str) {
+    let bits = a.precision.bits() as u64 + 64;
+    let p = MpPrec::new(bits).unwrap();
+    let (sp, k) = inputs.at::<Mp>(p).unwrap();
+    let opts = IntegralOptions {
+        method: Method::Adaptive,
+        ..Default::default()
+    };
+    let r = integrals(&sp, &k, &opts).unwrap();
+    for (got, want) in [(&a.i1, &r.i1.value), (&a.i2, &r.i2.value)] {
+        let want = want.as_float();
+        let err = Float::with_val(bits as u32, got.value.as_float() - want) / want;
+        let err = RelError::of(&Mp::from_float(&err.abs(), p));
+        assert!(
+            err <= got.error,
+            "{what}: true error {err} > estimate {} ({} at {})",
+            got.error,
+            a.route,
+            a.precision
+        );
+    }
 }
 
 #[test]
@@ -47,58 +82,64 @@ fn error_estimate_bounds_the_true_error() {
     ];
     let mut checked = 0;
     for (nu, mr, k) in grid {
-        let inputs = Inputs::parse(nu, mr, k).unwrap();
-        for tol in [1e-6, 1e-13, 1e-25, 1e-45] {
-            let a = choose::integrals(&inputs, tol, MethodRequest::Auto).unwrap();
-            assert!(a.error_estimate <= tol);
-            let bits = a.precision.bits() as u64 + 64;
-            let p = MpPrec::new(bits).unwrap();
-            let r = choose::run_at::<Mp>(&inputs, p, Method::Quadrature, 0.0).unwrap();
-            for (got, want) in [(&a.i1, r.i1.as_float()), (&a.i2, r.i2.as_float())] {
-                let err = Float::with_val(bits as u32, got - want) / want;
-                let err = err.abs().to_f64();
-                assert!(
-                    err <= a.error_estimate,
-                    "nu={nu} M_R={mr} k={k} tol={tol:e}: true error {err:e} > estimate {:e} ({} at {})",
-                    a.error_estimate,
-                    a.method.label(),
-                    a.precision
-                );
-            }
+        let inputs = ExactInputs::parse(nu, mr, k).unwrap();
+        for t in ["1e-6", "1e-13", "1e-25", "1e-45"] {
+            let a = integrals_to_tolerance(&inputs, tol(t), Method::Auto).unwrap();
+            assert!(a.i1.error <= tol(t) && a.i2.error <= tol(t));
+            check_against_reference(&inputs, &a, &format!("nu={nu} M_R={mr} k={k} tol={t}"));
             checked += 1;
         }
     }
     assert_eq!(checked, 32);
 }
 
+/// Tolerances far below the f64 range succeed and meet the tolerance (issue 16).
+#[test]
+fn tolerances_below_the_f64_range() {
+    let inputs = ExactInputs::parse("0.25", "0.9990234375", "0.5").unwrap();
+    for t in ["1e-300"] {
+        let a = integrals_to_tolerance(&inputs, tol(t), Method::Auto).unwrap();
+        assert!(
+            a.i1.error <= tol(t) && a.i2.error <= tol(t),
+            "{t}: {}",
+            a.i1.error
+        );
+        assert_eq!(a.route, Route::FixedRule);
+        check_against_reference(&inputs, &a, t);
+    }
+}
+
 #[test]
 fn bad_requests_are_typed_errors() {
     assert!(matches!(
-        Inputs::parse("0.6", "0.5", "1"),
+        ExactInputs::parse("0.6", "0.5", "1"),
         Err(Error::Domain { .. })
     ));
     assert!(matches!(
-        Inputs::parse("0.2", "1", "1"),
+        ExactInputs::parse("0.2", "1", "1"),
         Err(Error::Domain { .. })
     ));
     assert!(matches!(
-        Inputs::parse("0.2", "0.5", "0"),
+        ExactInputs::parse("0.2", "0.5", "0"),
         Err(Error::Domain { .. })
     ));
     assert!(matches!(
-        Inputs::parse("0.2", "x", "1"),
+        ExactInputs::parse("0.2", "x", "1"),
         Err(Error::Parse { .. })
     ));
     assert!(matches!(
-        Inputs::from_f64(f64::NAN, 0.5, 1.0),
+        ExactInputs::from_f64(f64::NAN, 0.5, 1.0),
         Err(Error::NotFinite { .. })
     ));
-    let i = Inputs::parse("0.2", "0.5", "1").unwrap();
-    for tol in [0.0, -1.0, 1.0, f64::NAN] {
+    let i = ExactInputs::parse("0.2", "0.5", "1").unwrap();
+    for t in ["1", "2"] {
         assert!(matches!(
-            choose::integrals(&i, tol, MethodRequest::Auto),
+            integrals_to_tolerance(&i, tol(t), Method::Auto),
             Err(Error::Domain { .. })
         ));
     }
-    assert!(MethodRequest::parse("magic").is_err());
+    for t in ["0", "-1", "nan"] {
+        assert!(RelError::parse(t).is_err(), "{t}");
+    }
+    assert!(Method::parse("magic").is_err());
 }

@@ -8,11 +8,11 @@ use common::{mpmath_cases, read_csv, reference, rel_eps, MpmathCase};
 use moving_hertz::numerics::elliptic::{ellipd_mc, ellipke_mc};
 use moving_hertz::physics::Material;
 use moving_hertz::prelude::*;
-use moving_hertz::routes::{direct, AxisRatio, Integrals};
+use moving_hertz::routes::{direct, AxisRatio, Evaluation};
 
 /// Checks a result against the reference: error ≤ `bound` ε, and within the reported estimate
 /// (plus the rounding of the reference comparison itself).
-fn check<T: Real>(r: &Integrals<T>, c: &MpmathCase, bound: f64, label: &str) -> f64 {
+fn check<T: Real>(r: &Evaluation<T>, c: &MpmathCase, bound: f64, label: &str) -> f64 {
     let e1 = rel_eps(&r.i1, &c.i1);
     let e2 = rel_eps(&r.i2, &c.i2);
     let est = (r.error_estimate.clone() / T::epsilon(r.i1.prec())).to_f64();
@@ -20,7 +20,7 @@ fn check<T: Real>(r: &Integrals<T>, c: &MpmathCase, bound: f64, label: &str) -> 
     assert!(
         worst <= bound,
         "{label} {:?} nu={} M_R={} k={}: errors {e1:.2} {e2:.2} eps",
-        r.method,
+        r.route,
         c.nu,
         c.mr,
         c.k
@@ -28,7 +28,7 @@ fn check<T: Real>(r: &Integrals<T>, c: &MpmathCase, bound: f64, label: &str) -> 
     assert!(
         worst <= est + 1.0,
         "{label} {:?} nu={} M_R={} k={}: error {worst:.2} eps exceeds estimate {est:.2} eps",
-        r.method,
+        r.route,
         c.nu,
         c.mr,
         c.k
@@ -39,12 +39,12 @@ fn check<T: Real>(r: &Integrals<T>, c: &MpmathCase, bound: f64, label: &str) -> 
 fn against_reference<T: Real>(p: T::Prec, label: &str) {
     let (mut wq, mut ws) = (0.0f64, 0.0f64);
     for c in mpmath_cases() {
-        let (mat, sp, ax) = c.inputs::<T>(p);
+        let (sp, ax) = c.inputs::<T>(p);
         let zero = T::zero(p);
-        let q = direct::quadrature(&mat, &sp, &ax, &zero).expect("quadrature");
+        let q = direct::quadrature(&sp, &ax, &zero).expect("quadrature");
         wq = wq.max(check(&q, &c, 16.0, label));
         if ax.k <= T::one(p) {
-            let s = direct::subtracted(&mat, &sp, &ax, &zero).expect("subtracted");
+            let s = direct::subtracted(&sp, &ax, &zero).expect("subtracted");
             ws = ws.max(check(&s, &c, 16.0, label));
         }
     }
@@ -69,7 +69,7 @@ fn static_limit<T: Real>(p: T::Prec, label: &str) {
         let mat = Material::new(T::parse(nu, p).unwrap()).unwrap();
         let sp = mat.speed(T::zero(p)).unwrap();
         let ax = AxisRatio::new(T::parse(k, p).unwrap()).unwrap();
-        let r = direct::quadrature(&mat, &sp, &ax, &T::zero(p)).unwrap();
+        let r = direct::quadrature(&sp, &ax, &T::zero(p)).unwrap();
         let two_f0 = mat.one_minus_nu().clone().mul_i64(2);
         let d = ellipd_mc(&ax.k2).unwrap();
         let (_, ee) = ellipke_mc(&ax.k2).unwrap();
@@ -144,7 +144,7 @@ fn closed_form_52_and_the_quoted_derivative_rules() {
             let (s, c) = a.clone().sin_cos();
             let c2 = c.square();
             let d = (c2.clone() + ax.k2.clone() * s.square()).sqrt();
-            c2.clone() / ((Mp::one(p) - sp.mr2.clone() * &c2) * d)
+            c2.clone() / ((Mp::one(p) - sp.mr2().clone() * &c2) * d)
         };
         let q = integrate(
             f,

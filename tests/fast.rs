@@ -17,7 +17,7 @@ use common::{
 use moving_hertz::physics::Material;
 use moving_hertz::prelude::*;
 use moving_hertz::routes::fast::{self, FastSetup, RuleSizes};
-use moving_hertz::routes::{direct, AxisRatio, Method};
+use moving_hertz::routes::{direct, AxisRatio, Route};
 
 const NUS: [f64; 4] = [-0.9, 0.0, 0.25, 0.5];
 const MRS: [f64; 7] = [0.0, 0.3, 0.7, 0.9, 0.99, 0.9999, 1.0 - 1e-8];
@@ -57,9 +57,9 @@ fn integrals_within_estimate<T: Real>(p: T::Prec, label: &str, bound: f64) -> f6
     let eps = T::epsilon(p).to_f64();
     let mut worst = 0.0f64;
     for c in cases() {
-        let (mat, sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
-        let r = fast::integrals(&mat, &sp, &ax).expect("fast route");
-        assert_eq!(r.method, Method::Subtracted);
+        let (sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
+        let r = fast::integrals(&sp, &ax).expect("fast route");
+        assert_eq!(r.route, Route::FixedRule);
         let est = r.error_estimate.to_f64() / eps;
         let e = rel_eps(&r.i1, &c.i1).max(rel_eps(&r.i2, &c.i2));
         assert!(
@@ -80,7 +80,7 @@ fn integrals_match_adaptive_reference_at_f64() {
     let worst = integrals_within_estimate::<f64>((), "f64", 16.0);
     // The target of issue 5: ≤ 1e-14 relative.
     assert!(worst * f64::EPSILON <= 1e-14);
-    let bound = fast::FastRule::<f64>::get(()).unwrap().bound_eps() as f64 * f64::EPSILON;
+    let bound = fast::BOUND_EPS as f64 * f64::EPSILON;
     assert!(bound <= 1e-14, "reported bound {bound:e}");
 }
 
@@ -97,9 +97,9 @@ fn integrals_match_adaptive_reference_at_higher_precision() {
 fn derivatives<T: Real>(p: T::Prec, label: &str, bound: f64) {
     let mut worst = 0.0f64;
     for c in cases() {
-        let (mat, sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
-        let r = fast::integrals_with_dk(&mat, &sp, &ax).expect("fast route");
-        let e = rel_eps(&r.di1_dk, &c.d1).max(rel_eps(&r.di2_dk, &c.d2));
+        let (sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
+        let r = fast::integrals_with_dk(&sp, &ax).expect("fast route");
+        let e = rel_eps(&r.di1_dk(), &c.d1).max(rel_eps(&r.di2_dk(), &c.d2));
         assert!(
             e <= bound,
             "{label} nu={} M_R={} k={}: dI/dk error {e:.1} eps",
@@ -124,25 +124,25 @@ fn derivatives_match_finite_differences() {
 fn setup_agrees<T: Real>(p: T::Prec, label: &str) {
     for nu in [-0.9, 0.5] {
         for mr in [0.0, 0.9, 0.9999] {
-            let (mat, sp, _) = integral_inputs::<T>(nu, mr, 1.0, p);
-            let setup = FastSetup::new(&mat, &sp).expect("setup");
+            let (sp, _) = integral_inputs::<T>(nu, mr, 1.0, p);
+            let setup = FastSetup::new(&sp).expect("setup");
             for k in KS {
                 let ax = AxisRatio::new(T::from_f64(k, p)).expect("k");
                 let a = setup.integrals_with_dk(&ax).expect("setup route");
-                let b = fast::integrals_with_dk(&mat, &sp, &ax).expect("one-shot");
+                let b = fast::integrals_with_dk(&sp, &ax).expect("one-shot");
                 let i = setup.integrals(&ax).expect("setup route");
                 for (x, y) in [
-                    (&a.integrals.i1, &b.integrals.i1),
-                    (&a.integrals.i2, &b.integrals.i2),
-                    (&i.i1, &b.integrals.i1),
-                    (&i.i2, &b.integrals.i2),
-                    (&a.di1_dk, &b.di1_dk),
-                    (&a.di2_dk, &b.di2_dk),
+                    (&a.i1, &b.i1),
+                    (&a.i2, &b.i2),
+                    (&i.i1, &b.i1),
+                    (&i.i2, &b.i2),
+                    (&a.di1_dk(), &b.di1_dk()),
+                    (&a.di2_dk(), &b.di2_dk()),
                 ] {
                     let e = common::rel_err_eps(x, y);
                     assert!(e <= 8.0, "{label} nu={nu} M_R={mr} k={k}: {e:.1} eps");
                 }
-                assert_eq!(a.integrals.error_estimate, b.integrals.error_estimate);
+                assert_eq!(a.error_estimate, b.error_estimate);
             }
         }
     }
@@ -161,11 +161,11 @@ fn setup_agrees_with_one_shot() {
 fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
     let mut n = 0;
     for c in mpmath_cases() {
-        let (mat, sp, ax) = c.inputs::<T>(p);
+        let (sp, ax) = c.inputs::<T>(p);
         if ax.k > T::one(p) {
             continue;
         }
-        let r = fast::integrals(&mat, &sp, &ax).expect("fast route");
+        let r = fast::integrals(&sp, &ax).expect("fast route");
         let e = c.error_eps(&r.i1, &r.i2);
         assert!(
             e <= 16.0,
@@ -195,11 +195,11 @@ fn extremes_of_the_domain() {
         (0.25, 0.0, tiny),
         (0.0, 0.5, tiny),
     ] {
-        let (mat, sp, ax) = integral_inputs::<f64>(nu, mr, k, ());
-        let f = fast::integrals(&mat, &sp, &ax).expect("fast route");
+        let (sp, ax) = integral_inputs::<f64>(nu, mr, k, ());
+        let f = fast::integrals(&sp, &ax).expect("fast route");
         let p = mp(160);
-        let (m2, s2, a2) = integral_inputs::<Mp>(nu, mr, k, p);
-        let r = direct::quadrature(&m2, &s2, &a2, &Mp::zero(p)).expect("adaptive");
+        let (s2, a2) = integral_inputs::<Mp>(nu, mr, k, p);
+        let r = direct::quadrature(&s2, &a2, &Mp::zero(p)).expect("adaptive");
         let e = rel_eps(&f.i1, &r.i1.to_float(160)).max(rel_eps(&f.i2, &r.i2.to_float(160)));
         assert!(e <= 16.0, "nu={nu} M_R={mr} k={k}: {e:.1} eps");
     }
@@ -212,11 +212,11 @@ fn outside_the_domain_is_a_typed_error() {
     for k in [1.0 + f64::EPSILON, 2.0, 1e6, 2f64.powi(-41)] {
         let ax = AxisRatio::new(k).unwrap();
         assert!(
-            matches!(fast::integrals(&mat, &sp, &ax), Err(Error::Domain { .. })),
+            matches!(fast::integrals(&sp, &ax), Err(Error::Domain { .. })),
             "k = {k}"
         );
         assert!(matches!(
-            FastSetup::new(&mat, &sp).unwrap().integrals(&ax),
+            FastSetup::new(&sp).unwrap().integrals(&ax),
             Err(Error::Domain { .. })
         ));
     }
@@ -235,25 +235,36 @@ fn rule_sizes_follow_the_precision() {
     }
 }
 
-/// The method choice runs the fast route for `subtracted` when its bound meets the tolerance,
-/// the adaptive (48) otherwise (and for k outside [2^−40, 1]).
+/// The automatic choice runs the fixed rule when its bound meets the tolerance, the adaptive
+/// (48) otherwise (and the plain adaptive quadrature for k > 1 below the graded rule's bound).
 #[test]
 fn choose_runs_the_fast_route_when_it_suffices() {
-    use moving_hertz::routes::choose::{self, Inputs, MethodRequest};
+    use moving_hertz::{integrals, integrals_to_tolerance, ExactInputs, IntegralOptions};
     let nodes = RuleSizes::for_bits(53).nodes();
-    let inputs = Inputs::parse("0.25", "0.99", "0.1").unwrap();
-    assert_eq!(choose::choose_method(&inputs, 1e-15), Method::Subtracted);
-    let r = choose::run_at::<f64>(&inputs, (), Method::Subtracted, 1e-12).unwrap();
-    assert_eq!(r.work, nodes);
-    // 1e-15 is below the fast route's 16ε bound at f64: the adaptive route answers.
-    let r = choose::run_at::<f64>(&inputs, (), Method::Subtracted, 1e-15).unwrap();
+    let inputs = ExactInputs::parse("0.25", "0.99", "0.1").unwrap();
+    let (sp, k) = inputs.at::<f64>(()).unwrap();
+    let at = |tol: &str| IntegralOptions {
+        tolerance: Some(RelError::parse(tol).unwrap()),
+        ..Default::default()
+    };
+    let r = integrals(&sp, &k, &at("1e-12")).unwrap();
+    assert_eq!((r.route, r.work), (Route::FixedRule, nodes));
+    // 3e-15 is below the fixed rule's 16ε bound at f64: the adaptive route answers.
+    let r = integrals(&sp, &k, &at("3e-15")).unwrap();
+    assert_eq!(r.route, Route::AdaptiveSubtracted);
     assert_ne!(r.work, nodes);
-    let a = choose::integrals(&inputs, 1e-10, MethodRequest::Auto).unwrap();
+    assert!(r.i1.error.to_f64() <= 3e-15 && r.i2.error.to_f64() <= 3e-15);
+    let a =
+        integrals_to_tolerance(&inputs, RelError::parse("1e-10").unwrap(), Method::Auto).unwrap();
     assert_eq!(
-        (a.method, a.precision, a.work),
-        (Method::Subtracted, Precision::F64, nodes)
+        (a.route, a.precision, a.work),
+        (Route::FixedRule, Precision::F64, nodes)
     );
-    // k > 1: the plain adaptive quadrature.
-    let wide = Inputs::parse("0.25", "0.99", "3").unwrap();
-    assert_eq!(choose::choose_method(&wide, 1e-15), Method::Quadrature);
+    // k > 1 below the graded rule's 32ε: the plain adaptive quadrature.
+    let (sp, k) = ExactInputs::parse("0.25", "0.99", "3")
+        .unwrap()
+        .at::<f64>(())
+        .unwrap();
+    let r = integrals(&sp, &k, &at("3e-15")).unwrap();
+    assert_eq!(r.route, Route::Adaptive);
 }

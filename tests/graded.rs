@@ -53,11 +53,11 @@ fn against_reference<T: Real>(p: T::Prec, label: &str) {
     let bound = graded::BOUND_EPS as f64;
     let (mut worst, mut worst_d) = (0.0f64, 0.0f64);
     for c in cases() {
-        let (mat, sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
-        let r = graded::integrals_with_dk(&mat, &sp, &ax).expect("graded route");
-        let est = (r.integrals.error_estimate.clone() / T::epsilon(p)).to_f64();
-        let e = rel_eps(&r.integrals.i1, &c.i1).max(rel_eps(&r.integrals.i2, &c.i2));
-        let d = rel_eps(&r.di1_dk, &c.d1).max(rel_eps(&r.di2_dk, &c.d2));
+        let (sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
+        let r = graded::integrals_with_dk(&sp, &ax).expect("graded route");
+        let est = (r.error_estimate.clone() / T::epsilon(p)).to_f64();
+        let e = rel_eps(&r.i1, &c.i1).max(rel_eps(&r.i2, &c.i2));
+        let d = rel_eps(&r.di1_dk(), &c.d1).max(rel_eps(&r.di2_dk(), &c.d2));
         let at = format!("{label} nu={} M_R={} k={}", c.nu, c.mr, c.k);
         assert!(
             e <= est && e <= bound,
@@ -88,17 +88,17 @@ fn setup_against_reference<T: Real>(p: T::Prec, label: &str) {
     let bound = graded::BOUND_EPS as f64;
     let mut worst = 0.0f64;
     for c in cases() {
-        let (mat, sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
+        let (sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
         let k = T::from_f64(c.k, p);
         // (4/5)(1 + 2^-30): the edge up to the rounding of k_ref·5/4.
         let edge = (k.clone() * &T::from_f64(0.8 * (1.0 + 2f64.powi(-30)), p)).max_of(T::one(p));
         let wide = (k.clone().mul_i64(16)).min_of(T::from_i64(1 << 40, p));
         for k_ref in [edge, wide] {
-            let setup = graded::GradedSetup::new(&mat, &sp, &k_ref).expect("layout");
+            let setup = graded::GradedSetup::new(&sp, &k_ref).expect("layout");
             assert!(setup.covers(&k));
             let r = setup.integrals_with_dk(&ax).expect("graded setup");
-            let e = rel_eps(&r.integrals.i1, &c.i1).max(rel_eps(&r.integrals.i2, &c.i2));
-            let d = rel_eps(&r.di1_dk, &c.d1).max(rel_eps(&r.di2_dk, &c.d2));
+            let e = rel_eps(&r.i1, &c.i1).max(rel_eps(&r.i2, &c.i2));
+            let d = rel_eps(&r.di1_dk(), &c.d1).max(rel_eps(&r.di2_dk(), &c.d2));
             let d = if T::bits(p) <= 128 { d } else { 0.0 };
             let at = format!(
                 "{label} nu={} M_R={} k={} k_ref={}",
@@ -112,7 +112,7 @@ fn setup_against_reference<T: Real>(p: T::Prec, label: &str) {
             worst = worst.max(e).max(d);
         }
         // Beyond the layout's range: a typed error, not a silently worse value.
-        let small = graded::GradedSetup::new(&mat, &sp, &T::one(p)).unwrap();
+        let small = graded::GradedSetup::new(&sp, &T::one(p)).unwrap();
         let beyond = AxisRatio::new(T::from_ratio(3, 2, p)).unwrap();
         assert!(matches!(
             small.integrals(&beyond),
@@ -134,11 +134,11 @@ fn a_layout_serves_k_up_to_five_quarters_of_its_k_ref() {
 fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
     let mut n = 0;
     for c in mpmath_cases() {
-        let (mat, sp, ax) = c.inputs::<T>(p);
+        let (sp, ax) = c.inputs::<T>(p);
         if ax.k <= T::one(p) {
             continue;
         }
-        let r = graded::integrals(&mat, &sp, &ax).expect("graded");
+        let r = graded::integrals(&sp, &ax).expect("graded");
         let e = c.error_eps(&r.i1, &r.i2);
         assert!(
             e <= 32.0,
@@ -160,11 +160,11 @@ fn matches_mpmath_references() {
 /// Outside 1 ≤ k ≤ 2^40 a typed error; the extremes of the domain agree with the adaptive route.
 #[test]
 fn domain_and_extremes() {
-    let (mat, sp, _) = integral_inputs::<f64>(0.25, 0.5, 1.0, ());
+    let (sp, _) = integral_inputs::<f64>(0.25, 0.5, 1.0, ());
     for k in [0.5, 2f64.powi(41)] {
         let ax = AxisRatio::new(k).unwrap();
         assert!(matches!(
-            graded::integrals(&mat, &sp, &ax),
+            graded::integrals(&sp, &ax),
             Err(moving_hertz::Error::Domain { .. })
         ));
     }
@@ -174,11 +174,11 @@ fn domain_and_extremes() {
         (-0.9, 1.0 - tiny, 1.0),
         (0.0, 0.0, 2f64.powi(40)),
     ] {
-        let (mat, sp, ax) = integral_inputs::<f64>(nu, mr, k, ());
-        let g = graded::integrals(&mat, &sp, &ax).unwrap();
+        let (sp, ax) = integral_inputs::<f64>(nu, mr, k, ());
+        let g = graded::integrals(&sp, &ax).unwrap();
         let p = mp(160);
-        let (m2, s2, a2) = integral_inputs::<Mp>(nu, mr, k, p);
-        let q = direct::quadrature(&m2, &s2, &a2, &Mp::zero(p)).unwrap();
+        let (s2, a2) = integral_inputs::<Mp>(nu, mr, k, p);
+        let q = direct::quadrature(&s2, &a2, &Mp::zero(p)).unwrap();
         let e = rel_eps(&g.i1, &q.i1.to_float(160)).max(rel_eps(&g.i2, &q.i2.to_float(160)));
         assert!(e <= 32.0, "nu={nu} M_R={mr} k={k}: {e:.1} eps");
     }
@@ -187,11 +187,11 @@ fn domain_and_extremes() {
 /// The automatic choice answers k > 1 by the graded panels when their bound meets the tolerance.
 #[test]
 fn choose_runs_the_graded_route_for_k_above_one() {
-    use moving_hertz::routes::choose::{self, Inputs, MethodRequest};
-    use moving_hertz::routes::Method;
-    let inputs = Inputs::parse("0.25", "0.99", "3").unwrap();
-    assert_eq!(choose::choose_method(&inputs, 1e-12), Method::Quadrature);
-    let a = choose::integrals(&inputs, 1e-10, MethodRequest::Auto).unwrap();
+    use moving_hertz::{integrals, integrals_to_tolerance, ExactInputs, IntegralOptions, Route};
+    let inputs = ExactInputs::parse("0.25", "0.99", "3").unwrap();
+    let tol = RelError::parse("1e-10").unwrap();
+    let a = integrals_to_tolerance(&inputs, tol, Method::Auto).unwrap();
+    assert_eq!(a.route, Route::GradedRule);
     // The left panels of some left_plan plus the right half's one panel of panel_nodes.
     let nr = graded::panel_nodes(53);
     let plan_nodes = |u: usize| -> usize {
@@ -201,8 +201,14 @@ fn choose_runs_the_graded_route_for_k_above_one() {
     let whole = |w: usize| w > nr && (1..64).any(|u| plan_nodes(u) == w - nr);
     assert_eq!(a.precision, Precision::F64);
     assert!(whole(a.work), "work {} not a left plan + {nr}", a.work);
-    // At tolerance 0 (the studies' reference) the adaptive route runs.
-    let r = choose::run_at::<f64>(&inputs, (), Method::Quadrature, 0.0).unwrap();
+    // The adaptive route, asked for by name (the studies' reference).
+    let (sp, k) = inputs.at::<f64>(()).unwrap();
+    let opts = IntegralOptions {
+        method: Method::Adaptive,
+        ..Default::default()
+    };
+    let r = integrals(&sp, &k, &opts).unwrap();
+    assert_eq!(r.route, Route::Adaptive);
     assert!(!whole(r.work));
 }
 

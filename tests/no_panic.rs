@@ -4,10 +4,13 @@
 
 mod common;
 
-use moving_hertz::contact::{solve_contact, solve_ellipse, Loading};
-use moving_hertz::physics::{GreenFunction, Material};
-use moving_hertz::routes::choose::{self, Inputs, MethodRequest};
+use moving_hertz::physics::GreenFunction;
 use moving_hertz::routes::{direct, AxisRatio};
+use moving_hertz::Real;
+use moving_hertz::{
+    integrals_to_tolerance, solve_ellipse, ContactProblem, ExactInputs, Loading, Material, Method,
+    Options, RelError,
+};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// Random inputs (the shared SplitMix64 generator).
@@ -83,28 +86,25 @@ fn random_inputs_never_panic_nor_return_nan() {
             let g = GreenFunction::new(&mat);
             assert!(g.gamma(&sp).is_finite());
             if let Ok(ax) = AxisRatio::new(k) {
-                finite_or_err(
-                    "quadrature",
-                    direct::quadrature(&mat, &sp, &ax, &0.0),
-                    |r| vec![r.i1, r.i2, r.error_estimate],
-                );
+                finite_or_err("quadrature", direct::quadrature(&sp, &ax, &0.0), |r| {
+                    vec![r.i1, r.i2, r.error_estimate]
+                });
             }
-            finite_or_err("ellipse", solve_ellipse(&mat, &sp, &ratio, None), |s| {
-                vec![s.k, s.e, s.error_estimate]
-            });
             finite_or_err(
-                "contact",
-                solve_contact(
-                    &mat,
-                    &sp,
-                    &r1,
-                    &(r1 * ratio),
-                    &Loading::Load(load),
-                    &mu,
-                    None,
-                ),
-                |s| vec![s.a, s.b, s.p0, s.d0, s.load],
+                "ellipse",
+                solve_ellipse(&sp, &ratio, &Options::default()),
+                |s| vec![s.k.value, s.e.value, s.k.error.to_f64()],
             );
+            let problem = ContactProblem {
+                speed: sp.clone(),
+                radius_along: r1,
+                radius_across: r1 * ratio,
+                loading: Loading::Load(load),
+                shear_modulus: mu,
+            };
+            finite_or_err("contact", problem.solve(&Options::default()), |s| {
+                vec![s.a.value, s.b.value, s.p0.value, s.d0.value, s.load.value]
+            });
             1
         });
         match catch_unwind(run) {
@@ -112,15 +112,18 @@ fn random_inputs_never_panic_nor_return_nan() {
             Err(_) => panic!("case {case}: panicked for nu={nu:e} M_R={mr:e} k={k:e} ratio={ratio:e} R1={r1:e} mu={mu:e} P={load:e}"),
         }
         // The automatic route, from exact inputs.
-        if let Ok(inputs) = Inputs::from_f64(nu, mr, k) {
-            let tol = 10f64.powf(-3.0 - 30.0 * rng.unit());
+        if let Ok(inputs) = ExactInputs::from_f64(nu, mr, k) {
+            let tol = RelError::from_f64(10f64.powf(-3.0 - 30.0 * rng.unit()));
             let r = catch_unwind(AssertUnwindSafe(|| {
-                choose::integrals(&inputs, tol, MethodRequest::Auto)
+                integrals_to_tolerance(&inputs, tol, Method::Auto)
             }));
             match r {
-                Ok(Ok(a)) => {
-                    assert!(a.i1.is_finite() && a.i2.is_finite() && a.error_estimate <= tol)
-                }
+                Ok(Ok(a)) => assert!(
+                    a.i1.value.is_finite()
+                        && a.i2.value.is_finite()
+                        && a.i1.error <= tol
+                        && a.i2.error <= tol
+                ),
                 Ok(Err(_)) => {}
                 Err(_) => panic!(
                     "case {case}: choose::integrals panicked for nu={nu:e} M_R={mr:e} k={k:e}"

@@ -154,8 +154,8 @@ fn direct_vs_factorised<T: Real>(p: T::Prec, label: &str) {
             let direct = g.gamma_direct(&v);
             let r = rayleigh_function(&mat, &v);
             let one = T::one(p);
-            let d = (T::from_i64(2, p) - &v.m2sq).square()
-                + ((one.clone() - &v.m1sq) * (one - &v.m2sq))
+            let d = (T::from_i64(2, p) - v.m2sq()).square()
+                + ((one.clone() - v.m1sq()) * (one - v.m2sq()))
                     .sqrt()
                     .mul_i64(4);
             let cond = (d / r).abs().to_f64();

@@ -114,7 +114,9 @@ pub struct Ellipse<T: Real> {
     /// I1, I2 at the solution (normalisation of (37)) with their k-derivatives and the route
     /// of the last evaluation.
     pub integrals: Integrals<T>,
-    /// Evaluations of the integrals spent (all stages of the precision ladder included).
+    /// Evaluations of the integrals at the working precision (above `f64` the precision
+    /// ladder's stages at `f64` and double-double come on top: their evaluations cost a small
+    /// fraction of one at the working precision).
     pub iterations: usize,
 }
 
@@ -915,8 +917,8 @@ fn solve_ladder<T: Real>(
     let stage64 = speed
         .at::<f64>(())
         .and_then(|sp| solve_core(&sp, &ratio64, method, handing_on()));
-    let (k64, slope64, spent64) = match stage64 {
-        Ok((s, c)) => (s.k, c, s.iterations),
+    let (k64, slope64) = match stage64 {
+        Ok((s, c)) => (s.k, c),
         Err(_) => return alone(tol),
     };
     // Above double-double, a double-double stage in between: its root is off by ~2^-100, so
@@ -944,8 +946,7 @@ fn solve_ladder<T: Real>(
                 tol,
                 ..Stage::final_stage()
             };
-            return solve_core(speed, ratio, method, stage)
-                .map(|(r, _)| r.spent_before(spent64 + s.iterations));
+            return solve_core(speed, ratio, method, stage).map(|(r, _)| r);
         }
     }
     let seed = T::from_f64(k64, p);
@@ -967,15 +968,7 @@ fn solve_ladder<T: Real>(
         tol,
         ..Stage::final_stage()
     };
-    solve_core(speed, ratio, method, stage).map(|(r, _)| r.spent_before(spent64))
-}
-
-impl<T: Real> Shape<T> {
-    /// Counts the evaluations of the lower stages in.
-    fn spent_before(mut self, lower: usize) -> Self {
-        self.iterations += lower;
-        self
-    }
+    solve_core(speed, ratio, method, stage).map(|(r, _)| r)
 }
 
 /// Bounds on a stage's derivative F′ (relative: the k-derivatives' measured 47ε at f64, 53ε at

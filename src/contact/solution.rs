@@ -326,8 +326,8 @@ impl<T: Real> ContactSolution<T> {
     /// The surface displacement u_z(x, y): inside the contact the punch's surface
     /// d0 − A1 x² − B1 y² (27); outside it the convolution (7) of the pressure with the
     /// moving-load Green's function (4), by adaptive quadrature to relative tolerance `tol`
-    /// (module [`convolution`]; unused inside). Its bound is relative to d0 (the displacement
-    /// decays to zero far away).
+    /// ([`ContactSolution::convolution`]; `tol` is unused inside). Its bound is relative to d0
+    /// (the displacement decays to zero far away).
     pub fn displacement(&self, x: &T, y: &T, tol: &RelError) -> Result<Estimated<T>> {
         let p = x.prec();
         let eps = RelError::eps::<T>(4, p);
@@ -337,7 +337,17 @@ impl<T: Real> ContactSolution<T> {
             let err = self.d0.error.add(eps.scale(1.0 + scale));
             return Ok(Estimated::new(self.d0.value.clone() - curv, err));
         }
-        let t = tol.max(eps).to_real::<T>(p);
+        self.convolution(x, y, tol)
+    }
+
+    /// The surface displacement u_z(x, y) by the convolution (7) of the computed pressure with
+    /// the moving-load Green's function (4), inside or outside the contact, by adaptive
+    /// quadrature to relative tolerance `tol`: the physics' own check of the solution (inside,
+    /// it reproduces the punch's surface (27); outside, it stays above it: the Signorini
+    /// conditions (1)). Its bound is relative to d0.
+    pub fn convolution(&self, x: &T, y: &T, tol: &RelError) -> Result<Estimated<T>> {
+        let p = x.prec();
+        let t = tol.max(RelError::eps::<T>(4, p)).to_real::<T>(p);
         let q = convolution::displacement(self, x, y, &t)?;
         // The quadrature's error, and the pressure's: p0's bound and the edge's shift.
         let err = RelError::of(&(q.error / &self.d0.value))

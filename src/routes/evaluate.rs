@@ -9,7 +9,7 @@
 //! comes from [`Route::Adaptive`] (one evaluation of G serves all five integrals). A named
 //! method runs that route, and a request it cannot serve is refused before any work: the series
 //! and the adaptive subtracted route give no derivatives or J0, the subtracted one and the
-//! fixed rules have a range of k, and no route goes below 16ε of the working precision.
+//! fixed rules have a range of k, and no route goes below [`FLOOR_EPS`]·ε of the working precision.
 
 use super::fast::{self, FastSetup};
 use super::graded::{self, GradedSetup};
@@ -27,7 +27,7 @@ pub struct IntegralOptions {
     /// The route ([`Method::Auto`] by default).
     pub method: Method,
     /// The relative accuracy wanted for I1 and I2; `None` (the default) asks for the working
-    /// precision's floor. Below 16ε of the working precision: [`Error::Unreachable`] before any
+    /// precision's floor. Below [`FLOOR_EPS`]·ε of the working precision: [`Error::Unreachable`] before any
     /// work (a higher precision reaches it: [`crate::integrals_to_tolerance`] picks one).
     pub tolerance: Option<RelError>,
     /// Also ∂I1/∂k and ∂I2/∂k (differentiated under the integral sign on the same nodes).
@@ -37,7 +37,7 @@ pub struct IntegralOptions {
 }
 
 /// The smallest tolerance any route meets, in units of ε of the working precision.
-pub const FLOOR_EPS: u32 = 16;
+pub const FLOOR_EPS: u32 = 12;
 
 /// Evaluates I1, I2 at many axis ratios for one speed: the fixed rules' k-independent part
 /// (G at every node) is built on first use and kept, so that a further k costs a square root and

@@ -96,11 +96,6 @@ impl Chart {
         self.y_log = y;
         self
     }
-    /// Adds a series.
-    pub fn with(mut self, s: Series) -> Chart {
-        self.series.push(s);
-        self
-    }
     /// Adds a series in place.
     pub fn push(&mut self, s: Series) {
         self.series.push(s);

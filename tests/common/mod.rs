@@ -138,28 +138,23 @@ pub fn integral_cases(name: &str) -> Vec<IntegralCase> {
         .collect()
 }
 
-/// Material, speed and axis ratio from `f64` inputs, taken exactly at precision `p`.
-pub fn integral_inputs<T: Real>(
-    nu: f64,
-    mr: f64,
-    k: f64,
-    p: T::Prec,
-) -> (Material<T>, Speed<T>, AxisRatio<T>) {
+/// Speed (with its material) and axis ratio from `f64` inputs, taken exactly at precision `p`.
+pub fn integral_inputs<T: Real>(nu: f64, mr: f64, k: f64, p: T::Prec) -> (Speed<T>, AxisRatio<T>) {
     let mat = Material::new(T::from_f64(nu, p)).expect("nu");
     let sp = mat.speed(T::from_f64(mr, p)).expect("M_R");
     let ax = AxisRatio::new(T::from_f64(k, p)).expect("k");
-    (mat, sp, ax)
+    (sp, ax)
 }
 
 /// I1, I2 by the adaptive route at [`ADAPTIVE_REF_PREC`] bits, and dI/dk by central differences
 /// with h = k·2^−100 (truncation ~2^−200 relative, rounding ~2^−300).
 pub fn adaptive_reference(nu: f64, mr: f64, k: f64) -> [Float; 4] {
     let p = mp(ADAPTIVE_REF_PREC);
-    let (mat, sp, ax) = integral_inputs::<Mp>(nu, mr, k, p);
+    let (sp, ax) = integral_inputs::<Mp>(nu, mr, k, p);
     let zero = Mp::zero(p);
     let at = |kk: Mp| {
         let ax = AxisRatio::new(kk).expect("k");
-        let r = direct::quadrature(&mat, &sp, &ax, &zero).expect("adaptive reference");
+        let r = direct::quadrature(&sp, &ax, &zero).expect("adaptive reference");
         (r.i1, r.i2)
     };
     let (i1, i2) = at(ax.k.clone());
@@ -234,11 +229,11 @@ pub fn mpmath_cases() -> Vec<MpmathCase> {
 
 impl MpmathCase {
     /// The case's material, speed and axis ratio, each decimal parsed at precision `p`.
-    pub fn inputs<T: Real>(&self, p: T::Prec) -> (Material<T>, Speed<T>, AxisRatio<T>) {
+    pub fn inputs<T: Real>(&self, p: T::Prec) -> (Speed<T>, AxisRatio<T>) {
         let mat = Material::new(T::parse(&self.nu, p).unwrap()).unwrap();
         let sp = mat.speed(T::parse(&self.mr, p).unwrap()).unwrap();
         let ax = AxisRatio::new(T::parse(&self.k, p).unwrap()).unwrap();
-        (mat, sp, ax)
+        (sp, ax)
     }
 
     /// The larger relative error of (I1, I2) against mpmath, in ε of the working precision.
