@@ -401,15 +401,8 @@ impl<T: Real> SpeedConsts<T> {
             let at = one.clone().atan2(&eps);
             let pole_t = at.clone() / &eps;
             let pole_1 = one.clone() - eps * at;
-            // a(−ε²) with M_R factored out: p = M², p − γc = M²(1 − γm1),
-            // s + δ² = M²(1 − m1), so a0 u0^{3/2} =
-            // (2/m1) M √(1 − γm1) [(2 − m1)² + 4√((1 − γm1)(1 − m1))]/(m1² − S m1 + q).
-            let g1 = one.clone() - gamma * &m1;
-            let b1 = one.clone() - &m1;
-            let two_m1 = T::from_i64(2, p) - &m1;
-            let d1 = two_m1.square() + (g1.clone() * &b1).sqrt().mul_i64(4);
-            let q1 = m1.clone() * (m1.clone() - &s23) + &q;
-            let g0 = two_over_m1.clone() * speed.mr() * g1.sqrt() * d1 / q1;
+            // a(−ε²)·u0^{3/2} = 2π G(1) M_R: the pole's strength (Material::pi_g_rayleigh).
+            let g0 = mat.pi_g_rayleigh().clone().mul_i64(2) * speed.mr();
             (g0, pole_t, pole_1)
         } else {
             (T::zero(p), T::zero(p), T::zero(p))
