@@ -138,18 +138,30 @@ impl<T: Real> Shape<T> {
             (self.k.clone().recip(), MajorAxis::Across)
         };
         let e = ((one.clone() - &q) * (one + &q)).sqrt();
-        // δ(e²) = 2q²·δk/k; |δe| ≤ min(δ(e²)/(2e), √δ(e²)), plus e's own rounding.
-        let (ef, qf) = (e.to_f64(), q.to_f64());
-        let de2 = RelError::of(&self.error_estimate).scale(2.0 * qf * qf);
-        let de = if ef > 0.0 {
-            de2.scale(0.5 / ef).min(de2.sqrt())
+        // δ(e²) = 2q²·δk/k; |δe| ≤ min(δ(e²)/(2e), √δ(e²)), plus e's own rounding (4ε·e),
+        // formed at the working precision (which holds any bound without underflow).
+        let de2 = q.square().mul_i64(2) * &self.error_estimate;
+        let root = de2.clone().sqrt();
+        let de = if e.is_positive() {
+            (de2 / e.clone().mul_i64(2)).min_of(root)
         } else {
-            de2.sqrt()
+            root
         };
-        let e_err = de.add(RelError::eps::<T>(4, p).scale(ef));
+        let e_err = de + &(T::epsilon(p).mul_i64(4) * &e);
+        if !(self.k.is_finite() && self.error_estimate.is_finite() && e_err.is_finite()) {
+            return Err(Error::NoConvergence {
+                what: "the axis ratio k",
+                iterations: self.iterations,
+                reached: format!(
+                    "k = {}, estimate {}",
+                    short(&self.k),
+                    short(&self.error_estimate)
+                ),
+            });
+        }
         Ok(Ellipse {
-            k: Estimated::new(self.k, RelError::of(&self.error_estimate)).checked("k = b/a")?,
-            e: Estimated::new(e, e_err).checked("eccentricity e")?,
+            k: Estimated::new(self.k, RelError::of(&self.error_estimate)),
+            e: Estimated::new(e, RelError::of(&e_err)),
             major,
             integrals: self.integrals.publish()?,
             iterations: self.iterations,
@@ -235,8 +247,8 @@ pub fn solve_ellipse<T: Real>(
             bound: "auto, adaptive or fixed (the series and adaptive-subtracted routes give no k-derivatives)",
         });
     }
-    let floor = RelError::eps::<T>(4, p);
     if let Some(t) = opts.tolerance {
+        let floor = RelError::eps::<T>(4, p);
         if t < floor {
             return Err(Error::Unreachable {
                 what: "the axis ratio k",
@@ -541,6 +553,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// inside the bracket; bisection when it does not; unbracketed, the step clamped to a factor
     /// e² in k and never past a known end. Returns the iterate and whether it is a full Newton
     /// step (which the stopping rules assume).
+    #[inline]
     fn next_iterate(&self, f: &T, df: &T) -> (T, bool) {
         let p = self.prec();
         let lam = &self.lam;
@@ -579,6 +592,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// cubic through them gives the root's remaining step h to O(D²h²), and I1, I2 are carried
     /// by their own cubics — one evaluation fewer than Newton's stop where the step is ≲ 10⁻⁶
     /// but not yet ≲ 10⁻⁹. Only for unseeded solves that may end on any evaluation.
+    #[inline]
     fn hermite_stop(
         &self,
         here: Option<&Point<T>>,
@@ -608,6 +622,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// Halley step) a ladder stage (no chord steps) also keeps, of the last iterate with
     /// derivatives and the one kept before it, the one whose distance D from this iterate
     /// minimises the secant's error bound r/D + D (r = 2¹²ε, the derivatives' error bound).
+    #[inline]
     fn hand_on(&mut self, h: &Point<T>) {
         let r = self.eps.to_f64() * 4096.0;
         let bound = |x: &T| {
@@ -641,6 +656,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// rounding level, or stopped shrinking near it; or, once Newton is converging (from a
     /// seed, or after two steps), a step δ leaves an error ~δ² — δ·age for a chord step whose
     /// derivative is `age` behind — and 64 δ·max(δ, age) ≤ ε·scale², counted in the estimate.
+    #[inline]
     fn converged(
         &self,
         lam_old: &T,
@@ -683,6 +699,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// stage (no chord steps allowed) takes one chord step with the lower precision's derivative
     /// and then evaluates the derivatives, so that it hands on its own F′ (a precision's worth of
     /// chord contraction) to the next stage.
+    #[inline]
     fn plan_chord(&mut self, step: &T, scale: &T, was_newton: bool, used: Option<Chord<T>>) {
         let past_first = self.seeded || self.spent >= 2;
         if self.allow_chord && was_newton && past_first && used.is_none() {

@@ -654,6 +654,7 @@ fn right_closed_forms_guarded<T: Real, const N: usize>(
 
 /// A slice of `n` values: inline (capacity `N`) for `f64` and double-double, on the heap for
 /// MPFR (whose values allocate anyway) and for counts above `N`.
+#[derive(Debug)]
 enum Buf<T, const N: usize> {
     Inline([T; N], usize),
     Heap(Vec<T>),
@@ -1015,13 +1016,17 @@ pub fn integrals_with_rule<T: Real>(
 pub struct FastSetup<T: Real + 'static> {
     rule: RuleRef<T>,
     sc: SpeedConsts<T>,
-    b: Vec<T>,
+    b: Buf<T, SETUP_INLINE>,
     /// Left: L/Q' with L = (2/m1) D' √(p − γc) (so that a(s) = (L/Q') u^{−3/2}), 1/(s + ε²).
-    left_lq: Vec<T>,
-    left_ih: Vec<T>,
+    left_lq: Buf<T, SETUP_INLINE>,
+    left_ih: Buf<T, SETUP_INLINE>,
     /// Right: r = b(σ) − Σ_{j<J} b_j σ^j.
-    right_r: Vec<T>,
+    right_r: Buf<T, SETUP_INLINE>,
 }
+
+/// Values a [`FastSetup`] holds inline per table at `f64` and double-double (the default rules
+/// have at most 36 nodes a half): a setup per solve allocates nothing there.
+const SETUP_INLINE: usize = 48;
 
 impl<T: Real> std::fmt::Debug for RuleRef<T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -1036,19 +1041,20 @@ impl<T: Real> FastSetup<T> {
         let p = speed.mr().prec();
         let rule = FastRule::<T>::get(p)?;
         let sc = SpeedConsts::new(speed);
-        let mut b = vec![T::zero(p); rule.sizes.taylor];
+        let mut b = Buf::zeros(rule.sizes.taylor, p);
         taylor_b(&sc, &rule, &mut b);
         let one = T::one(p);
         let l = &rule.left;
         let n = l.len();
-        let (mut left_lq, mut left_ih) = (Vec::with_capacity(n), Vec::with_capacity(n));
-        for (s, pp, two_p, four_p) in l.nodes() {
+        let (mut left_lq, mut left_ih) = (Buf::zeros(n, p), Buf::zeros(n, p));
+        let left_out = left_lq.iter_mut().zip(left_ih.iter_mut());
+        for ((s, pp, two_p, four_p), (lq, ih)) in l.nodes().zip(left_out) {
             let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
-            left_lq.push(sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq));
-            left_ih.push((s.clone() + &sc.eps2).recip());
+            *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
+            *ih = (s.clone() + &sc.eps2).recip();
         }
         let r = &rule.right;
-        let mut right_r = vec![T::zero(p); r.len()];
+        let mut right_r = Buf::zeros(r.len(), p);
         taylor_poly(&b, &r.s, &mut right_r);
         for ((sg, pp, two_p, four_p), ri) in r.nodes().zip(right_r.iter_mut()) {
             let (f1, dd, e) = sc.right_node(sg, pp, two_p, four_p, &one);
