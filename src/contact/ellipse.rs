@@ -406,7 +406,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// kept from an earlier iterate) the derivatives are not evaluated again: a chord step
     /// instead of a Newton step. `probe`: see [`Evaluator::for_newton`].
     fn eval(
-        &mut self,
+        &self,
         lam: &T,
         chord: Option<&Chord<T>>,
         probe: bool,
@@ -414,7 +414,6 @@ impl<'a, T: Real> Newton<'a, T> {
         let p = self.prec();
         let ax = AxisRatio::new(lam.clone().exp())?;
         let mut ci = self.evaluator.for_newton(&ax, chord.is_none(), probe)?;
-        self.spent += 1;
         let f = (ci.i2.clone() / &ci.i1 / self.ratio).ln();
         let df = match chord {
             Some(c) => {
@@ -463,6 +462,7 @@ impl<'a, T: Real> Newton<'a, T> {
         let p = self.prec();
         let (zero, two) = (T::zero(p), T::from_i64(2, p));
         let (f, df, _) = self.eval(&zero, None, true)?;
+        self.spent += 1;
         let newton = (df.is_positive() && df.is_finite()).then(|| -(f.clone() / &df));
         if f.is_negative() {
             if let Some(n) = newton {
@@ -488,6 +488,7 @@ impl<'a, T: Real> Newton<'a, T> {
     fn halley_step(&mut self, c: &Chord<T>) -> Result<Option<Shape<T>>> {
         let lam = self.lam.clone();
         let (f, df, ci) = self.eval(&lam, None, false)?;
+        self.spent += 1;
         let scale = lam.clone().abs().max_of(T::one(self.prec()));
         if let Some((root, err, ints)) = halley_from_f64(&lam, &f, &df, &ci, c, &self.eps, &scale) {
             return Ok(Some(finish(root.clone(), &root, ints, err, self.spent)));
@@ -503,8 +504,8 @@ impl<'a, T: Real> Newton<'a, T> {
         let p = self.prec();
         while self.spent < MAX_EVALUATIONS {
             let lam = self.lam.clone();
-            let chord = self.chord.take();
-            let (f, df, ci) = self.eval(&lam, chord.as_ref(), false)?;
+            let (f, df, ci) = self.eval(&lam, self.chord.as_ref(), false)?;
+            self.spent += 1;
             if f.is_zero() {
                 let shape = finish(lam.clone(), &lam, ci, T::zero(p), self.spent);
                 return Ok((shape, self.fresh_slope));
@@ -518,10 +519,12 @@ impl<'a, T: Real> Newton<'a, T> {
             let step = (next.clone() - &lam).abs();
             let scale = lam.clone().abs().max_of(T::one(p));
             // How far the derivative used for this step lies behind (0 for a Newton step).
-            let age = chord
+            let age = self
+                .chord
                 .as_ref()
                 .map_or_else(|| T::zero(p), |c| (lam.clone() - &c.lam).abs() + &c.rel_err);
-            let here = chord.is_none().then(|| Point {
+            let fresh = self.chord.is_none();
+            let here = fresh.then(|| Point {
                 lam: lam.clone(),
                 f,
                 df,
@@ -538,7 +541,7 @@ impl<'a, T: Real> Newton<'a, T> {
             if let Some(shape) = self.converged(&lam, ci, &step, &age, &scale, was_newton) {
                 return Ok((shape, self.fresh_slope));
             }
-            self.plan_chord(&step, &scale, was_newton, chord);
+            self.plan_chord(&step, &scale, was_newton, fresh);
             self.last_step = Some(step);
         }
         Err(Error::NoConvergence {
@@ -694,21 +697,21 @@ impl<'a, T: Real> Newton<'a, T> {
     /// ~δ², so that δ³ ≤ ε/64), it skips the k-derivatives and steps with this iterate's F′,
     /// which costs no convergence at that distance (a wrong guess costs no accuracy — the stop
     /// counts the derivative's age — and at most one more evaluation without derivatives).
-    /// A chord slope `used` for this step is kept for the next while the steps stay full ones
-    /// (the ladder's successive chord steps with a lower precision's F′); an intermediate ladder
-    /// stage (no chord steps allowed) takes one chord step with the lower precision's derivative
-    /// and then evaluates the derivatives, so that it hands on its own F′ (a precision's worth of
-    /// chord contraction) to the next stage.
+    /// A chord slope used for this step (not `fresh`) is kept for the next while the steps stay
+    /// full ones (the ladder's successive chord steps with a lower precision's F′); an
+    /// intermediate ladder stage (no chord steps allowed) takes one chord step with the lower
+    /// precision's derivative and then evaluates the derivatives, so that it hands on its own F′
+    /// (a precision's worth of chord contraction) to the next stage.
     #[inline]
-    fn plan_chord(&mut self, step: &T, scale: &T, was_newton: bool, used: Option<Chord<T>>) {
+    fn plan_chord(&mut self, step: &T, scale: &T, was_newton: bool, fresh: bool) {
         let past_first = self.seeded || self.spent >= 2;
-        if self.allow_chord && was_newton && past_first && used.is_none() {
+        if self.allow_chord && was_newton && past_first && fresh {
             let cube = step.square() * step;
             if cube.mul_i64(64) <= self.eps.clone() * &scale.square() * scale {
                 self.chord = self.fresh_slope.clone();
             }
-        } else if was_newton && self.allow_chord {
-            self.chord = used;
+        } else if !was_newton || !self.allow_chord {
+            self.chord = None;
         }
     }
 }
