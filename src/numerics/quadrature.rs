@@ -18,9 +18,10 @@
 //! Rule caches grow with every (type, n or level, precision) requested and are never freed: a
 //! Gauss–Legendre rule holds `n` values, a tanh–sinh level about `9·2^level` values at 1024 bits.
 
+use super::gauss_legendre;
 use super::sum::CompSum;
 use crate::error::{Error, Result};
-use crate::scalar::{short, Dd, Mp, MpPrec, Real};
+use crate::scalar::{short, Dd, Real};
 use std::any::{Any, TypeId};
 use std::cmp::Ordering;
 use std::collections::hash_map::DefaultHasher;
@@ -101,139 +102,11 @@ pub struct GaussLegendre<T: Real> {
     weights: Vec<T>,
 }
 
-/// `(P_n(x), P_{n−1}(x))` by the three-term recurrence
-/// `(k+1) P_{k+1} = (2k+1) x P_k − k P_{k−1}`, which is stable upward on [−1, 1]. `n ≥ 1`.
-fn legendre<U: Real>(n: usize, x: &U) -> (U, U) {
-    let mut p0 = U::one(x.prec());
-    let mut p1 = x.clone();
-    for k in 1..n as i64 {
-        let p2 = ((x.clone() * &p1).mul_i64(2 * k + 1) - p0.mul_i64(k)).div_i64(k + 1);
-        p0 = std::mem::replace(&mut p1, p2);
-    }
-    (p1, p0)
-}
-
-/// `(1 − x²) P_n'(x) = n (P_{n−1} − x P_n)`, and `1 − x² = (1 − x)(1 + x)` (no cancellation
-/// near ±1). Returns `(P_n, n (P_{n−1} − x P_n), 1 − x²)`.
-fn legendre_scaled<U: Real>(n: usize, x: &U) -> (U, U, U) {
-    let (pn, pn1) = legendre(n, x);
-    let one = U::one(x.prec());
-    let omx2 = (one.clone() - x) * &(one + x);
-    let d = (pn1 - &(x.clone() * &pn)).mul_i64(n as i64);
-    (pn, d, omx2)
-}
-
-/// Newton's method for a root of `P_n` from `x`: `dx = P_n/P_n' = P_n (1 − x²) / (n (P_{n−1} − x
-/// P_n))`. Stops when the step is below `ε` (absolute: nodes lie in [−1, 1], and convergence is
-/// quadratic, so the next error is far smaller), when the step stops shrinking (rounding noise;
-/// accepted only if the previous step was already below `√ε`), or after `cap` steps.
-fn polish_node<U: Real>(n: usize, mut x: U, cap: usize) -> Result<U> {
-    let p = x.prec();
-    let eps = U::epsilon(p);
-    let noise = U::epsilon_root(p, 2);
-    let mut last: Option<U> = None;
-    let fail = |it: usize, dx: &U| Error::NoConvergence {
-        what: "Gauss-Legendre node (Newton on P_n)",
-        iterations: it,
-        reached: short(dx),
-    };
-    for it in 0..cap {
-        let (pn, d, omx2) = legendre_scaled(n, &x);
-        let dx = pn * &omx2 / d;
-        let adx = dx.clone().abs();
-        if !adx.is_finite() {
-            return Err(fail(it, &adx));
-        }
-        if let Some(prev) = &last {
-            if adx >= *prev {
-                return if *prev <= noise {
-                    Ok(x)
-                } else {
-                    Err(fail(it, prev))
-                };
-            }
-        }
-        x -= dx;
-        if adx <= eps {
-            return Ok(x);
-        }
-        last = Some(adx);
-    }
-    Err(fail(cap, &last.unwrap_or_else(|| U::one(p))))
-}
-
 /// Values of one real type rounded once into another (through an exact MPFR copy).
 fn convert<U: Real, T: Real>(v: &[U], p: T::Prec) -> Vec<T> {
     v.iter()
         .map(|u| T::from_float(&u.to_float(U::bits(u.prec())), p))
         .collect()
-}
-
-/// Nonnegative nodes (decreasing) and weights of the n-point rule, computed in `U` (precision
-/// `q`) accurately enough to be rounded to a target of `target_bits` bits.
-///
-/// Each node starts from Tricomi's expansion `x_k ≈ (1 − (n−1)/(8n³) − (39 − 28/sin²θ)/(384n⁴))
-/// cos θ`, `θ = π(4k−1)/(4n+2)`, polished by Newton in `f64` (cheap), then by Newton in `U`,
-/// each pass doubling the correct bits. The weight `w(x) = 2/((1 − x²) P_n'(x)²)` comes from the
-/// same pass: at the last iterate `x` with step `dx` (root `x − dx`),
-/// `w(x − dx) = w(x)·(1 + 2x·dx/(1 − x²)) + O(n⁴dx²)`, since `d ln w/dx = −2x/(1 − x²)` at a root
-/// (Legendre's equation). The pass is the last once `4(n+1)⁴dx² ≤ 2^-6 ε_target`, which also
-/// makes Newton's own remaining error `≈ n² dx²/6` negligible.
-fn build<U: Real>(n: usize, q: U::Prec, target_bits: u32) -> Result<(Vec<U>, Vec<U>)> {
-    let m = n.div_ceil(2);
-    let cap = 10 + 2 * U::bits(q).max(2).ilog2() as usize;
-    let nf = n as f64;
-    let enough = U::one(q).mul_pow2(-(target_bits as i32) - 5);
-    let n1 = U::from_i64(n as i64 + 1, q).powi(4).mul_i64(4);
-    let mut nodes = Vec::with_capacity(m);
-    let mut weights = Vec::with_capacity(m);
-    for k in 1..=m {
-        let mut x = if 2 * k - 1 == n {
-            // The middle node of an odd rule is 0 by symmetry (then P_n(0) = 0 exactly).
-            U::zero(q)
-        } else {
-            let th = std::f64::consts::PI * (4 * k - 1) as f64 / (4.0 * nf + 2.0);
-            let s2 = th.sin().powi(2);
-            let seed =
-                (1.0 - (nf - 1.0) / (8.0 * nf.powi(3)) - (39.0 - 28.0 / s2) / (384.0 * nf.powi(4)))
-                    * th.cos();
-            U::from_f64(polish_node::<f64>(n, seed, cap)?, q)
-        };
-        let mut prev: Option<U> = None;
-        let mut done = false;
-        for it in 0..cap {
-            let (pn, d, omx2) = legendre_scaled(n, &x);
-            let dx = pn * &omx2 / &d;
-            let w = omx2.clone().mul_i64(2) / d.square();
-            let adx = dx.clone().abs();
-            let diverging = prev.as_ref().is_some_and(|pv| adx >= *pv && !adx.is_zero());
-            if !adx.is_finite() || !w.is_finite() || diverging {
-                return Err(Error::NoConvergence {
-                    what: "Gauss-Legendre node (Newton at guard precision)",
-                    iterations: it,
-                    reached: short(&adx),
-                });
-            }
-            if n1.clone() * &adx.square() <= enough {
-                let corr = (x.clone() * &dx).mul_pow2(1) / &omx2;
-                weights.push(w.clone() + &(w * &corr));
-                x -= dx;
-                done = true;
-                break;
-            }
-            x -= dx;
-            prev = Some(adx);
-        }
-        if !done {
-            return Err(Error::NoConvergence {
-                what: "Gauss-Legendre node (Newton at guard precision)",
-                iterations: cap,
-                reached: prev.as_ref().map(short).unwrap_or_default(),
-            });
-        }
-        nodes.push(x);
-    }
-    Ok((nodes, weights))
 }
 
 impl<T: Real> GaussLegendre<T> {
@@ -257,17 +130,19 @@ impl<T: Real> GaussLegendre<T> {
     }
 
     fn compute(n: usize, p: T::Prec) -> Result<Self> {
-        // Guard precision, then round once: the recurrence loses about log₂ n bits, so the rule
-        // is built in a wider type U and each node and weight rounded to T. U is double-double
-        // for targets of at most 53 bits (fast), MPFR with 32 guard bits otherwise.
+        // Guard precision, then round once: the rule is computed 32 bits beyond the target and
+        // each node and weight rounded to T — in double-double by Newton on the recurrence for
+        // targets of at most 53 bits, by the short-point construction of
+        // [`super::gauss_legendre`] above (a rule built before at a higher precision is
+        // rounded down).
         let bits = T::bits(p);
         let (nodes, weights) = if bits <= 53 {
-            let (x, w) = build::<Dd>(n, (), bits)?;
+            let (x, w) = gauss_legendre::reference_build::<Dd>(n, (), bits)?;
             (convert::<Dd, T>(&x, p), convert::<Dd, T>(&w, p))
         } else {
-            let q = MpPrec::new(bits as u64 + 32)?;
-            let (x, w) = build::<Mp>(n, q, bits)?;
-            (convert::<Mp, T>(&x, p), convert::<Mp, T>(&w, p))
+            let raw = gauss_legendre::raw_rule(n, bits)?;
+            let round = |v: &[rug::Float]| v.iter().map(|f| T::from_float(f, p)).collect();
+            (round(&raw.nodes), round(&raw.weights))
         };
         // Guard against Newton landing on a neighbouring root: nodes must decrease strictly
         // and every weight be positive and finite.
