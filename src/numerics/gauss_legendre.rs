@@ -470,7 +470,7 @@ fn node_dd(n: usize, x: f64) -> Dd {
     let mut x = Dd::from_f64(x, ());
     for _ in 0..DD_STEPS {
         let (pn, d, omx2) = legendre_scaled(n, &x);
-        let dx = pn * &omx2 / d;
+        let dx = pn * omx2 / d;
         if !dx.is_finite() {
             break;
         }
