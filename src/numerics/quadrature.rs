@@ -76,6 +76,62 @@ where
     Ok(rule)
 }
 
+/// A slot for the rule of one fixed-precision type (`f64`, double-double), filled once from the
+/// shared cache: later requests read it without the cache's lock or hash. Declared as a
+/// `static` by each rule type that needs it (see [`fixed_slot`]).
+pub(crate) type FixedSlot<R> = OnceLock<Result<Arc<R>>>;
+
+/// The rule of a fixed-precision type from its `slot`, filled on first use by [`cached`] (so
+/// that the shared cache holds it too). The rule lives as long as the process.
+pub(crate) fn slotted<R, P>(
+    slot: &'static FixedSlot<R>,
+    index: usize,
+    p: P,
+    prec_of: impl Fn(&R) -> P,
+    build: impl FnOnce() -> Result<R>,
+) -> Result<&'static Arc<R>>
+where
+    R: Any + Send + Sync,
+    P: Hash + Eq,
+{
+    match slot.get_or_init(|| cached(index, p, prec_of, build)) {
+        Ok(rule) => Ok(rule),
+        Err(e) => Err(e.clone()),
+    }
+}
+
+/// The [`FixedSlot`] of `$rule<T>` for `T` = `f64` or [`Dd`], `None` for other types: expands to
+/// a function `fn $name<T: Real>() -> Option<&'static FixedSlot<$rule<T>>>`.
+macro_rules! fixed_slot {
+    ($name:ident, $rule:ident) => {
+        fn $name<T: $crate::scalar::Real>(
+        ) -> Option<&'static $crate::numerics::quadrature::FixedSlot<$rule<T>>> {
+            use std::any::{Any, TypeId};
+            use $crate::numerics::quadrature::FixedSlot;
+            static F64: FixedSlot<$rule<f64>> = std::sync::OnceLock::new();
+            static DD: FixedSlot<$rule<$crate::scalar::Dd>> = std::sync::OnceLock::new();
+            let any: &'static dyn Any = if TypeId::of::<T>() == TypeId::of::<f64>() {
+                &F64
+            } else if TypeId::of::<T>() == TypeId::of::<$crate::scalar::Dd>() {
+                &DD
+            } else {
+                return None;
+            };
+            any.downcast_ref::<FixedSlot<$rule<T>>>()
+        }
+    };
+}
+pub(crate) use fixed_slot;
+
+/// Forgets every rule of the shared cache and every Gauss–Legendre rule built above 53 bits, so
+/// that the next request builds them again (for measuring first-use costs in one process; the
+/// rules of `f64` and double-double stay in their slots). Rules already handed out stay valid.
+#[doc(hidden)]
+pub fn clear_rule_caches() {
+    cache().lock().unwrap_or_else(|e| e.into_inner()).clear();
+    gauss_legendre::clear_store();
+}
+
 // ---------------------------------------------------------------------------------------------
 // Gauss–Legendre rules
 

@@ -97,12 +97,11 @@
 
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
-use crate::numerics::quadrature::{cached, GaussLegendre};
+use crate::numerics::quadrature::{cached, fixed_slot, slotted, GaussLegendre};
 use crate::physics::Speed;
-use crate::scalar::{short, Dd, Field, Real};
-use std::any::{Any, TypeId};
+use crate::scalar::{short, Field, Real};
 use std::ops::Deref;
-use std::sync::{Arc, OnceLock};
+use std::sync::Arc;
 
 // ---------------------------------------------------------------------------------------------
 // Rule sizes and the per-precision rule
@@ -220,9 +219,9 @@ impl<T: Real> Half<T> {
 
 /// The fixed rules of the fast route at one precision: nodes and weights on [0, 1] for both
 /// halves, with the node-only quantities precomputed, and the exact rational constants of the
-/// Taylor coefficients of b and of the moment recurrences. Built once per precision and cached
-/// (a static slot for `f64` and double-double, so that a call takes no lock; the shared rule
-/// cache for MPFR).
+/// Taylor coefficients of b and of the moment recurrences. Built once per precision and kept in
+/// the shared rule cache of [`crate::numerics::quadrature`]; for `f64` and double-double a
+/// static slot filled from it serves later calls without the cache's lock.
 #[derive(Debug)]
 pub struct FastRule<T: Real> {
     prec: T::Prec,
@@ -238,7 +237,7 @@ pub struct FastRule<T: Real> {
 
 /// A borrowed or shared [`FastRule`].
 pub enum RuleRef<T: Real + 'static> {
-    /// A rule in a static slot (`f64`, double-double).
+    /// A rule in its type's static slot (`f64`, double-double).
     Static(&'static FastRule<T>),
     /// A rule from the shared cache (MPFR).
     Shared(Arc<FastRule<T>>),
@@ -254,31 +253,15 @@ impl<T: Real> Deref for RuleRef<T> {
     }
 }
 
-type Slot<T> = OnceLock<Result<FastRule<T>>>;
-
-/// The static slot of a fixed-precision type, if `T` is one.
-fn static_slot<T: Real>() -> Option<&'static Slot<T>> {
-    static F64: Slot<f64> = OnceLock::new();
-    static DD: Slot<Dd> = OnceLock::new();
-    let any: &'static dyn Any = if TypeId::of::<T>() == TypeId::of::<f64>() {
-        &F64
-    } else if TypeId::of::<T>() == TypeId::of::<Dd>() {
-        &DD
-    } else {
-        return None;
-    };
-    any.downcast_ref::<Slot<T>>()
-}
+fixed_slot!(static_slot, FastRule);
 
 impl<T: Real> FastRule<T> {
     /// The rule for precision `p` with the sizes of [`RuleSizes::for_bits`], built on first use
     /// and cached for the life of the process.
     pub fn get(p: T::Prec) -> Result<RuleRef<T>> {
         if let Some(slot) = static_slot::<T>() {
-            return match slot.get_or_init(|| Self::build(Self::default_sizes(p), p)) {
-                Ok(r) => Ok(RuleRef::Static(r)),
-                Err(e) => Err(e.clone()),
-            };
+            let build = || Self::build(Self::default_sizes(p), p);
+            return slotted(slot, 0, p, |r: &Self| r.prec, build).map(|r| RuleRef::Static(&**r));
         }
         cached(
             0,

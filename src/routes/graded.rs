@@ -45,9 +45,10 @@
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
 //! checked against the adaptive route at 400 bits in `tests/graded.rs` over ν ∈ {−0.9, 0, 0.25,
 //! 0.5}, M_R ∈ {0, 0.5, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {1, 1.5, 3, 10, 10³, 10⁶}, with the
-//! derivatives: worst 4.1ε at `f64`, 2.9ε at double-double, 2.7ε and 3.2ε at MPFR 128 and 256
-//! bits (derivatives, ≤ 128 bits: 2.9ε, 2.8ε, 2.5ε); a layout for another k_ref (k at 5/4 of
-//! it, or 16 times below it): 4.1ε, 2.8ε, 3.4ε, 3.4ε. The node counts' margin, measured on
+//! derivatives: worst 4.0ε at `f64`, 2.9ε at double-double, 3.4ε and 3.2ε at MPFR 128 and 256
+//! bits (derivatives, ≤ 128 bits: 3.3ε, 2.4ε, 3.1ε); a layout for another k_ref (k at 5/4 of
+//! it, or 16 times below it): 3.9ε, 2.4ε, 3.6ε, 4.1ε (`cargo test --release --test graded --
+//! --nocapture`). The node counts' margin, measured on
 //! this grid with every panel of one length ℓ = 1…8 in turn: with 2^{−bits−8} (the counts of
 //! [`left_nodes`]) the worst error is 4.9ε, dI/dk 5.9ε; with 2^{−bits−6} dI/dk reaches 17ε,
 //! with 2^{−bits−4} 32ε, with 2^{−bits} 370ε.
@@ -55,9 +56,9 @@
 use super::fast::SpeedConsts;
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
-use crate::numerics::quadrature::{cached, GaussLegendre};
+use crate::numerics::quadrature::{cached, fixed_slot, slotted, GaussLegendre};
 use crate::physics::Speed;
-use crate::scalar::{short, Real};
+use crate::scalar::{short, Field, Real};
 use std::sync::{Arc, OnceLock};
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
@@ -204,33 +205,38 @@ struct Rules<T: Real> {
     right_w: Vec<T>,
 }
 
+fixed_slot!(rules_slot, Rules);
+
 impl<T: Real> Rules<T> {
+    /// The tables of precision `p` from the shared rule cache (for `f64` and double-double
+    /// through their static slots, without the cache's lock).
     fn get(p: T::Prec) -> Result<Arc<Self>> {
+        let prec_of = |r: &Self| r.prec;
+        match rules_slot::<T>() {
+            Some(slot) => slotted(slot, 0, p, prec_of, || Self::build(p)).cloned(),
+            None => cached(0, p, prec_of, || Self::build(p)),
+        }
+    }
+
+    fn build(p: T::Prec) -> Result<Self> {
         let bits = T::bits(p);
-        cached(
-            0,
-            p,
-            |r: &Self| r.prec,
-            || {
-                let one = T::one(p);
-                let right = GaussLegendre::<T>::get(panel_nodes(bits), p)?;
-                let (mut right_s, mut right_w) = (Vec::new(), Vec::new());
-                for_panel_nodes(&right, &T::zero(p), &one, |v, w| {
-                    right_s.push(v.square());
-                    right_w.push(w.clone());
-                });
-                let table = plan_table(&length_costs(bits), PLANNED);
-                Ok(Rules {
-                    prec: p,
-                    left: (0..MAX_UNITS).map(|_| OnceLock::new()).collect(),
-                    plans: (0..PLANNED - MAX_UNITS)
-                        .map(|c| pick_plan(&table, c))
-                        .collect(),
-                    right_s,
-                    right_w,
-                })
-            },
-        )
+        let one = T::one(p);
+        let right = GaussLegendre::<T>::get(panel_nodes(bits), p)?;
+        let (mut right_s, mut right_w) = (Vec::new(), Vec::new());
+        for_panel_nodes(&right, &T::zero(p), &one, |v, w| {
+            right_s.push(v.square());
+            right_w.push(w.clone());
+        });
+        let table = plan_table(&length_costs(bits), PLANNED);
+        Ok(Rules {
+            prec: p,
+            left: (0..MAX_UNITS).map(|_| OnceLock::new()).collect(),
+            plans: (0..PLANNED - MAX_UNITS)
+                .map(|c| pick_plan(&table, c))
+                .collect(),
+            right_s,
+            right_w,
+        })
     }
 
     /// The table of a left panel of length `l`·ln 2 (1 ≤ l ≤ [`max_units`]), built on first use.
@@ -241,16 +247,29 @@ impl<T: Real> Rules<T> {
         }
         let p = self.prec;
         let gl = GaussLegendre::<T>::get(left_nodes(T::bits(p), l), p)?;
-        let one = T::one(p);
-        // (1 + t)·ℓ ln 2/2 and the weight's factor ℓ ln 2/2.
+        // The weight's factor ℓ ln 2/2.
         let half = T::ln2(p) * &T::from_ratio(l as i64, 2, p);
         let (mut ep, mut em, mut lw) = (Vec::new(), Vec::new(), Vec::new());
-        for_panel_nodes(&gl, &-one.clone(), &one, |t, w| {
-            let x = (one.clone() + &t) * &half;
-            ep.push(x.clone().exp());
-            em.push(x.neg().exp());
-            lw.push(w.clone() * &half);
-        });
+        // The nodes come in pairs x± = (1 ± t)·ℓ ln 2/2 with x₊ + x₋ = ℓ ln 2, so that one
+        // exponential and one reciprocal serve both: e^{x₋} = 2^ℓ e^{−x₊}, e^{−x₋} = 2^{−ℓ} e^{x₊}
+        // (exact scalings). Both are formed at the guard precision of `Real::Wide` and rounded
+        // once. The middle node of an odd rule is its own pair.
+        let pw = T::wide_prec(p);
+        let half_w = T::Wide::ln2(pw) * &T::Wide::from_ratio(l as i64, 2, pw);
+        let l2 = l as i32;
+        for (t, w) in gl.nodes().iter().zip(gl.weights()) {
+            let wh = w.clone() * &half;
+            let e = ((T::Wide::one(pw) + &t.to_wide(pw)) * &half_w).exp();
+            let r = e.clone().recip();
+            ep.push(T::from_wide(&e, p));
+            em.push(T::from_wide(&r, p));
+            lw.push(wh.clone());
+            if !t.is_zero() {
+                ep.push(T::from_wide(&r.mul_pow2(l2), p));
+                em.push(T::from_wide(&e.mul_pow2(-l2), p));
+                lw.push(wh);
+            }
+        }
         // Another thread may have built it meanwhile: the first one stored wins.
         Ok(cell.get_or_init(|| LeftRule { ep, em, lw }))
     }
