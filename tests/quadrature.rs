@@ -161,13 +161,17 @@ fn gauss_legendre_nodes_and_weights_correctly_rounded() {
 /// The short-point construction (fixed-point recurrence at a 112-bit point, then the Taylor
 /// expansion there) against Newton on the three-term recurrence at the guard precision (the
 /// construction it replaced, kept as `reference_rule`): both rounded to the working precision,
-/// every node and weight equal or one ulp apart, at 256 and 1024 bits.
+/// every node and weight equal or one ulp apart, at 256 and 1024 bits (and for small rules at 4096
+/// and 8192 bits).
 #[test]
 fn gauss_legendre_short_point_construction_matches_newton_on_the_recurrence() {
     use moving_hertz::numerics::gauss_legendre::reference_rule;
-    let cases: [(u32, &[usize]); 2] = [
+    let cases: [(u32, &[usize]); 4] = [
         (256, &[1, 2, 3, 4, 7, 20, 63, 64, 109, 200]),
         (1024, &[5, 63, 120, 247, 441]),
+        // A Taylor expansion of some 50 and 100 terms at the short point.
+        (4096, &[64]),
+        (8192, &[24]),
     ];
     for (bits, ns) in cases {
         let p = MpPrec::new(bits as u64).expect("precision");

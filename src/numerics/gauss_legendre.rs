@@ -1,18 +1,18 @@
 //! Gauss–Legendre nodes and weights at any precision: the construction behind
 //! [`crate::numerics::quadrature::GaussLegendre`].
 //!
-//! **Targets up to 53 bits** ([`reference_build`] in double-double): Newton's method on the
+//! **Targets up to 53 bits** (`reference_build` in double-double): Newton's method on the
 //! three-term recurrence from asymptotic initial values, every node polished in `Dd` and rounded
 //! once. About `n²` double-double operations a rule.
 //!
-//! **Above 53 bits** ([`build_fast`]), each node in three stages, the precision rising:
+//! **Above 53 bits** (`build_fast`), each node in three stages, the precision rising:
 //!
-//! 1. *`f64`*: an asymptotic initial value ([`seed`]: the Bessel-zero formula of Gatteschi and
+//! 1. *`f64`*: an asymptotic initial value (`seed`: the Bessel-zero formula of Gatteschi and
 //!    Pittaluga near the ends, Tricomi's expansion in the interior), Newton on the recurrence in
 //!    `f64` (about 2⁻⁵² absolute), then one Newton step in double-double (about 2⁻⁸⁰ or better).
 //! 2. *A short point, every bit of the target*: the double-double node rounded to a multiple of
 //!    2⁻¹¹², x̃ = X/2¹¹². P_n(x̃) and P_{n−1}(x̃) come from Bonnet's recurrence in fixed point
-//!    ([`legendre_fixed`]), scaled as Q_k = k!·P_k so that no step divides:
+//!    (`legendre_fixed`), scaled as Q_k = k!·P_k so that no step divides:
 //!    Q_{k+1} = (2k + 1) x̃ Q_k − k² Q_{k−1}. Since x̃ has 128 bits, a step is a product of a
 //!    p-bit integer by a two-limb one ((2k + 1)X < 2¹²⁸), a shift and a multiply-subtract by the
 //!    machine word k²:
@@ -28,12 +28,12 @@
 //! Work for a rule of n nodes at p bits: n²/2 fixed-point steps of `O(p/64)` word operations and
 //! `O(n·p/80)` products at falling precision, against `O(n²)` p-bit products (about
 //! log₂(p/53) + 1 passes of the recurrence a node) for Newton on the recurrence at the target
-//! precision ([`reference_build`]); `benches/precision_scaling.rs` measures both. Rules are built
-//! once per (n, precision) and kept ([`raw_rule`]); a rule built at a higher precision is
+//! precision (`reference_build`); `benches/precision_scaling.rs` measures both. Rules are built
+//! once per (n, precision) and kept (`raw_rule`); a rule built at a higher precision is
 //! rounded down for a lower one.
 //!
-//! Accuracy: the values are computed at the target precision plus [`GUARD`] bits and rounded
-//! once by the caller; `tests/quadrature.rs` compares them with [`reference_build`] (Newton on the
+//! Accuracy: the values are computed at the target precision plus `GUARD` bits and rounded
+//! once by the caller; `tests/quadrature.rs` compares them with `reference_build` (Newton on the
 //! recurrence at the guard precision) at 256 and 1024 bits.
 
 use crate::error::{Error, Result};
@@ -286,6 +286,17 @@ fn lg(v: &Float) -> f64 {
     v.get_exp().map_or(f64::NEG_INFINITY, f64::from)
 }
 
+/// log₂|v| (−∞ for zero): from the exponent and the leading digits, within 10⁻¹⁵ bits.
+fn log2_abs(v: &Float) -> f64 {
+    match v.get_exp() {
+        None => f64::NEG_INFINITY,
+        Some(e) => {
+            let m = Float::with_val(53, v >> e).abs().to_f64();
+            f64::from(e) + m.log2()
+        }
+    }
+}
+
 /// The Taylor coefficients u_m = s^m P_n^{(m)}(x̃) (up to the common factor 2^e/n!) with the
 /// binary size τ_m of each term u_m η^m/m! of f, for the first-order |η|, until two consecutive
 /// terms fall 2^(w + 24) below the first-order term.
@@ -340,7 +351,9 @@ impl Refine {
                     reached: format!("2^{}", tau[m + 1] - r),
                 });
             }
-            let prec = Self::prec_for(self.w, r, tau[m].max(tau[m + 1]));
+            // The next coefficient's term is about as large as these two or smaller (a margin
+            // of 32 bits for one that happens to be small).
+            let prec = Self::prec_for(self.w, r, tau[m].max(tau[m + 1]) + 32.0);
             let a = Float::with_val(xt.prec() + 32, xt * (2 * (m as i64) + 2));
             let b = Float::with_val(s.prec() + 64, s * ((n - m as i64) * (n + m as i64 + 1)));
             let mut next = Float::with_val(prec, &a * &u[m + 1]);
@@ -375,8 +388,12 @@ impl Refine {
         let floor = r - q as f64 - 24.0;
         let top = (0..c.len()).rev().find(|&m| tau[m] >= floor).unwrap_or(0);
         let mut acc = Float::with_val(Self::prec_for(q, r, tau[top]), &c[top]);
+        // The partial sum from m on carries every term above m: its precision follows the
+        // largest of them (a coefficient that happens to be small does not lower it).
+        let mut big = tau[top];
         for m in (0..top).rev() {
-            let prec = Self::prec_for(q, r, tau[m]);
+            big = big.max(tau[m]);
+            let prec = Self::prec_for(q, r, big);
             let e = Float::with_val(prec, eta);
             let mut t = Float::with_val(prec, &e * &acc);
             t /= (m + 1) as u32;
@@ -411,7 +428,8 @@ impl Refine {
         let (eta, dfull) = if u0.is_zero() {
             (Float::with_val(w, 0), u1.clone())
         } else {
-            let lg_eta = lg(&u0) - lg(&u1);
+            // log₂|η| to a small fraction of a bit (the m-th term carries m times its error).
+            let lg_eta = log2_abs(&Float::with_val(64, &u0 / &u1));
             let ex = self.expansion(u0, u1, &xt, &s, lg_eta)?;
             // The first-order step −u_0/u_1 is good to about r − τ_2 bits; Newton doubles them.
             let r = ex.tau[1];
@@ -421,13 +439,18 @@ impl Refine {
                     "Gauss-Legendre node (short point too far from the root)",
                 ));
             }
-            let mut good = first as u32 - 4;
-            let p0 = (2 * good + 32).min(w + 16);
+            // The node x̃ + sη needs sη to 2^−w relative to x̃, i.e. η to `need` bits relative:
+            // u_0 = P_n(x̃) is |sη|·|P_n'| small, and holds only that many bits beyond the
+            // fixed-point recurrence's absolute accuracy.
+            let need = (w as f64 + 8.0 + lg(&s) + lg_eta - lg(&xt)).clamp(16.0, (w + 8) as f64);
+            let need = need as u32;
+            let mut good = (first as u32 - 4).min(need);
+            let p0 = (2 * good + 32).min(need + 16);
             let mut eta = Float::with_val(p0, -(Float::with_val(p0, &ex.u[0]) / &ex.u[1]));
             // Each Newton step must land within 2^−(good − 4) of η (relative): quadratic
             // convergence from a first step good to `first` bits.
-            while good < w + 8 {
-                let next = (2 * good).saturating_sub(8).min(w + 16);
+            while good < need {
+                let next = (2 * good).saturating_sub(8).min(need + 8);
                 let fv = Self::f(&ex, &eta, next, r);
                 let dv = Self::df(&ex, &eta, good + 16, lg_eta);
                 let step = Float::with_val(next + 16, &fv / &dv);

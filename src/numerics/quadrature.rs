@@ -135,6 +135,26 @@ pub fn clear_rule_caches() {
 // ---------------------------------------------------------------------------------------------
 // Gauss–Legendre rules
 
+/// The highest working precision at which quadrature rules are built: 32768 bits. A rule of n
+/// nodes costs about n²·bits/128 word operations to build (`docs/precision.md`), and the routes'
+/// rules have n ∝ bits, so that the first call at p bits costs ∝ p³: minutes at 16384 bits,
+/// over half an hour at 32768 bits on the machine of `docs/data/precision_scaling.csv`. Above
+/// it (MPFR allows up to 2^20 bits) every rule-based route refuses with [`Error::Precision`].
+pub const MAX_RULE_BITS: u32 = 32768;
+
+/// [`Error::Precision`] naming `bits` when it exceeds [`MAX_RULE_BITS`]: every route that builds
+/// quadrature rules checks it before any work.
+pub fn check_rule_bits(bits: u32) -> Result<()> {
+    if bits > MAX_RULE_BITS {
+        return Err(Error::Precision {
+            bits: bits as u64,
+            min: crate::scalar::MpPrec::MIN_BITS,
+            max: MAX_RULE_BITS,
+        });
+    }
+    Ok(())
+}
+
 /// An n-point Gauss–Legendre rule on [−1, 1] at one precision: exact for polynomials of degree
 /// `2n − 1`, error `O(ρ^(−2n))` for integrands analytic inside the Bernstein ellipse `ρ`.
 ///
@@ -169,17 +189,26 @@ impl<T: Real> GaussLegendre<T> {
     /// Largest number of nodes [`GaussLegendre::get`] accepts.
     pub const MAX_NODES: usize = 4096;
 
+    /// Largest number of nodes at precision `p`: [`GaussLegendre::MAX_NODES`] up to 2048 bits,
+    /// twice the bits above (a rule of n nodes gains about 2n·log₂ρ bits, so that larger rules
+    /// would only serve integrands with singularities within ρ < 2^(1/4) of the interval).
+    pub fn max_nodes(p: T::Prec) -> usize {
+        Self::MAX_NODES.max(2 * T::bits(p) as usize)
+    }
+
     /// The n-point rule at precision `p`, computed on first use and cached for the life of the
     /// process (see the type's documentation for accuracy and cost).
     ///
-    /// Errors: [`Error::Domain`] unless `1 ≤ n ≤ 4096`; [`Error::NoConvergence`] if a node's
-    /// Newton iteration fails (not observed for any `n` in range).
+    /// Errors: [`Error::Precision`] above [`MAX_RULE_BITS`] (checked first);
+    /// [`Error::Domain`] unless `1 ≤ n ≤` [`GaussLegendre::max_nodes`]; [`Error::NoConvergence`]
+    /// if a node's refinement fails (not observed for any `n` in range).
     pub fn get(n: usize, p: T::Prec) -> Result<Arc<Self>> {
-        if n == 0 || n > Self::MAX_NODES {
+        check_rule_bits(T::bits(p))?;
+        if n == 0 || n > Self::max_nodes(p) {
             return Err(Error::Domain {
                 name: "Gauss-Legendre node count n",
                 value: n.to_string(),
-                bound: "1 <= n <= 4096",
+                bound: "1 <= n <= max(4096, 2 x bits)",
             });
         }
         cached(n, p, |r: &Self| r.prec, || Self::compute(n, p))
@@ -609,6 +638,7 @@ impl<T: Real> DeLevel<T> {
     }
 
     fn get(level: u32, p: T::Prec) -> Result<Arc<Self>> {
+        check_rule_bits(T::bits(p))?;
         cached(
             level as usize,
             p,
