@@ -116,7 +116,7 @@ use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
 use crate::physics::Speed;
-use crate::scalar::{short, Field, Real};
+use crate::scalar::{short, Field, Mp, MpPrec, Real};
 use std::ops::Deref;
 use std::sync::{Arc, OnceLock};
 
@@ -630,8 +630,8 @@ fn right_closed_forms<T: Real>(
     [s1, s2, d1, d2]
 }
 
-/// [`right_closed_forms`] at the working precision, or, above double-double, at the guard
-/// precision [`Real::Wide`] (≥ 2·bits + 32) and rounded once: the expansion of P about the
+/// [`right_closed_forms`] at the working precision, or, above double-double, with 64 guard bits
+/// (in MPFR) and rounded once: the expansion of P about the
 /// branch point −k² cancels like √J·log J when k → 1 (P(−1) and the quotient grow like √J while
 /// the integrals stay O(1)), about 15ε at 256 bits (J = 34) in working precision. At `f64` and
 /// double-double (J = 8, 14) the cancellation costs under 2ε and no guard precision is used.
@@ -656,19 +656,22 @@ fn right_closed_forms_guarded<T: Real, const N: usize>(
             &mut scratch,
         );
     }
-    let pw = T::wide_prec(p);
-    let kw = kc.k.to_wide(pw);
+    // 64 guard bits cover the √J·log J growth for every J a rule can have (J ≈ 0.13·bits).
+    let bits = T::bits(p);
+    let pw = MpPrec::clamped(bits + 64);
+    let up = |x: &T| Mp::from_float(&x.to_float(bits), pw);
+    let kw = up(&kc.k);
     let k2w = kw.square();
-    let bw: Vec<T::Wide> = b.iter().map(|x| x.to_wide(pw)).collect();
-    let inv: Vec<T::Wide> = (1..=j_max as i64)
-        .map(|j| T::Wide::from_ratio(1, 2 * j, pw))
+    let bw: Vec<Mp> = b.iter().map(up).collect();
+    let inv: Vec<Mp> = (1..=j_max as i64)
+        .map(|j| Mp::from_ratio(1, 2 * j, pw))
         .collect();
-    let ratio: Vec<T::Wide> = (1..=j_max as i64)
-        .map(|j| T::Wide::from_ratio(2 * j - 1, 2 * j, pw))
+    let ratio: Vec<Mp> = (1..=j_max as i64)
+        .map(|j| Mp::from_ratio(2 * j - 1, 2 * j, pw))
         .collect();
-    let mut scratch = vec![T::Wide::zero(pw); len];
+    let mut scratch = vec![Mp::zero(pw); len];
     let r = right_closed_forms(&bw, &kw, &k2w, &inv, &ratio, dk, &mut scratch);
-    r.map(|x| T::from_wide(&x, p))
+    r.map(|x| T::from_float(&x.0, p))
 }
 
 // ---------------------------------------------------------------------------------------------
