@@ -21,6 +21,7 @@ the rounds) and prints the table.
 
 Run from the repository root after `cargo build --release`:
     python3 tools/compare_arb_mpmath.py [--rounds 2] [--bits 256,512,...] [--mpmath-max 8192]
+                                        [--bin target/release/moving-hertz]
 Needs python-flint, mpmath and gmpy2 (pip install python-flint mpmath gmpy2).
 """
 
@@ -32,6 +33,7 @@ import subprocess
 import sys
 import time
 
+sys.set_int_max_str_digits(0)  # decimal strings of 8192-bit numbers
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 BIN = os.path.join(ROOT, "target", "release", "moving-hertz")
 OUT = os.path.join(ROOT, "docs", "data", "precision_scaling.csv")
@@ -187,7 +189,9 @@ def main():
                     help="skip mpmath above this precision")
     ap.add_argument("--timeout", type=float, default=3600)
     ap.add_argument("--out", default=OUT)
+    ap.add_argument("--bin", default=BIN, help="the moving-hertz binary (release build)")
     a = ap.parse_args()
+    globals()["BIN"] = a.bin
     bits_list = [int(b) for b in a.bits.split(",")]
     rows, k_by_bits = [], {}
     for bits in bits_list:
@@ -243,7 +247,17 @@ def main():
             "ellipse_warm_over_256", "k_agrees_with_lower_bits", "arb_agrees_bits",
             "mpmath_agrees_bits"]
     with open(a.out, "w", newline="") as fh:
-        fh.write("# python3 tools/compare_arb_mpmath.py " + " ".join(sys.argv[1:]) + "\n")
+        shown, skip = [], False
+        for arg in sys.argv[1:]:  # the command without the local paths
+            if skip or arg in ("--bin", "--out"):
+                skip = not skip
+                continue
+            shown.append(arg)
+        fh.write("# python3 tools/compare_arb_mpmath.py " + " ".join(shown) + "\n")
+        cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo")
+                    if l.startswith("model name")), "unknown")
+        fh.write(f"# {cpu}, {os.cpu_count()} cores shared with other jobs; "
+                 "ratios are within one run, the tools alternating\n")
         fh.write("# times in seconds (minimum over the rounds); cold = a fresh process; "
                  "*_agrees_bits = -log2 of the relative difference from the crate's I1, I2; "
                  "k_agrees_with_lower_bits = the same for k against the precision below\n")

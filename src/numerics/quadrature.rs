@@ -1,8 +1,7 @@
 //! Quadrature at the working precision.
 //!
-//! * [`GaussLegendre`] — n-point Gauss–Legendre rules (f64 seed, Newton polish on the three-term
-//!   recurrence at a guard precision, rounded once to the working precision), cached per
-//!   (type, n, precision).
+//! * [`GaussLegendre`] — n-point Gauss–Legendre rules (built 32 bits beyond the working
+//!   precision by [`super::gauss_legendre`] and rounded once), cached per (type, n, precision).
 //! * [`integrate`] — adaptive Gauss–Legendre with breakpoints: each panel is compared with its two
 //!   halves and the panel with the largest discrepancy is split until the total is below the
 //!   tolerance.
@@ -15,8 +14,10 @@
 //! below it is met as well as the precision allows, and the error estimate says how well). Work
 //! is bounded by [`Limits`]; exceeding it is [`Error::NoConvergence`].
 //!
-//! Rule caches grow with every (type, n or level, precision) requested and are never freed: a
-//! Gauss–Legendre rule holds `n` values, a tanh–sinh level about `9·2^level` values at 1024 bits.
+//! Rule caches grow with every (type, n or level, precision) requested and are never freed (one
+//! cache for every rule of the crate, the routes' tables included): a Gauss–Legendre rule holds
+//! `n` values, a tanh–sinh level about `9·2^level` values at 1024 bits. No rule is built above
+//! [`MAX_RULE_BITS`].
 
 use super::gauss_legendre;
 use super::sum::CompSum;
@@ -162,14 +163,16 @@ pub fn check_rule_bits(bits: u32) -> Result<()> {
 /// is `0` when `n` is odd) and their weights.
 ///
 /// Accuracy: the rule is built at a guard precision (double-double for targets of at most 53
-/// bits, MPFR with 32 extra bits otherwise) and rounded once, so every node and weight is the
+/// bits, 32 extra bits otherwise) and rounded once, so every node and weight is the
 /// working-precision number nearest to the exact one (within ε/2 relative, checked against
 /// 200–400-bit rules by the tests); at `f64` the weights sum to 2 within ε/2.
 ///
-/// Work: the first request for (n, precision) runs Newton on the three-term recurrence, `n`
-/// steps per evaluation, for `n/2` nodes: one or two double-double passes per node for `f64`
-/// (about 0.5 s for n = 4096), `log₂(bits/53) + 1` MPFR passes otherwise; later requests are a
-/// cache lookup.
+/// Work: the first request for (n, precision) builds the rule — for `f64` by Newton on the
+/// three-term recurrence in double-double (`n` steps an evaluation, one or two passes a node),
+/// above by the short-point construction of [`super::gauss_legendre`] (one fixed-point pass of
+/// the recurrence a node, each step `O(bits/64)` word operations: about n²·bits/128 in all);
+/// later requests are a cache lookup, or round down a rule of the same n built at a higher
+/// precision.
 #[derive(Debug)]
 pub struct GaussLegendre<T: Real> {
     n: usize,
