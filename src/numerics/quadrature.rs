@@ -485,43 +485,8 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
     let eps = T::epsilon(p);
     let tiny = T::min_positive(p);
     let mut evals = 0usize;
-
-    let mut rule_on = |a: &T, b: &T, evals: &mut usize| -> Result<T> {
-        *evals += n;
-        let v = rule.integrate(&mut f, a, b);
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(not_finite(&v))
-        }
-    };
-    // The panel [a, b] given its one-panel value `whole` (computed here if `None`); `Err` holds
-    // `(value, error)` of a panel too narrow to halve.
-    let mut make = |a: T,
-                    b: T,
-                    whole: Option<T>,
-                    evals: &mut usize|
-     -> Result<std::result::Result<Panel<T>, (T, T)>> {
-        let whole = match whole {
-            Some(w) => w,
-            None => rule_on(&a, &b, evals)?,
-        };
-        let Some(m) = midpoint(&a, &b) else {
-            let e = whole.clone().abs();
-            return Ok(Err((whole, e)));
-        };
-        let left = rule_on(&a, &m, evals)?;
-        let right = rule_on(&m, &b, evals)?;
-        let value = left.clone() + &right;
-        let err = (whole - &value).abs();
-        Ok(Ok(Panel {
-            a,
-            b,
-            left,
-            right,
-            value,
-            err,
-        }))
+    let mut make = |a: T, b: T, whole: Option<T>, evals: &mut usize| {
+        make_panel(&rule, &mut f, a, b, whole, evals)
     };
 
     let mut heap = BinaryHeap::new();
@@ -540,17 +505,7 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
             Err(vf) => frozen.push(vf),
         }
     }
-    // Exact totals (value, error, Σ|value|) over all panels, compensated.
-    let totals = |heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)]| {
-        let (mut v, mut e, mut l1) = (CompSum::new(p), CompSum::new(p), CompSum::new(p));
-        let all = heap.iter().map(|q| (&q.value, &q.err));
-        for (val, err) in all.chain(frozen.iter().map(|(a, b)| (a, b))) {
-            v.add(val.clone());
-            e.add(err.clone());
-            l1.add(val.clone().abs());
-        }
-        (v.total(), e.total(), l1.total())
-    };
+    let totals = |heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)]| panel_totals(heap, frozen, p);
     let threshold = |v: &T, l1: &T| {
         (tol.clone() * &v.clone().abs()).max_of(l1.clone().mul_i64(4) * &eps) + &tiny
     };
@@ -609,6 +564,68 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
             frozen.push((q.value, q.err));
         }
     }
+}
+
+/// The n-point `rule` on [a, b], counted, refused when not finite.
+fn rule_on<T: Real, F: FnMut(&T) -> T>(
+    rule: &GaussLegendre<T>,
+    f: &mut F,
+    a: &T,
+    b: &T,
+    evals: &mut usize,
+) -> Result<T> {
+    *evals += rule.n;
+    let v = rule.integrate(f, a, b);
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(not_finite(&v))
+    }
+}
+
+/// The panel [a, b] of [`integrate`] given its one-panel value `whole` (computed here if
+/// `None`): the rule on both halves and the discrepancy. `Err` holds `(value, error)` of a
+/// panel too narrow to halve.
+fn make_panel<T: Real, F: FnMut(&T) -> T>(
+    rule: &GaussLegendre<T>,
+    f: &mut F,
+    a: T,
+    b: T,
+    whole: Option<T>,
+    evals: &mut usize,
+) -> Result<std::result::Result<Panel<T>, (T, T)>> {
+    let whole = match whole {
+        Some(w) => w,
+        None => rule_on(rule, f, &a, &b, evals)?,
+    };
+    let Some(m) = midpoint(&a, &b) else {
+        let e = whole.clone().abs();
+        return Ok(Err((whole, e)));
+    };
+    let left = rule_on(rule, f, &a, &m, evals)?;
+    let right = rule_on(rule, f, &m, &b, evals)?;
+    let value = left.clone() + &right;
+    let err = (whole - &value).abs();
+    Ok(Ok(Panel {
+        a,
+        b,
+        left,
+        right,
+        value,
+        err,
+    }))
+}
+
+/// Exact totals (value, error, Σ|value|) over all panels of [`integrate`], compensated.
+fn panel_totals<T: Real>(heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)], p: T::Prec) -> (T, T, T) {
+    let (mut v, mut e, mut l1) = (CompSum::new(p), CompSum::new(p), CompSum::new(p));
+    let all = heap.iter().map(|q| (&q.value, &q.err));
+    for (val, err) in all.chain(frozen.iter().map(|(a, b)| (a, b))) {
+        v.add(val.clone());
+        e.add(err.clone());
+        l1.add(val.clone().abs());
+    }
+    (v.total(), e.total(), l1.total())
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -704,13 +721,8 @@ fn de_interval<T: Real, F: FnMut(&T, &T, &T) -> T>(
 ) -> Result<(T, T)> {
     let p = a.prec();
     let eps = T::epsilon(p);
-    let width = b.clone() - a;
-    let r = width.clone().mul_pow2(-1);
+    let mut sweep = DeSweep::new(a, b, uses_gaps);
     let max_level = limits.max_levels.min(MAX_DE_LEVEL);
-
-    // Raw sums over every abscissa so far: S_k = h_k · Σ w f, L1_k = h_k · Σ |w f|.
-    let mut raw = CompSum::new(p);
-    let mut raw_abs = T::zero(p);
     // The last non-negligible term where the table or the representable range ran out, per
     // level (a bound on what was cut off); kept as h_k·|w f|.
     let mut tail = T::zero(p);
@@ -737,104 +749,16 @@ fn de_interval<T: Real, F: FnMut(&T, &T, &T) -> T>(
         // e^(−π h cosh t / 2) per step, ≈ 0.2 at h = 2^-10, t = 7), so each level leaves out
         // well under ε·L1/64.
         let negl = (l1_prev.clone() * &eps).mul_pow2(-6);
-        let mut quiet = 0;
-        // Per side (right, left): still inside the representable range, and |f| at the side's
-        // last abscissa (if the side closes, the first omitted weight times it estimates what
-        // is left out: the sliver within an ulp of the endpoint).
-        let mut open = [true, true];
-        let mut last = [T::zero(p), T::zero(p)];
-        let (mut level_tail, mut level_edge) = (T::zero(p), T::zero(p));
-        for (i, (g, wh)) in table.gap.iter().zip(&table.weight).enumerate() {
-            let delta = r.clone() * g;
-            let w = r.clone() * wh;
-            let mut term = T::zero(p);
-            let mut size = T::zero(p);
-            if k == 0 && i == 0 {
-                // t = 0: the midpoint, counted once.
-                let x = a.clone() + &r;
-                let v = f(&x, &r, &r);
-                *evals += 1;
-                if !v.is_finite() {
-                    return Err(not_finite(&v));
-                }
-                term = v * &w;
-                size = term.clone().abs();
-            } else {
-                let co = width.clone() - &delta; // distance to the far endpoint
-                for side in 0..2 {
-                    if !open[side] {
-                        continue;
-                    }
-                    let x = if side == 0 {
-                        b.clone() - &delta
-                    } else {
-                        a.clone() + &delta
-                    };
-                    if !uses_gaps && (x == *a || x == *b) {
-                        // The abscissa rounds onto the endpoint and `f` sees only `x`: this side
-                        // stops here (with the gaps, `f` still resolves the distance).
-                        open[side] = false;
-                        level_edge = level_edge.max_of(w.clone() * &last[side]);
-                        continue;
-                    }
-                    let v = if side == 0 {
-                        f(&x, &co, &delta)
-                    } else {
-                        f(&x, &delta, &co)
-                    };
-                    *evals += 1;
-                    if !v.is_finite() {
-                        return Err(not_finite(&v));
-                    }
-                    last[side] = v.clone().abs();
-                    let wv = v * &w;
-                    size += &wv.clone().abs();
-                    term += &wv;
-                }
-            }
-            raw.add(term);
-            raw_abs += &size;
-            if size.clone().mul_pow2(-(k as i32)) <= negl {
-                quiet += 1;
-                if quiet >= 2 {
-                    break;
-                }
-            } else {
-                quiet = 0;
-            }
-            if i + 1 == table.gap.len() {
-                // The table ran out while terms were still not negligible.
-                level_tail = level_tail.max_of(size);
-            }
-            if !open[0] && !open[1] {
-                break;
-            }
-        }
+        let (level_tail, level_edge) = sweep.level(f, &table, k, &negl, evals)?;
         // Whatever was still non-negligible when the table or the range ran out.
         tail = tail.max_of(level_tail.mul_pow2(-(k as i32)));
         edge = edge.max_of(level_edge.mul_pow2(-(k as i32)));
-        let s = raw.total().mul_pow2(-(k as i32));
-        let l1 = raw_abs.clone().mul_pow2(-(k as i32));
+        let s = sweep.raw.total().mul_pow2(-(k as i32));
+        let l1 = sweep.raw_abs.clone().mul_pow2(-(k as i32));
         let floor = l1.clone().mul_i64(2) * &eps + &edge;
         if let Some(sp) = prev.replace(s.clone()) {
             let d = (s.clone() - &sp).abs();
-            // Truncation estimate for S_k from d_k = |S_k − S_{k−1}| (≈ the error of S_{k−1})
-            // and the ratio ρ = d_k/d_{k−1}: in the double-exponential regime (ρ ≤ 1/4) the
-            // error of S_k is ≈ d_k²/d_{k−1}; d_k·√ρ is well above that. Slower, geometric
-            // convergence leaves d_k·ρ/(1−ρ); no convergence (ρ ≥ 1) leaves d_k.
-            let trunc = match &d_prev {
-                Some(dp) if k >= 2 && d < *dp && dp.is_positive() => {
-                    let rho = d.clone() / dp;
-                    let quarter = T::from_ratio(1, 4, p);
-                    if rho <= quarter {
-                        d.clone() * &rho.sqrt()
-                    } else {
-                        let geo = rho.clone() / &(T::one(p) - &rho);
-                        d.clone() * &geo.max_of(T::one(p))
-                    }
-                }
-                _ => d.clone(),
-            };
+            let trunc = de_truncation(&d, d_prev.as_ref(), k);
             let est = trunc.clone().max_of(floor.clone()) + &tail;
             if k >= 3 {
                 // Converged: the estimate meets the tolerance, or nothing is left to gain
@@ -861,6 +785,162 @@ fn de_interval<T: Real, F: FnMut(&T, &T, &T) -> T>(
         iterations: *evals,
         reached: relative(&last_est.unwrap_or_else(|| s.clone().abs()), &s),
     })
+}
+
+/// Truncation estimate for S_k from d_k = |S_k − S_{k−1}| (≈ the error of S_{k−1}) and the
+/// ratio ρ = d_k/d_{k−1}: in the double-exponential regime (ρ ≤ 1/4) the error of S_k is
+/// ≈ d_k²/d_{k−1}; d_k·√ρ is well above that. Slower, geometric convergence leaves
+/// d_k·ρ/(1−ρ); no convergence (ρ ≥ 1) leaves d_k.
+fn de_truncation<T: Real>(d: &T, d_prev: Option<&T>, k: u32) -> T {
+    match d_prev {
+        Some(dp) if k >= 2 && d < dp && dp.is_positive() => {
+            let p = d.prec();
+            let rho = d.clone() / dp;
+            if rho <= T::from_ratio(1, 4, p) {
+                d.clone() * &rho.sqrt()
+            } else {
+                let geo = rho.clone() / &(T::one(p) - &rho);
+                d.clone() * &geo.max_of(T::one(p))
+            }
+        }
+        _ => d.clone(),
+    }
+}
+
+/// The running raw sums of [`de_interval`] over every abscissa so far, level by level:
+/// S_k = h_k · Σ w f (`raw`) and L1_k = h_k · Σ |w f| (`raw_abs`), both before the factor h_k.
+struct DeSweep<'a, T: Real> {
+    a: &'a T,
+    b: &'a T,
+    /// Half the interval's width.
+    r: T,
+    width: T,
+    uses_gaps: bool,
+    raw: CompSum<T>,
+    raw_abs: T,
+}
+
+impl<'a, T: Real> DeSweep<'a, T> {
+    fn new(a: &'a T, b: &'a T, uses_gaps: bool) -> Self {
+        let p = a.prec();
+        let width = b.clone() - a;
+        DeSweep {
+            a,
+            b,
+            r: width.clone().mul_pow2(-1),
+            width,
+            uses_gaps,
+            raw: CompSum::new(p),
+            raw_abs: T::zero(p),
+        }
+    }
+
+    /// Adds level `k`'s new abscissas (both sides, the midpoint at level 0) until two terms in
+    /// a row are below `negl` (scaled to the level) or both sides close. Returns the level's
+    /// cut-off term where its table ran out and its end-point sliver (before the factor h_k).
+    fn level<F: FnMut(&T, &T, &T) -> T>(
+        &mut self,
+        f: &mut F,
+        table: &DeLevel<T>,
+        k: u32,
+        negl: &T,
+        evals: &mut usize,
+    ) -> Result<(T, T)> {
+        let p = self.a.prec();
+        let mut quiet = 0;
+        // Per side (right, left): still inside the representable range, and |f| at the side's
+        // last abscissa (if the side closes, the first omitted weight times it estimates what
+        // is left out: the sliver within an ulp of the endpoint).
+        let mut open = [true, true];
+        let mut last = [T::zero(p), T::zero(p)];
+        let (mut level_tail, mut level_edge) = (T::zero(p), T::zero(p));
+        for (i, (g, wh)) in table.gap.iter().zip(&table.weight).enumerate() {
+            let delta = self.r.clone() * g;
+            let w = self.r.clone() * wh;
+            let (term, size) = if k == 0 && i == 0 {
+                // t = 0: the midpoint, counted once.
+                let x = self.a.clone() + &self.r;
+                let v = checked(f(&x, &self.r, &self.r), evals)?;
+                let term = v * &w;
+                (term.clone(), term.abs())
+            } else {
+                let (mut term, mut size) = (T::zero(p), T::zero(p));
+                for side in 0..2 {
+                    if !open[side] {
+                        continue;
+                    }
+                    match self.side(f, side, &delta, evals)? {
+                        Some(v) => {
+                            last[side] = v.clone().abs();
+                            let wv = v * &w;
+                            size += &wv.clone().abs();
+                            term += &wv;
+                        }
+                        None => {
+                            open[side] = false;
+                            level_edge = level_edge.max_of(w.clone() * &last[side]);
+                        }
+                    }
+                }
+                (term, size)
+            };
+            self.raw.add(term);
+            self.raw_abs += &size;
+            if size.clone().mul_pow2(-(k as i32)) <= *negl {
+                quiet += 1;
+                if quiet >= 2 {
+                    break;
+                }
+            } else {
+                quiet = 0;
+            }
+            if i + 1 == table.gap.len() {
+                // The table ran out while terms were still not negligible.
+                level_tail = level_tail.max_of(size);
+            }
+            if !open[0] && !open[1] {
+                break;
+            }
+        }
+        Ok((level_tail, level_edge))
+    }
+
+    /// `f` at the abscissa `delta` inside the right (`side` 0) or left (1) end, or `None`
+    /// where the abscissa rounds onto the endpoint and `f` sees only `x` (with the gaps, `f`
+    /// still resolves the distance).
+    fn side<F: FnMut(&T, &T, &T) -> T>(
+        &self,
+        f: &mut F,
+        side: usize,
+        delta: &T,
+        evals: &mut usize,
+    ) -> Result<Option<T>> {
+        let co = self.width.clone() - delta; // distance to the far endpoint
+        let x = if side == 0 {
+            self.b.clone() - delta
+        } else {
+            self.a.clone() + delta
+        };
+        if !self.uses_gaps && (x == *self.a || x == *self.b) {
+            return Ok(None);
+        }
+        let v = if side == 0 {
+            f(&x, &co, delta)
+        } else {
+            f(&x, delta, &co)
+        };
+        checked(v, evals).map(Some)
+    }
+}
+
+/// One integrand value, counted, refused when not finite.
+fn checked<T: Real>(v: T, evals: &mut usize) -> Result<T> {
+    *evals += 1;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(not_finite(&v))
+    }
 }
 
 /// Tanh–sinh (double-exponential) quadrature of `f` over the breakpoints `points` (strictly
