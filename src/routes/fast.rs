@@ -1075,8 +1075,8 @@ pub struct FastSetup<T: Real + 'static> {
 /// b_j of b and the remainders r = b(σ) − Σ_{j<J} b_j σ^j at the nodes.
 #[derive(Debug)]
 struct TaylorRight<T> {
-    b: Buf<T, SETUP_INLINE>,
-    r: Buf<T, SETUP_INLINE>,
+    b: Buf<T, TAYLOR_INLINE>,
+    r: Buf<T, RIGHT_INLINE>,
 }
 
 impl<T: Real> TaylorRight<T> {
@@ -1097,9 +1097,12 @@ impl<T: Real> TaylorRight<T> {
     }
 }
 
-/// Values a [`FastSetup`] holds inline per table at `f64` and double-double (the default rules
-/// have at most 36 nodes a half): a setup per solve allocates nothing there.
-const SETUP_INLINE: usize = 48;
+/// Values a [`FastSetup`] holds inline per table at `f64` and double-double, sized for the
+/// default rules there ([`RuleSizes::for_bits`]: at most 44 left nodes, 26 right nodes and 14
+/// Taylor terms), so that a set-up per solve allocates nothing and moves little.
+const SETUP_INLINE: usize = 44;
+const RIGHT_INLINE: usize = 26;
+const TAYLOR_INLINE: usize = 14;
 
 impl<T: Real> std::fmt::Debug for RuleRef<T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -1125,12 +1128,13 @@ impl<T: Real> FastSetup<T> {
             *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
             *ih = (s.clone() + &sc.eps2).recip();
         }
-        let taylor = OnceLock::new();
-        let sinh = if T::bits(p) <= 106 {
-            let _ = taylor.set(TaylorRight::new(&rule, &sc));
-            Vec::new()
+        let (taylor, sinh) = if T::bits(p) <= 106 {
+            (OnceLock::from(TaylorRight::new(&rule, &sc)), Vec::new())
         } else {
-            (0..OCTAVES).map(|_| OnceLock::new()).collect()
+            (
+                OnceLock::new(),
+                (0..OCTAVES).map(|_| OnceLock::new()).collect(),
+            )
         };
         Ok(FastSetup {
             rule,
