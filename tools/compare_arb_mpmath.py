@@ -256,7 +256,10 @@ def main():
         fh.write("# python3 tools/compare_arb_mpmath.py " + " ".join(shown) + "\n")
         cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo")
                     if l.startswith("model name")), "unknown")
-        fh.write(f"# {cpu}, {os.cpu_count()} cores shared with other jobs; "
+        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT,
+                                capture_output=True, text=True).stdout.strip() or "unknown"
+        day = time.strftime("%Y-%m-%d", time.gmtime())
+        fh.write(f"# commit {commit}, {day}, {cpu}, {os.cpu_count()} cores shared with other jobs; "
                  "ratios are within one run, the tools alternating\n")
         fh.write("# times in seconds (minimum over the rounds); cold = a fresh process; "
                  "*_agrees_bits = -log2 of the relative difference from the crate's I1, I2; "
