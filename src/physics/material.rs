@@ -309,6 +309,26 @@ fn rounds_to<T: Real>(text: &str, x: &T) -> String {
 /// Accessors give M_R, 1 − M_R, M_R², 1 − M_R² (formed as (1 − M_R)(1 + M_R) from the gap,
 /// so accurate to a few ε relative however close M_R is to 1), M2² = m1·M_R² and
 /// M1² = γ·M2².
+///
+/// A speed cannot be paired with a material other than its own: every solver takes the
+/// material from the speed, and neither can be changed after construction.
+///
+/// ```
+/// use moving_hertz::prelude::*;
+/// let steel = Material::new(0.3_f64)?;
+/// let rubber = Material::new(0.49_f64)?;
+/// let v = steel.speed(0.9)?;
+/// assert_eq!(v.material().nu(), steel.nu());
+/// // The same M_R in another material is another speed: M2² = m1·M_R² follows the material.
+/// assert_ne!(v.m2sq(), rubber.speed(0.9)?.m2sq());
+/// # Ok::<(), moving_hertz::Error>(())
+/// ```
+///
+/// ```compile_fail
+/// use moving_hertz::prelude::*;
+/// let mut v = Material::new(0.3_f64).unwrap().speed(0.9).unwrap();
+/// v.material = Material::new(0.49_f64).unwrap(); // private: a speed keeps its material
+/// ```
 #[derive(Clone, Debug)]
 pub struct Speed<T: Real> {
     material: Material<T>,
