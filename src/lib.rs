@@ -39,5 +39,5 @@ pub struct ReadmeDoctests;
 /// The traits and types most programs need: `use moving_hertz::prelude::*;`.
 pub mod prelude {
     pub use crate::error::{Error, Result};
-    pub use crate::scalar::{Complex, Dd, Field, Mp, MpPrec, Precision, Real};
+    pub use crate::scalar::{Complex, Dd, Field, FieldOps, Mp, MpPrec, Precision, Real};
 }

@@ -99,7 +99,7 @@ use super::{AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::{cached, GaussLegendre};
 use crate::physics::{Material, Speed};
-use crate::scalar::{short, Dd, Field, Real};
+use crate::scalar::{short, Dd, FieldOps, Real};
 use std::any::{Any, TypeId};
 use std::ops::Deref;
 use std::sync::{Arc, OnceLock};
@@ -1218,7 +1218,7 @@ impl<T: Real> FastSetup<T> {
 mod tests {
     use super::*;
     use crate::routes::coefficients::GreenSeries;
-    use crate::scalar::{Mp, MpPrec};
+    use crate::scalar::{Field, Mp, MpPrec};
     use rug::Rational;
 
     /// b_j by an independent route at 512 bits: the coefficients c_l of g (recurrence (36),

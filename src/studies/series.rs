@@ -20,7 +20,7 @@ use crate::physics::Material;
 use crate::routes::moments::{ke_condition_bits, moments_with, KeForm, MomentMethod};
 use crate::routes::series::{integrals, terms_estimate, SeriesOptions};
 use crate::routes::AxisRatio;
-use crate::scalar::{Field, Mp, MpPrec, Precision, Real};
+use crate::scalar::{FieldOps, Mp, MpPrec, Precision, Real};
 use rug::Float;
 
 // ---------------------------------------------------------------------------------------------
