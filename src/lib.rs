@@ -15,6 +15,7 @@
 //! | [`physics`] | material and speeds, the Rayleigh function and roots, the Green's function (sections 3, 6) |
 //! | [`studies`] | convergence, stability and cost studies: data and charts |
 //! | [`routes`] | the series route (section 5) and the direct routes (sections 6–7) to I1, I2 |
+//! | [`symbolic`] | the coefficients of (36) and (40) as exact rational functions of ν and e² |
 //!
 //! Conventions: the elliptic *parameter* is `m = k²` throughout [`numerics::elliptic`] (as in
 //! DLMF §19, mpmath and scipy); the paper's `k = b/a` is an axis ratio, never a modulus.
@@ -28,6 +29,7 @@ pub mod physics;
 pub mod routes;
 pub mod scalar;
 pub mod studies;
+pub mod symbolic;
 
 pub use error::{Error, Result};
 
