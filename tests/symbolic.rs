@@ -14,7 +14,7 @@ use moving_hertz::routes::GreenSeries;
 use moving_hertz::scalar::{decimal_to_rational, FieldOps, Mp, Real};
 use moving_hertz::symbolic::{
     coefficient_items, eval_real, expression, green_coefficients, ke_condition, moment_forms,
-    moment_items, printed_f1, printed_f2, render, Poly, RatFunc, Style, Variable,
+    moment_items, pole_terms, printed_f1, printed_f2, render, Poly, RatFunc, Style, Variable,
 };
 use moving_hertz::Error;
 use rug::{Float, Rational};
@@ -485,4 +485,31 @@ fn condition_of_the_ke_basis_from_the_closed_forms() {
         ke_condition(&t, &Rational::new()),
         Err(Error::Domain { .. })
     ));
+}
+
+/// α_n and β_n have a pole of order n at e² = 0 with opposite leading coefficients (L_n stays
+/// finite and K(0) = E(0)): the cancellation of the K, E basis as e → 0.
+#[test]
+fn alpha_and_beta_have_opposite_poles_of_order_n_at_e2_zero() {
+    let t = moment_forms(80).expect("n <= 80");
+    let poles = pole_terms(&t);
+    for p in &poles[1..] {
+        assert_eq!(p.order as usize, p.n, "n = {}", p.n);
+        assert_eq!(p.alpha, -p.beta.clone(), "n = {}", p.n);
+        assert!(p.alpha.cmp0() != std::cmp::Ordering::Equal, "n = {}", p.n);
+    }
+    // At e² = 2^-20, |α_n|K + |β_n|E ≈ 2|a_n|·2^(20n)·π/2 while L_n ≈ W_n = (π/2)·Π(2j−1)/(2j):
+    // the bits lost are log₂(2|a_n|) + 20n − log₂ Π(2j−1)/(2j), to O(e²).
+    let e2 = Rational::from((1, 1 << 20));
+    let closed = ke_condition(&t[..=10], &e2).expect("condition");
+    for (n, (bits_l, _)) in closed.iter().enumerate().skip(1) {
+        let a = poles[n].alpha.to_f64().abs().log2();
+        let want = a + 20.0 * n as f64 + 1.0;
+        let wallis = (1..=n).fold(0.0, |s, j| s + ((2 * j - 1) as f64 / (2 * j) as f64).log2());
+        assert!(
+            (bits_l - (want - wallis)).abs() < 0.01,
+            "n = {n}: {bits_l} vs {}",
+            want - wallis
+        );
+    }
 }

@@ -109,6 +109,11 @@ fn bad_arguments_print_one_line_and_fail() {
             vec!["symbolic", "moments", "--n", "3", "--format", "pdf"],
             "--format",
         ),
+        (
+            vec!["symbolic", "condition", "--n", "3", "--format", "latex"],
+            "text or json",
+        ),
+        (vec!["symbolic", "condition", "--n", "151"], "1 <= n <= 150"),
     ] {
         let out = run(&args);
         assert!(!out.status.success(), "{args:?}");
@@ -117,4 +122,32 @@ fn bad_arguments_print_one_line_and_fail() {
         assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
         assert!(err.contains(needle), "{args:?}: {err}");
     }
+}
+
+#[test]
+fn condition_prints_the_pole_and_the_bits_lost() {
+    let text = stdout(&run(&["symbolic", "condition", "--n", "20"]));
+    assert!(text.contains("\n5\t5\t128/35\t-128/35\n"), "{text}");
+    let row = text
+        .lines()
+        .find(|l| l.starts_with("0.25\t"))
+        .expect("row e2 = 0.25");
+    let bits: Vec<f64> = row
+        .split('\t')
+        .skip(1)
+        .map(|x| x.parse().unwrap())
+        .collect();
+    assert_eq!(bits.len(), 5); // n = 1, 2, 5, 10, 20
+    assert!(bits.windows(2).all(|w| w[1] > w[0]), "{row}");
+    let json = stdout(&run(&[
+        "symbolic",
+        "condition",
+        "--n",
+        "10",
+        "--format",
+        "json",
+    ]));
+    assert!(json.contains("\"n\": [1, 2, 5, 10]"));
+    assert!(json.contains("{\"n\": 2, \"order\": 2, \"a_n\": \"-2\", \"b_n\": \"2\"}"));
+    assert_eq!(json.matches("\"e2\": ").count(), 12);
 }

@@ -48,8 +48,9 @@ COMMANDS:
   study integrals [--out DIR]
         accuracy against cost of every method x precision for I1, I2 as M_R -> 1
         (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)
-  symbolic coefficients|moments --n N [--format text|latex|sympy|json]
-        f_n(nu) of (36) and alpha_n, beta_n(e2) of (40) as exact rational functions
+  symbolic coefficients|moments|condition --n N [--format text|latex|sympy|json]
+        f_n(nu) of (36) and alpha_n, beta_n(e2) of (40) as exact rational functions;
+        condition: their pole at e2 = 0 and the bits the K, E basis loses (text, json)
   help  this text
 
 Numbers are parsed from their decimal text at the working precision and printed with every

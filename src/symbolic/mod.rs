@@ -16,7 +16,7 @@
 //! [`printed_f1`], [`printed_f2`] are the paper's starting values as printed (its f2 has 27 where
 //! the derivation gives 67, `docs/errata.md` #2). [`render`] writes the results as text, LaTeX,
 //! sympy input or JSON; [`ke_condition`] evaluates the condition number of the K, E basis from
-//! the closed forms.
+//! the closed forms and [`pole_terms`] their pole at e² = 0 (the cancellation).
 //!
 //! Cost: F_30 and α_50, β_50 each take a few milliseconds (`benches/symbolic.rs`); the work grows
 //! about as n³ (degree n numerators, coefficients of O(n) digits, n steps), hence the bounds
@@ -161,6 +161,57 @@ pub fn ke_condition(forms: &[KeTerm<RatFunc>], e2: &Rational) -> Result<Vec<(f64
         out.push((log2(&kl), log2(&km)));
     }
     Ok(out)
+}
+
+/// The pole of the closed forms at e² = 0: α_n = a_n e^{−2p}(1 + O(e²)) and
+/// β_n = b_n e^{−2p}(1 + O(e²)), exact.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PoleTerm {
+    /// n.
+    pub n: usize,
+    /// The order p of the pole of α_n and β_n at e² = 0 (the larger of the two).
+    pub order: u32,
+    /// a_n (0 when α_n has a pole of lower order).
+    pub alpha: Rational,
+    /// b_n (0 when β_n has a pole of lower order).
+    pub beta: Rational,
+}
+
+/// The pole order of `f` at 0 and its leading coefficient f·x^p at 0.
+fn pole_at_zero(f: &RatFunc) -> (u32, Rational) {
+    let x = Poly::x();
+    let mut p = 0;
+    let mut rest = Poly::constant(Rational::from(1));
+    for (q, e) in f.denom_factors() {
+        if *q == x {
+            p = *e;
+        } else {
+            rest = rest.mul(&q.pow(*e));
+        }
+    }
+    let lead = f.numer().eval(&Rational::new()) / rest.eval(&Rational::new());
+    (p, lead)
+}
+
+/// The pole of α_n, β_n at e² = 0 for each term of [`moment_forms`] (exact). Since L_n stays
+/// finite as e → 0 (L_n(0) = W_n = ∫cos^{2n}) and K(0) = E(0) = π/2, a_n = −b_n: the two terms of
+/// α_n K + β_n E cancel to within a factor e^{2p} — the cancellation that makes the forward
+/// recursion (40) lose about 2p·log₂(1/e) bits (`docs/series.md`).
+pub fn pole_terms(forms: &[KeTerm<RatFunc>]) -> Vec<PoleTerm> {
+    forms
+        .iter()
+        .map(|t| {
+            let (pa, a) = pole_at_zero(&t.l.0);
+            let (pb, b) = pole_at_zero(&t.l.1);
+            let order = pa.max(pb);
+            PoleTerm {
+                n: t.n,
+                order,
+                alpha: if pa == order { a } else { Rational::new() },
+                beta: if pb == order { b } else { Rational::new() },
+            }
+        })
+        .collect()
 }
 
 fn log2<T: Field + Real>(x: &T) -> f64 {

@@ -156,14 +156,26 @@ impl Poly {
         a
     }
 
-    /// The value at the rational `x` (Horner, exact).
+    /// The value at the rational `x` = a/b, exact: Horner on the integer polynomial
+    /// b^d·P(a/b) (no rational canonicalisation until the one final division).
     pub fn eval(&self, x: &Rational) -> Rational {
-        let mut acc = Rational::new();
-        for a in self.c.iter().rev() {
-            acc *= x;
-            acc += a;
+        if self.is_zero() {
+            return Rational::new();
         }
-        acc
+        let (content, ints) = self.primitive();
+        let (a, b) = (x.numer(), x.denom());
+        let mut acc = Integer::new();
+        let mut bpow = Integer::from(1);
+        for c in ints.iter().rev() {
+            // acc = Σ_{j ≥ i} C_j a^{j−i} b^{(d−i)−(d−j)} after processing coefficient i.
+            acc *= a;
+            acc += Integer::from(c * &bpow);
+            bpow *= b;
+        }
+        // Each step multiplied the earlier terms by a and the new one by b^(steps so far):
+        // acc = Σ_i C_i a^i b^{d−i}.
+        bpow /= b;
+        Rational::from((acc, bpow)) * content
     }
 
     /// (content, primitive part): self = content · P with P of coprime integer coefficients and a

@@ -152,7 +152,10 @@ impl RatFunc {
 
     /// The value at the rational `x`, exactly; `None` where the denominator vanishes.
     pub fn eval(&self, x: &Rational) -> Option<Rational> {
-        let d = self.denom().eval(x);
+        let mut d = Rational::from(1);
+        for (q, e) in &self.den {
+            d *= Rational::from(rug::ops::Pow::pow(q.eval(x), *e));
+        }
         if d.cmp0() == std::cmp::Ordering::Equal {
             return None;
         }
