@@ -488,7 +488,7 @@ fn condition_of_the_ke_basis_from_the_closed_forms() {
 }
 
 /// α_n and β_n have a pole of order n at e² = 0 with opposite leading coefficients (L_n stays
-/// finite and K(0) = E(0)): the cancellation of the K, E basis as e → 0.
+/// finite and K(0) = E(0)), a_n in closed form: the cancellation of the K, E basis as e → 0.
 #[test]
 fn alpha_and_beta_have_opposite_poles_of_order_n_at_e2_zero() {
     let t = moment_forms(80).expect("n <= 80");
@@ -496,7 +496,14 @@ fn alpha_and_beta_have_opposite_poles_of_order_n_at_e2_zero() {
     for p in &poles[1..] {
         assert_eq!(p.order as usize, p.n, "n = {}", p.n);
         assert_eq!(p.alpha, -p.beta.clone(), "n = {}", p.n);
-        assert!(p.alpha.cmp0() != std::cmp::Ordering::Equal, "n = {}", p.n);
+        // a_n = (−1)^(n+1)·(2n − 1)/(2n)·4^n/C(2n, n), i.e. |a_n| = (2n − 1)/(2n)·(π/2)/W_n.
+        let n = p.n as u32;
+        let c = rug::Integer::from(rug::Integer::binomial_u(2 * n, n));
+        let mut a = Rational::from((rug::Integer::from(2 * n - 1) << (2 * n), c * (2 * n)));
+        if n % 2 == 0 {
+            a = -a;
+        }
+        assert_eq!(p.alpha, a, "n = {n}");
     }
     // At e² = 2^-20, |α_n|K + |β_n|E ≈ 2|a_n|·2^(20n)·π/2 while L_n ≈ W_n = (π/2)·Π(2j−1)/(2j):
     // the bits lost are log₂(2|a_n|) + 20n − log₂ Π(2j−1)/(2j), to O(e²).

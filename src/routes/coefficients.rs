@@ -21,7 +21,8 @@
 //! by M2² with x0 = M2²; the paper's printed f2 is wrong (27 for 67, `docs/errata.md` #2).
 //!
 //! * x0 = M2² gives the paper's f_n (coefficients of sin^{2n} φ).
-//! * x0 = 1 gives F_n (coefficients of x^n), exact in `rug::Rational` for rational ν.
+//! * x0 = 1 gives F_n (coefficients of x^n), exact in `rug::Rational` for rational ν, and as
+//!   rational functions of ν over [`crate::symbolic::RatFunc`] ([`crate::symbolic::green_coefficients`]).
 //! * x0 = m1 gives the scaled h_n = f_n / M_R^{2n}, which tend to a constant (the pole of g at
 //!   x = m1 dominates): they neither overflow nor underflow for any n (the f_n themselves decay like
 //!   M_R^{2n} and F_n grow like m1^{−n}, overflowing `f64` beyond n ≈ 2700).

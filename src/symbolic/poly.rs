@@ -191,7 +191,7 @@ impl Poly {
         let ints: Vec<Integer> = self
             .c
             .iter()
-            .map(|a| Integer::from(a.numer() * Integer::from(&lcm / a.denom())))
+            .map(|a| a.numer() * Integer::from(&lcm / a.denom()))
             .collect();
         let mut g = Integer::new();
         for a in &ints {

@@ -154,7 +154,7 @@ impl RatFunc {
     pub fn eval(&self, x: &Rational) -> Option<Rational> {
         let mut d = Rational::from(1);
         for (q, e) in &self.den {
-            d *= Rational::from(rug::ops::Pow::pow(q.eval(x), *e));
+            d *= rug::ops::Pow::pow(q.eval(x), *e);
         }
         if d.cmp0() == std::cmp::Ordering::Equal {
             return None;

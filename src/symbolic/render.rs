@@ -155,7 +155,13 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
     }
     if prim.len() > 1 {
         let p = int_poly(&prim, v, style, false);
-        let bare = num_parts.is_empty() && (latex && (has_den || !neg) || !has_den && !neg);
+        // P stands bare when nothing precedes it and the sign or a bar cannot be misread.
+        let bare = num_parts.is_empty()
+            && if latex {
+                has_den || !neg
+            } else {
+                !has_den && !neg
+            };
         num_parts.push(if bare || terms(&prim) == 1 {
             p
         } else {
