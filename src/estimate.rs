@@ -357,7 +357,7 @@ fn frexp(x: f64) -> (f64, i64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scalar::{Field, Mp, MpPrec};
+    use crate::scalar::{FieldOps, Mp, MpPrec};
 
     #[test]
     fn round_trips_and_order() {

@@ -53,6 +53,7 @@
 //! | [`physics`] | [`Material`] and [`Speed`], the Rayleigh function and roots, the Green's function (sections 3, 6) |
 //! | [`routes`] | the integrals I1, I2: the series route (section 5), the direct, subtracted and fixed-rule quadratures (sections 6–7), the evaluator and the choice of precision |
 //! | [`contact`] | the ellipse (33), the full solution with the corrected (28), (30), (32), the convolution (7) check, the precision ladder (section 4) |
+//! | [`symbolic`] | the coefficients of (36) and (40) as exact rational functions of ν and e² |
 //!
 //! The command-line tool (`moving-hertz`, the binary of this package) adds the studies and
 //! charts that `docs/` shows; the library does not carry them.
@@ -70,6 +71,7 @@ pub mod numerics;
 pub mod physics;
 pub mod routes;
 pub mod scalar;
+pub mod symbolic;
 
 pub use contact::{
     solve_ellipse, ContactProblem, ContactSolution, Ellipse, Loading, MajorAxis, Options,
@@ -81,7 +83,7 @@ pub use routes::{
     integrals, integrals_to_tolerance, Evaluator, ExactInputs, IntegralOptions, Integrals, Method,
     Route,
 };
-pub use scalar::{Dd, Field, Mp, MpPrec, Precision, Real};
+pub use scalar::{Dd, Field, FieldOps, Mp, MpPrec, Precision, Real};
 
 /// The README's library example, compiled and run as a doctest.
 #[cfg(doctest)]
@@ -95,5 +97,5 @@ pub mod prelude {
     pub use crate::estimate::{Estimated, RelError};
     pub use crate::physics::{Material, Speed};
     pub use crate::routes::{IntegralOptions, Method};
-    pub use crate::scalar::{Complex, Dd, Field, Mp, MpPrec, Precision, Real};
+    pub use crate::scalar::{Complex, Dd, Field, FieldOps, Mp, MpPrec, Precision, Real};
 }

@@ -12,7 +12,7 @@
 //! errors per function and precision.
 
 use moving_hertz::numerics::elliptic::*;
-use moving_hertz::scalar::{mixed_precision_events, Dd, Field, Mp, MpPrec, Real};
+use moving_hertz::scalar::{mixed_precision_events, Dd, Field, FieldOps, Mp, MpPrec, Real};
 use moving_hertz::{Error, Result};
 use rug::Float;
 use std::collections::BTreeMap;

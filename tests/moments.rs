@@ -10,7 +10,7 @@ use moving_hertz::routes::moments::{
     ke_condition_bits, moment_by_series, moments, moments_with, plan, starting_values_printed,
     KeForm, MomentMethod,
 };
-use moving_hertz::scalar::{Dd, Field, Mp, Real};
+use moving_hertz::scalar::{Dd, FieldOps, Mp, Real};
 use moving_hertz::Error;
 use rug::{Float, Rational};
 use std::collections::BTreeMap;

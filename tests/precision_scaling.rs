@@ -8,7 +8,8 @@
 use moving_hertz::numerics::quadrature::{GaussLegendre, MAX_RULE_BITS};
 use moving_hertz::routes::fast::{self, FastSetup, BOUND_EPS, DK_BOUND_EPS};
 use moving_hertz::routes::{direct, AxisRatio};
-use moving_hertz::scalar::{Field, Mp, MpPrec, Real};
+use moving_hertz::scalar::FieldOps;
+use moving_hertz::scalar::{Mp, MpPrec, Real};
 use moving_hertz::{integrals, solve_ellipse, Error, IntegralOptions, Material, Options};
 
 /// (ν, M_R, k): the static limit near k = 1 (where the Taylor form's derivative cancels most),

@@ -9,7 +9,7 @@ use common::rel_err_eps as err_eps;
 use moving_hertz::numerics::quadrature::{
     integrate, tanh_sinh, tanh_sinh_gaps, GaussLegendre, Limits, Quadrature,
 };
-use moving_hertz::scalar::{Dd, Field, Mp, MpPrec, Real};
+use moving_hertz::scalar::{Dd, FieldOps, Mp, MpPrec, Real};
 use moving_hertz::Error;
 
 /// Bound on relative errors, in ε.

@@ -8,7 +8,7 @@ use common::{err_eps, read_csv, reference, rel_eps};
 use moving_hertz::physics::{
     rayleigh_function, ClosedForm, GreenFunction, Material, RayleighRoots,
 };
-use moving_hertz::scalar::{mixed_precision_events, Complex, Field, Real};
+use moving_hertz::scalar::{mixed_precision_events, Complex, Field, FieldOps, Real};
 use moving_hertz::Error;
 use rug::Float;
 

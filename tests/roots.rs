@@ -5,7 +5,7 @@
 mod common;
 
 use moving_hertz::numerics::roots::{brent, halley, newton};
-use moving_hertz::scalar::{Field, Mp, MpPrec, Real};
+use moving_hertz::scalar::{FieldOps, Mp, MpPrec, Real};
 use moving_hertz::Error;
 
 /// Relative error of `got` in ε of its type, against a reference `want` at higher precision.

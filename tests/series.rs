@@ -4,7 +4,7 @@
 mod common;
 
 use moving_hertz::numerics::series::{sum_series, sum_series_with_tail};
-use moving_hertz::scalar::{Field, Mp, MpPrec, Real};
+use moving_hertz::scalar::{FieldOps, Mp, MpPrec, Real};
 use moving_hertz::Error;
 
 fn err_vs<T: Real>(got: &T, want: &Mp) -> f64 {

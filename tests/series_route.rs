@@ -10,7 +10,7 @@ use moving_hertz::numerics::quadrature::{integrate, Limits};
 use moving_hertz::physics::{GreenFunction, Material};
 use moving_hertz::routes::series::{integrals, terms_estimate, SeriesOptions};
 use moving_hertz::routes::{AxisRatio, GreenSeries, Route};
-use moving_hertz::scalar::{Field, Mp, MpPrec, Real};
+use moving_hertz::scalar::{Field, FieldOps, Mp, MpPrec, Real};
 use moving_hertz::Error;
 use rug::Float;
 

@@ -9,6 +9,7 @@ mod json;
 mod progress;
 mod rayleigh;
 mod study;
+mod symbolic;
 
 use args::Args;
 
@@ -47,6 +48,9 @@ COMMANDS:
   study integrals [--out DIR]
         accuracy against cost of every method x precision for I1, I2 as M_R -> 1
         (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)
+  symbolic coefficients|moments|condition --n N [--format text|latex|sympy|json]
+        f_n(nu) of (36) and alpha_n, beta_n(e2) of (40) as exact rational functions;
+        condition: their pole at e2 = 0 and the bits the K, E basis loses (text, json)
   help  this text
 
 Numbers are parsed from their decimal text at the working precision and printed with every
@@ -110,6 +114,14 @@ pub fn run(argv: &[String]) -> Result<(), String> {
                 return Err("`study` needs a study name (rayleigh, series, recursion)".into());
             };
             study::run(name, &Args::parse(cmd, &rest[1..], &["out"], &[])?)
+        }
+        "symbolic" => {
+            let a = Args::parse(cmd, rest.get(1..).unwrap_or(&[]), &["n", "format"], &[])?;
+            symbolic::run(
+                symbolic::SymbolicKind::parse(rest.first().map_or("", |s| s.as_str()))?,
+                symbolic::parse_n(a.required("n")?)?,
+                symbolic::SymbolicFormat::parse(a.optional("format").unwrap_or("text"))?,
+            )
         }
         other => Err(format!(
             "unknown command `{other}` (try `moving-hertz help`)"

@@ -37,6 +37,7 @@
 //! recurrence at the guard precision) at 256 and 1024 bits.
 
 use crate::error::{Error, Result};
+use crate::scalar::FieldOps;
 use crate::scalar::{short, Dd, Field, Mp, MpPrec, Real};
 use rug::{Assign, Float, Integer};
 use std::collections::HashMap;

@@ -21,7 +21,8 @@
 //! by M2² with x0 = M2²; the paper's printed f2 is wrong (27 for 67, `docs/errata.md` #2).
 //!
 //! * x0 = M2² gives the paper's f_n (coefficients of sin^{2n} φ).
-//! * x0 = 1 gives F_n (coefficients of x^n), exact in `rug::Rational` for rational ν.
+//! * x0 = 1 gives F_n (coefficients of x^n), exact in `rug::Rational` for rational ν, and as
+//!   rational functions of ν over [`crate::symbolic::RatFunc`] ([`crate::symbolic::green_coefficients`]).
 //! * x0 = m1 gives the scaled h_n = f_n / M_R^{2n}, which tend to a constant (the pole of g at
 //!   x = m1 dominates): they neither overflow nor underflow for any n (the f_n themselves decay like
 //!   M_R^{2n} and F_n grow like m1^{−n}, overflowing `f64` beyond n ≈ 2700).
@@ -33,11 +34,15 @@
 //! forward recurrence is stable: the relative rounding error of c_n stays a few ε (measured against
 //! the exact rational run in `tests/series_coefficients.rs`).
 
-use crate::scalar::Field;
+use crate::scalar::{Field, FieldOps};
 
 /// Generator of the Taylor coefficients c_n = G_n·x0^n of g = −πΓ (see the module docs).
+///
+/// Generic over [`FieldOps`]: rounded (`f64`, double-double, MPFR: relative error a few ε per
+/// coefficient, the recurrence being stable), exact over `rug::Rational` for rational ν and x0,
+/// and symbolic over [`crate::symbolic::RatFunc`] (F_n as rational functions of ν, exact).
 #[derive(Clone, Debug)]
-pub struct GreenSeries<F: Field> {
+pub struct GreenSeries<F: FieldOps> {
     one_minus_nu_8: F,
     two_minus_nu: F,
     x0: F,
@@ -51,13 +56,12 @@ pub struct GreenSeries<F: Field> {
     v: [F; 2],
     /// The next index l.
     l: u64,
-    /// Binomial terms u_l, v_l below this magnitude are set to zero ([`GreenSeries::flush_below`]).
-    flush: Option<F>,
 }
 
-impl<F: Field> GreenSeries<F> {
+impl<F: FieldOps> GreenSeries<F> {
     /// The generator for Poisson's ratio `nu` and scale `x0` (validated by the caller:
-    /// −1 < ν ≤ 1/2, 0 ≤ x0 ≤ 1).
+    /// −1 < ν ≤ 1/2, 0 ≤ x0 ≤ 1; or ν the variable of a rational function). γ and 1 − ν are
+    /// formed from `nu` by field operations, so a symbolic ν gives them as expressions.
     pub fn new(nu: &F, x0: F) -> Self {
         let p = nu.prec();
         let one = F::one(p);
@@ -77,19 +81,7 @@ impl<F: Field> GreenSeries<F> {
             u: [F::one(p), zero.clone(), zero.clone()],
             v: [F::one(p), zero],
             l: 0,
-            flush: None,
         }
-    }
-
-    /// Sets the binomial-series terms u_l = b_l(γx0)^l, v_l = b_l x0^l to zero once they fall
-    /// below `tiny` (> 0). They enter each c_l additively with a weight below 5, so the change in
-    /// c_l is at most 5·`tiny` per step; with `tiny` far below ε·|c| it is invisible, and it stops
-    /// u_l, v_l (which decay like (γx0)^l and x0^l) from wandering through the subnormal range of
-    /// `f64` and double-double, where each operation costs a hundred times more. Not for exact
-    /// (`Rational`) runs.
-    pub fn flush_below(mut self, tiny: F) -> Self {
-        self.flush = Some(tiny.abs());
-        self
     }
 
     /// The index of the coefficient the next call to [`GreenSeries::next_coefficient`] returns.
@@ -99,6 +91,13 @@ impl<F: Field> GreenSeries<F> {
 
     /// Returns c_l and advances to l + 1.
     pub fn next_coefficient(&mut self) -> F {
+        self.advance(|t| t)
+    }
+
+    /// One step of the recurrence; `trim` is applied to the new binomial terms u_{l+1}, v_{l+1}
+    /// (the identity, or the flush of [`SpeedCoefficients::flush_below`]).
+    #[inline(always)]
+    fn advance(&mut self, trim: impl Fn(F) -> F) -> F {
         let l = self.l;
         let [u0, u1, u2] = &self.u;
         let [v0, v1] = &self.v;
@@ -115,17 +114,8 @@ impl<F: Field> GreenSeries<F> {
         } else {
             (2 * l as i64 - 1, 2 * l as i64 + 2)
         };
-        let mut u_next = (self.u[0].clone() * &self.gx0).mul_i64(num).div_i64(den);
-        let mut v_next = (self.v[0].clone() * &self.x0).mul_i64(num).div_i64(den);
-        if let Some(tiny) = &self.flush {
-            let zero = F::zero(tiny.prec());
-            if u_next.clone().abs() < *tiny {
-                u_next = zero.clone();
-            }
-            if v_next.clone().abs() < *tiny {
-                v_next = zero;
-            }
-        }
+        let u_next = trim((self.u[0].clone() * &self.gx0).mul_i64(num).div_i64(den));
+        let v_next = trim((self.v[0].clone() * &self.x0).mul_i64(num).div_i64(den));
         self.u = [u_next, self.u[0].clone(), self.u[1].clone()];
         self.v = [v_next, self.v[0].clone()];
         self.c = [c.clone(), self.c[0].clone(), self.c[1].clone()];
@@ -156,6 +146,8 @@ pub struct SpeedCoefficients<F: Field> {
     gen: GreenSeries<F>,
     mr2: F,
     pow: F,
+    /// Binomial terms below this magnitude are set to zero ([`SpeedCoefficients::flush_below`]).
+    flush: Option<F>,
 }
 
 impl<F: Field> SpeedCoefficients<F> {
@@ -167,6 +159,7 @@ impl<F: Field> SpeedCoefficients<F> {
             gen: GreenSeries::new(nu, m1),
             mr2,
             pow: F::one(p),
+            flush: None,
         }
     }
 
@@ -175,15 +168,29 @@ impl<F: Field> SpeedCoefficients<F> {
         self.gen.index()
     }
 
-    /// See [`GreenSeries::flush_below`].
+    /// Sets the binomial-series terms u_l = b_l(γx0)^l, v_l = b_l x0^l inside the recurrence to
+    /// zero once they fall below `tiny` (> 0). They enter each h_l additively with a weight below
+    /// 5, so the change in h_l is at most 5·`tiny` per step; with `tiny` far below ε·|h| it is
+    /// invisible, and it stops u_l, v_l (which decay like (γm1)^l and m1^l) from wandering through
+    /// the subnormal range of `f64` and double-double, where each operation costs a hundred times
+    /// more. Not for exact (`Rational`) runs.
     pub fn flush_below(mut self, tiny: F) -> Self {
-        self.gen = self.gen.flush_below(tiny);
+        self.flush = Some(tiny.abs());
         self
     }
 
     /// (h_n, f_n) and advance to n + 1.
     pub fn next_pair(&mut self) -> (F, F) {
-        let h = self.gen.next_coefficient();
+        let h = match &self.flush {
+            None => self.gen.next_coefficient(),
+            Some(tiny) => self.gen.advance(|t| {
+                if t.clone().abs() < *tiny {
+                    F::zero(tiny.prec())
+                } else {
+                    t
+                }
+            }),
+        };
         let f = h.clone() * &self.pow;
         self.pow *= &self.mr2;
         (h, f)

@@ -116,7 +116,8 @@ use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
 use crate::physics::Speed;
-use crate::scalar::{short, Field, Mp, MpPrec, Real};
+use crate::scalar::FieldOps;
+use crate::scalar::{short, Mp, MpPrec, Real};
 use std::ops::Deref;
 use std::sync::{Arc, OnceLock};
 
@@ -1317,7 +1318,7 @@ mod tests {
     use super::*;
     use crate::physics::Material;
     use crate::routes::coefficients::GreenSeries;
-    use crate::scalar::{Mp, MpPrec};
+    use crate::scalar::{Dd, Field, Mp, MpPrec};
     use rug::Rational;
 
     /// b_j by an independent route at 512 bits: the coefficients c_l of g (recurrence (36),

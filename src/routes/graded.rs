@@ -58,7 +58,8 @@ use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
 use crate::physics::Speed;
-use crate::scalar::{short, Field, Real};
+use crate::scalar::FieldOps;
+use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).

@@ -28,7 +28,7 @@
 //! Accuracy, measured against MPFR at 256 bits over 10^4+ random arguments by
 //! `tests/dd_accuracy.rs`: see `docs/design.md` for the table.
 
-use super::{Field, Real};
+use super::{Field, FieldOps, Real};
 use crate::error::{Error, Result};
 use std::cmp::Ordering;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
@@ -647,7 +647,7 @@ impl Dd {
     }
 }
 
-impl Field for Dd {
+impl FieldOps for Dd {
     type Prec = ();
     #[inline(always)]
     fn prec(&self) {}
@@ -674,18 +674,6 @@ impl Field for Dd {
         self.hi() == 0.0
     }
     #[inline(always)]
-    fn is_negative(&self) -> bool {
-        self.hi() < 0.0
-    }
-    #[inline(always)]
-    fn abs(self) -> Dd {
-        if self.hi() < 0.0 {
-            -self
-        } else {
-            self
-        }
-    }
-    #[inline(always)]
     fn mul_i64(self, n: i64) -> Dd {
         if n.unsigned_abs() < (1u64 << 53) {
             self.mul_f64(n as f64)
@@ -704,6 +692,21 @@ impl Field for Dd {
     #[inline(always)]
     fn square(&self) -> Dd {
         self.mul_dd(*self)
+    }
+}
+
+impl Field for Dd {
+    #[inline(always)]
+    fn is_negative(&self) -> bool {
+        self.hi() < 0.0
+    }
+    #[inline(always)]
+    fn abs(self) -> Dd {
+        if self.hi() < 0.0 {
+            -self
+        } else {
+            self
+        }
     }
     #[inline(always)]
     fn to_f64(&self) -> f64 {

@@ -2,10 +2,10 @@
 //! generic code instantiated at `f64` compiles to the same machine code as hand-written `f64`
 //! code (checked by the `generic_cost` bench).
 
-use super::{Field, Real};
+use super::{Field, FieldOps, Real};
 use crate::error::{Error, Result};
 
-impl Field for f64 {
+impl FieldOps for f64 {
     type Prec = ();
     #[inline(always)]
     fn prec(&self) {}
@@ -31,14 +31,6 @@ impl Field for f64 {
         *self == 0.0
     }
     #[inline(always)]
-    fn is_negative(&self) -> bool {
-        *self < 0.0
-    }
-    #[inline(always)]
-    fn abs(self) -> f64 {
-        f64::abs(self)
-    }
-    #[inline(always)]
     fn mul_i64(self, n: i64) -> f64 {
         self * n as f64
     }
@@ -61,6 +53,17 @@ impl Field for f64 {
         } else {
             f64::powf(*self, n as f64)
         }
+    }
+}
+
+impl Field for f64 {
+    #[inline(always)]
+    fn is_negative(&self) -> bool {
+        *self < 0.0
+    }
+    #[inline(always)]
+    fn abs(self) -> f64 {
+        f64::abs(self)
     }
     #[inline(always)]
     fn to_f64(&self) -> f64 {

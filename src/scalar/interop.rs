@@ -6,14 +6,14 @@
 //! `ToPrimitive`, `FromPrimitive` — enough for `num_complex::Complex<Dd>` to do arithmetic — and the
 //! crate's [`Complex`] converts to and from `num_complex::Complex` for `f64` and [`Dd`].
 
-use super::{Complex, Dd, Field, Real};
+use super::{Complex, Dd, Field, FieldOps, Real};
 
 impl num_traits::Zero for Dd {
     fn zero() -> Dd {
         Dd::from_f64_exact(0.0)
     }
     fn is_zero(&self) -> bool {
-        Field::is_zero(self)
+        FieldOps::is_zero(self)
     }
 }
 
@@ -67,7 +67,7 @@ impl num_traits::ToPrimitive for Dd {
 
 impl num_traits::FromPrimitive for Dd {
     fn from_i64(n: i64) -> Option<Dd> {
-        Some(<Dd as Field>::from_i64(n, ()))
+        Some(<Dd as FieldOps>::from_i64(n, ()))
     }
     fn from_u64(n: u64) -> Option<Dd> {
         let hi = n as f64;

@@ -1,8 +1,11 @@
 //! The scalar layer: the traits every formula of the crate is generic over, and their backends.
 //!
-//! * [`Field`] — exact or rounded field arithmetic (`+ − × ÷`), construction of integers and
-//!   integer ratios *at a precision*, comparison. Implemented by `f64`, [`Dd`], [`Mp`] and
-//!   `rug::Rational` (exact).
+//! * [`FieldOps`] — exact or rounded field arithmetic (`+ − × ÷`) and construction of integers
+//!   and integer ratios *at a precision*, without ordering: what the exact recurrences (36) and
+//!   (40) need. Implemented by every type below and by the rational functions of
+//!   [`crate::symbolic`].
+//! * [`Field`] — [`FieldOps`] plus comparison, sign and the nearest `f64`. Implemented by `f64`,
+//!   [`Dd`], [`Mp`] and `rug::Rational` (exact).
 //! * [`Real`] — a rounded real number type: precision queries (ε, bits), constants (π, ln 2) made at
 //!   the working precision, decimal parsing and printing at the working precision, and the
 //!   elementary functions the crate uses (sqrt, cbrt, exp, ln, sin, cos, atan2, ...). Implemented by
@@ -12,7 +15,7 @@
 //! # How precision travels
 //!
 //! Values are not `Copy` (an MPFR number owns a heap buffer) and each value knows its precision:
-//! [`Field::prec`] returns a small `Copy` token (`()` for `f64`, [`Dd`] and `Rational`, an
+//! [`FieldOps::prec`] returns a small `Copy` token (`()` for `f64`, [`Dd`] and `Rational`, an
 //! [`MpPrec`] holding the bit count for [`Mp`]). Generic code reads the token from an input and
 //! passes it to every constructor: `T::from_ratio(1, 3, p)`, `T::pi(p)`, `T::epsilon(p)`. No
 //! constant ever enters a computation as an `f64` decimal literal.
@@ -43,16 +46,18 @@ use std::fmt::Debug;
 use std::hash::Hash;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
-/// Field arithmetic at a given precision (exact for `rug::Rational`).
+/// Field arithmetic without ordering: what an exact recurrence needs.
 ///
-/// Implementors: `f64`, [`Dd`], [`Mp`], `rug::Rational`. Every formula whose coefficients are
-/// exact rationals (the recurrence (36) of the paper, the L_n/M_n recursion (40)) is written once
-/// over this trait so that it can also run exactly.
-pub trait Field:
+/// Implementors: `f64`, [`Dd`], [`Mp`], `rug::Rational` (through [`Field`]) and the rational
+/// functions of [`crate::symbolic`], which have no order, no sign and no nearest `f64`. Every
+/// formula whose coefficients are exact rationals — the recurrence (36) of the paper
+/// ([`crate::routes::GreenSeries`]) and the L_n/M_n recursion (40)
+/// ([`crate::routes::moments::KeForm`]) — is written once over this trait, so that the same code
+/// runs rounded, exactly, and symbolically in ν or e².
+pub trait FieldOps:
     Clone
     + Debug
     + PartialEq
-    + PartialOrd
     + Send
     + Sync
     + 'static
@@ -74,7 +79,7 @@ pub trait Field:
     + for<'a> MulAssign<&'a Self>
     + for<'a> DivAssign<&'a Self>
 {
-    /// The precision token: `()` for fixed-precision types, [`MpPrec`] for MPFR.
+    /// The precision token: `()` for fixed-precision and exact types, [`MpPrec`] for MPFR.
     type Prec: Copy + Debug + PartialEq + Eq + Hash + Send + Sync + 'static;
 
     /// Precision of this value.
@@ -93,20 +98,6 @@ pub trait Field:
     }
     /// True when the value is exactly zero.
     fn is_zero(&self) -> bool;
-    /// True when the value is strictly negative.
-    fn is_negative(&self) -> bool;
-    /// True when the value is strictly positive.
-    fn is_positive(&self) -> bool {
-        !self.is_zero() && !self.is_negative()
-    }
-    /// Absolute value.
-    fn abs(self) -> Self {
-        if self.is_negative() {
-            -self
-        } else {
-            self
-        }
-    }
     /// `self * n` for a small integer (a fast path on every backend).
     fn mul_i64(self, n: i64) -> Self;
     /// `self / n` for a small nonzero integer, rounded once.
@@ -138,6 +129,27 @@ pub trait Field:
             acc.recip()
         } else {
             acc
+        }
+    }
+}
+
+/// An ordered field at a given precision (exact for `rug::Rational`): [`FieldOps`] plus
+/// comparison, sign and the nearest `f64`.
+///
+/// Implementors: `f64`, [`Dd`], [`Mp`], `rug::Rational`.
+pub trait Field: FieldOps + PartialOrd {
+    /// True when the value is strictly negative.
+    fn is_negative(&self) -> bool;
+    /// True when the value is strictly positive.
+    fn is_positive(&self) -> bool {
+        !self.is_zero() && !self.is_negative()
+    }
+    /// Absolute value.
+    fn abs(self) -> Self {
+        if self.is_negative() {
+            -self
+        } else {
+            self
         }
     }
     /// Nearest `f64` (for seeds, reports and charts only; never fed back at higher precision).
@@ -174,9 +186,9 @@ pub trait Real: Field {
     /// (a double root, a residual that cancels): `Dd` for `f64`, `Mp` for `Dd` and `Mp`.
     type Wide: Real;
     /// The precision of [`Real::Wide`] used to guard precision `p`: ≥ 2·bits(p) + 32 for MPFR.
-    fn wide_prec(p: Self::Prec) -> <Self::Wide as Field>::Prec;
+    fn wide_prec(p: Self::Prec) -> <Self::Wide as FieldOps>::Prec;
     /// This value at the wide precision `pw` (exact).
-    fn to_wide(&self, pw: <Self::Wide as Field>::Prec) -> Self::Wide;
+    fn to_wide(&self, pw: <Self::Wide as FieldOps>::Prec) -> Self::Wide;
     /// A wide value rounded back to precision `p`.
     fn from_wide(w: &Self::Wide, p: Self::Prec) -> Self;
     /// Significand bits of the precision `p` (53 for `f64`, 106 for [`Dd`], the MPFR precision).

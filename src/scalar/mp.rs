@@ -6,7 +6,7 @@
 //! out at the larger precision (never silently at the smaller) and counted in
 //! [`mixed_precision_events`], which the test suite asserts stays at zero.
 
-use super::{Field, Real};
+use super::{Field, FieldOps, Real};
 use crate::error::{Error, Result};
 use rug::float::{Constant, Round};
 use rug::ops::PowAssign;
@@ -151,7 +151,7 @@ mp_binop!(Sub, sub, SubAssign, sub_assign);
 mp_binop!(Mul, mul, MulAssign, mul_assign);
 mp_binop!(Div, div, DivAssign, div_assign);
 
-impl Field for Mp {
+impl FieldOps for Mp {
     type Prec = MpPrec;
     #[inline]
     fn prec(&self) -> MpPrec {
@@ -167,12 +167,6 @@ impl Field for Mp {
     fn is_zero(&self) -> bool {
         self.0.is_zero()
     }
-    fn is_negative(&self) -> bool {
-        self.0.cmp0() == Some(Ordering::Less)
-    }
-    fn abs(self) -> Mp {
-        Mp(self.0.abs())
-    }
     fn mul_i64(mut self, n: i64) -> Mp {
         self.0 *= n;
         self
@@ -186,6 +180,15 @@ impl Field for Mp {
     }
     fn recip(self) -> Mp {
         Mp(self.0.recip())
+    }
+}
+
+impl Field for Mp {
+    fn is_negative(&self) -> bool {
+        self.0.cmp0() == Some(Ordering::Less)
+    }
+    fn abs(self) -> Mp {
+        Mp(self.0.abs())
     }
     fn to_f64(&self) -> f64 {
         self.0.to_f64()

@@ -1,11 +1,11 @@
 //! `rug::Rational` as an exact [`Field`]: the mode in which recurrences with exact rational
 //! coefficients (the paper's (36) and (40)) are run as ground truth for their rounding error.
 
-use super::Field;
+use super::{Field, FieldOps};
 use rug::Rational;
 use std::cmp::Ordering;
 
-impl Field for Rational {
+impl FieldOps for Rational {
     type Prec = ();
     fn prec(&self) {}
     fn from_i64(n: i64, _: ()) -> Rational {
@@ -17,12 +17,6 @@ impl Field for Rational {
     fn is_zero(&self) -> bool {
         self.cmp0() == Ordering::Equal
     }
-    fn is_negative(&self) -> bool {
-        self.cmp0() == Ordering::Less
-    }
-    fn abs(self) -> Rational {
-        Rational::abs(self)
-    }
     fn mul_i64(self, n: i64) -> Rational {
         self * Rational::from(n)
     }
@@ -31,6 +25,15 @@ impl Field for Rational {
     }
     fn recip(self) -> Rational {
         Rational::recip(self)
+    }
+}
+
+impl Field for Rational {
+    fn is_negative(&self) -> bool {
+        self.cmp0() == Ordering::Less
+    }
+    fn abs(self) -> Rational {
+        Rational::abs(self)
     }
     fn to_f64(&self) -> f64 {
         Rational::to_f64(self)

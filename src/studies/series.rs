@@ -20,7 +20,7 @@ use moving_hertz::physics::Material;
 use moving_hertz::routes::moments::{ke_condition_bits, moments_with, KeForm, MomentMethod};
 use moving_hertz::routes::series::{integrals, terms_estimate, SeriesOptions};
 use moving_hertz::routes::AxisRatio;
-use moving_hertz::scalar::{Field, Mp, MpPrec, Precision, Real};
+use moving_hertz::scalar::{FieldOps, Mp, MpPrec, Precision, Real};
 use rug::Float;
 
 // ---------------------------------------------------------------------------------------------

@@ -2,7 +2,7 @@
 //! macro running a generic check at every precision.
 #![allow(dead_code)]
 
-use moving_hertz::scalar::{mixed_precision_events, Field, MpPrec, Real};
+use moving_hertz::scalar::{mixed_precision_events, FieldOps, MpPrec, Real};
 use rug::Float;
 
 /// Bits used to hold reference values.

@@ -1,0 +1,190 @@
+//! `moving-hertz symbolic coefficients|moments --n N [--format text|latex|sympy|json]`: the
+//! coefficients of (36) as rational functions of ν and those of (40) as rational functions of e²,
+//! exact (`moving_hertz::symbolic`); `symbolic condition --n N [--format text|json]`: what the
+//! closed forms say about the K, E basis (the pole at e² = 0, the bits lost on a grid of e²).
+
+use moving_hertz::routes::moments::KeTerm;
+use moving_hertz::scalar::decimal_to_rational;
+use moving_hertz::symbolic::{
+    coefficient_items, green_coefficients, ke_condition, moment_forms, moment_items, pole_terms,
+    render, RatFunc, Style, MAX_COEFFICIENT_INDEX, MAX_MOMENT_INDEX,
+};
+
+/// The e² of the condition table: both sides of 1/2 and k > 1.
+const E2_GRID: [&str; 12] = [
+    "0.99",
+    "0.9",
+    "0.75",
+    "0.5625",
+    "0.5",
+    "0.4375",
+    "0.25",
+    "0.0625",
+    "0.00390625",
+    "-1",
+    "-15",
+    "-255",
+];
+
+/// The n of the condition table.
+fn n_grid(n: usize) -> Vec<usize> {
+    let mut v: Vec<usize> = [1, 2, 5, 10, 20, 50, 100, 150]
+        .into_iter()
+        .filter(|&k| k < n)
+        .collect();
+    v.push(n);
+    v
+}
+
+/// The pole of α_n, β_n at e² = 0 and the bits lost by α_n K + β_n E on [`E2_GRID`].
+fn condition(forms: &[KeTerm<RatFunc>], style: Style) -> Result<(), String> {
+    let n = forms.len() - 1;
+    let ns = n_grid(n);
+    let poles = pole_terms(forms);
+    let mut rows = Vec::new();
+    for e2 in E2_GRID {
+        let q = decimal_to_rational(e2).map_err(|e| e.to_string())?;
+        let bits = ke_condition(forms, &q).map_err(|e| e.to_string())?;
+        rows.push((e2, ns.iter().map(|&k| bits[k].0).collect::<Vec<f64>>()));
+    }
+    if style == Style::Json {
+        let poles: Vec<String> = ns
+            .iter()
+            .map(|&k| {
+                let t = &poles[k];
+                format!(
+                    "{{\"n\": {}, \"order\": {}, \"a_n\": \"{}\", \"b_n\": \"{}\"}}",
+                    t.n, t.order, t.alpha, t.beta
+                )
+            })
+            .collect();
+        let rows: Vec<String> = rows
+            .iter()
+            .map(|(e2, b)| {
+                let b: Vec<String> = b.iter().map(|x| format!("{x:.3}")).collect();
+                format!("{{\"e2\": \"{e2}\", \"bits_lost_L\": [{}]}}", b.join(", "))
+            })
+            .collect();
+        let ns: Vec<String> = ns.iter().map(|k| k.to_string()).collect();
+        println!(
+            "{{\n  \"n\": [{}],\n  \"pole_at_e2_0\": [\n    {}\n  ],\n  \"condition\": [\n    {}\n  ]\n}}",
+            ns.join(", "),
+            poles.join(",\n    "),
+            rows.join(",\n    ")
+        );
+        return Ok(());
+    }
+    println!("# (40), (42) in closed form: L_n = alpha_n K + beta_n E, e2 = e^2 = 1 - k^2");
+    println!("# near e2 = 0: alpha_n = a_n e2^-p (1 + O(e2)), beta_n = b_n e2^-p (1 + O(e2))");
+    println!("n\tp\ta_n\tb_n");
+    for &k in &ns {
+        let t = &poles[k];
+        println!("{}\t{}\t{}\t{}", t.n, t.order, t.alpha, t.beta);
+    }
+    println!("# bits lost by alpha_n K + beta_n E: log2((|alpha_n| K + |beta_n| E) / L_n)");
+    let head: Vec<String> = ns.iter().map(|k| format!("n={k}")).collect();
+    println!("e2\t{}", head.join("\t"));
+    for (e2, b) in rows {
+        let b: Vec<String> = b.iter().map(|x| format!("{x:.2}")).collect();
+        println!("{e2}\t{}", b.join("\t"));
+    }
+    Ok(())
+}
+
+/// What to derive.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SymbolicKind {
+    /// f_n = F_n(ν)·x^n, n = 0 … N, and the paper's printed f1, f2 beside them.
+    Coefficients,
+    /// α_n, β_n, γ_n, δ_n(e²), n = 0 … N: L_n = α_n K + β_n E, M_n = γ_n K + δ_n E.
+    Moments,
+    /// From the closed forms: the pole of α_n, β_n at e² = 0 and the bits lost by the K, E basis
+    /// on a grid of e² (text or JSON only).
+    Condition,
+}
+
+impl SymbolicKind {
+    /// `coefficients`, `moments` or `condition`.
+    pub fn parse(s: &str) -> Result<Self, String> {
+        match s {
+            "coefficients" => Ok(SymbolicKind::Coefficients),
+            "moments" => Ok(SymbolicKind::Moments),
+            "condition" => Ok(SymbolicKind::Condition),
+            other => Err(format!(
+                "`symbolic` takes `coefficients`, `moments` or `condition`, not `{other}`"
+            )),
+        }
+    }
+}
+
+/// The output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SymbolicFormat {
+    /// Plain text.
+    Text,
+    /// LaTeX (`align*`).
+    Latex,
+    /// `name = expression` lines for `sympy.sympify`.
+    Sympy,
+    /// JSON with the canonical coefficient lists.
+    Json,
+}
+
+impl SymbolicFormat {
+    /// `text`, `latex`, `sympy` or `json`.
+    pub fn parse(s: &str) -> Result<Self, String> {
+        match s {
+            "text" => Ok(SymbolicFormat::Text),
+            "latex" => Ok(SymbolicFormat::Latex),
+            "sympy" => Ok(SymbolicFormat::Sympy),
+            "json" => Ok(SymbolicFormat::Json),
+            other => Err(format!(
+                "--format: `{other}` is not one of text, latex, sympy, json"
+            )),
+        }
+    }
+}
+
+/// The largest index `--n` may take: [`MAX_COEFFICIENT_INDEX`] or [`MAX_MOMENT_INDEX`] (each
+/// derived in about a second).
+pub fn parse_n(s: &str) -> Result<usize, String> {
+    s.trim()
+        .parse::<usize>()
+        .map_err(|_| format!("--n: `{s}` is not a non-negative integer"))
+}
+
+/// Derives and prints the functions of `kind` for indices 0 … `n` in `format`.
+pub fn run(kind: SymbolicKind, n: usize, format: SymbolicFormat) -> Result<(), String> {
+    let style = match format {
+        SymbolicFormat::Text => Style::Text,
+        SymbolicFormat::Latex => Style::Latex,
+        SymbolicFormat::Sympy => Style::Sympy,
+        SymbolicFormat::Json => Style::Json,
+    };
+    let err = |e: moving_hertz::Error| format!("--n: {e}");
+    if kind == SymbolicKind::Condition {
+        if !matches!(style, Style::Text | Style::Json) {
+            return Err("--format: `symbolic condition` prints text or json".into());
+        }
+        return condition(&moment_forms(n).map_err(err)?, style);
+    }
+    let (title, items) = match kind {
+        SymbolicKind::Coefficients => (
+            format!(
+                "(35)-(36) corrected: g = -pi*Gamma = sum_n f_n, f_n = F_n(nu) x^n, x = M2^2, \
+                 n <= {n} (max {MAX_COEFFICIENT_INDEX}); then the paper's f1, f2 as printed"
+            ),
+            coefficient_items(&green_coefficients(n).map_err(err)?),
+        ),
+        SymbolicKind::Moments => (
+            format!(
+                "(40), (42): L_n = alpha_n K + beta_n E, M_n = gamma_n K + delta_n E, \
+                 K = K(e), E = E(e), e2 = e^2 = 1 - k^2, n <= {n} (max {MAX_MOMENT_INDEX})"
+            ),
+            moment_items(&moment_forms(n).map_err(err)?),
+        ),
+        SymbolicKind::Condition => unreachable!("handled above"),
+    };
+    print!("{}", render(&title, &items, style));
+    Ok(())
+}

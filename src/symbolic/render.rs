@@ -1,0 +1,346 @@
+//! Output of the symbolic results: plain text, LaTeX, sympy input (`name = expression`, one per
+//! line, parsed by `sympy.sympify`) and JSON with the canonical coefficient lists. Exact: every
+//! integer is printed in full.
+//!
+//! An expression is written as ±A·P(v) / (B·Π q_i(v)^{e_i}), as the paper prints f2: P and each
+//! base q_i are integer polynomials with coprime coefficients, written in ascending powers with
+//! their lowest nonzero coefficient positive (`67 - 220 nu + ...`, `1 - nu`, `e2`), and A, B
+//! are coprime positive integers.
+
+use super::poly::Poly;
+use super::ratfunc::RatFunc;
+use crate::routes::moments::KeTerm;
+use rug::{Integer, Rational};
+use std::cmp::Ordering;
+use std::fmt::Write;
+
+/// An output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// Plain text for a reader: `f_2 = x^2 (67 - 220 nu + ... + 64 nu^4)/(64 (1 - nu))`.
+    Text,
+    /// LaTeX, one `align*` environment.
+    Latex,
+    /// `name = expression` per line, in sympy syntax (`**` for powers), variables `nu`, `x`, `e2`.
+    Sympy,
+    /// A JSON document with, per function, the canonical numerator and denominator coefficient
+    /// lists (ascending powers, lowest terms, monic denominator) and the sympy expression.
+    Json,
+}
+
+/// The variable of a rational function.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Variable {
+    /// Poisson's ratio ν (`nu`).
+    Nu,
+    /// The squared eccentricity e² = 1 − k² (`e2`).
+    E2,
+}
+
+impl Variable {
+    fn name(self, style: Style) -> &'static str {
+        match (self, style) {
+            (Variable::Nu, Style::Latex) => "\\nu",
+            (Variable::E2, Style::Latex) => "e",
+            (Variable::Nu, _) => "nu",
+            (Variable::E2, _) => "e2",
+        }
+    }
+    /// v^k as `style` writes it.
+    fn power(self, k: usize, style: Style) -> String {
+        let v = self.name(style);
+        match (style, self) {
+            (Style::Latex, Variable::E2) => format!("e^{{{}}}", 2 * k),
+            (_, _) if k == 1 => v.to_string(),
+            (Style::Latex, _) => format!("{v}^{{{k}}}"),
+            (Style::Text, _) => format!("{v}^{k}"),
+            _ => format!("{v}**{k}"),
+        }
+    }
+}
+
+/// A polynomial with integer coefficients (ascending) as `style` writes it, in descending or
+/// ascending powers.
+fn int_poly(c: &[Integer], v: Variable, style: Style, descending: bool) -> String {
+    let mut out = String::new();
+    let idx: Vec<usize> = if descending {
+        (0..c.len()).rev().collect()
+    } else {
+        (0..c.len()).collect()
+    };
+    for k in idx {
+        let a = &c[k];
+        if a.cmp0() == Ordering::Equal {
+            continue;
+        }
+        let neg = a.cmp0() == Ordering::Less;
+        if out.is_empty() {
+            if neg {
+                out.push('-');
+            }
+        } else {
+            out.push_str(if neg { " - " } else { " + " });
+        }
+        let abs = Integer::from(a.abs_ref());
+        let mul = match style {
+            Style::Latex => "\\,",
+            Style::Text => " ",
+            _ => "*",
+        };
+        if k == 0 {
+            let _ = write!(out, "{abs}");
+        } else if abs == 1 {
+            out.push_str(&v.power(k, style));
+        } else {
+            let _ = write!(out, "{abs}{mul}{}", v.power(k, style));
+        }
+    }
+    out
+}
+
+fn terms(c: &[Integer]) -> usize {
+    c.iter().filter(|a| a.cmp0() != Ordering::Equal).count()
+}
+
+/// `c` (ascending, not all zero) with the sign that makes its lowest nonzero coefficient
+/// positive, and whether it was flipped.
+fn positive_low(mut c: Vec<Integer>) -> (Vec<Integer>, bool) {
+    let low = c.iter().find(|a| a.cmp0() != Ordering::Equal);
+    let flip = low.is_some_and(|a| a.cmp0() == Ordering::Less);
+    if flip {
+        c.iter_mut().for_each(|a| *a = Integer::from(-&*a));
+    }
+    (c, flip)
+}
+
+/// The expression of `f` in the variable `v`, times x^`xpow` when `xpow` > 0 (see the module
+/// docs for the normal form).
+pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String {
+    if f.numer().is_zero() {
+        return "0".into();
+    }
+    let (mut r, prim) = f.numer().primitive();
+    let (prim, flip) = positive_low(prim);
+    if flip {
+        r = -r;
+    }
+    let mut bases = Vec::new();
+    for (q, e) in f.denom_factors() {
+        let (qi, _) = positive_low(q.primitive().1);
+        // q = qi / lead(qi), so 1/q^e = lead^e / qi^e.
+        let lead = qi.last().cloned().unwrap_or_default();
+        r *= Rational::from(Integer::from(rug::ops::Pow::pow(&lead, *e)));
+        bases.push((qi, *e));
+    }
+    let neg = r.cmp0() == Ordering::Less;
+    let (a, b) = (Integer::from(r.numer().abs_ref()), r.denom().clone());
+    let latex = style == Style::Latex;
+    let (mul, pow) = match style {
+        Style::Latex => ("\\,", "^"),
+        Style::Text => (" ", "^"),
+        _ => ("*", "**"),
+    };
+    let has_den = b != 1 || !bases.is_empty();
+    // Numerator: [A ·] [x^k ·] P.
+    let mut num_parts: Vec<String> = Vec::new();
+    if a != 1 {
+        num_parts.push(a.to_string());
+    }
+    if xpow > 0 {
+        num_parts.push(match (latex, xpow) {
+            (_, 1) => "x".into(),
+            (true, k) => format!("x^{{{k}}}"),
+            (false, k) => format!("x{pow}{k}"),
+        });
+    }
+    if prim.len() > 1 {
+        let p = int_poly(&prim, v, style, false);
+        // P stands bare when nothing precedes it and the sign or a bar cannot be misread.
+        let bare = num_parts.is_empty()
+            && if latex {
+                has_den || !neg
+            } else {
+                !has_den && !neg
+            };
+        num_parts.push(if bare || terms(&prim) == 1 {
+            p
+        } else {
+            format!("({p})")
+        });
+    }
+    let num = if num_parts.is_empty() {
+        "1".to_string()
+    } else {
+        num_parts.join(mul)
+    };
+    let sign = if neg { "-" } else { "" };
+    if !has_den {
+        return format!("{sign}{num}");
+    }
+    // Denominator: [B ·] Π base^e.
+    let mut den_parts: Vec<String> = Vec::new();
+    if b != 1 {
+        den_parts.push(b.to_string());
+    }
+    let lone = b == 1 && bases.len() == 1;
+    for (qi, e) in &bases {
+        let s = int_poly(qi, v, style, false);
+        let wrap = terms(qi) > 1 && (!latex || *e > 1 || !lone);
+        let s = if wrap { format!("({s})") } else { s };
+        den_parts.push(match (style, *e) {
+            (_, 1) => s,
+            (Style::Latex, e) if v == Variable::E2 && terms(qi) == 1 && qi.len() == 2 => {
+                format!("e^{{{}}}", 2 * e)
+            }
+            (Style::Latex, e) => format!("{s}^{{{e}}}"),
+            (_, e) => format!("{s}{pow}{e}"),
+        });
+    }
+    if latex {
+        return format!("{sign}\\frac{{{num}}}{{{}}}", den_parts.join(mul));
+    }
+    let den = if den_parts.len() > 1 {
+        format!("({})", den_parts.join(mul))
+    } else {
+        den_parts.remove(0)
+    };
+    format!("{sign}{num}/{den}")
+}
+
+/// One named function for [`render`]: `name = value(v) · x^xpow`.
+#[derive(Clone, Debug)]
+pub struct Named {
+    /// The name (`f_2`, `alpha_10`, ...).
+    pub name: String,
+    /// The rational function.
+    pub value: RatFunc,
+    /// The variable of `value`.
+    pub var: Variable,
+    /// A power of x multiplying `value` (0 for none).
+    pub xpow: usize,
+}
+
+fn latex_name(name: &str) -> String {
+    let greek = ["alpha", "beta", "gamma", "delta"];
+    let (base, rest) = name.split_once('_').unwrap_or((name, ""));
+    let base = if greek.contains(&base) {
+        format!("\\{base}")
+    } else {
+        base.to_string()
+    };
+    match rest.split_once('_') {
+        Some((idx, tag)) => format!("{base}_{{{idx}}}^{{\\mathrm{{{}}}}}", tag.replace('_', " ")),
+        None if rest.is_empty() => base,
+        None => format!("{base}_{{{rest}}}"),
+    }
+}
+
+fn json_list(p: &Poly) -> String {
+    let items: Vec<String> = p.coeffs().iter().map(|c| format!("\"{c}\"")).collect();
+    format!("[{}]", items.join(", "))
+}
+
+/// The document for `items` in `style`, with `title` as a comment (text, LaTeX) or a field
+/// (JSON); sympy output holds only `name = expression` lines.
+pub fn render(title: &str, items: &[Named], style: Style) -> String {
+    let mut out = String::new();
+    match style {
+        Style::Text => {
+            let _ = writeln!(out, "# {title}");
+            for it in items {
+                let _ = writeln!(
+                    out,
+                    "{} = {}",
+                    it.name,
+                    expression(&it.value, it.var, it.xpow, style)
+                );
+            }
+        }
+        Style::Sympy => {
+            for it in items {
+                let e = expression(&it.value, it.var, it.xpow, style);
+                let _ = writeln!(out, "{} = {e}", it.name);
+            }
+        }
+        Style::Latex => {
+            let _ = writeln!(out, "% {title}\n\\begin{{align*}}");
+            for (i, it) in items.iter().enumerate() {
+                let end = if i + 1 < items.len() { " \\\\" } else { "" };
+                let e = expression(&it.value, it.var, it.xpow, style);
+                let _ = writeln!(out, "{} &= {e}{end}", latex_name(&it.name));
+            }
+            let _ = writeln!(out, "\\end{{align*}}");
+        }
+        Style::Json => {
+            let _ = writeln!(out, "{{\n  \"title\": \"{title}\",\n  \"functions\": [");
+            for (i, it) in items.iter().enumerate() {
+                let var = it.var.name(Style::Sympy);
+                let e = expression(&it.value, it.var, it.xpow, Style::Sympy);
+                let comma = if i + 1 < items.len() { "," } else { "" };
+                let _ = writeln!(
+                    out,
+                    "    {{\"name\": \"{}\", \"variable\": \"{var}\", \"power_of_x\": {}, \
+                     \"numerator\": {}, \"denominator\": {}, \"sympy\": \"{e}\"}}{comma}",
+                    it.name,
+                    it.xpow,
+                    json_list(it.value.numer()),
+                    json_list(&it.value.denom()),
+                );
+            }
+            let _ = writeln!(out, "  ]\n}}");
+        }
+    }
+    out
+}
+
+/// The named functions of [`super::green_coefficients`]: `f_n` = F_n(ν)·x^n for each n, then
+/// the paper's printed `f_1_printed`, `f_2_printed` and `f_2_printed_minus_derived` (each
+/// times its power of x).
+pub fn coefficient_items(f: &[RatFunc]) -> Vec<Named> {
+    let mut items: Vec<Named> = f
+        .iter()
+        .enumerate()
+        .map(|(n, v)| Named {
+            name: format!("f_{n}"),
+            value: v.clone(),
+            var: Variable::Nu,
+            xpow: n,
+        })
+        .collect();
+    let mut push = |name: &str, value: RatFunc, xpow: usize| {
+        items.push(Named {
+            name: name.into(),
+            value,
+            var: Variable::Nu,
+            xpow,
+        })
+    };
+    push("f_1_printed", super::printed_f1(), 1);
+    push("f_2_printed", super::printed_f2(), 2);
+    if let Some(f2) = f.get(2) {
+        push("f_2_printed_minus_derived", super::printed_f2() - f2, 2);
+    }
+    items
+}
+
+/// The named functions of [`super::moment_forms`]: `alpha_n`, `beta_n`, `gamma_n`, `delta_n`
+/// with L_n = alpha_n K + beta_n E, M_n = gamma_n K + delta_n E.
+pub fn moment_items(t: &[KeTerm<RatFunc>]) -> Vec<Named> {
+    let mut items = Vec::with_capacity(4 * t.len());
+    for term in t {
+        for (name, value) in [
+            ("alpha", &term.l.0),
+            ("beta", &term.l.1),
+            ("gamma", &term.m.0),
+            ("delta", &term.m.1),
+        ] {
+            items.push(Named {
+                name: format!("{name}_{}", term.n),
+                value: value.clone(),
+                var: Variable::E2,
+                xpow: 0,
+            });
+        }
+    }
+    items
+}
