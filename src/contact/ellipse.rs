@@ -221,7 +221,8 @@ fn static_seed_wide(ratio: f64) -> f64 {
 /// `ratio` = A1/B1 = R2/R1, for the material and speed of `speed`.
 ///
 /// Without a seed (the default) the solve climbs the precision ladder above `f64`
-/// ([`solve_ladder`]): a few evaluations of the integrals at the working precision, no search.
+/// (the precision ladder of the module docs): a few evaluations of the integrals at the
+/// working precision, no search.
 ///
 /// Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit quadrature solve,
 /// `tests/contact.rs`), I1, I2 at k to a few ε, with error bounds. The bound on k is for the

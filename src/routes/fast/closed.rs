@@ -1,0 +1,301 @@
+//! The constants of one (material, speed) at the nodes and the closed forms of the right
+//! half: the Taylor coefficients b_j of b(σ), the moments of (σ + k²)^{−3/2} and the pole terms.
+
+use super::*;
+
+/// Constants that depend on the material and the speed but not on k.
+#[derive(Clone, Debug)]
+pub(crate) struct SpeedConsts<T: Real> {
+    /// 2/m1.
+    pub(crate) two_over_m1: T,
+    /// c = m1 M_R², c², (m2 + m3)·c, m2 + m3, m2 m3.
+    pub(crate) c: T,
+    pub(crate) c2: T,
+    pub(crate) sc: T,
+    pub(crate) s23: T,
+    pub(crate) q: T,
+    /// 1 − γc and δ² = 1 − c.
+    pub(crate) a1: T,
+    pub(crate) d2: T,
+    /// ε², and the closed-form pole integrals atan(1/ε)/ε and 1 − ε atan(1/ε).
+    pub(crate) eps2: T,
+    pub(crate) pole_t: T,
+    pub(crate) pole_1: T,
+    /// 2π G(1) M_R = a0 (1 − k²ε²)^{3/2}.
+    pub(crate) g0: T,
+}
+
+impl<T: Real> SpeedConsts<T> {
+    pub(crate) fn new(speed: &Speed<T>) -> Self {
+        let mat = speed.material();
+        let p = speed.mr().prec();
+        let one = T::one(p);
+        let roots = mat.roots();
+        let m1 = roots.m1.clone();
+        let gamma = mat.gamma().clone();
+        let c = speed.m2sq().clone();
+        let s23 = roots.sum23.clone();
+        let q = roots.prod23.clone();
+        let two_over_m1 = T::from_i64(2, p) / &m1;
+        let a1 = one.clone() - gamma.clone() * &c;
+        let d2 = one.clone() - &c;
+        let eps2 = speed.one_minus_mr2().clone();
+        // The pole is subtracted only when it is near the interval (ε ≤ 1/2, i.e. M_R ≥ √3/2);
+        // farther out the plain rule converges as fast, and for M_R → 0, k → 1 the pole at
+        // w = iε would meet the branch point of u^{−3/2} at w = i/k, where a0 is unbounded.
+        let near = eps2.clone().mul_i64(4) <= one;
+        let (g0, pole_t, pole_1) = if near {
+            let eps = eps2.clone().sqrt();
+            let at = one.clone().atan2(&eps);
+            let pole_t = at.clone() / &eps;
+            let pole_1 = one.clone() - eps * at;
+            // a(−ε²)·u0^{3/2} = 2π G(1) M_R: the pole's strength (Material::pi_g_rayleigh).
+            let g0 = mat.pi_g_rayleigh().clone().mul_i64(2) * speed.mr();
+            (g0, pole_t, pole_1)
+        } else {
+            (T::zero(p), T::zero(p), T::zero(p))
+        };
+        SpeedConsts {
+            c2: c.square(),
+            sc: s23.clone() * &c,
+            two_over_m1,
+            c,
+            s23,
+            q,
+            a1,
+            d2,
+            eps2,
+            pole_t,
+            pole_1,
+            g0,
+        }
+    }
+}
+
+impl<T: Real> SpeedConsts<T> {
+    /// G's cleared form at a left node s = w² (p = 1 + s; `two_p`, `four_p` = 2p, 4p): returns
+    /// e1 = s + 1 − γc, D' = (2p − c)² + 4p√((s + 1 − γc)(s + δ²)) and
+    /// Q' = c² − (m2 + m3)c p + m2m3 p², so that 2πG√(1 + s) = (2/m1)√e1·D'/Q' (module docs).
+    /// One square root, no division.
+    #[inline(always)]
+    pub(crate) fn left_node(&self, s: &T, pp: &T, two_p: &T, four_p: &T) -> (T, T, T) {
+        let e1 = s.clone() + &self.a1;
+        let e2 = s.clone() + &self.d2;
+        let sq1 = (e1.clone() * e2).sqrt();
+        let t = two_p.clone() - &self.c;
+        let dd = t.square() + four_p.clone() * sq1;
+        let qq = (self.q.clone() * pp - &self.sc) * pp + &self.c2;
+        (e1, dd, qq)
+    }
+
+    /// The same at a right node σ = v² (p = 1 + σ): returns f1 = 1 + (1 − γc)σ, D' and
+    /// E = Q'(σ)(1 + ε²σ), so that b(σ) = (2/m1)√f1·D'/E (module docs). `one` is 1 at the
+    /// working precision.
+    #[inline(always)]
+    pub(crate) fn right_node(&self, sg: &T, pp: &T, two_p: &T, four_p: &T, one: &T) -> (T, T, T) {
+        let cs = self.c.clone() * sg;
+        let f1 = one.clone() + self.a1.clone() * sg;
+        let f2 = one.clone() + self.d2.clone() * sg;
+        let sq1 = (f1.clone() * f2).sqrt();
+        let t = two_p.clone() - &cs;
+        let dd = t.square() + four_p.clone() * sq1;
+        let qq = (self.q.clone() * pp - self.s23.clone() * &cs) * pp + cs.square();
+        let e = qq * (one.clone() + self.eps2.clone() * sg);
+        (f1, dd, e)
+    }
+}
+
+/// The Taylor coefficients b_j (j < J) of b(σ) at σ = 0, from its rationalised form
+/// b = (2/m1) N(σ)/(Q'(σ)(1 + ε²σ)) with
+/// N = (2 + (2 − c)σ)² √(1 + (1 − γc)σ) + 4(1 + σ)(1 + (1 − γc)σ) √(1 + δ²σ): the binomial series
+/// of the two square roots (coefficients β_l(−a)^l, β_l those of √(1 − z)) multiplied by the
+/// quadratics, then divided by the cubic d0 + d1σ + d2σ² + d3σ³ = Q'(σ)(1 + ε²σ) term by term,
+/// b_j = ((2/m1)N_j − d1 b_{j−1} − d2 b_{j−2} − d3 b_{j−3})/d0. The roots of the cubic are
+/// σ = −1/ε² and σ = m/(c − m) for the Rayleigh roots m = m2, m3, all of modulus ≥ 1 (equality only
+/// at M_R = 0, a triple root at −1), so the division is stable (errors grow at most like j² at
+/// M_R = 0). About 14 operations a coefficient; the value at σ = 0 is b_0 = 2(1 − ν).
+pub(crate) fn taylor_b<T: Real>(sc: &SpeedConsts<T>, rule: &FastRule<T>, out: &mut [T]) {
+    let j_max = out.len();
+    if j_max == 0 {
+        return;
+    }
+    let p = sc.c.prec();
+    let zero = T::zero(p);
+    let four = T::from_i64(4, p);
+    // Numerator quadratics: (2 + e1σ)² = 4 + 4e1σ + e1²σ², 4(1 + σ)(1 + a1σ) = 4 + 4(1 + a1)σ + 4a1σ².
+    let e1 = T::from_i64(2, p) - &sc.c;
+    let na = [four.clone(), e1.clone().mul_i64(4), e1.square()];
+    let nb = [
+        four,
+        (T::one(p) + &sc.a1).mul_i64(4),
+        sc.a1.clone().mul_i64(4),
+    ];
+    // Denominator: Q'(σ) = q + (2q − Sc)σ + (c² − Sc + q)σ², times (1 + ε²σ).
+    let q0 = sc.q.clone();
+    let q1 = sc.q.clone().mul_i64(2) - &sc.sc;
+    let q2 = sc.c2.clone() - &sc.sc + &sc.q;
+    let inv_d0 = q0.clone().recip();
+    let g = [
+        (q1.clone() + sc.eps2.clone() * &q0) * &inv_d0,
+        (q2.clone() + sc.eps2.clone() * &q1) * &inv_d0,
+        sc.eps2.clone() * &q2 * &inv_d0,
+    ];
+    let f = sc.two_over_m1.clone() * inv_d0;
+    let (minus_a1, minus_d2) = (-sc.a1.clone(), -sc.d2.clone());
+    let (mut pa, mut pb) = (T::one(p), T::one(p));
+    // Histories: α_{j−1}, α_{j−2}; B_{j−1}, B_{j−2}; b_{j−1}, b_{j−2}, b_{j−3}.
+    let (mut al, mut bl) = ([zero.clone(), zero.clone()], [zero.clone(), zero.clone()]);
+    let mut bh = [zero.clone(), zero.clone(), zero];
+    for (j, out_j) in out.iter_mut().enumerate() {
+        let beta = &rule.sqrt_binomial[j];
+        let a = beta.clone() * &pa;
+        let b = beta.clone() * &pb;
+        let n = na[0].clone() * &a
+            + na[1].clone() * &al[0]
+            + na[2].clone() * &al[1]
+            + nb[0].clone() * &b
+            + nb[1].clone() * &bl[0]
+            + nb[2].clone() * &bl[1];
+        let bj = f.clone() * n
+            - &(g[0].clone() * &bh[0] + g[1].clone() * &bh[1] + g[2].clone() * &bh[2]);
+        *out_j = bj.clone();
+        pa *= &minus_a1;
+        pb *= &minus_d2;
+        al = [a, al[0].clone()];
+        bl = [b, bl[0].clone()];
+        bh = [bj, bh[0].clone(), bh[1].clone()];
+    }
+}
+
+/// The moments N_j = ∫_0^1 v^{2j}(v² + k²)^{−1/2} dv (j = 0..n.len()) by the upward recurrence
+/// N_0 = asinh(1/k), N_j = (√(1 + k²) − (2j − 1)k² N_{j−1})/(2j) (each step multiplies the
+/// inherited error by (2j − 1)k²/(2j) < 1), and the closed forms M_0 = ∫(v² + k²)^{−3/2} dv =
+/// 1/(k²√(1 + k²)), P_0 = ∫(v² + k²)^{−5/2} dv = (2 + 3k²)/(3k⁴(1 + k²)^{3/2}), returned as
+/// (M_0, P_0).
+pub(crate) fn moments<T: Real>(k: &T, k2: &T, inv_2j: &[T], ratio_2j: &[T], n: &mut [T]) -> (T, T) {
+    let p = k.prec();
+    let one = T::one(p);
+    let opk2 = one.clone() + k2;
+    let r1 = opk2.clone().sqrt();
+    let m0 = (k2.clone() * &r1).recip();
+    // N_0 = asinh(1/k) = ln((1 + √(1 + k²))/k).
+    let mut nj = ((one + &r1) / k).ln();
+    for j in 0..n.len() {
+        if j > 0 {
+            nj = r1.clone() * &inv_2j[j - 1] - k2.clone() * &ratio_2j[j - 1] * &nj;
+        }
+        n[j] = nj.clone();
+    }
+    // P_0 = M_0 (2 + 3k²)/(3k²(1 + k²)).
+    let p0 = m0.clone() * (T::from_i64(2, p) + k2.clone().mul_i64(3)) / (opk2 * k2).mul_i64(3);
+    (m0, p0)
+}
+
+/// Synthetic division by σ − x0: P(σ) = P(x0) + (σ − x0) Q(σ) for P = Σ b_j σ^j; writes the
+/// coefficients of Q (ascending, `q.len() = b.len() − 1`) and returns P(x0).
+pub(crate) fn synthetic_division<T: Real>(b: &[T], x0: &T, q: &mut [T]) -> T {
+    let Some((last, rest)) = b.split_last() else {
+        return T::zero(x0.prec());
+    };
+    let mut acc = last.clone();
+    for i in (0..rest.len()).rev() {
+        q[i] = acc.clone();
+        acc = acc * x0 + &rest[i];
+    }
+    acc
+}
+
+/// ∫_0^1 P(σ)(σ + k²)^{−3/2} dv and ∫_0^1 σ P(σ)(σ + k²)^{−3/2} dv for the polynomial
+/// P = Σ_{j<J} b_j σ^j, exactly: expanded about the branch point, P = P(−k²) + (σ + k²) Q(σ),
+/// they are P(−k²) M_0 + Σ q_i N_i and −k² P(−k²) M_0 + P(−k²) N_0 + Σ q_i N_{i+1}. Only the
+/// stable N_j enter (the M_j = N_{j−1} − k² M_{j−1} recurrence is neutral at k = 1 and would
+/// accumulate J² ε there). `q` is scratch of length J − 1.
+pub(crate) fn poly_moments<T: Real>(b: &[T], k2: &T, n: &[T], m0: &T, q: &mut [T]) -> (T, T, T) {
+    let p = k2.prec();
+    if b.is_empty() {
+        return (T::zero(p), T::zero(p), T::zero(p));
+    }
+    let x0 = -k2.clone();
+    let pv = synthetic_division(b, &x0, q);
+    let mut s1 = pv.clone() * m0;
+    let mut s2 = pv.clone() * &n[0] - (k2.clone() * &pv) * m0;
+    for (i, qi) in q.iter().enumerate() {
+        s1 += qi.clone() * &n[i];
+        s2 += qi.clone() * &n[i + 1];
+    }
+    (s1, s2, pv)
+}
+
+/// The closed-form parts of the right half: ∫ P W3, ∫ σ P W3 and, when `dk`, ∫ P W5, ∫ σ P W5
+/// (P the subtracted Taylor polynomial, W_m = (σ + k²)^{−m/2}, integrals over v ∈ [0, 1]).
+/// With P = P(−k²) + (σ + k²) Q: ∫ P W5 = P(−k²) P_0 + ∫ Q W3 and
+/// ∫ σ P W5 = −k² P(−k²) P_0 + P(−k²) M_0 + ∫ σ Q W3. `scratch` holds 3J values.
+pub(crate) fn right_closed_forms<T: Real>(
+    b: &[T],
+    k: &T,
+    k2: &T,
+    inv_2j: &[T],
+    ratio_2j: &[T],
+    dk: bool,
+    scratch: &mut [T],
+) -> [T; 4] {
+    let p = k.prec();
+    let j_max = b.len();
+    let (n, rest) = scratch.split_at_mut(j_max + 1);
+    let (q, rest) = rest.split_at_mut(j_max.saturating_sub(1));
+    let q2 = &mut rest[..j_max.saturating_sub(2)];
+    let (m0, p0) = moments(k, k2, inv_2j, ratio_2j, n);
+    let (s1, s2, pv) = poly_moments(b, k2, n, &m0, q);
+    if !dk {
+        return [s1, s2, T::zero(p), T::zero(p)];
+    }
+    let (t1, t2, _) = poly_moments(q, k2, n, &m0, q2);
+    let kpv = k2.clone() * &pv;
+    let d1 = pv.clone() * &p0 + &t1;
+    let d2 = pv * &m0 - &(kpv * &p0) + &t2;
+    [s1, s2, d1, d2]
+}
+
+/// [`right_closed_forms`] at the working precision, or, above double-double, with 64 guard bits
+/// (in MPFR) and rounded once: the expansion of P about the
+/// branch point −k² cancels like √J·log J when k → 1 (P(−1) and the quotient grow like √J while
+/// the integrals stay O(1)), about 15ε at 256 bits (J = 34) in working precision. At `f64` and
+/// double-double (J = 8, 14) the cancellation costs under 2ε and no guard precision is used.
+pub(crate) fn right_closed_forms_guarded<T: Real, const N: usize>(
+    rule: &FastRule<T>,
+    b: &[T],
+    kc: &KConsts<T>,
+    dk: bool,
+) -> [T; 4] {
+    let p = rule.prec;
+    let j_max = b.len();
+    let len = 3 * j_max + 1;
+    if T::bits(p) <= 106 {
+        let mut scratch = Buf::<T, N>::zeros(len, p);
+        return right_closed_forms(
+            b,
+            &kc.k,
+            &kc.k2,
+            &rule.inv_2j,
+            &rule.ratio_2j,
+            dk,
+            &mut scratch,
+        );
+    }
+    // 64 guard bits cover the √J·log J growth for every J a rule can have (J ≈ 0.13·bits).
+    let bits = T::bits(p);
+    let pw = MpPrec::clamped(bits + 64);
+    let up = |x: &T| Mp::from_float(&x.to_float(bits), pw);
+    let kw = up(&kc.k);
+    let k2w = kw.square();
+    let bw: Vec<Mp> = b.iter().map(up).collect();
+    let inv: Vec<Mp> = (1..=j_max as i64)
+        .map(|j| Mp::from_ratio(1, 2 * j, pw))
+        .collect();
+    let ratio: Vec<Mp> = (1..=j_max as i64)
+        .map(|j| Mp::from_ratio(2 * j - 1, 2 * j, pw))
+        .collect();
+    let mut scratch = vec![Mp::zero(pw); len];
+    let r = right_closed_forms(&bw, &kw, &k2w, &inv, &ratio, dk, &mut scratch);
+    r.map(|x| T::from_float(&x.0, p))
+}

@@ -1,0 +1,236 @@
+//! The fixed rules of the fast route: their sizes per precision and the per-precision rule
+//! (left and right halves, built once and cached).
+
+use super::*;
+
+/// The sizes of the fixed rules of the fast route.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct RuleSizes {
+    /// Gauss–Legendre nodes on the left half (w = tan α ∈ [0, 1]).
+    pub left: usize,
+    /// Gauss–Legendre nodes on the right half (v = cot α ∈ [0, 1]).
+    pub right: usize,
+    /// Taylor terms J of b(σ) subtracted on the right half.
+    pub taylor: usize,
+}
+
+impl RuleSizes {
+    /// The sizes for a working precision of `bits` bits, chosen so that the truncation error of
+    /// each half is below 1ε (measured convergence: the left half gains 2.3 bits a node in its
+    /// worst case, ν = 1/2 and M_R → 1; the right half about 4 bits a node with J ≈ 0.13·bits
+    /// Taylor terms, worst for k between 0.1 and 0.9).
+    ///
+    /// 53 bits (`f64`): 20, 12, J = 8; 106 bits (double-double): 44, 26, J = 14; otherwise
+    /// ⌈0.433·bits⌉ − 2, ⌈0.24·bits⌉ + 1, J = ⌈0.13·bits⌉ (256 bits: 109, 63, 34).
+    pub fn for_bits(bits: u32) -> RuleSizes {
+        let b = bits.max(24) as usize;
+        match b {
+            53 => RuleSizes {
+                left: 20,
+                right: 12,
+                taylor: 8,
+            },
+            106 => RuleSizes {
+                left: 44,
+                right: 26,
+                taylor: 14,
+            },
+            _ => RuleSizes {
+                left: (b * 433).div_ceil(1000) - 2,
+                right: (b * 24).div_ceil(100) + 1,
+                taylor: (b * 13).div_ceil(100),
+            },
+        }
+    }
+
+    /// Integrand evaluations per call (G is evaluated once per node).
+    pub fn nodes(&self) -> usize {
+        self.left + self.right
+    }
+}
+
+/// The nodes of one half on [0, 1] with the node-only quantities the integrands use.
+#[derive(Debug)]
+pub(crate) struct Half<T> {
+    /// s = node² (w² on the left, σ = v² on the right).
+    pub(crate) s: Vec<T>,
+    /// p = 1 + s, 2p, 4p.
+    pub(crate) p: Vec<T>,
+    pub(crate) two_p: Vec<T>,
+    pub(crate) four_p: Vec<T>,
+    /// The weight ω and ω·s.
+    pub(crate) w: Vec<T>,
+    pub(crate) ws: Vec<T>,
+}
+
+impl<T: Real> Half<T> {
+    /// The rule on [0, 1] from the symmetric n-point Gauss–Legendre rule on [−1, 1]: nodes
+    /// (1 ± x)/2, weights ω/2.
+    pub(crate) fn new(n: usize, p: T::Prec) -> Result<Self> {
+        let gl = GaussLegendre::<T>::get(n, p)?;
+        let one = T::one(p);
+        let half = T::from_ratio(1, 2, p);
+        let mut pts: Vec<(T, T)> = Vec::with_capacity(n);
+        for (x, w) in gl.nodes().iter().zip(gl.weights()) {
+            let hw = w.clone() * &half;
+            if x.is_zero() {
+                pts.push((half.clone(), hw));
+            } else {
+                pts.push(((one.clone() - x) * &half, hw.clone()));
+                pts.push(((one.clone() + x) * &half, hw));
+            }
+        }
+        pts.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
+        let s: Vec<T> = pts.iter().map(|(x, _)| x.square()).collect();
+        let pp: Vec<T> = s.iter().map(|s| one.clone() + s).collect();
+        let two_p: Vec<T> = pp.iter().map(|x| x.clone().mul_i64(2)).collect();
+        let four_p: Vec<T> = pp.iter().map(|x| x.clone().mul_i64(4)).collect();
+        let w: Vec<T> = pts.into_iter().map(|(_, w)| w).collect();
+        let ws: Vec<T> = w.iter().zip(&s).map(|(w, s)| w.clone() * s).collect();
+        Ok(Half {
+            s,
+            p: pp,
+            two_p,
+            four_p,
+            w,
+            ws,
+        })
+    }
+
+    pub(crate) fn len(&self) -> usize {
+        self.s.len()
+    }
+
+    /// The node quantities (s, p, 2p, 4p), node by node.
+    #[inline(always)]
+    pub(crate) fn nodes(&self) -> impl Iterator<Item = (&T, &T, &T, &T)> {
+        let n = self.len();
+        self.s[..n]
+            .iter()
+            .zip(&self.p[..n])
+            .zip(&self.two_p[..n])
+            .zip(&self.four_p[..n])
+            .map(|(((s, p), two_p), four_p)| (s, p, two_p, four_p))
+    }
+}
+
+/// The fixed rules of the fast route at one precision: nodes and weights on [0, 1] for both
+/// halves, with the node-only quantities precomputed, and the exact rational constants of the
+/// Taylor coefficients of b and of the moment recurrences. Built once per precision and kept in
+/// the shared rule cache of [`crate::numerics::quadrature`]; for `f64` and double-double a
+/// static slot filled from it serves later calls without the cache's lock.
+#[derive(Debug)]
+pub struct FastRule<T: Real> {
+    pub(crate) prec: T::Prec,
+    pub(crate) sizes: RuleSizes,
+    pub(crate) left: Half<T>,
+    /// The right half's rule: built with the rule at `f64` and double-double, on first use above
+    /// (where the right half may be laid out on sinh-mapped panels instead, [`RightSinh`]).
+    pub(crate) right: OnceLock<Half<T>>,
+    /// The binomial coefficients β_l of √(1 − z) = Σ β_l z^l, l < J.
+    pub(crate) sqrt_binomial: Vec<T>,
+    /// 1/(2j) and (2j − 1)/(2j) for j = 1..=J (index j − 1): the N_j recurrence.
+    pub(crate) inv_2j: Vec<T>,
+    pub(crate) ratio_2j: Vec<T>,
+}
+
+/// A borrowed or shared [`FastRule`].
+pub enum RuleRef<T: Real + 'static> {
+    /// A rule in its type's static slot (`f64`, double-double).
+    Static(&'static FastRule<T>),
+    /// A rule from the shared cache (MPFR).
+    Shared(Arc<FastRule<T>>),
+}
+
+impl<T: Real> Deref for RuleRef<T> {
+    type Target = FastRule<T>;
+    fn deref(&self) -> &FastRule<T> {
+        match self {
+            RuleRef::Static(r) => r,
+            RuleRef::Shared(r) => r,
+        }
+    }
+}
+
+fixed_slot!(static_slot, FastRule);
+
+impl<T: Real> FastRule<T> {
+    /// The rule for precision `p` with the sizes of [`RuleSizes::for_bits`], built on first use
+    /// and cached for the life of the process.
+    pub fn get(p: T::Prec) -> Result<RuleRef<T>> {
+        check_rule_bits(T::bits(p))?;
+        if let Some(slot) = static_slot::<T>() {
+            let build = || Self::build(Self::default_sizes(p), p);
+            return slotted(slot, 0, p, |r: &Self| r.prec, build).map(|r| RuleRef::Static(&**r));
+        }
+        cached(
+            0,
+            p,
+            |r: &Self| r.prec,
+            || Self::build(Self::default_sizes(p), p),
+        )
+        .map(RuleRef::Shared)
+    }
+
+    pub(crate) fn default_sizes(p: T::Prec) -> RuleSizes {
+        RuleSizes::for_bits(T::bits(p))
+    }
+
+    /// A rule with explicit sizes (not cached): for convergence studies and calibration.
+    pub fn build(sizes: RuleSizes, p: T::Prec) -> Result<Self> {
+        if sizes.left == 0 || sizes.right == 0 {
+            return Err(Error::Domain {
+                name: "fast route node count",
+                value: format!("{}/{}", sizes.left, sizes.right),
+                bound: ">= 1",
+            });
+        }
+        let left = Half::new(sizes.left, p)?;
+        let right = OnceLock::new();
+        if T::bits(p) <= 106 {
+            let _ = right.set(Half::new(sizes.right, p)?);
+        }
+        let j_max = sizes.taylor;
+        // β_0 = 1, β_{l+1} = β_l (2l − 1)/(2l + 2).
+        let mut sqrt_binomial = Vec::with_capacity(j_max);
+        let mut beta = T::one(p);
+        for l in 0..j_max as i64 {
+            sqrt_binomial.push(beta.clone());
+            beta = beta.mul_i64(2 * l - 1).div_i64(2 * l + 2);
+        }
+        let inv_2j = (1..=j_max as i64)
+            .map(|j| T::from_ratio(1, 2 * j, p))
+            .collect();
+        let ratio_2j = (1..=j_max as i64)
+            .map(|j| T::from_ratio(2 * j - 1, 2 * j, p))
+            .collect();
+        Ok(FastRule {
+            prec: p,
+            sizes,
+            left,
+            right,
+            sqrt_binomial,
+            inv_2j,
+            ratio_2j,
+        })
+    }
+
+    /// The sizes of this rule.
+    pub fn sizes(&self) -> RuleSizes {
+        self.sizes
+    }
+
+    /// The right half's rule (built on first use above double-double).
+    pub(crate) fn right_half(&self) -> Result<&Half<T>> {
+        if let Some(h) = self.right.get() {
+            return Ok(h);
+        }
+        let h = Half::new(self.sizes.right, self.prec)?;
+        Ok(self.right.get_or_init(|| h))
+    }
+
+    /// The precision of this rule.
+    pub fn prec(&self) -> T::Prec {
+        self.prec
+    }
+}

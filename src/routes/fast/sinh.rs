@@ -1,0 +1,83 @@
+//! The right half on sinh-mapped panels (above double-double): one layout per octave of k.
+
+use super::*;
+
+/// Octaves of k on the route's domain: k ∈ (2^(−j−1), 2^−j], j = 0 … 40.
+pub(crate) const OCTAVES: usize = 41;
+
+/// The octave j of 2^−40 ≤ k ≤ 1.
+pub(crate) fn octave<T: Real>(k: &T) -> usize {
+    ((-k.to_f64().log2()).floor().max(0.0) as usize).min(OCTAVES - 1)
+}
+
+/// The largest scale a of v = a sinh x for the octave j: 4/5 of its smallest k, so that the
+/// branch points ±ik of (σ + k²)^{−3/2} lie on or beyond the strip |Im x| < π/2.
+pub(crate) fn octave_scale(j: usize) -> f64 {
+    0.8 * 0.5f64.powi(j as i32 + 1)
+}
+
+/// What a node of the right half costs besides the Taylor polynomial's J products (G's cleared
+/// form and the kernel power), in products: the weight of J in [`sinh_octave`]'s comparison.
+pub(crate) const NODE_COST: usize = 30;
+
+/// The octave of k when the rule's right half takes the sinh-mapped panels ([`RightSinh`]):
+/// above double-double, when their nodes cost less than the Taylor subtraction's
+/// n_r (1 + J/[`NODE_COST`]) (the J products of the polynomial at every node grow like bits²).
+/// At `f64` and double-double, never.
+pub(crate) fn sinh_octave<T: Real>(rule: &FastRule<T>, k: &T) -> Option<usize> {
+    let bits = T::bits(rule.prec);
+    if bits <= 106 {
+        return None;
+    }
+    let j = octave(k);
+    let z = rule.sizes;
+    let n = graded::sinh_node_count(bits, octave_scale(j));
+    (n * NODE_COST < z.right * (NODE_COST + z.taylor)).then_some(j)
+}
+
+/// The right half on sinh-mapped panels: v = a sinh x over x ∈ [0, C ln 2] with a ≤ (4/5)·k for
+/// every k of one octave, the panels of [`crate::routes::graded`] (lengths ℓ ln 2, node counts
+/// from the Bernstein ellipse that reaches the strip |Im x| < π/2, where the branch points ±ik of
+/// (σ + k²)^{−3/2} and every singularity of b(σ), at |v| ≥ 1 on or near the imaginary axis,
+/// lie). No subtraction: the integrands b(σ)(σ + k²)^{−3/2} dv/dx are positive and analytic in
+/// the strip. Kept per k-independent part: σ, f = ω b(σ) (ω the weight times dv/dx) and σf;
+/// a k costs one square root and one division a node ([`graded`]'s power sums).
+#[derive(Debug)]
+pub(crate) struct RightSinh<T> {
+    pub(crate) s: Vec<T>,
+    pub(crate) f: Vec<T>,
+    pub(crate) sf: Vec<T>,
+}
+
+impl<T: Real> RightSinh<T> {
+    pub(crate) fn new(sc: &SpeedConsts<T>, p: T::Prec, j: usize) -> Result<Self> {
+        graded::with_sinh_layout(p, octave_scale(j), |layout| {
+            let n = layout.nodes()?;
+            let mut s = vec![T::zero(p); n];
+            let mut f = vec![T::zero(p); n];
+            // b(σ) = (2/m1) √f1 D′/E; the factor 2/m1 goes into the weights.
+            layout.fill(&sc.two_over_m1, &mut s, &mut f)?;
+            let one = T::one(p);
+            for (sg, fi) in s.iter().zip(f.iter_mut()) {
+                let pp = one.clone() + sg;
+                let (two_p, four_p) = (pp.clone().mul_i64(2), pp.clone().mul_i64(4));
+                let (f1, dd, e) = sc.right_node(sg, &pp, &two_p, &four_p, &one);
+                *fi = fi.clone() * dd * f1.sqrt_div(&e);
+            }
+            let sf = s.iter().zip(&f).map(|(a, b)| a.clone() * b).collect();
+            Ok(RightSinh { s, f, sf })
+        })
+    }
+
+    pub(crate) fn len(&self) -> usize {
+        self.s.len()
+    }
+
+    /// I1_R = Σ f (σ + k²)^{−3/2}, I2_R = Σ σf (σ + k²)^{−3/2} and, with `dk`, S1, S2 the same
+    /// with (σ + k²)^{−5/2} (dI_R/dk = −3k S).
+    pub(crate) fn parts(&self, kc: &KConsts<T>, dk: bool) -> [T; 4] {
+        let p = kc.k.prec();
+        let factors = [&self.f[..], &self.sf[..], &self.f[..], &self.sf[..]];
+        graded::power_sums(&self.s, factors, dk, p, |sg| sg.clone() + &kc.k2)
+    }
+}
