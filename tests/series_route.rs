@@ -324,3 +324,37 @@ fn near_rayleigh_speed() {
     );
     assert!(e1 <= 4.0 && e2 <= 4.0);
 }
+
+/// Near the Rayleigh speed the series sees the speed as its gap 1 − M_R represents it (the
+/// decimal input's own rounding there), so its estimate bounds the error against a reference on
+/// those very inputs: the adaptive route 64 bits higher.
+#[test]
+fn estimate_holds_near_the_rayleigh_speed_for_decimal_inputs() {
+    use moving_hertz::prelude::*;
+    use moving_hertz::ExactInputs;
+    fn check<T: Real>(p: T::Prec, speeds: &[&str]) {
+        let pw = MpPrec::new(Precision::of::<T>(p).bits() as u64 + 64).unwrap();
+        let opts = |method| IntegralOptions {
+            method,
+            ..Default::default()
+        };
+        for mr in speeds {
+            let inputs = ExactInputs::parse("0.2", mr, "0.3").unwrap();
+            let (speed, k) = inputs.at::<T>(p).unwrap();
+            let (speed_w, k_w) = inputs.rounded::<T>(p).unwrap().at::<Mp>(pw).unwrap();
+            let r = moving_hertz::integrals(&speed_w, &k_w, &opts(Method::Adaptive)).unwrap();
+            let s = moving_hertz::integrals(&speed, &k, &opts(Method::Series)).unwrap();
+            for (got, want) in [(&s.i1, &r.i1.value), (&s.i2, &r.i2.value)] {
+                let g = Mp::from_float(&got.value.to_float(pw.bits()), pw);
+                let err = RelError::of(&((g - want) / want).abs());
+                assert!(
+                    err <= got.error,
+                    "M_R = {mr}: error {err} > estimate {}",
+                    got.error
+                );
+            }
+        }
+    }
+    check::<f64>((), &["0.9", "0.99", "0.999"]);
+    check::<Mp>(MpPrec::new(256).unwrap(), &["0.99"]);
+}

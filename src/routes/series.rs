@@ -178,12 +178,15 @@ impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
         // of h_n.
         let mat = self.speed.material().at::<W>(pw)?;
         let nu = mat.nu().clone();
-        let mr = up(self.speed.mr());
+        // M_R as the complement of the speed's gap, the input's own representation near the
+        // Rayleigh speed (the M_R the fast and graded routes see through 1 − M_R²).
+        let gap = up(self.speed.gap());
+        let mr = one.clone() - &gap;
         let k = up(&self.axis.k);
         let mc = k.square();
         let m1 = mat.m1().clone();
         let mr2 = mr.square();
-        let one_minus_mr2 = up(self.speed.gap()) * (one.clone() + &mr);
+        let one_minus_mr2 = gap * (one.clone() + &mr);
         let h_lim = mat.pi_g_rayleigh().clone();
         let tab = table_at(&mc, n + 1, self.method)?;
         // Binomial terms below ε·2⁻³⁰ (of the guarded precision) cannot change h_n ≥ H ≈ 0.2.
