@@ -43,8 +43,12 @@ impl RelError {
         e: 0,
     };
 
-    /// m·2^e normalised (m ≥ 0 finite).
+    /// m·2^e normalised (m ≥ 0).
+    #[inline]
     fn normal(m: f64, e: i64) -> RelError {
+        if (0.5..1.0).contains(&m) {
+            return RelError { m, e };
+        }
         if m == 0.0 {
             return RelError::ZERO;
         }
@@ -56,6 +60,7 @@ impl RelError {
     }
 
     /// The bound |x| for an `f64` (NaN and ±∞ give [`RelError::INFINITE`]).
+    #[inline]
     pub fn from_f64(x: f64) -> RelError {
         if x.is_nan() {
             return RelError::INFINITE;
@@ -65,11 +70,19 @@ impl RelError {
 
     /// The bound |x| for a value of any precision, without underflow (NaN and ±∞ give
     /// [`RelError::INFINITE`]).
+    #[inline]
     pub fn of<T: Real>(x: &T) -> RelError {
-        let f = x.to_f64();
+        let f = x.to_f64().abs();
         if f.is_normal() {
-            return RelError::from_f64(f);
+            let (m, e) = frexp(f);
+            return RelError { m, e };
         }
+        RelError::of_extreme(x)
+    }
+
+    /// [`RelError::of`] for zero, non-finite values and values beyond the `f64` exponent range.
+    #[cold]
+    fn of_extreme<T: Real>(x: &T) -> RelError {
         if x.is_zero() {
             return RelError::ZERO;
         }
@@ -82,6 +95,7 @@ impl RelError {
     }
 
     /// n·ε of the precision `p` (ε = 2^(1 − bits)).
+    #[inline]
     pub fn eps<T: Real>(n: u32, p: T::Prec) -> RelError {
         RelError::normal(n as f64, 1 - T::bits(p) as i64)
     }
@@ -109,17 +123,20 @@ impl RelError {
     }
 
     /// True unless unbounded.
+    #[inline]
     pub fn is_finite(&self) -> bool {
         self.m.is_finite()
     }
 
     /// True for the zero bound.
+    #[inline]
     pub fn is_zero(&self) -> bool {
         self.m == 0.0
     }
 
     /// The bound of a sum of two errors.
     #[allow(clippy::should_implement_trait)]
+    #[inline]
     pub fn add(self, o: RelError) -> RelError {
         if self.is_zero() {
             return o;
@@ -131,14 +148,20 @@ impl RelError {
             return RelError::INFINITE;
         }
         let (big, small) = if self >= o { (self, o) } else { (o, self) };
-        let shift = (big.e - small.e).min(2000) as i32;
-        RelError::normal((big.m + small.m * 2f64.powi(-shift)) * UP, big.e)
+        let shift = big.e - small.e;
+        if shift > 60 {
+            return RelError::normal(big.m * UP * UP, big.e);
+        }
+        // small.m·2^-shift: 2^-shift built from its exponent bits (0 ≤ shift ≤ 60).
+        let scale = f64::from_bits(((1023 - shift) as u64) << 52);
+        RelError::normal((big.m + small.m * scale) * UP, big.e)
     }
 
     /// The bound of a product of two relative factors (1 + a)(1 + b) − 1 ≤ a + b + ab: use
     /// [`RelError::add`] for compounding; this is the plain product a·b (a bound scaled by a
     /// condition number, say).
     #[allow(clippy::should_implement_trait)]
+    #[inline]
     pub fn mul(self, o: RelError) -> RelError {
         if self.is_zero() || o.is_zero() {
             return RelError::ZERO;
@@ -150,11 +173,13 @@ impl RelError {
     }
 
     /// The bound times a non-negative factor (NaN or ∞ give [`RelError::INFINITE`]).
+    #[inline]
     pub fn scale(self, f: f64) -> RelError {
         self.mul(RelError::from_f64(f))
     }
 
     /// The larger of two bounds.
+    #[inline]
     pub fn max(self, o: RelError) -> RelError {
         if o > self {
             o
@@ -164,6 +189,7 @@ impl RelError {
     }
 
     /// The smaller of two bounds.
+    #[inline]
     pub fn min(self, o: RelError) -> RelError {
         if o < self {
             o
@@ -220,6 +246,7 @@ impl RelError {
 }
 
 impl PartialOrd for RelError {
+    #[inline]
     fn partial_cmp(&self, o: &RelError) -> Option<Ordering> {
         let rank = |x: &RelError| match (x.is_zero(), x.is_finite()) {
             (true, _) => 0,
@@ -314,6 +341,7 @@ impl<T: Real> fmt::Display for Estimated<T> {
 }
 
 /// (m, e) with x = m·2^e, m ∈ [1/2, 1), for a finite positive `f64` (subnormals included).
+#[inline]
 fn frexp(x: f64) -> (f64, i64) {
     let bits = x.to_bits();
     let exp = ((bits >> 52) & 0x7ff) as i64;

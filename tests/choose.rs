@@ -24,7 +24,12 @@ fn precision_follows_the_request() {
         other => panic!("1e-60 answered at {other}"),
     }
     // Tolerances far below the f64 range: bits from the exponent, no overflow.
-    for (t, lo, hi) in [("1e-300", 990, 1010), ("1e-5000", 16600, 16630)] {
+    let cases = [
+        ("1e-300", 990, 1010),
+        ("1e-5000", 16600, 16630),
+        ("1e-10000", 33220, 33250),
+    ];
+    for (t, lo, hi) in cases {
         match choose_precision(tol(t)).unwrap() {
             Precision::Mpfr(p) => assert!((lo..=hi).contains(&p.bits()), "{t}: {}", p.bits()),
             other => panic!("{t} answered at {other}"),
@@ -93,11 +98,11 @@ fn error_estimate_bounds_the_true_error() {
     assert_eq!(checked, 32);
 }
 
-/// Tolerances far below the f64 range succeed and meet the tolerance (issue 16).
+/// Tolerances far below the f64 range succeed, meet the tolerance and are not oversized.
 #[test]
 fn tolerances_below_the_f64_range() {
     let inputs = ExactInputs::parse("0.25", "0.9990234375", "0.5").unwrap();
-    for t in ["1e-300"] {
+    for t in ["1e-300", "1e-1000"] {
         let a = integrals_to_tolerance(&inputs, tol(t), Method::Auto).unwrap();
         assert!(
             a.i1.error <= tol(t) && a.i2.error <= tol(t),
@@ -105,6 +110,8 @@ fn tolerances_below_the_f64_range() {
             a.i1.error
         );
         assert_eq!(a.route, Route::FixedRule);
+        // The lowest sufficient precision: the estimate lies within 10³ of the tolerance.
+        assert!(a.i1.error.scale(1000.0) >= tol(t), "{t}: {}", a.i1.error);
         check_against_reference(&inputs, &a, t);
     }
 }
@@ -132,6 +139,18 @@ fn bad_requests_are_typed_errors() {
         Err(Error::NotFinite { .. })
     ));
     let i = ExactInputs::parse("0.2", "0.5", "1").unwrap();
+    // Beyond the largest precision the rules are built for: refused before any work, naming
+    // the tolerance and the bound.
+    match integrals_to_tolerance(&i, tol("1e-10000"), Method::Auto) {
+        Err(e @ Error::Unreachable { .. }) => {
+            let text = e.to_string();
+            assert!(
+                text.contains("1.00e-10000") && text.contains("32768"),
+                "{text}"
+            );
+        }
+        other => panic!("1e-10000: {other:?}"),
+    }
     for t in ["1", "2"] {
         assert!(matches!(
             integrals_to_tolerance(&i, tol(t), Method::Auto),

@@ -9,7 +9,7 @@
 //! Newton's method on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, with F'(λ) = k (I2′/I2 − I1′/I1)
 //! from the integrals' k-derivatives (differentiated under the integral sign), safeguarded by a
 //! bracket: F increases with k (checked over ν, M_R and 10^-6 ≤ A1/B1 ≤ 10^6 in
-//! `tests/ellipse.rs`), so a step leaving the bracket is replaced by bisection in λ.
+//! `tests/contact.rs`), so a step leaving the bracket is replaced by bisection in λ.
 //!
 //! The start is the static ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30, the
 //! k ≫ 1 form of static Hertz, A1/B1 = k²/(ln 4k − 1), from 30 on.
@@ -19,11 +19,10 @@
 //! k-derivatives and steps with the previous F′ (a chord step, error ~δ·|λ − λ_F′|). An
 //! unseeded solve also stops one evaluation earlier where the Hermite cubic through F, F′ at
 //! its last two iterates (distance D) pins the remaining step h to O(D²h²) ≤ ε/8
-//! (`hermite_root`; I1, I2 carried by their own cubics in k, relative error ≤ 16D²h² ≤ ε): 51
-//! of 165 solves one evaluation fewer, none more (ν ∈ {−0.5, 0.2, 0.5} × A1/B1 = 10⁻⁶…10⁶ ×
-//! M_R = 0…0.9999: 547 → 496 evaluations), returned I1, I2 within 3ε of a double-double
-//! adaptive quadrature (`tests/contact.rs`). From A1/B1 = 30 on,
-//! long steps at kε ≥ 5 solve the asymptotic form of (33) for k ≫ 1 (`log_model_step`).
+//! (`hermite_root`; I1, I2 carried by their own cubics in k, relative error ≤ 16D²h² ≤ ε). From
+//! A1/B1 = 30 on, long steps at kε ≥ 5 solve the asymptotic form of (33) for k ≫ 1
+//! (`log_model_step`). The thresholds and the evidence they were chosen on:
+//! `docs/calibration.md`.
 //!
 //! **Precision ladder** ([`solve_ladder`]): a solve at high precision is started from
 //! the `f64` root and its F′ (good to ~2^-40). At double-double one evaluation with
@@ -32,11 +31,10 @@
 //! the Newton error (F″/2F′)δ² ~ 10⁻³² of an `f64` root off by δ ~ 10⁻¹⁶ shrinks by F″'s
 //! relative accuracy (~10⁻⁵). Where its error bounds do not reach ε, or the inputs' rounding to
 //! `f64` moved the root by more than 10⁻¹⁵ (M_R ≳ 0.999), two chord steps with the `f64` F′
-//! instead (error 2^-48 → 2^-88 → below 2^-106): two evaluations without k-derivatives. On 150
-//! cases (`tests/contact.rs`, against the 256-bit ladder) 119 take the single evaluation; k
-//! within 2ε, I1, I2 within 4.1ε. Above 106 bits a double-double stage comes first (one chord step with the
-//! `f64` F′, then one Newton step, so that it hands on its own F′, good to ~2^-90), then chord
-//! steps from its root (error ~2^-100 → ~2^-190 → below 2^-256): 2 evaluations without
+//! instead (each contracts the error by F′'s accuracy, 2^-48 to 2^-88 to below 2^-106): two
+//! evaluations without k-derivatives. Above 106 bits a double-double stage comes first (one
+//! chord step with the `f64` F′, then one Newton step, so that it hands on its own F′, good to
+//! ~2^-90), then chord steps from its root (~2^-100 to ~2^-190 to below 2^-256): 2 evaluations without
 //! k-derivatives at 256 bits, 3 at 512, 4 at 1024 — a few high-precision
 //! evaluations of the integrals, no search. Test: `tests/contact.rs` (the ladder's k within 10ε
 //! of a 320-bit adaptive-quadrature solve at f64, double-double and 256 bits).
@@ -140,18 +138,30 @@ impl<T: Real> Shape<T> {
             (self.k.clone().recip(), MajorAxis::Across)
         };
         let e = ((one.clone() - &q) * (one + &q)).sqrt();
-        // δ(e²) = 2q²·δk/k; |δe| ≤ min(δ(e²)/(2e), √δ(e²)), plus e's own rounding.
-        let (ef, qf) = (e.to_f64(), q.to_f64());
-        let de2 = RelError::of(&self.error_estimate).scale(2.0 * qf * qf);
-        let de = if ef > 0.0 {
-            de2.scale(0.5 / ef).min(de2.sqrt())
+        // δ(e²) = 2q²·δk/k; |δe| ≤ min(δ(e²)/(2e), √δ(e²)), plus e's own rounding (4ε·e),
+        // formed at the working precision (which holds any bound without underflow).
+        let de2 = q.square().mul_i64(2) * &self.error_estimate;
+        let root = de2.clone().sqrt();
+        let de = if e.is_positive() {
+            (de2 / e.clone().mul_i64(2)).min_of(root)
         } else {
-            de2.sqrt()
+            root
         };
-        let e_err = de.add(RelError::eps::<T>(4, p).scale(ef));
+        let e_err = de + &(T::epsilon(p).mul_i64(4) * &e);
+        if !(self.k.is_finite() && self.error_estimate.is_finite() && e_err.is_finite()) {
+            return Err(Error::NoConvergence {
+                what: "the axis ratio k",
+                iterations: self.iterations,
+                reached: format!(
+                    "k = {}, estimate {}",
+                    short(&self.k),
+                    short(&self.error_estimate)
+                ),
+            });
+        }
         Ok(Ellipse {
-            k: Estimated::new(self.k, RelError::of(&self.error_estimate)).checked("k = b/a")?,
-            e: Estimated::new(e, e_err).checked("eccentricity e")?,
+            k: Estimated::new(self.k, RelError::of(&self.error_estimate)),
+            e: Estimated::new(e, RelError::of(&e_err)),
             major,
             integrals: self.integrals.publish()?,
             iterations: self.iterations,
@@ -192,12 +202,7 @@ fn static_seed(ratio: f64) -> f64 {
 }
 
 /// From this ratio on the static seed is the k ≫ 1 form of static Hertz instead of Hamrock &
-/// Brewe's: at A1/B1 = 30 both are within 1.5 % of the static root, above it Hamrock & Brewe's
-/// overestimates (×1.45 at 10⁴, ×2.3 at 10⁶). A1/B1 = 10⁶, M_R = 0.9 at f64: 2.16 → 1.68 µs (CLI
-/// minima, A/B in one binary); 10³ and 10⁴ unchanged. The mirror image for A1/B1 ≤ 1/30
-/// (k = 1/k(1/ratio)) was measured and not used: faster at rest (1.31 → 1.07 µs at 10⁻⁶) but
-/// slower at speed (1.22 → 1.39 µs at 10⁻⁶, M_R = 0.9999), where the speed lowers k and Hamrock &
-/// Brewe's underestimate of the static k lies nearer the root.
+/// Brewe's, which overestimates the static root there (evidence: `docs/calibration.md`).
 const ASYMPTOTIC_SEED_RATIO: f64 = 30.0;
 
 /// The static root for A1/B1 = `ratio` ≥ 30 from the k ≫ 1 form of (33) at rest,
@@ -242,8 +247,8 @@ pub fn solve_ellipse<T: Real>(
             bound: "auto, adaptive or fixed (the series and adaptive-subtracted routes give no k-derivatives)",
         });
     }
-    let floor = RelError::eps::<T>(4, p);
     if let Some(t) = opts.tolerance {
+        let floor = RelError::eps::<T>(4, p);
         if t < floor {
             return Err(Error::Unreachable {
                 what: "the axis ratio k",
@@ -292,17 +297,20 @@ impl<T: Real> Stage<'_, T> {
     }
 }
 
-/// The Newton iteration of one stage ([`Stage`]). `seed_slope`: the derivatives at (near)
-/// the seed from a lower precision and a bound on the seed's error in λ, used for chord steps
-/// when two of them reach ε. `allow_chord`:
-/// whether the evaluation expected to be the last may skip the k-derivatives. Returns the shape
-/// and the derivatives of the last evaluation that computed them.
+/// One stage of the solve ([`Stage`]): Newton's method on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k,
+/// with its named steps — the k = 1 probe ([`Newton::probe_k_one`]), the Halley step from a
+/// lower precision ([`Newton::halley_step`]), the safeguarded Newton or asymptotic step inside
+/// the bracket ([`Newton::next_iterate`]), the Hermite stop ([`Newton::hermite_stop`]), the
+/// stopping rules ([`Newton::converged`]) and the chord steps at the end ([`Newton::plan_chord`]).
+/// Returns the shape and the derivatives of the last evaluation that computed them (the hand-off
+/// to the next stage).
 fn solve_core<T: Real>(
     speed: &Speed<T>,
     ratio: &T,
     method: Method,
     stage: Stage<'_, T>,
 ) -> Result<(Shape<T>, Option<Chord<T>>)> {
+    check_ratio(ratio)?;
     let Stage {
         seed,
         seed_slope,
@@ -310,317 +318,415 @@ fn solve_core<T: Real>(
         halley,
         tol,
     } = stage;
-    check_ratio(ratio)?;
-    let p = ratio.prec();
-    let k0 = match seed {
-        Some(s) if s.is_positive() && s.is_finite() => s.clone(),
-        _ => T::from_f64(static_seed(ratio.to_f64()), p),
-    };
-    let evaluator = Evaluator::new(
-        speed,
-        IntegralOptions {
+    let mut newton = Newton::new(speed, ratio, method, seed, allow_chord, tol)?;
+    let halley_slope = seed_slope.and_then(|(c, err)| newton.adopt_slope(c, &err, halley));
+    if seed.is_none() && method != Method::Adaptive {
+        newton.probe_k_one()?;
+    }
+    if let Some(c) = halley_slope {
+        if let Some(shape) = newton.halley_step(&c)? {
+            return Ok((shape, None));
+        }
+    }
+    newton.iterate()
+}
+
+/// The bound on the evaluations of one stage.
+const MAX_EVALUATIONS: usize = 200;
+
+/// The state of one stage's iteration.
+struct Newton<'a, T: Real + 'static> {
+    ratio: &'a T,
+    evaluator: Evaluator<'a, T>,
+    /// The stopping rules' unit: ε, or the tolerance asked for.
+    eps: T,
+    /// ε_R = √(1 − M_R²), the width of G's Rayleigh pole: the asymptotic step needs k·ε_R ≫ 1.
+    pole_width: f64,
+    seeded: bool,
+    /// Whether the evaluation expected to be the last may skip the k-derivatives.
+    allow_chord: bool,
+    /// The current iterate λ = ln k.
+    lam: T,
+    /// Bracket [lo, hi] in λ with F(lo) < 0 < F(hi), grown as evaluations reveal signs.
+    lo: Option<T>,
+    hi: Option<T>,
+    last_step: Option<T>,
+    /// Derivatives for a chord step at the next evaluation (none: a Newton step).
+    chord: Option<Chord<T>>,
+    /// The derivatives of the last evaluation that computed them, handed to the next stage.
+    fresh_slope: Option<Chord<T>>,
+    /// The last iterate with derivatives, for the Hermite stop.
+    prev: Option<Point<T>>,
+    /// Evaluations spent.
+    spent: usize,
+}
+
+impl<'a, T: Real> Newton<'a, T> {
+    fn new(
+        speed: &'a Speed<T>,
+        ratio: &'a T,
+        method: Method,
+        seed: Option<&T>,
+        allow_chord: bool,
+        tol: Option<T>,
+    ) -> Result<Self> {
+        let p = ratio.prec();
+        let k0 = match seed {
+            Some(s) if s.is_positive() && s.is_finite() => s.clone(),
+            _ => T::from_f64(static_seed(ratio.to_f64()), p),
+        };
+        let opts = IntegralOptions {
             method,
             derivatives: true,
             ..Default::default()
-        },
-    )?;
-    // F(λ) = ln(I2/(I1·A1/B1)) at λ = ln k, and F′ = k(I2′/I2 − I1′/I1). With `chord` (the
-    // derivatives dI1/dk, dI2/dk and F′ kept from an earlier iterate) the derivatives are not
-    // evaluated again: a chord step instead of a Newton step. `probe`: see [`Evaluator::eval`].
-    let eval = |lnk: &T, chord: Option<&Chord<T>>, probe: bool| -> Result<(T, T, Evaluation<T>)> {
-        let ax = AxisRatio::new(lnk.clone().exp())?;
-        let mut ci = evaluator.for_newton(&ax, chord.is_none(), probe)?;
-        let f = (ci.i2.clone() / &ci.i1 / ratio).ln();
+        };
+        Ok(Newton {
+            ratio,
+            evaluator: Evaluator::new(speed, opts)?,
+            eps: tol.map_or_else(|| T::epsilon(p), |t| t.max_of(T::epsilon(p))),
+            pole_width: speed.one_minus_mr2().to_f64().sqrt(),
+            seeded: seed.is_some(),
+            allow_chord,
+            lam: k0.ln(),
+            lo: None,
+            hi: None,
+            last_step: None,
+            chord: None,
+            fresh_slope: None,
+            prev: None,
+            spent: 0,
+        })
+    }
+
+    fn prec(&self) -> T::Prec {
+        self.ratio.prec()
+    }
+
+    /// F and F′ = k(I2′/I2 − I1′/I1) at λ, with the integrals. With `chord` (the derivatives
+    /// kept from an earlier iterate) the derivatives are not evaluated again: a chord step
+    /// instead of a Newton step. `probe`: see [`Evaluator::for_newton`].
+    fn eval(
+        &self,
+        lam: &T,
+        chord: Option<&Chord<T>>,
+        probe: bool,
+    ) -> Result<(T, T, Evaluation<T>)> {
+        let p = self.prec();
+        let ax = AxisRatio::new(lam.clone().exp())?;
+        let mut ci = self.evaluator.for_newton(&ax, chord.is_none(), probe)?;
+        let f = (ci.i2.clone() / &ci.i1 / self.ratio).ln();
         let df = match chord {
             Some(c) => {
                 // Derivatives kept from an earlier iterate: their relative error grows by
-                // ≲ 8|Δλ| (module docs of `finish`).
+                // ≲ 8|Δλ| (see [`finish`]).
                 ci.dk = Some([c.di1.clone(), c.di2.clone()]);
-                let age = (lnk.clone() - &c.lam).abs().mul_i64(8) + &c.rel_err;
+                let age = (lam.clone() - &c.lam).abs().mul_i64(8) + &c.rel_err;
                 ci.extra_error = age + &T::epsilon(p).mul_i64(fast::DK_BOUND_EPS);
                 c.df.clone()
             }
             None => ax.k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1),
         };
         Ok((f, df, ci))
-    };
-    // The stopping rules' unit: ε, or the tolerance asked for.
-    let eps = match tol {
-        Some(t) => t.max_of(T::epsilon(p)),
-        None => T::epsilon(p),
-    };
-    let mut lam = k0.ln();
-    // Bracket [lo, hi] in λ with F(lo) < 0 < F(hi), grown as evaluations reveal signs.
-    let mut lo: Option<T> = None;
-    let mut hi: Option<T> = None;
-    let mut last_step: Option<T> = None;
-    let mut chord: Option<Chord<T>> = None;
-    let mut fresh_slope: Option<Chord<T>> = None;
-    // The last iterate with derivatives, for the Hermite stop (unseeded solves that may end on
-    // any evaluation).
-    let mut prev: Option<Point<T>> = None;
-    let hermite_stop = allow_chord && seed.is_none();
-    let mut halley_slope: Option<Chord<T>> = None;
-    if let (Some((c, seed_err)), Some(_)) = (seed_slope, seed) {
-        // Chord steps from a lower precision's derivative (relative error r): each multiplies
-        // the error by ~r. Taken when two of them bring the seed's error δ0 to ε/64.
-        let r = c.rel_err.clone() + &(lam.clone() - &c.lam).abs();
-        let reach = r.square() * &seed_err.mul_i64(64);
-        if halley && c.df.is_positive() && c.df.is_finite() && f_second(&c, &lam).is_some() {
-            halley_slope = Some(c);
-        } else if reach <= eps && c.df.is_positive() && c.df.is_finite() {
-            chord = Some(c);
-        }
     }
-    // ε = √(1 − M_R²), the width of G's Rayleigh pole: the asymptotic step needs kε ≫ 1.
-    let pole_width = speed.one_minus_mr2().to_f64().sqrt();
-    let mut spent = 0;
-    // An unseeded start above k = 1 with 1 < A1/B1 < 30: at speed the root may still lie below
-    // k = 1, where the fast route applies, while iterates above it pay graded layouts. One
-    // evaluation at k = 1 (the one-shot fast route) tells the side and starts Newton from there
-    // with the bracket end at λ = 0. From A1/B1 = 30 on the root lies far above 1 except near
-    // the Rayleigh speed, and the solve starts at the static seed with the asymptotic step of
-    // [`log_model_step`] instead (CLI minima over M_R ∈ {0, 0.9, 0.99, 0.9999}: A1/B1 = 10³–10⁶
-    // 1.3–2.4 µs instead of 1.7–3.1 µs; A1/B1 = 100 at M_R = 0.99 (k = 8.1) 2.05 µs instead of
-    // 1.91 µs, the one case measured slower) — unless the static seed k0 has
-    // k0ε < [`PROBE_BELOW_SEED_K_EPS`], where the speed pulls the root towards or below 1.
-    let near_rayleigh = lam.to_f64().exp() * pole_width < PROBE_BELOW_SEED_K_EPS;
-    if seed.is_none()
-        && method != Method::Adaptive
-        && lam.is_positive()
-        && (ratio.to_f64() < PROBE_BELOW_RATIO || near_rayleigh)
-    {
-        let zero = T::zero(p);
-        let (f, df, _) = eval(&zero, None, true)?;
-        spent = 1;
+
+    /// The hand-off from a lower precision: its derivatives `c` (relative error r) and a bound
+    /// `seed_err` on its root's error. Chord steps multiply the error by ~r each: they are
+    /// planned when two of them bring the seed's error to ε/64. Returns the slope for the
+    /// Halley step instead when `halley` asks for it and the lower stage's secant F″ exists.
+    fn adopt_slope(&mut self, c: Chord<T>, seed_err: &T, halley: bool) -> Option<Chord<T>> {
+        if !self.seeded || !(c.df.is_positive() && c.df.is_finite()) {
+            return None;
+        }
+        if halley && f_second(&c, &self.lam).is_some() {
+            return Some(c);
+        }
+        let r = c.rel_err.clone() + &(self.lam.clone() - &c.lam).abs();
+        if r.square() * &seed_err.clone().mul_i64(64) <= self.eps {
+            self.chord = Some(c);
+        }
+        None
+    }
+
+    /// The k = 1 probe: an unseeded start above k = 1 with A1/B1 below [`PROBE_BELOW_RATIO`]
+    /// (or with the static seed's k0·ε_R below [`PROBE_BELOW_SEED_K_EPS`], near the Rayleigh
+    /// speed): the root may lie below k = 1, where the fast route applies, while iterates above
+    /// it pay graded layouts. One evaluation at k = 1 (the one-shot fast route) tells the side
+    /// and starts Newton from there with the bracket's end at λ = 0: from above 1, not above the
+    /// static seed (speed lowers k) nor, away from the Rayleigh speed, more than a factor e²
+    /// below it; from below, at most a factor e² below 1.
+    fn probe_k_one(&mut self) -> Result<()> {
+        let near_rayleigh = self.lam.to_f64().exp() * self.pole_width < PROBE_BELOW_SEED_K_EPS;
+        if !(self.lam.is_positive() && (self.ratio.to_f64() < PROBE_BELOW_RATIO || near_rayleigh)) {
+            return Ok(());
+        }
+        let p = self.prec();
+        let (zero, two) = (T::zero(p), T::from_i64(2, p));
+        let (f, df, _) = self.eval(&zero, None, true)?;
+        self.spent += 1;
+        let newton = (df.is_positive() && df.is_finite()).then(|| -(f.clone() / &df));
         if f.is_negative() {
-            // Newton from k = 1 (F is nearly linear in λ above k = 1), not above the static
-            // seed (speed lowers k; 108 → 105 evaluations over a 25-case grid) nor, unless
-            // k0ε < 1/2, more than a factor e² below it. Near the Rayleigh speed F′ stays within
-            // 1.58–1.72 between k = 1 and the root, and the unclamped step lands within 1–10 %
-            // of it (A1/B1 = 60, 100, 300 at M_R = 0.9999: k = 1.16, 1.57, 2.97 for roots 1.17,
-            // 1.60, 3.41; the clamp at k0/e² put them at 1.81, 2.45, 4.64).
-            if df.is_positive() && df.is_finite() {
-                let n = -(f.clone() / &df);
-                lam = if near_rayleigh {
-                    n.min_of(lam.clone())
+            if let Some(n) = newton {
+                let below_seed = n.min_of(self.lam.clone());
+                self.lam = if near_rayleigh {
+                    below_seed
                 } else {
-                    let two = T::from_i64(2, p);
-                    n.min_of(lam.clone()).max_of(lam.clone() - two)
+                    below_seed.max_of(self.lam.clone() - &two)
                 };
             }
-            lo = Some(zero);
+            self.lo = Some(zero);
         } else {
-            let two = T::from_i64(2, p);
-            lam = if df.is_positive() && df.is_finite() {
-                (-(f / &df)).max_of(-two)
-            } else {
-                -two
-            };
-            hi = Some(zero);
+            self.lam = newton.map_or_else(|| -two.clone(), |n| n.max_of(-two.clone()));
+            self.hi = Some(zero);
         }
+        Ok(())
     }
-    if let Some(c) = halley_slope {
-        let (f, df, ci) = eval(&lam, None, false)?;
-        spent = 1;
-        let scale = lam.clone().abs().max_of(T::one(p));
-        if let Some((lam_root, err, ints)) = halley_from_f64(&lam, &f, &df, &ci, &c, &eps, &scale) {
-            return Ok((finish(lam_root.clone(), &lam_root, ints, err, 1), None));
+
+    /// The double-double stage's Halley step from the `f64` root ([`halley_from_f64`]): one
+    /// evaluation with derivatives. `None` (and a Newton step taken instead) when its bounds do
+    /// not reach ε — near the Rayleigh speed, where the `f64` stage solved inputs rounded to
+    /// `f64`.
+    fn halley_step(&mut self, c: &Chord<T>) -> Result<Option<Shape<T>>> {
+        let lam = self.lam.clone();
+        let (f, df, ci) = self.eval(&lam, None, false)?;
+        self.spent += 1;
+        let scale = lam.clone().abs().max_of(T::one(self.prec()));
+        if let Some((root, err, ints)) = halley_from_f64(&lam, &f, &df, &ci, c, &self.eps, &scale) {
+            return Ok(Some(finish(root.clone(), &root, ints, err, self.spent)));
         }
-        // The f64 root was too far for one step (near the Rayleigh speed, where the f64 stage
-        // solved inputs rounded to f64): on with Newton from here.
         if df.is_positive() && df.is_finite() {
-            lam = lam.clone() - f / &df;
+            self.lam = lam - f / &df;
         }
+        Ok(None)
     }
-    for it in spent..200 {
-        let (f, df, ci) = eval(&lam, chord.as_ref(), false)?;
-        if f.is_zero() {
-            return Ok((
-                finish(lam.clone(), &lam, ci, T::zero(p), it + 1),
-                fresh_slope,
-            ));
-        }
-        if f.is_negative() {
-            lo = Some(lam.clone());
-        } else {
-            hi = Some(lam.clone());
-        }
-        // Newton (or chord) step, or bisection / bracket growth when Newton misbehaves.
-        let newton = if df.is_positive() && df.is_finite() {
-            Some(
-                match log_model_step(lam.to_f64(), f.to_f64(), df.to_f64())
-                    .filter(|d| (lam.to_f64() + d).exp() * pole_width >= MODEL_MIN_K_EPS)
-                {
-                    Some(d) => lam.clone() + T::from_f64(d, p),
-                    None => lam.clone() - f.clone() / &df,
-                },
-            )
-        } else {
-            None
-        };
-        let mut was_newton = false;
-        let next = match (&lo, &hi, newton) {
-            // Inside the closed bracket (a converged step may land on its end).
-            (Some(l), Some(h), Some(n)) if n >= *l && n <= *h => {
-                was_newton = true;
-                n
+
+    /// The Newton iteration proper: evaluate, step, stop.
+    fn iterate(mut self) -> Result<(Shape<T>, Option<Chord<T>>)> {
+        let p = self.prec();
+        while self.spent < MAX_EVALUATIONS {
+            let lam = self.lam.clone();
+            let (f, df, ci) = self.eval(&lam, self.chord.as_ref(), false)?;
+            self.spent += 1;
+            if f.is_zero() {
+                let shape = finish(lam.clone(), &lam, ci, T::zero(p), self.spent);
+                return Ok((shape, self.fresh_slope));
             }
-            (Some(l), Some(h), _) => (l.clone() + h).mul_pow2(-1),
-            (_, _, Some(n)) => {
-                // Unbracketed: limit the step to a factor e² in k.
+            if f.is_negative() {
+                self.lo = Some(lam.clone());
+            } else {
+                self.hi = Some(lam.clone());
+            }
+            let (next, was_newton) = self.next_iterate(&f, &df);
+            let step = (next.clone() - &lam).abs();
+            let scale = lam.clone().abs().max_of(T::one(p));
+            // How far the derivative used for this step lies behind (0 for a Newton step).
+            let age = self
+                .chord
+                .as_ref()
+                .map_or_else(|| T::zero(p), |c| (lam.clone() - &c.lam).abs() + &c.rel_err);
+            let fresh = self.chord.is_none();
+            let here = fresh.then(|| Point {
+                lam: lam.clone(),
+                f,
+                df,
+                ints: ci.clone(),
+            });
+            if let Some(done) = self.hermite_stop(here.as_ref(), was_newton, &scale) {
+                return Ok(done);
+            }
+            if let Some(h) = here {
+                self.hand_on(&h);
+                self.prev = Some(h);
+            }
+            self.lam = next;
+            if let Some(shape) = self.converged(&lam, ci, &step, &age, &scale, was_newton) {
+                return Ok((shape, self.fresh_slope));
+            }
+            self.plan_chord(&step, &scale, was_newton, fresh);
+            self.last_step = Some(step);
+        }
+        Err(Error::NoConvergence {
+            what: "Newton iteration for the axis ratio k",
+            iterations: self.spent,
+            reached: self.last_step.map(|s| short(&s)).unwrap_or_default(),
+        })
+    }
+
+    /// The next iterate from F, F′ at λ: the Newton (or chord) step — or the asymptotic step for
+    /// k ≫ 1 ([`log_model_step`], where it lands at k·ε_R ≥ [`MODEL_MIN_K_EPS`]) — when it stays
+    /// inside the bracket; bisection when it does not; unbracketed, the step clamped to a factor
+    /// e² in k and never past a known end. Returns the iterate and whether it is a full Newton
+    /// step (which the stopping rules assume).
+    #[inline]
+    fn next_iterate(&self, f: &T, df: &T) -> (T, bool) {
+        let p = self.prec();
+        let lam = &self.lam;
+        let newton = (df.is_positive() && df.is_finite()).then(|| {
+            let model = log_model_step(lam.to_f64(), f.to_f64(), df.to_f64())
+                .filter(|d| (lam.to_f64() + d).exp() * self.pole_width >= MODEL_MIN_K_EPS);
+            match model {
+                Some(d) => lam.clone() + T::from_f64(d, p),
+                None => lam.clone() - f.clone() / df,
+            }
+        });
+        let half_way = |end: &T| (lam.clone() + end).mul_pow2(-1);
+        match (&self.lo, &self.hi, newton) {
+            // Inside the closed bracket (a converged step may land on its end).
+            (Some(l), Some(h), Some(n)) if n >= *l && n <= *h => (n, true),
+            (Some(l), Some(h), _) => ((l.clone() + h).mul_pow2(-1), false),
+            (lo, hi, Some(n)) => {
                 let two = T::from_i64(2, p);
-                let step = n.clone() - &lam;
-                let next = lam.clone() + step.clone().min_of(two.clone()).max_of(-two);
-                // Never past a known end of the bracket.
-                match (&lo, &hi) {
-                    (Some(l), _) if next <= *l => (lam.clone() + l).mul_pow2(-1),
-                    (_, Some(h)) if next >= *h => (lam.clone() + h).mul_pow2(-1),
+                let step = (n.clone() - lam).min_of(two.clone()).max_of(-two);
+                let next = lam.clone() + step;
+                match (lo, hi) {
+                    (Some(l), _) if next <= *l => (half_way(l), false),
+                    (_, Some(h)) if next >= *h => (half_way(h), false),
                     _ => {
-                        // A full Newton step (not clamped) counts as one for the stopping rule.
-                        was_newton = next == n;
-                        next
+                        let full = next == n;
+                        (next, full)
                     }
                 }
             }
-            (Some(_), None, None) => lam.clone() + T::one(p),
-            (None, _, None) => lam.clone() - T::one(p),
+            (Some(_), None, None) => (lam.clone() + T::one(p), false),
+            (None, _, None) => (lam.clone() - T::one(p), false),
+        }
+    }
+
+    /// The Hermite stop ([`hermite_root`]): with F, F′ at this and the previous iterate, the
+    /// cubic through them gives the root's remaining step h to O(D²h²), and I1, I2 are carried
+    /// by their own cubics — one evaluation fewer than Newton's stop where the step is ≲ 10⁻⁶
+    /// but not yet ≲ 10⁻⁹. Only for unseeded solves that may end on any evaluation.
+    #[inline]
+    fn hermite_stop(
+        &self,
+        here: Option<&Point<T>>,
+        was_newton: bool,
+        scale: &T,
+    ) -> Option<(Shape<T>, Option<Chord<T>>)> {
+        if !(self.allow_chord && !self.seeded && was_newton) {
+            return None;
+        }
+        let (a, b) = (self.prev.as_ref()?, here?);
+        let (root, err, ints) = hermite_root(a, b, &self.eps, scale)?;
+        let slope = Chord {
+            lam: b.lam.clone(),
+            di1: b.ints.di1_dk(),
+            di2: b.ints.di2_dk(),
+            df: b.df.clone(),
+            rel_err: T::zero(self.prec()),
+            before: None,
         };
-        let step = (next.clone() - &lam).abs();
-        let scale = lam.clone().abs().max_of(T::one(p));
-        // How far the derivative used for this step lies behind (0 for a Newton step).
-        let age = chord
-            .as_ref()
-            .map(|c| (lam.clone() - &c.lam).abs() + &c.rel_err)
-            .unwrap_or_else(|| T::zero(p));
-        let fresh = chord.is_none();
-        // Hermite stop: with F, F′ at this and the previous iterate, the cubic through them
-        // gives the root's remaining step h to O(D²h²) (D the distance between the iterates),
-        // and I1, I2 carried by their own Hermite cubics: one evaluation fewer than Newton's
-        // stop where the step is ≲ 10⁻⁶ but not yet ≲ 10⁻⁹.
-        let here = fresh.then(|| Point {
-            lam: lam.clone(),
-            f: f.clone(),
-            df: df.clone(),
-            ints: ci.clone(),
-        });
-        if let (true, true, Some(a), Some(b)) = (hermite_stop, was_newton, &prev, &here) {
-            if let Some((lam_root, err, ints)) = hermite_root(a, b, &eps, &scale) {
-                let lam_b = b.lam.clone();
-                return Ok((
-                    finish(lam_root.clone(), &lam_root, ints, err, it + 1),
-                    Some(Chord {
-                        lam: lam_b,
-                        di1: b.ints.di1_dk(),
-                        di2: b.ints.di2_dk(),
-                        df: b.df.clone(),
-                        rel_err: T::zero(p),
-                        before: None,
-                    }),
-                ));
+        Some((
+            finish(root.clone(), &root, ints, err, self.spent),
+            Some(slope),
+        ))
+    }
+
+    /// Keeps this iterate's derivatives for the next stage. For its secants (F″, I″, the
+    /// Halley step) a ladder stage (no chord steps) also keeps, of the last iterate with
+    /// derivatives and the one kept before it, the one whose distance D from this iterate
+    /// minimises the secant's error bound r/D + D (r = 2¹²ε, the derivatives' error bound).
+    #[inline]
+    fn hand_on(&mut self, h: &Point<T>) {
+        let r = self.eps.to_f64() * 4096.0;
+        let bound = |x: &T| {
+            let d = (h.lam.clone() - x).to_f64().abs();
+            if d > 0.0 {
+                r / d + d
+            } else {
+                f64::INFINITY
             }
-        }
-        if let Some(h) = here {
-            prev = Some(h);
-        }
-        if fresh {
-            // For the next stage's secants (F″, I″): of the last iterate with derivatives and the
-            // one kept before it, the one whose distance D from this iterate minimises the
-            // secant's error bound r/D + D (r = 2¹²ε, the derivatives' relative error bound).
-            let r = eps.to_f64() * 4096.0;
-            let bound = |x: &T| {
-                let d = (lam.clone() - x).to_f64().abs();
-                if d > 0.0 {
-                    r / d + d
-                } else {
-                    f64::INFINITY
-                }
-            };
-            // Only a ladder stage (`allow_chord` false) hands its derivatives on.
-            let before = fresh_slope
-                .as_ref()
-                .filter(|_| !allow_chord)
-                .map(|c| match &c.before {
-                    Some(b) if bound(&b[0]) < bound(&c.lam) => b.clone(),
-                    _ => [c.lam.clone(), c.df.clone(), c.di1.clone(), c.di2.clone()],
-                });
-            fresh_slope = Some(Chord {
-                lam: lam.clone(),
-                di1: ci.di1_dk(),
-                di2: ci.di2_dk(),
-                df: df.clone(),
-                rel_err: T::zero(p),
-                before,
-            });
-        }
-        let lam_old = std::mem::replace(&mut lam, next);
-        // Converged: the step is at rounding level, or stopped shrinking near it.
-        let small = step <= scale.clone() * &eps.clone().mul_i64(4);
-        let stalled = last_step
+        };
+        let before = self
+            .fresh_slope
             .as_ref()
-            .is_some_and(|s| step >= *s && step <= scale.clone() * &eps.clone().mul_i64(64));
+            .filter(|_| !self.allow_chord)
+            .map(|c| match &c.before {
+                Some(b) if bound(&b[0]) < bound(&c.lam) => b.clone(),
+                _ => [c.lam.clone(), c.df.clone(), c.di1.clone(), c.di2.clone()],
+            });
+        self.fresh_slope = Some(Chord {
+            lam: h.lam.clone(),
+            di1: h.ints.di1_dk(),
+            di2: h.ints.di2_dk(),
+            df: h.df.clone(),
+            rel_err: T::zero(self.prec()),
+            before,
+        });
+    }
+
+    /// The stopping rules after a step of length `step` from `lam_old` (the integrals `ci`
+    /// are those at `lam_old`, carried to the new iterate by [`finish`]): the step is at
+    /// rounding level, or stopped shrinking near it; or, once Newton is converging (from a
+    /// seed, or after two steps), a step δ leaves an error ~δ² — δ·age for a chord step whose
+    /// derivative is `age` behind — and 64 δ·max(δ, age) ≤ ε·scale², counted in the estimate.
+    #[inline]
+    fn converged(
+        &self,
+        lam_old: &T,
+        ci: Evaluation<T>,
+        step: &T,
+        age: &T,
+        scale: &T,
+        was_newton: bool,
+    ) -> Option<Shape<T>> {
+        let eps = &self.eps;
+        let small = *step <= scale.clone() * &eps.clone().mul_i64(4);
+        let stalled = self
+            .last_step
+            .as_ref()
+            .is_some_and(|s| step >= s && *step <= scale.clone() * &eps.clone().mul_i64(64));
         if small || stalled {
-            // The integrals are those of the previous iterate, one rounding-level step away;
-            // the step is part of the error estimate.
-            return Ok((finish(lam, &lam_old, ci, step, it + 1), fresh_slope));
-        }
-        // Quadratic convergence: once Newton is converging (from a ladder seed, or after two
-        // steps), a step δ leaves an error of order δ² — δ·(age) for a chord step whose
-        // derivative is `age` behind; stop when 64 δ·max(δ, age) ≤ ε·scale² and count it in the
-        // estimate. This saves one high-precision evaluation in the ladder.
-        let newton_phase = seed.is_some() || it >= 2;
-        let projected = step.clone() * &step.clone().max_of(age).mul_i64(64);
-        if was_newton && newton_phase && projected <= eps.clone() * &scale.square() {
-            return Ok((
-                finish(lam, &lam_old, ci, projected / &scale, it + 1),
-                fresh_slope,
+            return Some(finish(
+                self.lam.clone(),
+                lam_old,
+                ci,
+                step.clone(),
+                self.spent,
             ));
         }
-        // The next evaluation is expected to be the last (its step ~δ², the stop above then
-        // holds with age δ: δ³ ≤ ε/64): it skips the k-derivatives and steps with this
-        // iterate's F′ (a chord step), which costs no convergence at that distance. From the
-        // second evaluation on: a wrong guess here costs no accuracy (the stop above counts the
-        // derivative's age), at most one more evaluation without derivatives.
-        if allow_chord && was_newton && (newton_phase || it >= 1) && fresh {
-            let cube = step.clone().square() * &step;
-            if cube.mul_i64(64) <= eps.clone() * &scale.clone().square() * &scale {
-                chord = fresh_slope.clone();
-            }
-        } else if !was_newton || !allow_chord {
-            // An intermediate stage of the ladder (`allow_chord` false) takes one chord step
-            // with the lower precision's derivative and then evaluates the derivatives, so that
-            // it hands on its own F′ (a precision's worth of chord contraction) to the next stage.
-            chord = None;
+        let projected = step.clone() * &step.clone().max_of(age.clone()).mul_i64(64);
+        let quadratic = self.seeded || self.spent >= 3;
+        if was_newton && quadratic && projected <= eps.clone() * &scale.square() {
+            let err = projected / scale;
+            return Some(finish(self.lam.clone(), lam_old, ci, err, self.spent));
         }
-        last_step = Some(step);
+        None
     }
-    Err(Error::NoConvergence {
-        what: "Newton iteration for the axis ratio k",
-        iterations: 200,
-        reached: last_step.map(|s| short(&s)).unwrap_or_default(),
-    })
+
+    /// Chord steps at the end: when the next evaluation is expected to be the last (its step
+    /// ~δ², so that δ³ ≤ ε/64), it skips the k-derivatives and steps with this iterate's F′,
+    /// which costs no convergence at that distance (a wrong guess costs no accuracy — the stop
+    /// counts the derivative's age — and at most one more evaluation without derivatives).
+    /// A chord slope used for this step (not `fresh`) is kept for the next while the steps stay
+    /// full ones (the ladder's successive chord steps with a lower precision's F′); an
+    /// intermediate ladder stage (no chord steps allowed) takes one chord step with the lower
+    /// precision's derivative and then evaluates the derivatives, so that it hands on its own F′
+    /// (a precision's worth of chord contraction) to the next stage.
+    #[inline]
+    fn plan_chord(&mut self, step: &T, scale: &T, was_newton: bool, fresh: bool) {
+        let past_first = self.seeded || self.spent >= 2;
+        if self.allow_chord && was_newton && past_first && fresh {
+            let cube = step.square() * step;
+            if cube.mul_i64(64) <= self.eps.clone() * &scale.square() * scale {
+                self.chord = self.fresh_slope.clone();
+            }
+        } else if !was_newton || !self.allow_chord {
+            self.chord = None;
+        }
+    }
 }
 
 /// Below this curvature ratio an unseeded solve whose static seed lies above k = 1 first
-/// evaluates at k = 1 (see [`solve_core`]).
+/// evaluates at k = 1 ([`Newton::probe_k_one`]; evidence: `docs/calibration.md`).
 const PROBE_BELOW_RATIO: f64 = 30.0;
 
 /// ... and at any ratio when the static seed k0 has k0·ε below this (ε = √(1 − M_R²)): near the
-/// Rayleigh speed the root falls far below the static seed, to k ≈ 0.8 at A1/B1 = 30 and
-/// M_R = 0.9999 (k0 = 8.7, k0ε = 0.12). CLI minima (two interleaved rounds, A1/B1 = 30…10⁴ ×
-/// M_R ∈ {0.99, 0.999, 0.9999}) for thresholds 0, 0.5, 1, 2: A1/B1 = 30 at 0.9999 2.17 µs
-/// without, 1.12–1.16 µs with; the other cells within the machine's noise for 0.5, some slower
-/// for 1 and 2 (A1/B1 = 300 at 0.9999, k0ε = 0.53: 2.21 µs at 1 against 1.97 at 0.5). Measured
-/// with Hamrock & Brewe's seed; with the k ≫ 1 seed of [`static_seed_wide`] A1/B1 = 300 at
-/// 0.9999 has k0ε = 0.45 and probes too, and with the unclamped Newton step from k = 1 (below)
-/// takes 1.85 µs.
+/// Rayleigh speed the root falls far below the static seed (evidence: `docs/calibration.md`).
 const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
 
 /// The asymptotic step of [`log_model_step`] is taken only when it lands at kε ≥ this
-/// (ε = √(1 − M_R²)): its form assumes the Rayleigh pole's width ε ≫ 1/k. Chosen by counting
-/// evaluations on 162 solves (ν ∈ {−0.5, 0.2, 0.5}, A1/B1 = 30…10⁶, M_R = 0…0.9999): without
-/// the condition 616, with a threshold of 3, 5 or 10 599 (17 solves near the Rayleigh speed one
-/// evaluation fewer, none more), with 2 or 30 602.
+/// (ε = √(1 − M_R²)): its form assumes the Rayleigh pole's width ε ≫ 1/k (evidence:
+/// `docs/calibration.md`).
 const MODEL_MIN_K_EPS: f64 = 5.0;
 
 /// A long first step above k = 1 from the asymptotic form of (33) for k ≫ 1: I2 ≈ 2g(V)/k and
@@ -712,7 +818,7 @@ fn hermite_root<T: Real>(
     let (hf, df_, c3f) = (h.to_f64().abs(), d.to_f64().abs(), c3.to_f64().abs());
     let err = 8.0 * (1.0 + c3f) * df_ * df_ * hf * hf / b.df.to_f64();
     // The integrals' carry: relative error (k⁴|I⁗|/24I)·D²h² with k⁴|I⁗|/24I ≤ 16 (I1 ∝ ln k/k³
-    // for k ≫ 1 gives 15; measured 6.5ε at D = 0.027, h = 4·10⁻⁷ before this bound was imposed).
+    // for k ≫ 1 gives 15; `docs/calibration.md`).
     let carry_err = 16.0 * df_ * df_ * hf * hf;
     let epsf = eps.to_f64();
     if !(hf * 8.0 <= df_ && err <= epsf * scale.to_f64() && carry_err <= epsf && err.is_finite()) {
@@ -971,8 +1077,8 @@ fn solve_ladder<T: Real>(
     solve_core(speed, ratio, method, stage).map(|(r, _)| r)
 }
 
-/// Bounds on a stage's derivative F′ (relative: the k-derivatives' measured 47ε at f64, 53ε at
-/// double-double, with a margin) and on its root's error in λ (a few ε).
+/// Bounds on a stage's derivative F′ (relative, with a margin over the fixed rules' measured
+/// derivative errors) and on its root's error in λ (a few ε): `docs/calibration.md`.
 const F64_SLOPE: f64 = 9.094947017729282e-13; // 2^-40
 const F64_SEED: f64 = 3.552713678800501e-15; // 2^-48
 const DD_SLOPE: f64 = 8.077935669463161e-28; // 2^-90

@@ -4,6 +4,7 @@
 //! not converge.
 
 pub mod elliptic;
+pub mod gauss_legendre;
 pub mod quadrature;
 pub mod roots;
 pub mod series;

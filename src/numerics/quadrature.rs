@@ -1,8 +1,7 @@
 //! Quadrature at the working precision.
 //!
-//! * [`GaussLegendre`] — n-point Gauss–Legendre rules (f64 seed, Newton polish on the three-term
-//!   recurrence at a guard precision, rounded once to the working precision), cached per
-//!   (type, n, precision).
+//! * [`GaussLegendre`] — n-point Gauss–Legendre rules (built 32 bits beyond the working
+//!   precision by [`super::gauss_legendre`] and rounded once), cached per (type, n, precision).
 //! * [`integrate`] — adaptive Gauss–Legendre with breakpoints: each panel is compared with its two
 //!   halves and the panel with the largest discrepancy is split until the total is below the
 //!   tolerance.
@@ -15,12 +14,15 @@
 //! below it is met as well as the precision allows, and the error estimate says how well). Work
 //! is bounded by [`Limits`]; exceeding it is [`Error::NoConvergence`].
 //!
-//! Rule caches grow with every (type, n or level, precision) requested and are never freed: a
-//! Gauss–Legendre rule holds `n` values, a tanh–sinh level about `9·2^level` values at 1024 bits.
+//! Rule caches grow with every (type, n or level, precision) requested and are never freed (one
+//! cache for every rule of the crate, the routes' tables included): a Gauss–Legendre rule holds
+//! `n` values, a tanh–sinh level about `9·2^level` values at 1024 bits. No rule is built above
+//! [`MAX_RULE_BITS`].
 
+use super::gauss_legendre;
 use super::sum::CompSum;
 use crate::error::{Error, Result};
-use crate::scalar::{short, Dd, Mp, MpPrec, Real};
+use crate::scalar::{short, Dd, Real};
 use std::any::{Any, TypeId};
 use std::cmp::Ordering;
 use std::collections::hash_map::DefaultHasher;
@@ -75,8 +77,84 @@ where
     Ok(rule)
 }
 
+/// A slot for the rule of one fixed-precision type (`f64`, double-double), filled once from the
+/// shared cache: later requests read it without the cache's lock or hash. Declared as a
+/// `static` by each rule type that needs it (see [`fixed_slot`]).
+pub(crate) type FixedSlot<R> = OnceLock<Result<Arc<R>>>;
+
+/// The rule of a fixed-precision type from its `slot`, filled on first use by [`cached`] (so
+/// that the shared cache holds it too). The rule lives as long as the process.
+pub(crate) fn slotted<R, P>(
+    slot: &'static FixedSlot<R>,
+    index: usize,
+    p: P,
+    prec_of: impl Fn(&R) -> P,
+    build: impl FnOnce() -> Result<R>,
+) -> Result<&'static Arc<R>>
+where
+    R: Any + Send + Sync,
+    P: Hash + Eq,
+{
+    match slot.get_or_init(|| cached(index, p, prec_of, build)) {
+        Ok(rule) => Ok(rule),
+        Err(e) => Err(e.clone()),
+    }
+}
+
+/// The [`FixedSlot`] of `$rule<T>` for `T` = `f64` or [`Dd`], `None` for other types: expands to
+/// a function `fn $name<T: Real>() -> Option<&'static FixedSlot<$rule<T>>>`.
+macro_rules! fixed_slot {
+    ($name:ident, $rule:ident) => {
+        fn $name<T: $crate::scalar::Real>(
+        ) -> Option<&'static $crate::numerics::quadrature::FixedSlot<$rule<T>>> {
+            use std::any::{Any, TypeId};
+            use $crate::numerics::quadrature::FixedSlot;
+            static F64: FixedSlot<$rule<f64>> = std::sync::OnceLock::new();
+            static DD: FixedSlot<$rule<$crate::scalar::Dd>> = std::sync::OnceLock::new();
+            let any: &'static dyn Any = if TypeId::of::<T>() == TypeId::of::<f64>() {
+                &F64
+            } else if TypeId::of::<T>() == TypeId::of::<$crate::scalar::Dd>() {
+                &DD
+            } else {
+                return None;
+            };
+            any.downcast_ref::<FixedSlot<$rule<T>>>()
+        }
+    };
+}
+pub(crate) use fixed_slot;
+
+/// Forgets every rule of the shared cache and every Gauss–Legendre rule built above 53 bits, so
+/// that the next request builds them again (for measuring first-use costs in one process; the
+/// rules of `f64` and double-double stay in their slots). Rules already handed out stay valid.
+#[doc(hidden)]
+pub fn clear_rule_caches() {
+    cache().lock().unwrap_or_else(|e| e.into_inner()).clear();
+    gauss_legendre::clear_store();
+}
+
 // ---------------------------------------------------------------------------------------------
 // Gauss–Legendre rules
+
+/// The highest working precision at which quadrature rules are built: 32768 bits. A rule of n
+/// nodes costs about n²·bits/128 word operations to build (`docs/precision.md`), and the routes'
+/// rules have n ∝ bits, so that the first call at p bits costs ∝ p³: minutes at 16384 bits,
+/// over half an hour at 32768 bits on the machine of `docs/data/precision_scaling.csv`. Above
+/// it (MPFR allows up to 2^20 bits) every rule-based route refuses with [`Error::Precision`].
+pub const MAX_RULE_BITS: u32 = 32768;
+
+/// [`Error::Precision`] naming `bits` when it exceeds [`MAX_RULE_BITS`]: every route that builds
+/// quadrature rules checks it before any work.
+pub fn check_rule_bits(bits: u32) -> Result<()> {
+    if bits > MAX_RULE_BITS {
+        return Err(Error::Precision {
+            bits: bits as u64,
+            min: crate::scalar::MpPrec::MIN_BITS,
+            max: MAX_RULE_BITS,
+        });
+    }
+    Ok(())
+}
 
 /// An n-point Gauss–Legendre rule on [−1, 1] at one precision: exact for polynomials of degree
 /// `2n − 1`, error `O(ρ^(−2n))` for integrands analytic inside the Bernstein ellipse `ρ`.
@@ -85,81 +163,22 @@ where
 /// is `0` when `n` is odd) and their weights.
 ///
 /// Accuracy: the rule is built at a guard precision (double-double for targets of at most 53
-/// bits, MPFR with 32 extra bits otherwise) and rounded once, so every node and weight is the
+/// bits, 32 extra bits otherwise) and rounded once, so every node and weight is the
 /// working-precision number nearest to the exact one (within ε/2 relative, checked against
 /// 200–400-bit rules by the tests); at `f64` the weights sum to 2 within ε/2.
 ///
-/// Work: the first request for (n, precision) runs Newton on the three-term recurrence, `n`
-/// steps per evaluation, for `n/2` nodes: one or two double-double passes per node for `f64`
-/// (about 0.5 s for n = 4096), `log₂(bits/53) + 1` MPFR passes otherwise; later requests are a
-/// cache lookup.
+/// Work: the first request for (n, precision) builds the rule — for `f64` by Newton on the
+/// three-term recurrence in double-double (`n` steps an evaluation, one or two passes a node),
+/// above by the short-point construction of [`super::gauss_legendre`] (one fixed-point pass of
+/// the recurrence a node, each step `O(bits/64)` word operations: about n²·bits/128 in all);
+/// later requests are a cache lookup, or round down a rule of the same n built at a higher
+/// precision.
 #[derive(Debug)]
 pub struct GaussLegendre<T: Real> {
     n: usize,
     prec: T::Prec,
     nodes: Vec<T>,
     weights: Vec<T>,
-}
-
-/// `(P_n(x), P_{n−1}(x))` by the three-term recurrence
-/// `(k+1) P_{k+1} = (2k+1) x P_k − k P_{k−1}`, which is stable upward on [−1, 1]. `n ≥ 1`.
-fn legendre<U: Real>(n: usize, x: &U) -> (U, U) {
-    let mut p0 = U::one(x.prec());
-    let mut p1 = x.clone();
-    for k in 1..n as i64 {
-        let p2 = ((x.clone() * &p1).mul_i64(2 * k + 1) - p0.mul_i64(k)).div_i64(k + 1);
-        p0 = std::mem::replace(&mut p1, p2);
-    }
-    (p1, p0)
-}
-
-/// `(1 − x²) P_n'(x) = n (P_{n−1} − x P_n)`, and `1 − x² = (1 − x)(1 + x)` (no cancellation
-/// near ±1). Returns `(P_n, n (P_{n−1} − x P_n), 1 − x²)`.
-fn legendre_scaled<U: Real>(n: usize, x: &U) -> (U, U, U) {
-    let (pn, pn1) = legendre(n, x);
-    let one = U::one(x.prec());
-    let omx2 = (one.clone() - x) * &(one + x);
-    let d = (pn1 - &(x.clone() * &pn)).mul_i64(n as i64);
-    (pn, d, omx2)
-}
-
-/// Newton's method for a root of `P_n` from `x`: `dx = P_n/P_n' = P_n (1 − x²) / (n (P_{n−1} − x
-/// P_n))`. Stops when the step is below `ε` (absolute: nodes lie in [−1, 1], and convergence is
-/// quadratic, so the next error is far smaller), when the step stops shrinking (rounding noise;
-/// accepted only if the previous step was already below `√ε`), or after `cap` steps.
-fn polish_node<U: Real>(n: usize, mut x: U, cap: usize) -> Result<U> {
-    let p = x.prec();
-    let eps = U::epsilon(p);
-    let noise = U::epsilon_root(p, 2);
-    let mut last: Option<U> = None;
-    let fail = |it: usize, dx: &U| Error::NoConvergence {
-        what: "Gauss-Legendre node (Newton on P_n)",
-        iterations: it,
-        reached: short(dx),
-    };
-    for it in 0..cap {
-        let (pn, d, omx2) = legendre_scaled(n, &x);
-        let dx = pn * &omx2 / d;
-        let adx = dx.clone().abs();
-        if !adx.is_finite() {
-            return Err(fail(it, &adx));
-        }
-        if let Some(prev) = &last {
-            if adx >= *prev {
-                return if *prev <= noise {
-                    Ok(x)
-                } else {
-                    Err(fail(it, prev))
-                };
-            }
-        }
-        x -= dx;
-        if adx <= eps {
-            return Ok(x);
-        }
-        last = Some(adx);
-    }
-    Err(fail(cap, &last.unwrap_or_else(|| U::one(p))))
 }
 
 /// Values of one real type rounded once into another (through an exact MPFR copy).
@@ -169,105 +188,49 @@ fn convert<U: Real, T: Real>(v: &[U], p: T::Prec) -> Vec<T> {
         .collect()
 }
 
-/// Nonnegative nodes (decreasing) and weights of the n-point rule, computed in `U` (precision
-/// `q`) accurately enough to be rounded to a target of `target_bits` bits.
-///
-/// Each node starts from Tricomi's expansion `x_k ≈ (1 − (n−1)/(8n³) − (39 − 28/sin²θ)/(384n⁴))
-/// cos θ`, `θ = π(4k−1)/(4n+2)`, polished by Newton in `f64` (cheap), then by Newton in `U`,
-/// each pass doubling the correct bits. The weight `w(x) = 2/((1 − x²) P_n'(x)²)` comes from the
-/// same pass: at the last iterate `x` with step `dx` (root `x − dx`),
-/// `w(x − dx) = w(x)·(1 + 2x·dx/(1 − x²)) + O(n⁴dx²)`, since `d ln w/dx = −2x/(1 − x²)` at a root
-/// (Legendre's equation). The pass is the last once `4(n+1)⁴dx² ≤ 2^-6 ε_target`, which also
-/// makes Newton's own remaining error `≈ n² dx²/6` negligible.
-fn build<U: Real>(n: usize, q: U::Prec, target_bits: u32) -> Result<(Vec<U>, Vec<U>)> {
-    let m = n.div_ceil(2);
-    let cap = 10 + 2 * U::bits(q).max(2).ilog2() as usize;
-    let nf = n as f64;
-    let enough = U::one(q).mul_pow2(-(target_bits as i32) - 5);
-    let n1 = U::from_i64(n as i64 + 1, q).powi(4).mul_i64(4);
-    let mut nodes = Vec::with_capacity(m);
-    let mut weights = Vec::with_capacity(m);
-    for k in 1..=m {
-        let mut x = if 2 * k - 1 == n {
-            // The middle node of an odd rule is 0 by symmetry (then P_n(0) = 0 exactly).
-            U::zero(q)
-        } else {
-            let th = std::f64::consts::PI * (4 * k - 1) as f64 / (4.0 * nf + 2.0);
-            let s2 = th.sin().powi(2);
-            let seed =
-                (1.0 - (nf - 1.0) / (8.0 * nf.powi(3)) - (39.0 - 28.0 / s2) / (384.0 * nf.powi(4)))
-                    * th.cos();
-            U::from_f64(polish_node::<f64>(n, seed, cap)?, q)
-        };
-        let mut prev: Option<U> = None;
-        let mut done = false;
-        for it in 0..cap {
-            let (pn, d, omx2) = legendre_scaled(n, &x);
-            let dx = pn * &omx2 / &d;
-            let w = omx2.clone().mul_i64(2) / d.square();
-            let adx = dx.clone().abs();
-            let diverging = prev.as_ref().is_some_and(|pv| adx >= *pv && !adx.is_zero());
-            if !adx.is_finite() || !w.is_finite() || diverging {
-                return Err(Error::NoConvergence {
-                    what: "Gauss-Legendre node (Newton at guard precision)",
-                    iterations: it,
-                    reached: short(&adx),
-                });
-            }
-            if n1.clone() * &adx.square() <= enough {
-                let corr = (x.clone() * &dx).mul_pow2(1) / &omx2;
-                weights.push(w.clone() + &(w * &corr));
-                x -= dx;
-                done = true;
-                break;
-            }
-            x -= dx;
-            prev = Some(adx);
-        }
-        if !done {
-            return Err(Error::NoConvergence {
-                what: "Gauss-Legendre node (Newton at guard precision)",
-                iterations: cap,
-                reached: prev.as_ref().map(short).unwrap_or_default(),
-            });
-        }
-        nodes.push(x);
-    }
-    Ok((nodes, weights))
-}
-
 impl<T: Real> GaussLegendre<T> {
     /// Largest number of nodes [`GaussLegendre::get`] accepts.
     pub const MAX_NODES: usize = 4096;
 
+    /// Largest number of nodes at precision `p`: [`GaussLegendre::MAX_NODES`] up to 2048 bits,
+    /// twice the bits above (a rule of n nodes gains about 2n·log₂ρ bits, so that larger rules
+    /// would only serve integrands with singularities within ρ < 2^(1/4) of the interval).
+    pub fn max_nodes(p: T::Prec) -> usize {
+        Self::MAX_NODES.max(2 * T::bits(p) as usize)
+    }
+
     /// The n-point rule at precision `p`, computed on first use and cached for the life of the
     /// process (see the type's documentation for accuracy and cost).
     ///
-    /// Errors: [`Error::Domain`] unless `1 ≤ n ≤ 4096`; [`Error::NoConvergence`] if a node's
-    /// Newton iteration fails (not observed for any `n` in range).
+    /// Errors: [`Error::Precision`] above [`MAX_RULE_BITS`] (checked first);
+    /// [`Error::Domain`] unless `1 ≤ n ≤` [`GaussLegendre::max_nodes`]; [`Error::NoConvergence`]
+    /// if a node's refinement fails (not observed for any `n` in range).
     pub fn get(n: usize, p: T::Prec) -> Result<Arc<Self>> {
-        if n == 0 || n > Self::MAX_NODES {
+        check_rule_bits(T::bits(p))?;
+        if n == 0 || n > Self::max_nodes(p) {
             return Err(Error::Domain {
                 name: "Gauss-Legendre node count n",
                 value: n.to_string(),
-                bound: "1 <= n <= 4096",
+                bound: "1 <= n <= max(4096, 2 x bits)",
             });
         }
         cached(n, p, |r: &Self| r.prec, || Self::compute(n, p))
     }
 
     fn compute(n: usize, p: T::Prec) -> Result<Self> {
-        // Guard precision, then round once: the recurrence loses about log₂ n bits, so the rule
-        // is built in a wider type U and each node and weight rounded to T. U is double-double
-        // for targets of at most 53 bits (fast), MPFR with 32 guard bits otherwise.
+        // Guard precision, then round once: the rule is computed 32 bits beyond the target and
+        // each node and weight rounded to T — in double-double by Newton on the recurrence for
+        // targets of at most 53 bits, by the short-point construction of
+        // [`super::gauss_legendre`] above (a rule built before at a higher precision is
+        // rounded down).
         let bits = T::bits(p);
         let (nodes, weights) = if bits <= 53 {
-            let (x, w) = build::<Dd>(n, (), bits)?;
+            let (x, w) = gauss_legendre::reference_build::<Dd>(n, (), bits)?;
             (convert::<Dd, T>(&x, p), convert::<Dd, T>(&w, p))
         } else {
-            let q = MpPrec::new(bits as u64 + 32)?;
-            let (x, w) = build::<Mp>(n, q, bits)?;
-            (convert::<Mp, T>(&x, p), convert::<Mp, T>(&w, p))
+            let raw = gauss_legendre::raw_rule(n, bits)?;
+            let round = |v: &[rug::Float]| v.iter().map(|f| T::from_float(f, p)).collect();
+            (round(&raw.nodes), round(&raw.weights))
         };
         // Guard against Newton landing on a neighbouring root: nodes must decrease strictly
         // and every weight be positive and finite.
@@ -522,43 +485,8 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
     let eps = T::epsilon(p);
     let tiny = T::min_positive(p);
     let mut evals = 0usize;
-
-    let mut rule_on = |a: &T, b: &T, evals: &mut usize| -> Result<T> {
-        *evals += n;
-        let v = rule.integrate(&mut f, a, b);
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(not_finite(&v))
-        }
-    };
-    // The panel [a, b] given its one-panel value `whole` (computed here if `None`); `Err` holds
-    // `(value, error)` of a panel too narrow to halve.
-    let mut make = |a: T,
-                    b: T,
-                    whole: Option<T>,
-                    evals: &mut usize|
-     -> Result<std::result::Result<Panel<T>, (T, T)>> {
-        let whole = match whole {
-            Some(w) => w,
-            None => rule_on(&a, &b, evals)?,
-        };
-        let Some(m) = midpoint(&a, &b) else {
-            let e = whole.clone().abs();
-            return Ok(Err((whole, e)));
-        };
-        let left = rule_on(&a, &m, evals)?;
-        let right = rule_on(&m, &b, evals)?;
-        let value = left.clone() + &right;
-        let err = (whole - &value).abs();
-        Ok(Ok(Panel {
-            a,
-            b,
-            left,
-            right,
-            value,
-            err,
-        }))
+    let mut make = |a: T, b: T, whole: Option<T>, evals: &mut usize| {
+        make_panel(&rule, &mut f, a, b, whole, evals)
     };
 
     let mut heap = BinaryHeap::new();
@@ -577,17 +505,7 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
             Err(vf) => frozen.push(vf),
         }
     }
-    // Exact totals (value, error, Σ|value|) over all panels, compensated.
-    let totals = |heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)]| {
-        let (mut v, mut e, mut l1) = (CompSum::new(p), CompSum::new(p), CompSum::new(p));
-        let all = heap.iter().map(|q| (&q.value, &q.err));
-        for (val, err) in all.chain(frozen.iter().map(|(a, b)| (a, b))) {
-            v.add(val.clone());
-            e.add(err.clone());
-            l1.add(val.clone().abs());
-        }
-        (v.total(), e.total(), l1.total())
-    };
+    let totals = |heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)]| panel_totals(heap, frozen, p);
     let threshold = |v: &T, l1: &T| {
         (tol.clone() * &v.clone().abs()).max_of(l1.clone().mul_i64(4) * &eps) + &tiny
     };
@@ -648,6 +566,68 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
     }
 }
 
+/// The n-point `rule` on [a, b], counted, refused when not finite.
+fn rule_on<T: Real, F: FnMut(&T) -> T>(
+    rule: &GaussLegendre<T>,
+    f: &mut F,
+    a: &T,
+    b: &T,
+    evals: &mut usize,
+) -> Result<T> {
+    *evals += rule.n;
+    let v = rule.integrate(f, a, b);
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(not_finite(&v))
+    }
+}
+
+/// The panel [a, b] of [`integrate`] given its one-panel value `whole` (computed here if
+/// `None`): the rule on both halves and the discrepancy. `Err` holds `(value, error)` of a
+/// panel too narrow to halve.
+fn make_panel<T: Real, F: FnMut(&T) -> T>(
+    rule: &GaussLegendre<T>,
+    f: &mut F,
+    a: T,
+    b: T,
+    whole: Option<T>,
+    evals: &mut usize,
+) -> Result<std::result::Result<Panel<T>, (T, T)>> {
+    let whole = match whole {
+        Some(w) => w,
+        None => rule_on(rule, f, &a, &b, evals)?,
+    };
+    let Some(m) = midpoint(&a, &b) else {
+        let e = whole.clone().abs();
+        return Ok(Err((whole, e)));
+    };
+    let left = rule_on(rule, f, &a, &m, evals)?;
+    let right = rule_on(rule, f, &m, &b, evals)?;
+    let value = left.clone() + &right;
+    let err = (whole - &value).abs();
+    Ok(Ok(Panel {
+        a,
+        b,
+        left,
+        right,
+        value,
+        err,
+    }))
+}
+
+/// Exact totals (value, error, Σ|value|) over all panels of [`integrate`], compensated.
+fn panel_totals<T: Real>(heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)], p: T::Prec) -> (T, T, T) {
+    let (mut v, mut e, mut l1) = (CompSum::new(p), CompSum::new(p), CompSum::new(p));
+    let all = heap.iter().map(|q| (&q.value, &q.err));
+    for (val, err) in all.chain(frozen.iter().map(|(a, b)| (a, b))) {
+        v.add(val.clone());
+        e.add(err.clone());
+        l1.add(val.clone().abs());
+    }
+    (v.total(), e.total(), l1.total())
+}
+
 // ---------------------------------------------------------------------------------------------
 // Tanh–sinh
 
@@ -678,6 +658,7 @@ impl<T: Real> DeLevel<T> {
     }
 
     fn get(level: u32, p: T::Prec) -> Result<Arc<Self>> {
+        check_rule_bits(T::bits(p))?;
         cached(
             level as usize,
             p,
@@ -740,13 +721,8 @@ fn de_interval<T: Real, F: FnMut(&T, &T, &T) -> T>(
 ) -> Result<(T, T)> {
     let p = a.prec();
     let eps = T::epsilon(p);
-    let width = b.clone() - a;
-    let r = width.clone().mul_pow2(-1);
+    let mut sweep = DeSweep::new(a, b, uses_gaps);
     let max_level = limits.max_levels.min(MAX_DE_LEVEL);
-
-    // Raw sums over every abscissa so far: S_k = h_k · Σ w f, L1_k = h_k · Σ |w f|.
-    let mut raw = CompSum::new(p);
-    let mut raw_abs = T::zero(p);
     // The last non-negligible term where the table or the representable range ran out, per
     // level (a bound on what was cut off); kept as h_k·|w f|.
     let mut tail = T::zero(p);
@@ -773,104 +749,16 @@ fn de_interval<T: Real, F: FnMut(&T, &T, &T) -> T>(
         // e^(−π h cosh t / 2) per step, ≈ 0.2 at h = 2^-10, t = 7), so each level leaves out
         // well under ε·L1/64.
         let negl = (l1_prev.clone() * &eps).mul_pow2(-6);
-        let mut quiet = 0;
-        // Per side (right, left): still inside the representable range, and |f| at the side's
-        // last abscissa (if the side closes, the first omitted weight times it estimates what
-        // is left out: the sliver within an ulp of the endpoint).
-        let mut open = [true, true];
-        let mut last = [T::zero(p), T::zero(p)];
-        let (mut level_tail, mut level_edge) = (T::zero(p), T::zero(p));
-        for (i, (g, wh)) in table.gap.iter().zip(&table.weight).enumerate() {
-            let delta = r.clone() * g;
-            let w = r.clone() * wh;
-            let mut term = T::zero(p);
-            let mut size = T::zero(p);
-            if k == 0 && i == 0 {
-                // t = 0: the midpoint, counted once.
-                let x = a.clone() + &r;
-                let v = f(&x, &r, &r);
-                *evals += 1;
-                if !v.is_finite() {
-                    return Err(not_finite(&v));
-                }
-                term = v * &w;
-                size = term.clone().abs();
-            } else {
-                let co = width.clone() - &delta; // distance to the far endpoint
-                for side in 0..2 {
-                    if !open[side] {
-                        continue;
-                    }
-                    let x = if side == 0 {
-                        b.clone() - &delta
-                    } else {
-                        a.clone() + &delta
-                    };
-                    if !uses_gaps && (x == *a || x == *b) {
-                        // The abscissa rounds onto the endpoint and `f` sees only `x`: this side
-                        // stops here (with the gaps, `f` still resolves the distance).
-                        open[side] = false;
-                        level_edge = level_edge.max_of(w.clone() * &last[side]);
-                        continue;
-                    }
-                    let v = if side == 0 {
-                        f(&x, &co, &delta)
-                    } else {
-                        f(&x, &delta, &co)
-                    };
-                    *evals += 1;
-                    if !v.is_finite() {
-                        return Err(not_finite(&v));
-                    }
-                    last[side] = v.clone().abs();
-                    let wv = v * &w;
-                    size += &wv.clone().abs();
-                    term += &wv;
-                }
-            }
-            raw.add(term);
-            raw_abs += &size;
-            if size.clone().mul_pow2(-(k as i32)) <= negl {
-                quiet += 1;
-                if quiet >= 2 {
-                    break;
-                }
-            } else {
-                quiet = 0;
-            }
-            if i + 1 == table.gap.len() {
-                // The table ran out while terms were still not negligible.
-                level_tail = level_tail.max_of(size);
-            }
-            if !open[0] && !open[1] {
-                break;
-            }
-        }
+        let (level_tail, level_edge) = sweep.level(f, &table, k, &negl, evals)?;
         // Whatever was still non-negligible when the table or the range ran out.
         tail = tail.max_of(level_tail.mul_pow2(-(k as i32)));
         edge = edge.max_of(level_edge.mul_pow2(-(k as i32)));
-        let s = raw.total().mul_pow2(-(k as i32));
-        let l1 = raw_abs.clone().mul_pow2(-(k as i32));
+        let s = sweep.raw.total().mul_pow2(-(k as i32));
+        let l1 = sweep.raw_abs.clone().mul_pow2(-(k as i32));
         let floor = l1.clone().mul_i64(2) * &eps + &edge;
         if let Some(sp) = prev.replace(s.clone()) {
             let d = (s.clone() - &sp).abs();
-            // Truncation estimate for S_k from d_k = |S_k − S_{k−1}| (≈ the error of S_{k−1})
-            // and the ratio ρ = d_k/d_{k−1}: in the double-exponential regime (ρ ≤ 1/4) the
-            // error of S_k is ≈ d_k²/d_{k−1}; d_k·√ρ is well above that. Slower, geometric
-            // convergence leaves d_k·ρ/(1−ρ); no convergence (ρ ≥ 1) leaves d_k.
-            let trunc = match &d_prev {
-                Some(dp) if k >= 2 && d < *dp && dp.is_positive() => {
-                    let rho = d.clone() / dp;
-                    let quarter = T::from_ratio(1, 4, p);
-                    if rho <= quarter {
-                        d.clone() * &rho.sqrt()
-                    } else {
-                        let geo = rho.clone() / &(T::one(p) - &rho);
-                        d.clone() * &geo.max_of(T::one(p))
-                    }
-                }
-                _ => d.clone(),
-            };
+            let trunc = de_truncation(&d, d_prev.as_ref(), k);
             let est = trunc.clone().max_of(floor.clone()) + &tail;
             if k >= 3 {
                 // Converged: the estimate meets the tolerance, or nothing is left to gain
@@ -897,6 +785,162 @@ fn de_interval<T: Real, F: FnMut(&T, &T, &T) -> T>(
         iterations: *evals,
         reached: relative(&last_est.unwrap_or_else(|| s.clone().abs()), &s),
     })
+}
+
+/// Truncation estimate for S_k from d_k = |S_k − S_{k−1}| (≈ the error of S_{k−1}) and the
+/// ratio ρ = d_k/d_{k−1}: in the double-exponential regime (ρ ≤ 1/4) the error of S_k is
+/// ≈ d_k²/d_{k−1}; d_k·√ρ is well above that. Slower, geometric convergence leaves
+/// d_k·ρ/(1−ρ); no convergence (ρ ≥ 1) leaves d_k.
+fn de_truncation<T: Real>(d: &T, d_prev: Option<&T>, k: u32) -> T {
+    match d_prev {
+        Some(dp) if k >= 2 && d < dp && dp.is_positive() => {
+            let p = d.prec();
+            let rho = d.clone() / dp;
+            if rho <= T::from_ratio(1, 4, p) {
+                d.clone() * &rho.sqrt()
+            } else {
+                let geo = rho.clone() / &(T::one(p) - &rho);
+                d.clone() * &geo.max_of(T::one(p))
+            }
+        }
+        _ => d.clone(),
+    }
+}
+
+/// The running raw sums of [`de_interval`] over every abscissa so far, level by level:
+/// S_k = h_k · Σ w f (`raw`) and L1_k = h_k · Σ |w f| (`raw_abs`), both before the factor h_k.
+struct DeSweep<'a, T: Real> {
+    a: &'a T,
+    b: &'a T,
+    /// Half the interval's width.
+    r: T,
+    width: T,
+    uses_gaps: bool,
+    raw: CompSum<T>,
+    raw_abs: T,
+}
+
+impl<'a, T: Real> DeSweep<'a, T> {
+    fn new(a: &'a T, b: &'a T, uses_gaps: bool) -> Self {
+        let p = a.prec();
+        let width = b.clone() - a;
+        DeSweep {
+            a,
+            b,
+            r: width.clone().mul_pow2(-1),
+            width,
+            uses_gaps,
+            raw: CompSum::new(p),
+            raw_abs: T::zero(p),
+        }
+    }
+
+    /// Adds level `k`'s new abscissas (both sides, the midpoint at level 0) until two terms in
+    /// a row are below `negl` (scaled to the level) or both sides close. Returns the level's
+    /// cut-off term where its table ran out and its end-point sliver (before the factor h_k).
+    fn level<F: FnMut(&T, &T, &T) -> T>(
+        &mut self,
+        f: &mut F,
+        table: &DeLevel<T>,
+        k: u32,
+        negl: &T,
+        evals: &mut usize,
+    ) -> Result<(T, T)> {
+        let p = self.a.prec();
+        let mut quiet = 0;
+        // Per side (right, left): still inside the representable range, and |f| at the side's
+        // last abscissa (if the side closes, the first omitted weight times it estimates what
+        // is left out: the sliver within an ulp of the endpoint).
+        let mut open = [true, true];
+        let mut last = [T::zero(p), T::zero(p)];
+        let (mut level_tail, mut level_edge) = (T::zero(p), T::zero(p));
+        for (i, (g, wh)) in table.gap.iter().zip(&table.weight).enumerate() {
+            let delta = self.r.clone() * g;
+            let w = self.r.clone() * wh;
+            let (term, size) = if k == 0 && i == 0 {
+                // t = 0: the midpoint, counted once.
+                let x = self.a.clone() + &self.r;
+                let v = checked(f(&x, &self.r, &self.r), evals)?;
+                let term = v * &w;
+                (term.clone(), term.abs())
+            } else {
+                let (mut term, mut size) = (T::zero(p), T::zero(p));
+                for side in 0..2 {
+                    if !open[side] {
+                        continue;
+                    }
+                    match self.side(f, side, &delta, evals)? {
+                        Some(v) => {
+                            last[side] = v.clone().abs();
+                            let wv = v * &w;
+                            size += &wv.clone().abs();
+                            term += &wv;
+                        }
+                        None => {
+                            open[side] = false;
+                            level_edge = level_edge.max_of(w.clone() * &last[side]);
+                        }
+                    }
+                }
+                (term, size)
+            };
+            self.raw.add(term);
+            self.raw_abs += &size;
+            if size.clone().mul_pow2(-(k as i32)) <= *negl {
+                quiet += 1;
+                if quiet >= 2 {
+                    break;
+                }
+            } else {
+                quiet = 0;
+            }
+            if i + 1 == table.gap.len() {
+                // The table ran out while terms were still not negligible.
+                level_tail = level_tail.max_of(size);
+            }
+            if !open[0] && !open[1] {
+                break;
+            }
+        }
+        Ok((level_tail, level_edge))
+    }
+
+    /// `f` at the abscissa `delta` inside the right (`side` 0) or left (1) end, or `None`
+    /// where the abscissa rounds onto the endpoint and `f` sees only `x` (with the gaps, `f`
+    /// still resolves the distance).
+    fn side<F: FnMut(&T, &T, &T) -> T>(
+        &self,
+        f: &mut F,
+        side: usize,
+        delta: &T,
+        evals: &mut usize,
+    ) -> Result<Option<T>> {
+        let co = self.width.clone() - delta; // distance to the far endpoint
+        let x = if side == 0 {
+            self.b.clone() - delta
+        } else {
+            self.a.clone() + delta
+        };
+        if !self.uses_gaps && (x == *self.a || x == *self.b) {
+            return Ok(None);
+        }
+        let v = if side == 0 {
+            f(&x, &co, delta)
+        } else {
+            f(&x, delta, &co)
+        };
+        checked(v, evals).map(Some)
+    }
+}
+
+/// One integrand value, counted, refused when not finite.
+fn checked<T: Real>(v: T, evals: &mut usize) -> Result<T> {
+    *evals += 1;
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(not_finite(&v))
+    }
 }
 
 /// Tanh–sinh (double-exponential) quadrature of `f` over the breakpoints `points` (strictly

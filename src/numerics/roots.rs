@@ -81,9 +81,9 @@ pub fn brent<T: Real, F: FnMut(&T) -> T>(
     let rtol = effective_tol(tol)?;
     let p = a.prec();
     let zero = T::zero(p);
-    let (mut a, mut b) = (a.clone(), b.clone());
-    let mut fa = value_at(&mut f, &a)?;
-    let mut fb = value_at(&mut f, &b)?;
+    let (a, b) = (a.clone(), b.clone());
+    let fa = value_at(&mut f, &a)?;
+    let fb = value_at(&mut f, &b)?;
     let done = |x: T, fx: T, width: T, it: usize| {
         Ok(Root {
             root: x,
@@ -111,86 +111,122 @@ pub fn brent<T: Real, F: FnMut(&T) -> T>(
             bound: "f(a) and f(b) of opposite signs",
         });
     }
-    // b: best point; a: previous b; c: the other end of the bracket [b, c]; d, e: the last two
-    // steps (e decides whether interpolation has been converging fast enough).
-    let (mut c, mut fc) = (a.clone(), fa.clone());
-    let mut d = b.clone() - &a;
-    let mut e = d.clone();
+    let mut st = Brent {
+        c: a.clone(),
+        fc: fa.clone(),
+        d: b.clone() - &a,
+        e: b.clone() - &a,
+        a,
+        b,
+        fa,
+        fb,
+    };
     for it in 1..=max_iter {
-        if fb.is_negative() == fc.is_negative() {
-            c = a.clone();
-            fc = fa.clone();
-            d = b.clone() - &a;
-            e = d.clone();
+        st.order();
+        let tol1 = rtol.clone() * &st.b.clone().abs();
+        let xm = (st.c.clone() - &st.b).mul_pow2(-1);
+        if xm.clone().abs() <= tol1 || st.fb.is_zero() {
+            return done(st.b, st.fb, xm.abs().mul_pow2(1), it - 1);
         }
-        if fc.clone().abs() < fb.clone().abs() {
-            a = std::mem::replace(&mut b, c.clone());
-            c = a.clone();
-            fa = std::mem::replace(&mut fb, fc.clone());
-            fc = fa.clone();
-        }
-        let tol1 = rtol.clone() * &b.clone().abs();
-        let xm = (c.clone() - &b).mul_pow2(-1);
-        if xm.clone().abs() <= tol1 || fb.is_zero() {
-            return done(b, fb, xm.abs().mul_pow2(1), it - 1);
-        }
-        if e.clone().abs() >= tol1 && fa.clone().abs() > fb.clone().abs() {
-            // Interpolate: secant when only two distinct points, inverse quadratic otherwise.
-            let s = fb.clone() / &fa;
-            let one = T::one(p);
-            let (mut pp, mut q) = if a == c {
-                (xm.clone().mul_pow2(1) * &s, one - &s)
-            } else {
-                let q = fa.clone() / &fc;
-                let r = fb.clone() / &fc;
-                let pp = s.clone()
-                    * &(xm.clone().mul_pow2(1) * &q * &(q.clone() - &r)
-                        - (b.clone() - &a) * &(r.clone() - &one));
-                let q = (q - &one) * &(r - &one) * &(s - &one);
-                (pp, q)
-            };
-            if pp.is_positive() {
-                q = -q;
-            } else {
-                pp = -pp;
-            }
-            // Accept the interpolation only if it stays well inside the bracket and shrinks
-            // faster than the step before last; otherwise bisect.
-            let bound1 = xm.clone().mul_i64(3) * &q - (tol1.clone() * &q).abs();
-            let bound2 = (e.clone() * &q).abs();
-            if pp.clone().mul_pow2(1) < bound1.min_of(bound2) {
-                e = std::mem::replace(&mut d, pp / &q);
-            } else {
-                d = xm.clone();
-                e = d.clone();
-            }
-        } else {
-            d = xm.clone();
-            e = d.clone();
-        }
-        a = b.clone();
-        fa = fb.clone();
+        st.choose_step(&xm, &tol1);
+        st.a = st.b.clone();
+        st.fa = st.fb.clone();
         // Never step by less than tol1, so each evaluation makes progress.
-        if d.clone().abs() > tol1 {
-            b += &d;
+        if st.d.clone().abs() > tol1 {
+            st.b += &st.d;
         } else if xm.is_negative() {
-            b -= &tol1;
+            st.b -= &tol1;
         } else {
-            b += &tol1;
+            st.b += &tol1;
         }
-        if b == a {
+        if st.b == st.a {
             // The step vanished at this precision (tol1 below one ulp of b cannot happen with
             // tol ≥ 2ε unless b = 0): the bracket is as narrow as it gets.
-            return done(b, fb, xm.abs().mul_pow2(1), it);
+            return done(st.b, st.fb, xm.abs().mul_pow2(1), it);
         }
-        fb = value_at(&mut f, &b)?;
+        st.fb = value_at(&mut f, &st.b)?;
     }
-    let width = (c - &b).abs();
+    let width = (st.c - &st.b).abs();
     Err(Error::NoConvergence {
         what: "Brent root finder",
         iterations: max_iter,
-        reached: short(&if b.is_zero() { width } else { width / &b.abs() }),
+        reached: short(&if st.b.is_zero() {
+            width
+        } else {
+            width / &st.b.abs()
+        }),
     })
+}
+
+/// The state of [`brent`]: b the best point, a the previous b, c the other end of the bracket
+/// [b, c]; d, e the last two steps (e decides whether interpolation has been converging fast
+/// enough).
+struct Brent<T> {
+    a: T,
+    b: T,
+    c: T,
+    fa: T,
+    fb: T,
+    fc: T,
+    d: T,
+    e: T,
+}
+
+impl<T: Real> Brent<T> {
+    /// Keeps the root bracketed by [b, c] with b the better end.
+    fn order(&mut self) {
+        if self.fb.is_negative() == self.fc.is_negative() {
+            self.c = self.a.clone();
+            self.fc = self.fa.clone();
+            self.d = self.b.clone() - &self.a;
+            self.e = self.d.clone();
+        }
+        if self.fc.clone().abs() < self.fb.clone().abs() {
+            self.a = std::mem::replace(&mut self.b, self.c.clone());
+            self.c = self.a.clone();
+            self.fa = std::mem::replace(&mut self.fb, self.fc.clone());
+            self.fc = self.fa.clone();
+        }
+    }
+
+    /// The next step d: interpolation (a secant when only two distinct points, inverse
+    /// quadratic otherwise), accepted only if it stays well inside the bracket and shrinks
+    /// faster than the step before last; otherwise bisection (xm, half the bracket).
+    fn choose_step(&mut self, xm: &T, tol1: &T) {
+        let (a, b, c) = (&self.a, &self.b, &self.c);
+        let (fa, fb, fc) = (&self.fa, &self.fb, &self.fc);
+        if !(self.e.clone().abs() >= *tol1 && fa.clone().abs() > fb.clone().abs()) {
+            self.d = xm.clone();
+            self.e = xm.clone();
+            return;
+        }
+        let one = T::one(b.prec());
+        let s = fb.clone() / fa;
+        let (mut pp, mut q) = if a == c {
+            (xm.clone().mul_pow2(1) * &s, one - &s)
+        } else {
+            let q = fa.clone() / fc;
+            let r = fb.clone() / fc;
+            let pp = s.clone()
+                * &(xm.clone().mul_pow2(1) * &q * &(q.clone() - &r)
+                    - (b.clone() - a) * &(r.clone() - &one));
+            let q = (q - &one) * &(r - &one) * &(s - &one);
+            (pp, q)
+        };
+        if pp.is_positive() {
+            q = -q;
+        } else {
+            pp = -pp;
+        }
+        let bound1 = xm.clone().mul_i64(3) * &q - (tol1.clone() * &q).abs();
+        let bound2 = (self.e.clone() * &q).abs();
+        if pp.clone().mul_pow2(1) < bound1.min_of(bound2) {
+            self.e = std::mem::replace(&mut self.d, pp / &q);
+        } else {
+            self.d = xm.clone();
+            self.e = xm.clone();
+        }
+    }
 }
 
 /// Shared iteration of the polishers: `step(x)` returns the correction `dx` (`x ← x − dx`).

@@ -7,6 +7,7 @@
 //! formed exactly from the input: [`Material::speed_from_gap`] takes it directly, and
 //! [`Material::parse_speed`] forms it from the decimal text of M_R before anything is rounded.
 
+use super::green::GreenFunction;
 use super::rayleigh::RayleighRoots;
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, decimal_to_rational, short, Precision, Real};
@@ -23,6 +24,8 @@ pub struct Material<T: Real> {
     one_minus_nu: T,
     gamma: T,
     roots: RayleighRoots<T>,
+    /// πG(1): the regular part of the Green's function at the Rayleigh speed.
+    pi_g_rayleigh: T,
 }
 
 const NU_NAME: &str = "nu (Poisson's ratio)";
@@ -46,12 +49,16 @@ impl<T: Real> Material<T> {
         // γ = (1 − 2ν)/(2(1 − ν)).
         let gamma = (one - nu.clone().mul_i64(2)) / one_minus_nu.clone().mul_i64(2);
         let roots = RayleighRoots::new(&nu)?;
-        Ok(Material {
+        let mut mat = Material {
             nu,
             one_minus_nu,
             gamma,
             roots,
-        })
+            pi_g_rayleigh: T::zero(p),
+        };
+        let green = GreenFunction::new(&mat);
+        mat.pi_g_rayleigh = green.g_regular(&T::one(p)) * green.pi();
+        Ok(mat)
     }
 
     /// The material whose Poisson's ratio is the decimal text `nu` (or `p/q`), checked exactly
@@ -117,6 +124,13 @@ impl<T: Real> Material<T> {
     /// m1 = (c_R/c2)², the Rayleigh root.
     pub fn m1(&self) -> &T {
         &self.roots.m1
+    }
+    /// πG(1) = √(1 − γm1)·D(m1)/(m1 (m1 − m2)(m1 − m3)), G of (45) at the Rayleigh speed
+    /// (t = 1): the strength of the Green's function's Rayleigh pole, the limit H of the scaled
+    /// series coefficients h_n (35)–(36), and the constant of I2's growth as M_R → 1. Computed
+    /// once by [`GreenFunction::g_regular`], to a few ε.
+    pub fn pi_g_rayleigh(&self) -> &T {
+        &self.pi_g_rayleigh
     }
     /// c_R/c2 = √m1.
     pub fn cr_over_c2(&self) -> T {
@@ -295,6 +309,26 @@ fn rounds_to<T: Real>(text: &str, x: &T) -> String {
 /// Accessors give M_R, 1 − M_R, M_R², 1 − M_R² (formed as (1 − M_R)(1 + M_R) from the gap,
 /// so accurate to a few ε relative however close M_R is to 1), M2² = m1·M_R² and
 /// M1² = γ·M2².
+///
+/// A speed cannot be paired with a material other than its own: every solver takes the
+/// material from the speed, and neither can be changed after construction.
+///
+/// ```
+/// use moving_hertz::prelude::*;
+/// let steel = Material::new(0.3_f64)?;
+/// let rubber = Material::new(0.49_f64)?;
+/// let v = steel.speed(0.9)?;
+/// assert_eq!(v.material().nu(), steel.nu());
+/// // The same M_R in another material is another speed: M2² = m1·M_R² follows the material.
+/// assert_ne!(v.m2sq(), rubber.speed(0.9)?.m2sq());
+/// # Ok::<(), moving_hertz::Error>(())
+/// ```
+///
+/// ```compile_fail
+/// use moving_hertz::prelude::*;
+/// let mut v = Material::new(0.3_f64).unwrap().speed(0.9).unwrap();
+/// v.material = Material::new(0.49_f64).unwrap(); // private: a speed keeps its material
+/// ```
 #[derive(Clone, Debug)]
 pub struct Speed<T: Real> {
     material: Material<T>,

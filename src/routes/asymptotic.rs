@@ -36,9 +36,7 @@ pub struct I2Asymptotics<T: Real> {
 /// of ν alone. Accuracy: a few ε.
 pub fn leading_coefficient<T: Real>(mat: &Material<T>) -> T {
     let p = mat.nu().prec();
-    let g1 = GreenFunction::new(mat).g_regular(&T::one(p));
-    let pi = T::pi(p);
-    pi.square() * g1 / T::from_i64(2, p).sqrt()
+    T::pi(p) * mat.pi_g_rayleigh() / T::from_i64(2, p).sqrt()
 }
 
 impl<T: Real> I2Asymptotics<T> {
@@ -48,9 +46,7 @@ impl<T: Real> I2Asymptotics<T> {
         let p = mat.nu().prec();
         let green = GreenFunction::new(mat);
         let one = T::one(p);
-        let g1 = green.g_regular(&one);
-        let pi = T::pi(p);
-        let c = pi.square() * &g1 / T::from_i64(2, p).sqrt();
+        let c = leading_coefficient(mat);
         let (kk, ee) = ellipke_mc(&axes.k2)?;
         // R(1) in the variables of the direct route: left w = tan α, right v = cot α.
         // (G(c) − G(1))/sin²α = −DG(c, 1) (c − 1 = −sin²α), with c = cos²α.
@@ -86,7 +82,8 @@ impl<T: Real> I2Asymptotics<T> {
         let r_left = integrate(left, &[T::zero(p), one.clone()], &tol, lim)?;
         let r_right = integrate(right, &pts, &tol, lim)?;
         let r1 = r_left.value + &r_right.value;
-        let d = pi.mul_pow2(1) * (g1 * (kk - ee.mul_i64(2)) + r1);
+        // 2π(G(1)(K − 2E) + R(1)).
+        let d = (mat.pi_g_rayleigh().clone() * (kk - ee.mul_i64(2)) + T::pi(p) * r1).mul_pow2(1);
         Ok(I2Asymptotics { c, d })
     }
 

@@ -217,15 +217,21 @@ pub fn integrals_to_tolerance(
             Ok(r) if r.i1.error <= tol && r.i2.error <= tol => return Ok(r),
             Ok(r) => last = format!("estimate {} at {}", r.i1.error.max(r.i2.error), prec),
             Err(e @ (Error::Domain { .. } | Error::NotFinite { .. })) => return Err(e),
+            Err(e @ Error::Precision { .. }) => return Err(unreachable(tol, e.to_string())),
             Err(e) => last = e.to_string(),
         }
-        prec = next_precision(prec)?;
+        prec = next_precision(prec).map_err(|e| unreachable(tol, e.to_string()))?;
     }
-    Err(Error::Unreachable {
+    Err(unreachable(tol, last))
+}
+
+/// The refusal of a tolerance the routes cannot reach, with the reason.
+fn unreachable(tol: RelError, reason: String) -> Error {
+    Error::Unreachable {
         what: "I1, I2",
         tolerance: tol.to_string(),
-        reason: last,
-    })
+        reason,
+    }
 }
 
 /// One attempt at the precision `p`: the route's result, its bounds enlarged by the inputs'

@@ -73,58 +73,69 @@ impl<T: Real> DirectSetup<T> {
         self.green.g_regular(&self.mr2)
     }
 
-    /// F_L(w), the left-half integrand (see the module docs).
-    pub fn left(&self, w: &T) -> T {
-        let p = w.prec();
-        let one = T::one(p);
+    /// At a left node w: w², 1 + w², t = M_R²/(1 + w²) and u = 1 + k²w².
+    fn left_node(&self, w: &T) -> [T; 4] {
+        let one = T::one(w.prec());
         let w2 = w.square();
         let opw2 = one.clone() + &w2;
         let t = self.mr2.clone() / &opw2;
-        let g = self.green.g_regular(&t);
-        let a = one + self.k2.clone() * &w2;
-        let den = (self.eps2.clone() + &w2) * a.clone() * a.sqrt();
-        self.two_pi.clone() * g * opw2.sqrt() / den
+        let u = one + self.k2.clone() * &w2;
+        [w2, opw2, t, u]
+    }
+
+    /// At a right node v: v², 1 + v², t = M_R²v²/(1 + v²) and h = v² + k².
+    fn right_node(&self, v: &T) -> [T; 4] {
+        let v2 = v.square();
+        let opv2 = T::one(v.prec()) + &v2;
+        let t = self.mr2.clone() * &v2 / &opv2;
+        let h = v2.clone() + &self.k2;
+        [v2, opv2, t, h]
+    }
+
+    /// 2πG(t)√(1 + w²)/(ε² + w²) = F_L·u^{3/2}: the left integrand without the kernel.
+    fn left_factor(&self, [w2, opw2, t, _]: &[T; 4]) -> T {
+        let g = self.green.g_regular(t);
+        self.two_pi.clone() * g * opw2.clone().sqrt() / (self.eps2.clone() + w2)
+    }
+
+    /// 2πG(t)√(1 + v²)/(1 + ε²v²) = F_R·h^{3/2}: the right integrand without the kernel.
+    fn right_factor(&self, [v2, opv2, t, _]: &[T; 4]) -> T {
+        let g = self.green.g_regular(t);
+        let one = T::one(v2.prec());
+        self.two_pi.clone() * g * opv2.clone().sqrt() / (one + self.eps2.clone() * v2)
+    }
+
+    /// F_L(w), the left-half integrand (see the module docs).
+    pub fn left(&self, w: &T) -> T {
+        let n = self.left_node(w);
+        let u = &n[3];
+        self.left_factor(&n) / (u.clone() * u.clone().sqrt())
     }
 
     /// F_R(v), the right-half integrand.
     pub fn right(&self, v: &T) -> T {
-        let p = v.prec();
-        let one = T::one(p);
-        let v2 = v.square();
-        let opv2 = one.clone() + &v2;
-        let t = self.mr2.clone() * &v2 / &opv2;
-        let g = self.green.g_regular(&t);
-        let b = v2.clone() + &self.k2;
-        let den = (one + self.eps2.clone() * &v2) * b.clone() * b.sqrt();
-        self.two_pi.clone() * g * opv2.sqrt() / den
+        let n = self.right_node(v);
+        let h = &n[3];
+        self.right_factor(&n) / (h.clone() * h.clone().sqrt())
     }
 
     /// The left-half integrand of I2 with G(t) replaced by G(t) − G(M_R²), written with the
     /// divided difference DG so that nothing cancels: since t − M_R² = −M_R² w²/(1 + w²),
     /// it is −2π M_R² DG · w² / (√(1 + w²)(ε² + w²)(1 + k²w²)^{3/2}) ≥ 0.
     pub fn left_subtracted(&self, w: &T) -> T {
-        let p = w.prec();
-        let one = T::one(p);
-        let w2 = w.square();
-        let opw2 = one.clone() + &w2;
-        let t = self.mr2.clone() / &opw2;
+        let [w2, opw2, t, u] = self.left_node(w);
         let dg = self.green.g_divided_difference(&t, &self.mr2);
-        let a = one + self.k2.clone() * &w2;
-        let den = opw2.sqrt() * (self.eps2.clone() + &w2) * a.clone() * a.sqrt();
+        let den = opw2.sqrt() * (self.eps2.clone() + &w2) * u.clone() * u.sqrt();
         -(self.two_pi.clone() * &self.mr2 * dg * w2 / den)
     }
 
     /// The right-half integrand of I2 (v² F_R) with G(t) − G(M_R²): with
     /// t − M_R² = −M_R²/(1 + v²), it is −2π M_R² DG · v² / (√(1 + v²)(1 + ε²v²)(v² + k²)^{3/2}).
     pub fn right_subtracted(&self, v: &T) -> T {
-        let p = v.prec();
-        let one = T::one(p);
-        let v2 = v.square();
-        let opv2 = one.clone() + &v2;
-        let t = self.mr2.clone() * &v2 / &opv2;
+        let [v2, opv2, t, h] = self.right_node(v);
         let dg = self.green.g_divided_difference(&t, &self.mr2);
-        let b = v2.clone() + &self.k2;
-        let den = opv2.sqrt() * (one + self.eps2.clone() * &v2) * b.clone() * b.sqrt();
+        let one = T::one(v.prec());
+        let den = opv2.sqrt() * (one + self.eps2.clone() * &v2) * h.clone() * h.sqrt();
         -(self.two_pi.clone() * &self.mr2 * dg * v2 / den)
     }
 
@@ -346,30 +357,22 @@ pub fn contact_integrals<T: Real>(
     let p = tol.prec();
     let lim = limits(tol);
     let three_k = s.k.clone().mul_i64(3);
+    // Per node: F·u^{3/2} (or h^{3/2}) from the shared factor, then the five integrands.
     let left = |w: &T| -> [T; 5] {
-        let one = T::one(p);
-        let w2 = w.square();
-        let opw2 = one.clone() + &w2;
-        let t = s.mr2.clone() / &opw2;
-        let f = s.two_pi.clone() * s.green.g_regular(&t) * opw2.sqrt() / (s.eps2.clone() + &w2);
-        let a = one + s.k2.clone() * &w2;
-        let sa = a.clone().sqrt();
-        let j0 = f.clone() / &sa;
+        let n = s.left_node(w);
+        let f = s.left_factor(&n);
+        let [w2, _, _, a] = n;
+        let j0 = f / &a.clone().sqrt();
         let i2 = j0.clone() / &a;
         let i1 = i2.clone() * &w2;
         let d = -(three_k.clone() * &w2 / &a);
         [i1.clone(), i2.clone(), j0, i1 * &d, i2 * d]
     };
     let right = |v: &T| -> [T; 5] {
-        let one = T::one(p);
-        let v2 = v.square();
-        let opv2 = one.clone() + &v2;
-        let t = s.mr2.clone() * &v2 / &opv2;
-        let f =
-            s.two_pi.clone() * s.green.g_regular(&t) * opv2.sqrt() / (one + s.eps2.clone() * &v2);
-        let b = v2.clone() + &s.k2;
-        let sb = b.clone().sqrt();
-        let j0 = f.clone() / &sb;
+        let n = s.right_node(v);
+        let f = s.right_factor(&n);
+        let [v2, _, _, b] = n;
+        let j0 = f / &b.clone().sqrt();
         let i1 = j0.clone() / &b;
         let i2 = i1.clone() * &v2;
         let d = -(three_k.clone() / &b);

@@ -58,7 +58,9 @@ pub struct Evaluator<'a, T: Real + 'static> {
     opts: IntegralOptions,
     /// The tolerance at the working precision (`None`: its floor).
     tol: Option<T>,
-    fast: OnceCell<Result<FastSetup<T>>>,
+    /// Boxed: the set-up holds its tables inline (no allocation per table at `f64` and
+    /// double-double), and the evaluator is moved by value.
+    fast: OnceCell<Result<Box<FastSetup<T>>>>,
     graded: RefCell<Option<GradedSetup<T>>>,
 }
 
@@ -217,6 +219,7 @@ impl<'a, T: Real> Evaluator<'a, T> {
 
     /// The fixed rule at k ≤ 1. A `probe` runs it once without building the k-independent
     /// part (the ellipse solve's first evaluation at k = 1, which may be its only one below 1).
+    #[inline]
     pub(crate) fn fixed(
         &self,
         axes: &AxisRatio<T>,
@@ -226,7 +229,10 @@ impl<'a, T: Real> Evaluator<'a, T> {
         if probe && self.fast.get().is_none() {
             return fast::integrals_with_dk(self.speed, axes);
         }
-        match self.fast.get_or_init(|| FastSetup::new(self.speed)) {
+        match self
+            .fast
+            .get_or_init(|| FastSetup::new(self.speed).map(Box::new))
+        {
             Ok(f) if dk => f.integrals_with_dk(axes),
             Ok(f) => f.integrals(axes),
             Err(e) => Err(e.clone()),
@@ -235,6 +241,7 @@ impl<'a, T: Real> Evaluator<'a, T> {
 
     /// The graded rule at k > 1 from the kept layout, laid out anew (for 9/8 of this k, so
     /// that iterates up to 45/32 k reuse it) when k lies outside its range.
+    #[inline]
     pub(crate) fn graded(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         let mut kept = self.graded.borrow_mut();
         let g = match kept.take() {
@@ -257,6 +264,7 @@ impl<'a, T: Real> Evaluator<'a, T> {
     /// k-derivatives, by the fixed rules wherever they apply (the graded rule above k = 1) unless
     /// the method is [`Method::Adaptive`], by the adaptive quadrature (always with derivatives)
     /// elsewhere — or, for [`Method::Fixed`], an error. `probe`: see [`Evaluator::fixed`].
+    #[inline]
     pub(crate) fn for_newton(
         &self,
         axes: &AxisRatio<T>,

@@ -64,6 +64,18 @@
 //! (J = 8, 14) that costs under 2ε, above double-double they are formed at the guard precision
 //! [`Real::Wide`] and rounded once.
 //!
+//! **Above double-double: the right half on sinh-mapped panels.** The J products of the Taylor
+//! polynomial at every right node grow like bits² (J ≈ 0.13·bits, n_r ≈ 0.24·bits): at 4096
+//! bits they are some twenty times the rest of an evaluation. Above 106 bits the right half is
+//! therefore laid out instead, wherever that is cheaper (`sinh_octave`: most k at 128 bits
+//! and above, all but k ≲ 10⁻⁴ from 1024 bits on), on the panels of [`crate::routes::graded`]
+//! in v = a sinh x, x ∈ [0, C ln 2], a ≤ (4/5)·k for every k of one octave
+//! (2^(−j−1), 2^(−j)]: the map sends the branch points ±ik of (σ + k²)^{−3/2} and every
+//! singularity of b (|v| ≥ 1, on or near the imaginary axis) to the edge of the strip
+//! |Im x| < π/2, so that the plain Gauss–Legendre panels converge like the graded route's, with
+//! no subtraction and O(1) work a node (`RightSinh`): about bits·log₂(1/k)/10 nodes. The
+//! k-independent part keeps one layout per octave of k met.
+//!
 //! **Derivatives.** ∂/∂k is taken under the integral sign on the same nodes (G is evaluated once
 //! per node): ∂u^{−3/2}/∂k = −3ksu^{−5/2} on the left, whose pole (value 3kε²a0/(1 − k²ε²)) is
 //! subtracted the same way, and ∂(σ + k²)^{−3/2}/∂k = −3k(σ + k²)^{−5/2} on the right, where
@@ -93,14 +105,18 @@
 //! (`tests/fast.rs`): worst 2.8ε at `f64` (6·10⁻¹⁶), 5.5ε at double-double, 1.9ε and 2.8ε at
 //! MPFR 128 and 256 bits. The derivatives: worst 47ε at `f64` (10⁻¹⁴), 53ε at double-double
 //! (near k = 1, M_R = 0, where the closed forms of the (σ + k²)^{−5/2} moments cancel most; no
-//! guard precision is spent on them below MPFR), 2.3ε at MPFR 128 bits.
+//! guard precision is spent on them below MPFR), 2.3ε at MPFR 128 bits. At 1024 bits against
+//! the adaptive route at 1088 bits (`tests/precision_scaling.rs`, seven cases across ν, M_R and
+//! k = 10⁻⁶ … 1): I1, I2 within 1.4ε, the derivatives within 5.6ε. (The Taylor form's
+//! derivatives near k = 1, M_R = 0 degrade with the precision, 74ε at 1024 bits and some 6700ε at
+//! 2048: there the right half is always on the sinh-mapped panels.)
 
+use super::graded;
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
-use crate::numerics::quadrature::{cached, GaussLegendre};
+use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
 use crate::physics::Speed;
-use crate::scalar::{short, Dd, Field, Real};
-use std::any::{Any, TypeId};
+use crate::scalar::{short, Field, Mp, MpPrec, Real};
 use std::ops::Deref;
 use std::sync::{Arc, OnceLock};
 
@@ -220,15 +236,17 @@ impl<T: Real> Half<T> {
 
 /// The fixed rules of the fast route at one precision: nodes and weights on [0, 1] for both
 /// halves, with the node-only quantities precomputed, and the exact rational constants of the
-/// Taylor coefficients of b and of the moment recurrences. Built once per precision and cached
-/// (a static slot for `f64` and double-double, so that a call takes no lock; the shared rule
-/// cache for MPFR).
+/// Taylor coefficients of b and of the moment recurrences. Built once per precision and kept in
+/// the shared rule cache of [`crate::numerics::quadrature`]; for `f64` and double-double a
+/// static slot filled from it serves later calls without the cache's lock.
 #[derive(Debug)]
 pub struct FastRule<T: Real> {
     prec: T::Prec,
     sizes: RuleSizes,
     left: Half<T>,
-    right: Half<T>,
+    /// The right half's rule: built with the rule at `f64` and double-double, on first use above
+    /// (where the right half may be laid out on sinh-mapped panels instead, [`RightSinh`]).
+    right: OnceLock<Half<T>>,
     /// The binomial coefficients β_l of √(1 − z) = Σ β_l z^l, l < J.
     sqrt_binomial: Vec<T>,
     /// 1/(2j) and (2j − 1)/(2j) for j = 1..=J (index j − 1): the N_j recurrence.
@@ -238,7 +256,7 @@ pub struct FastRule<T: Real> {
 
 /// A borrowed or shared [`FastRule`].
 pub enum RuleRef<T: Real + 'static> {
-    /// A rule in a static slot (`f64`, double-double).
+    /// A rule in its type's static slot (`f64`, double-double).
     Static(&'static FastRule<T>),
     /// A rule from the shared cache (MPFR).
     Shared(Arc<FastRule<T>>),
@@ -254,31 +272,16 @@ impl<T: Real> Deref for RuleRef<T> {
     }
 }
 
-type Slot<T> = OnceLock<Result<FastRule<T>>>;
-
-/// The static slot of a fixed-precision type, if `T` is one.
-fn static_slot<T: Real>() -> Option<&'static Slot<T>> {
-    static F64: Slot<f64> = OnceLock::new();
-    static DD: Slot<Dd> = OnceLock::new();
-    let any: &'static dyn Any = if TypeId::of::<T>() == TypeId::of::<f64>() {
-        &F64
-    } else if TypeId::of::<T>() == TypeId::of::<Dd>() {
-        &DD
-    } else {
-        return None;
-    };
-    any.downcast_ref::<Slot<T>>()
-}
+fixed_slot!(static_slot, FastRule);
 
 impl<T: Real> FastRule<T> {
     /// The rule for precision `p` with the sizes of [`RuleSizes::for_bits`], built on first use
     /// and cached for the life of the process.
     pub fn get(p: T::Prec) -> Result<RuleRef<T>> {
+        check_rule_bits(T::bits(p))?;
         if let Some(slot) = static_slot::<T>() {
-            return match slot.get_or_init(|| Self::build(Self::default_sizes(p), p)) {
-                Ok(r) => Ok(RuleRef::Static(r)),
-                Err(e) => Err(e.clone()),
-            };
+            let build = || Self::build(Self::default_sizes(p), p);
+            return slotted(slot, 0, p, |r: &Self| r.prec, build).map(|r| RuleRef::Static(&**r));
         }
         cached(
             0,
@@ -303,7 +306,10 @@ impl<T: Real> FastRule<T> {
             });
         }
         let left = Half::new(sizes.left, p)?;
-        let right = Half::new(sizes.right, p)?;
+        let right = OnceLock::new();
+        if T::bits(p) <= 106 {
+            let _ = right.set(Half::new(sizes.right, p)?);
+        }
         let j_max = sizes.taylor;
         // β_0 = 1, β_{l+1} = β_l (2l − 1)/(2l + 2).
         let mut sqrt_binomial = Vec::with_capacity(j_max);
@@ -332,6 +338,15 @@ impl<T: Real> FastRule<T> {
     /// The sizes of this rule.
     pub fn sizes(&self) -> RuleSizes {
         self.sizes
+    }
+
+    /// The right half's rule (built on first use above double-double).
+    fn right_half(&self) -> Result<&Half<T>> {
+        if let Some(h) = self.right.get() {
+            return Ok(h);
+        }
+        let h = Half::new(self.sizes.right, self.prec)?;
+        Ok(self.right.get_or_init(|| h))
     }
 
     /// The precision of this rule.
@@ -401,15 +416,8 @@ impl<T: Real> SpeedConsts<T> {
             let at = one.clone().atan2(&eps);
             let pole_t = at.clone() / &eps;
             let pole_1 = one.clone() - eps * at;
-            // a(−ε²) with M_R factored out: p = M², p − γc = M²(1 − γm1),
-            // s + δ² = M²(1 − m1), so a0 u0^{3/2} =
-            // (2/m1) M √(1 − γm1) [(2 − m1)² + 4√((1 − γm1)(1 − m1))]/(m1² − S m1 + q).
-            let g1 = one.clone() - gamma * &m1;
-            let b1 = one.clone() - &m1;
-            let two_m1 = T::from_i64(2, p) - &m1;
-            let d1 = two_m1.square() + (g1.clone() * &b1).sqrt().mul_i64(4);
-            let q1 = m1.clone() * (m1.clone() - &s23) + &q;
-            let g0 = two_over_m1.clone() * speed.mr() * g1.sqrt() * d1 / q1;
+            // a(−ε²)·u0^{3/2} = 2π G(1) M_R: the pole's strength (Material::pi_g_rayleigh).
+            let g0 = mat.pi_g_rayleigh().clone().mul_i64(2) * speed.mr();
             (g0, pole_t, pole_1)
         } else {
             (T::zero(p), T::zero(p), T::zero(p))
@@ -615,8 +623,8 @@ fn right_closed_forms<T: Real>(
     [s1, s2, d1, d2]
 }
 
-/// [`right_closed_forms`] at the working precision, or, above double-double, at the guard
-/// precision [`Real::Wide`] (≥ 2·bits + 32) and rounded once: the expansion of P about the
+/// [`right_closed_forms`] at the working precision, or, above double-double, with 64 guard bits
+/// (in MPFR) and rounded once: the expansion of P about the
 /// branch point −k² cancels like √J·log J when k → 1 (P(−1) and the quotient grow like √J while
 /// the integrals stay O(1)), about 15ε at 256 bits (J = 34) in working precision. At `f64` and
 /// double-double (J = 8, 14) the cancellation costs under 2ε and no guard precision is used.
@@ -641,19 +649,22 @@ fn right_closed_forms_guarded<T: Real, const N: usize>(
             &mut scratch,
         );
     }
-    let pw = T::wide_prec(p);
-    let kw = kc.k.to_wide(pw);
+    // 64 guard bits cover the √J·log J growth for every J a rule can have (J ≈ 0.13·bits).
+    let bits = T::bits(p);
+    let pw = MpPrec::clamped(bits + 64);
+    let up = |x: &T| Mp::from_float(&x.to_float(bits), pw);
+    let kw = up(&kc.k);
     let k2w = kw.square();
-    let bw: Vec<T::Wide> = b.iter().map(|x| x.to_wide(pw)).collect();
-    let inv: Vec<T::Wide> = (1..=j_max as i64)
-        .map(|j| T::Wide::from_ratio(1, 2 * j, pw))
+    let bw: Vec<Mp> = b.iter().map(up).collect();
+    let inv: Vec<Mp> = (1..=j_max as i64)
+        .map(|j| Mp::from_ratio(1, 2 * j, pw))
         .collect();
-    let ratio: Vec<T::Wide> = (1..=j_max as i64)
-        .map(|j| T::Wide::from_ratio(2 * j - 1, 2 * j, pw))
+    let ratio: Vec<Mp> = (1..=j_max as i64)
+        .map(|j| Mp::from_ratio(2 * j - 1, 2 * j, pw))
         .collect();
-    let mut scratch = vec![T::Wide::zero(pw); len];
+    let mut scratch = vec![Mp::zero(pw); len];
     let r = right_closed_forms(&bw, &kw, &k2w, &inv, &ratio, dk, &mut scratch);
-    r.map(|x| T::from_wide(&x, p))
+    r.map(|x| T::from_float(&x.0, p))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -661,6 +672,7 @@ fn right_closed_forms_guarded<T: Real, const N: usize>(
 
 /// A slice of `n` values: inline (capacity `N`) for `f64` and double-double, on the heap for
 /// MPFR (whose values allocate anyway) and for counts above `N`.
+#[derive(Debug)]
 enum Buf<T, const N: usize> {
     Inline([T; N], usize),
     Heap(Vec<T>),
@@ -781,43 +793,68 @@ impl<T: Real> KConsts<T> {
     }
 }
 
-/// The node values of the two halves, weighted sums still to be taken: R and R' on the left,
-/// r W3 and r W5 on the right (see the module docs).
-struct NodeValues<'a, T> {
-    left: &'a [T],
-    left_dk: &'a [T],
-    right: &'a [T],
-    right_dk: &'a [T],
-}
-
-/// Weighted sums of the node values, with the closed-form parts: the pole integrals on the left,
-/// the moments of the Taylor polynomial on the right.
-fn combine<T: Real, const N: usize>(
-    rule: &FastRule<T>,
+/// The left half: I1_L, I2_L and, with `dk`, dI1_L/dk, dI2_L/dk (zero without), from the node
+/// values R and R' (see the module docs) and the closed-form pole integrals.
+fn left_parts<T: Real>(
+    l: &Half<T>,
     sc: &SpeedConsts<T>,
     kc: &KConsts<T>,
-    b: &[T],
-    v: &NodeValues<'_, T>,
+    left: &[T],
+    left_dk: &[T],
     dk: bool,
-) -> Result<Evaluation<T>> {
-    let (l, r) = (&rule.left, &rule.right);
-    // Left: I2_L = a0 atan(1/ε)/ε + Σω R, I1_L = a0 (1 − ε atan(1/ε)) + Σωs R.
-    let i2l = kc.a0.clone() * &sc.pole_t + &dot(&l.w, v.left);
-    let i1l = kc.a0.clone() * &sc.pole_1 + &dot(&l.ws, v.left);
-    // Right: ∫ P W3 + Σω r W3, ∫ σ P W3 + Σωσ r W3 (P the Taylor polynomial).
+) -> [T; 4] {
+    let p = kc.k.prec();
+    // I2_L = a0 atan(1/ε)/ε + Σω R, I1_L = a0 (1 − ε atan(1/ε)) + Σωs R.
+    let i2l = kc.a0.clone() * &sc.pole_t + &dot(&l.w, left);
+    let i1l = kc.a0.clone() * &sc.pole_1 + &dot(&l.ws, left);
+    if !dk {
+        return [i1l, i2l, T::zero(p), T::zero(p)];
+    }
+    // dI2_L = 3k (e0 atan(1/ε)/ε − Σω R'), dI1_L = 3k (e0 (1 − ε atan(1/ε)) − Σωs R').
+    let three_k = kc.k.clone().mul_i64(3);
+    let d2l = (kc.e0.clone() * &sc.pole_t - &dot(&l.w, left_dk)) * &three_k;
+    let d1l = (kc.e0.clone() * &sc.pole_1 - &dot(&l.ws, left_dk)) * &three_k;
+    [i1l, i2l, d1l, d2l]
+}
+
+/// The right half by the Taylor subtraction: I1_R = ∫ P W3 + Σω r W3, I2_R = ∫ σ P W3 +
+/// Σωσ r W3 (P the Taylor polynomial, r = b − P at the nodes in `right`) and, with `dk`,
+/// S1 = ∫ P W5 + Σω r W5, S2 (with σ), so that dI_R/dk = −3k S.
+fn taylor_right_parts<T: Real, const N: usize>(
+    rule: &FastRule<T>,
+    r: &Half<T>,
+    kc: &KConsts<T>,
+    b: &[T],
+    right: &[T],
+    right_dk: &[T],
+    dk: bool,
+) -> [T; 4] {
+    let p = kc.k.prec();
     let [s1, s2, sd1, sd2] = right_closed_forms_guarded::<T, N>(rule, b, kc, dk);
-    let i1r = dot(&r.w, v.right) + &s1;
-    let i2r = dot(&r.ws, v.right) + &s2;
+    let i1r = dot(&r.w, right) + &s1;
+    let i2r = dot(&r.ws, right) + &s2;
+    if !dk {
+        return [i1r, i2r, T::zero(p), T::zero(p)];
+    }
+    let t1 = dot(&r.w, right_dk) + &sd1;
+    let t2 = dot(&r.ws, right_dk) + &sd2;
+    [i1r, i2r, t1, t2]
+}
+
+/// I1 = I1_L + I1_R, I2 = I2_L + I2_R and, with `dk`, dI/dk = dI_L/dk − 3k S_R, from
+/// [`left_parts`] and the right half's parts ([`taylor_right_parts`] or [`RightSinh::parts`]);
+/// `work` is the number of nodes.
+fn combine<T: Real>(
+    [i1l, i2l, d1l, d2l]: [T; 4],
+    [i1r, i2r, s1, s2]: [T; 4],
+    kc: &KConsts<T>,
+    dk: bool,
+    work: usize,
+) -> Result<Evaluation<T>> {
     let i1 = i1l + &i1r;
     let i2 = i2l + &i2r;
     let dks = dk.then(|| {
-        // Left: dI2_L = 3k (e0 atan(1/ε)/ε − Σω R'), dI1_L = 3k (e0 (1 − ε atan(1/ε)) − Σωs R').
         let three_k = kc.k.clone().mul_i64(3);
-        let d2l = (kc.e0.clone() * &sc.pole_t - &dot(&l.w, v.left_dk)) * &three_k;
-        let d1l = (kc.e0.clone() * &sc.pole_1 - &dot(&l.ws, v.left_dk)) * &three_k;
-        // Right: dI_R = −3k (∫ P W5 + Σω r W5) (and with σ).
-        let s1 = dot(&r.w, v.right_dk) + &sd1;
-        let s2 = dot(&r.ws, v.right_dk) + &sd2;
         [d1l - &(s1 * &three_k), d2l - &(s2 * &three_k)]
     });
     Evaluation::from_rule(
@@ -826,7 +863,7 @@ fn combine<T: Real, const N: usize>(
         dks,
         [BOUND_EPS, DK_BOUND_EPS],
         Route::FixedRule,
-        rule.sizes.nodes(),
+        work,
     )
 }
 
@@ -931,47 +968,49 @@ fn one_shot<T: Real, const N: usize>(
     axes: &AxisRatio<T>,
     rule: &FastRule<T>,
     dk: bool,
+    sinh: bool,
 ) -> Result<Evaluation<T>> {
     check_axes(axes)?;
     let p = rule.prec;
     let sc = SpeedConsts::new(speed);
     let kc = KConsts::new(&sc, axes);
-    let (nl, nr) = (rule.left.len(), rule.right.len());
-    let mut b = Buf::<T, N>::zeros(rule.sizes.taylor, p);
-    taylor_b(&sc, rule, &mut b);
+    let nl = rule.left.len();
     let mut left = Buf::<T, N>::zeros(nl, p);
     let mut left_dk = Buf::<T, N>::zeros(if dk { nl } else { 0 }, p);
+    left_values(&rule.left, &sc, &kc, &mut left, &mut left_dk);
+    let lp = left_parts(&rule.left, &sc, &kc, &left, &left_dk, dk);
+    if let Some(j) = sinh_octave(rule, &axes.k).filter(|_| sinh) {
+        let rs = RightSinh::new(&sc, p, j)?;
+        return combine(lp, rs.parts(&kc, dk), &kc, dk, nl + rs.len());
+    }
+    let r = rule.right_half()?;
+    let nr = r.len();
+    let mut b = Buf::<T, N>::zeros(rule.sizes.taylor, p);
+    taylor_b(&sc, rule, &mut b);
     let mut right = Buf::<T, N>::zeros(nr, p);
     let mut right_dk = Buf::<T, N>::zeros(if dk { nr } else { 0 }, p);
-    left_values(&rule.left, &sc, &kc, &mut left, &mut left_dk);
-    taylor_poly(&b, &rule.right.s, &mut right);
-    right_values(&rule.right, &sc, &kc, &mut right, &mut right_dk);
-    let v = NodeValues {
-        left: &left,
-        left_dk: &left_dk,
-        right: &right,
-        right_dk: &right_dk,
-    };
-    combine::<T, N>(rule, &sc, &kc, &b, &v, dk)
+    taylor_poly(&b, &r.s, &mut right);
+    right_values(r, &sc, &kc, &mut right, &mut right_dk);
+    let rp = taylor_right_parts::<T, N>(rule, r, &kc, &b, &right, &right_dk, dk);
+    combine(lp, rp, &kc, dk, rule.sizes.nodes())
 }
 
 /// [`one_shot`] with inline buffers sized for the rule: 24 values at `f64`, 48 at
-/// double-double (heap buffers beyond, and for MPFR).
+/// double-double (heap buffers beyond, and for MPFR). `sinh`: the right half may take the
+/// sinh-mapped panels ([`sinh_octave`]; not for a rule of explicit sizes).
 fn run<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
     rule: &FastRule<T>,
     dk: bool,
+    sinh: bool,
 ) -> Result<Evaluation<T>> {
-    let n = rule
-        .left
-        .len()
-        .max(rule.right.len())
-        .max(3 * rule.sizes.taylor + 1);
+    let z = rule.sizes;
+    let n = z.left.max(z.right).max(3 * z.taylor + 1);
     if n <= 32 {
-        one_shot::<T, 32>(speed, axes, rule, dk)
+        one_shot::<T, 32>(speed, axes, rule, dk, sinh)
     } else {
-        one_shot::<T, 48>(speed, axes, rule, dk)
+        one_shot::<T, 48>(speed, axes, rule, dk, sinh)
     }
 }
 
@@ -982,11 +1021,11 @@ fn run<T: Real>(
 /// error of I1 and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate` (at
 /// `f64` 3.6e-15; measured ≤ 2.8ε). Work: [`RuleSizes::nodes`] evaluations of G (32 at `f64`,
 /// about 0.23 µs; 70 at double-double), no allocation at `f64` and double-double once the rule
-/// is built. The method reported is
-/// [`Method::Subtracted`] (a fixed-rule form of the singularity-subtracted quadrature).
+/// is built; above double-double the right half's sinh-mapped panels where they are cheaper
+/// (module docs). The route reported is [`Route::FixedRule`].
 pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
     let rule = FastRule::<T>::get(axes.k.prec())?;
-    run(speed, axes, &rule, false)
+    run(speed, axes, &rule, false, true)
 }
 
 /// I1, I2 (as [`integrals`]) and dI1/dk, dI2/dk, differentiated under the integral sign on the
@@ -995,7 +1034,7 @@ pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evalu
 /// (near k = 1, M_R = 0), ≤ 3ε at MPFR; tested ≤ 128ε. Cost: about 15 % more than [`integrals`].
 pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
     let rule = FastRule::<T>::get(axes.k.prec())?;
-    run(speed, axes, &rule, true)
+    run(speed, axes, &rule, true, true)
 }
 
 /// As [`integrals_with_dk`] with an explicit rule (from [`FastRule::build`]): for convergence
@@ -1006,7 +1045,7 @@ pub fn integrals_with_rule<T: Real>(
     axes: &AxisRatio<T>,
     rule: &FastRule<T>,
 ) -> Result<Evaluation<T>> {
-    run(speed, axes, rule, true)
+    run(speed, axes, rule, true, false)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1022,13 +1061,48 @@ pub fn integrals_with_rule<T: Real>(
 pub struct FastSetup<T: Real + 'static> {
     rule: RuleRef<T>,
     sc: SpeedConsts<T>,
-    b: Vec<T>,
     /// Left: L/Q' with L = (2/m1) D' √(p − γc) (so that a(s) = (L/Q') u^{−3/2}), 1/(s + ε²).
-    left_lq: Vec<T>,
-    left_ih: Vec<T>,
-    /// Right: r = b(σ) − Σ_{j<J} b_j σ^j.
-    right_r: Vec<T>,
+    left_lq: Buf<T, SETUP_INLINE>,
+    left_ih: Buf<T, SETUP_INLINE>,
+    /// The right half by the Taylor subtraction (built with the set-up at `f64` and
+    /// double-double, on first use above).
+    taylor: OnceLock<Result<TaylorRight<T>>>,
+    /// The right half on sinh-mapped panels, per octave of k (above double-double; empty below).
+    sinh: Vec<OnceLock<Result<RightSinh<T>>>>,
 }
+
+/// The k-independent part of the right half by the Taylor subtraction: the Taylor coefficients
+/// b_j of b and the remainders r = b(σ) − Σ_{j<J} b_j σ^j at the nodes.
+#[derive(Debug)]
+struct TaylorRight<T> {
+    b: Buf<T, TAYLOR_INLINE>,
+    r: Buf<T, RIGHT_INLINE>,
+}
+
+impl<T: Real> TaylorRight<T> {
+    fn new(rule: &FastRule<T>, sc: &SpeedConsts<T>) -> Result<Self> {
+        let p = rule.prec;
+        let one = T::one(p);
+        let mut b = Buf::zeros(rule.sizes.taylor, p);
+        taylor_b(sc, rule, &mut b);
+        let h = rule.right_half()?;
+        let mut r = Buf::zeros(h.len(), p);
+        taylor_poly(&b, &h.s, &mut r);
+        for ((sg, pp, two_p, four_p), ri) in h.nodes().zip(r.iter_mut()) {
+            let (f1, dd, e) = sc.right_node(sg, pp, two_p, four_p, &one);
+            let bi = sc.two_over_m1.clone() * dd * f1.sqrt_div(&e);
+            *ri = bi - &*ri;
+        }
+        Ok(TaylorRight { b, r })
+    }
+}
+
+/// Values a [`FastSetup`] holds inline per table at `f64` and double-double, sized for the
+/// default rules there ([`RuleSizes::for_bits`]: at most 44 left nodes, 26 right nodes and 14
+/// Taylor terms), so that a set-up per solve allocates nothing and moves little.
+const SETUP_INLINE: usize = 44;
+const RIGHT_INLINE: usize = 26;
+const TAYLOR_INLINE: usize = 14;
 
 impl<T: Real> std::fmt::Debug for RuleRef<T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -1037,38 +1111,38 @@ impl<T: Real> std::fmt::Debug for RuleRef<T> {
 }
 
 impl<T: Real> FastSetup<T> {
-    /// Precomputes the k-independent part for `speed` (and its material) with the default rule of the
-    /// working precision (cost about that of one [`integrals`] call).
+    /// Precomputes the k-independent part for `speed` (and its material) with the default rule
+    /// of the working precision (cost about that of one [`integrals`] call). Above
+    /// double-double the right half is laid out on first use for each octave of k
+    /// ([`sinh_octave`]).
     pub fn new(speed: &Speed<T>) -> Result<Self> {
         let p = speed.mr().prec();
         let rule = FastRule::<T>::get(p)?;
         let sc = SpeedConsts::new(speed);
-        let mut b = vec![T::zero(p); rule.sizes.taylor];
-        taylor_b(&sc, &rule, &mut b);
-        let one = T::one(p);
         let l = &rule.left;
         let n = l.len();
-        let (mut left_lq, mut left_ih) = (Vec::with_capacity(n), Vec::with_capacity(n));
-        for (s, pp, two_p, four_p) in l.nodes() {
+        let (mut left_lq, mut left_ih) = (Buf::zeros(n, p), Buf::zeros(n, p));
+        let left_out = left_lq.iter_mut().zip(left_ih.iter_mut());
+        for ((s, pp, two_p, four_p), (lq, ih)) in l.nodes().zip(left_out) {
             let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
-            left_lq.push(sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq));
-            left_ih.push((s.clone() + &sc.eps2).recip());
+            *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
+            *ih = (s.clone() + &sc.eps2).recip();
         }
-        let r = &rule.right;
-        let mut right_r = vec![T::zero(p); r.len()];
-        taylor_poly(&b, &r.s, &mut right_r);
-        for ((sg, pp, two_p, four_p), ri) in r.nodes().zip(right_r.iter_mut()) {
-            let (f1, dd, e) = sc.right_node(sg, pp, two_p, four_p, &one);
-            let bi = sc.two_over_m1.clone() * dd * f1.sqrt_div(&e);
-            *ri = bi - &*ri;
-        }
+        let (taylor, sinh) = if T::bits(p) <= 106 {
+            (OnceLock::from(TaylorRight::new(&rule, &sc)), Vec::new())
+        } else {
+            (
+                OnceLock::new(),
+                (0..OCTAVES).map(|_| OnceLock::new()).collect(),
+            )
+        };
         Ok(FastSetup {
             rule,
             sc,
-            b,
             left_lq,
             left_ih,
-            right_r,
+            taylor,
+            sinh,
         })
     }
 
@@ -1083,11 +1157,8 @@ impl<T: Real> FastSetup<T> {
     }
 
     fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-        let n = self
-            .left_lq
-            .len()
-            .max(self.right_r.len())
-            .max(3 * self.b.len() + 1);
+        let z = self.rule.sizes;
+        let n = z.left.max(z.right).max(3 * z.taylor + 1);
         if n <= 32 {
             self.eval::<32>(axes, dk)
         } else {
@@ -1101,11 +1172,9 @@ impl<T: Real> FastSetup<T> {
         let p = rule.prec;
         let kc = KConsts::new(&self.sc, axes);
         let one = T::one(p);
-        let (nl, nr) = (rule.left.len(), rule.right.len());
+        let nl = rule.left.len();
         let mut left = Buf::<T, N>::zeros(nl, p);
         let mut left_dk = Buf::<T, N>::zeros(if dk { nl } else { 0 }, p);
-        let mut right = Buf::<T, N>::zeros(nr, p);
-        let mut right_dk = Buf::<T, N>::zeros(if dk { nr } else { 0 }, p);
         let ls = &rule.left.s[..nl];
         let lnodes = ls.iter().zip(&self.left_lq[..nl]).zip(&self.left_ih[..nl]);
         if dk {
@@ -1125,7 +1194,24 @@ impl<T: Real> FastSetup<T> {
                 *r = (a - &kc.a0) * ih;
             }
         }
-        let rnodes = rule.right.s[..nr].iter().zip(&self.right_r[..nr]);
+        let lp = left_parts(&rule.left, &self.sc, &kc, &left, &left_dk, dk);
+        if let Some(j) = sinh_octave(rule, &axes.k) {
+            let rs = self.sinh[j]
+                .get_or_init(|| RightSinh::new(&self.sc, p, j))
+                .as_ref()
+                .map_err(Clone::clone)?;
+            return combine(lp, rs.parts(&kc, dk), &kc, dk, nl + rs.len());
+        }
+        let t = self
+            .taylor
+            .get_or_init(|| TaylorRight::new(rule, &self.sc))
+            .as_ref()
+            .map_err(Clone::clone)?;
+        let h = rule.right_half()?;
+        let nr = h.len();
+        let mut right = Buf::<T, N>::zeros(nr, p);
+        let mut right_dk = Buf::<T, N>::zeros(if dk { nr } else { 0 }, p);
+        let rnodes = h.s[..nr].iter().zip(&t.r[..nr]);
         if dk {
             for ((sg, rr), (o, od)) in rnodes.zip(right.iter_mut().zip(right_dk.iter_mut())) {
                 // W3 = hq^{−3/2}, W3/hq = hq^{−5/2}.
@@ -1138,13 +1224,91 @@ impl<T: Real> FastSetup<T> {
                 *o = rr.clone() * (sg.clone() + &kc.k2).pow_m3_2();
             }
         }
-        let v = NodeValues {
-            left: &left,
-            left_dk: &left_dk,
-            right: &right,
-            right_dk: &right_dk,
-        };
-        combine::<T, N>(rule, &self.sc, &kc, &self.b, &v, dk)
+        let rp = taylor_right_parts::<T, N>(rule, h, &kc, &t.b, &right, &right_dk, dk);
+        combine(lp, rp, &kc, dk, rule.sizes.nodes())
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The right half on sinh-mapped panels (above double-double)
+
+/// Octaves of k on the route's domain: k ∈ (2^(−j−1), 2^−j], j = 0 … 40.
+const OCTAVES: usize = 41;
+
+/// The octave j of 2^−40 ≤ k ≤ 1.
+fn octave<T: Real>(k: &T) -> usize {
+    ((-k.to_f64().log2()).floor().max(0.0) as usize).min(OCTAVES - 1)
+}
+
+/// The largest scale a of v = a sinh x for the octave j: 4/5 of its smallest k, so that the
+/// branch points ±ik of (σ + k²)^{−3/2} lie on or beyond the strip |Im x| < π/2.
+fn octave_scale(j: usize) -> f64 {
+    0.8 * 0.5f64.powi(j as i32 + 1)
+}
+
+/// What a node of the right half costs besides the Taylor polynomial's J products (G's cleared
+/// form and the kernel power), in products: the weight of J in [`sinh_octave`]'s comparison.
+const NODE_COST: usize = 30;
+
+/// The octave of k when the rule's right half takes the sinh-mapped panels ([`RightSinh`]):
+/// above double-double, when their nodes cost less than the Taylor subtraction's
+/// n_r (1 + J/[`NODE_COST`]) (the J products of the polynomial at every node grow like bits²).
+/// At `f64` and double-double, never.
+fn sinh_octave<T: Real>(rule: &FastRule<T>, k: &T) -> Option<usize> {
+    let bits = T::bits(rule.prec);
+    if bits <= 106 {
+        return None;
+    }
+    let j = octave(k);
+    let z = rule.sizes;
+    let n = graded::sinh_node_count(bits, octave_scale(j));
+    (n * NODE_COST < z.right * (NODE_COST + z.taylor)).then_some(j)
+}
+
+/// The right half on sinh-mapped panels: v = a sinh x over x ∈ [0, C ln 2] with a ≤ (4/5)·k for
+/// every k of one octave, the panels of [`crate::routes::graded`] (lengths ℓ ln 2, node counts
+/// from the Bernstein ellipse that reaches the strip |Im x| < π/2, where the branch points ±ik of
+/// (σ + k²)^{−3/2} and every singularity of b(σ), at |v| ≥ 1 on or near the imaginary axis,
+/// lie). No subtraction: the integrands b(σ)(σ + k²)^{−3/2} dv/dx are positive and analytic in
+/// the strip. Kept per k-independent part: σ, f = ω b(σ) (ω the weight times dv/dx) and σf;
+/// a k costs one square root and one division a node ([`graded`]'s power sums).
+#[derive(Debug)]
+struct RightSinh<T> {
+    s: Vec<T>,
+    f: Vec<T>,
+    sf: Vec<T>,
+}
+
+impl<T: Real> RightSinh<T> {
+    fn new(sc: &SpeedConsts<T>, p: T::Prec, j: usize) -> Result<Self> {
+        graded::with_sinh_layout(p, octave_scale(j), |layout| {
+            let n = layout.nodes()?;
+            let mut s = vec![T::zero(p); n];
+            let mut f = vec![T::zero(p); n];
+            // b(σ) = (2/m1) √f1 D′/E; the factor 2/m1 goes into the weights.
+            layout.fill(&sc.two_over_m1, &mut s, &mut f)?;
+            let one = T::one(p);
+            for (sg, fi) in s.iter().zip(f.iter_mut()) {
+                let pp = one.clone() + sg;
+                let (two_p, four_p) = (pp.clone().mul_i64(2), pp.clone().mul_i64(4));
+                let (f1, dd, e) = sc.right_node(sg, &pp, &two_p, &four_p, &one);
+                *fi = fi.clone() * dd * f1.sqrt_div(&e);
+            }
+            let sf = s.iter().zip(&f).map(|(a, b)| a.clone() * b).collect();
+            Ok(RightSinh { s, f, sf })
+        })
+    }
+
+    fn len(&self) -> usize {
+        self.s.len()
+    }
+
+    /// I1_R = Σ f (σ + k²)^{−3/2}, I2_R = Σ σf (σ + k²)^{−3/2} and, with `dk`, S1, S2 the same
+    /// with (σ + k²)^{−5/2} (dI_R/dk = −3k S).
+    fn parts(&self, kc: &KConsts<T>, dk: bool) -> [T; 4] {
+        let p = kc.k.prec();
+        let factors = [&self.f[..], &self.sf[..], &self.f[..], &self.sf[..]];
+        graded::power_sums(&self.s, factors, dk, p, |sg| sg.clone() + &kc.k2)
     }
 }
 

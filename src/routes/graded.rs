@@ -45,9 +45,10 @@
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
 //! checked against the adaptive route at 400 bits in `tests/graded.rs` over ν ∈ {−0.9, 0, 0.25,
 //! 0.5}, M_R ∈ {0, 0.5, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {1, 1.5, 3, 10, 10³, 10⁶}, with the
-//! derivatives: worst 4.1ε at `f64`, 2.9ε at double-double, 2.7ε and 3.2ε at MPFR 128 and 256
-//! bits (derivatives, ≤ 128 bits: 2.9ε, 2.8ε, 2.5ε); a layout for another k_ref (k at 5/4 of
-//! it, or 16 times below it): 4.1ε, 2.8ε, 3.4ε, 3.4ε. The node counts' margin, measured on
+//! derivatives: worst 4.0ε at `f64`, 2.9ε at double-double, 3.4ε and 3.2ε at MPFR 128 and 256
+//! bits (derivatives, ≤ 128 bits: 3.3ε, 2.4ε, 3.1ε); a layout for another k_ref (k at 5/4 of
+//! it, or 16 times below it): 3.9ε, 2.4ε, 3.6ε, 4.1ε (`cargo test --release --test graded --
+//! --nocapture`). The node counts' margin, measured on
 //! this grid with every panel of one length ℓ = 1…8 in turn: with 2^{−bits−8} (the counts of
 //! [`left_nodes`]) the worst error is 4.9ε, dI/dk 5.9ε; with 2^{−bits−6} dI/dk reaches 17ε,
 //! with 2^{−bits−4} 32ε, with 2^{−bits} 370ε.
@@ -55,9 +56,9 @@
 use super::fast::SpeedConsts;
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
-use crate::numerics::quadrature::{cached, GaussLegendre};
+use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
 use crate::physics::Speed;
-use crate::scalar::{short, Real};
+use crate::scalar::{short, Field, Real};
 use std::sync::{Arc, OnceLock};
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
@@ -194,43 +195,56 @@ struct LeftRule<T: Real> {
 /// The fixed tables of the graded route at one precision, cached per precision: a
 /// [`LeftRule`] for each panel length 1…[`max_units`] (units of ln 2), each built the first time
 /// a plan uses it (a Gauss–Legendre rule costs O(n²) operations to build), the plans, and, for
-/// the right half's single panel [0, 1] in v, σ = v² and the weights.
+/// the right half's single panel [0, 1] in v, σ = v² and the weights (also built on first use:
+/// the fixed rule's right half above double-double uses the panel tables alone).
 struct Rules<T: Real> {
     prec: T::Prec,
     left: Vec<OnceLock<LeftRule<T>>>,
     /// `plans[c]`: the [`left_plan`] for c units, c < [`PLANNED`] − [`MAX_UNITS`].
     plans: Vec<Vec<usize>>,
-    right_s: Vec<T>,
-    right_w: Vec<T>,
+    /// The right half's σ and weights, built on first use.
+    right: OnceLock<(Vec<T>, Vec<T>)>,
 }
 
+fixed_slot!(rules_slot, Rules);
+
 impl<T: Real> Rules<T> {
+    /// The tables of precision `p` from the shared rule cache (for `f64` and double-double
+    /// through their static slots, without the cache's lock).
     fn get(p: T::Prec) -> Result<Arc<Self>> {
-        let bits = T::bits(p);
-        cached(
-            0,
-            p,
-            |r: &Self| r.prec,
-            || {
-                let one = T::one(p);
-                let right = GaussLegendre::<T>::get(panel_nodes(bits), p)?;
-                let (mut right_s, mut right_w) = (Vec::new(), Vec::new());
-                for_panel_nodes(&right, &T::zero(p), &one, |v, w| {
-                    right_s.push(v.square());
-                    right_w.push(w.clone());
-                });
-                let table = plan_table(&length_costs(bits), PLANNED);
-                Ok(Rules {
-                    prec: p,
-                    left: (0..MAX_UNITS).map(|_| OnceLock::new()).collect(),
-                    plans: (0..PLANNED - MAX_UNITS)
-                        .map(|c| pick_plan(&table, c))
-                        .collect(),
-                    right_s,
-                    right_w,
-                })
-            },
-        )
+        check_rule_bits(T::bits(p))?;
+        let prec_of = |r: &Self| r.prec;
+        match rules_slot::<T>() {
+            Some(slot) => slotted(slot, 0, p, prec_of, || Self::build(p)).cloned(),
+            None => cached(0, p, prec_of, || Self::build(p)),
+        }
+    }
+
+    fn build(p: T::Prec) -> Result<Self> {
+        let table = plan_table(&length_costs(T::bits(p)), PLANNED);
+        Ok(Rules {
+            prec: p,
+            left: (0..MAX_UNITS).map(|_| OnceLock::new()).collect(),
+            plans: (0..PLANNED - MAX_UNITS)
+                .map(|c| pick_plan(&table, c))
+                .collect(),
+            right: OnceLock::new(),
+        })
+    }
+
+    /// The right half's single panel [0, 1] in v: σ = v² and the weights ([`panel_nodes`]).
+    fn right(&self) -> Result<&(Vec<T>, Vec<T>)> {
+        if let Some(r) = self.right.get() {
+            return Ok(r);
+        }
+        let p = self.prec;
+        let gl = GaussLegendre::<T>::get(panel_nodes(T::bits(p)), p)?;
+        let (mut right_s, mut right_w) = (Vec::new(), Vec::new());
+        for_panel_nodes(&gl, &T::zero(p), &T::one(p), |v, w| {
+            right_s.push(v.square());
+            right_w.push(w.clone());
+        });
+        Ok(self.right.get_or_init(|| (right_s, right_w)))
     }
 
     /// The table of a left panel of length `l`·ln 2 (1 ≤ l ≤ [`max_units`]), built on first use.
@@ -241,16 +255,29 @@ impl<T: Real> Rules<T> {
         }
         let p = self.prec;
         let gl = GaussLegendre::<T>::get(left_nodes(T::bits(p), l), p)?;
-        let one = T::one(p);
-        // (1 + t)·ℓ ln 2/2 and the weight's factor ℓ ln 2/2.
+        // The weight's factor ℓ ln 2/2.
         let half = T::ln2(p) * &T::from_ratio(l as i64, 2, p);
         let (mut ep, mut em, mut lw) = (Vec::new(), Vec::new(), Vec::new());
-        for_panel_nodes(&gl, &-one.clone(), &one, |t, w| {
-            let x = (one.clone() + &t) * &half;
-            ep.push(x.clone().exp());
-            em.push(x.neg().exp());
-            lw.push(w.clone() * &half);
-        });
+        // The nodes come in pairs x± = (1 ± t)·ℓ ln 2/2 with x₊ + x₋ = ℓ ln 2, so that one
+        // exponential and one reciprocal serve both: e^{x₋} = 2^ℓ e^{−x₊}, e^{−x₋} = 2^{−ℓ} e^{x₊}
+        // (exact scalings). Both are formed at the guard precision of `Real::Wide` and rounded
+        // once. The middle node of an odd rule is its own pair.
+        let pw = T::wide_prec(p);
+        let half_w = T::Wide::ln2(pw) * &T::Wide::from_ratio(l as i64, 2, pw);
+        let l2 = l as i32;
+        for (t, w) in gl.nodes().iter().zip(gl.weights()) {
+            let wh = w.clone() * &half;
+            let e = ((T::Wide::one(pw) + &t.to_wide(pw)) * &half_w).exp();
+            let r = e.clone().recip();
+            ep.push(T::from_wide(&e, p));
+            em.push(T::from_wide(&r, p));
+            lw.push(wh.clone());
+            if !t.is_zero() {
+                ep.push(T::from_wide(&r.mul_pow2(l2), p));
+                em.push(T::from_wide(&e.mul_pow2(-l2), p));
+                lw.push(wh);
+            }
+        }
         // Another thread may have built it meanwhile: the first one stored wins.
         Ok(cell.get_or_init(|| LeftRule { ep, em, lw }))
     }
@@ -268,6 +295,95 @@ fn for_panel_nodes<T: Real>(gl: &GaussLegendre<T>, x0: &T, x1: &T, mut node: imp
             node(c.clone() - &d, &wr);
         }
     }
+}
+
+/// The panels of w = a sinh x over x ∈ [0, C ln 2] (so that w runs over [0, 1]): the
+/// [`left_plan`] for the C units of ln 2 that a scale of at most `a_max` needs, with
+/// a = 1/sinh(C ln 2). Serves the graded route's left half (w = tan α, k ≥ 1) and the fixed
+/// rule's right half above double-double (v = cot α, k < 1: [`crate::routes::fast`]).
+pub(super) struct SinhLayout<'r, T: Real> {
+    rules: &'r Rules<T>,
+    /// The plan, when C lies beyond the plans kept in [`Rules`].
+    far: Option<Vec<usize>>,
+    units: usize,
+}
+
+/// The units of ln 2 that a scale of at most `a_max` needs: ⌈asinh(1/a_max)/ln 2⌉, at least 1.
+fn units_for(a_max: f64) -> usize {
+    ((1.0 / a_max).asinh() / std::f64::consts::LN_2)
+        .ceil()
+        .max(1.0) as usize
+}
+
+/// The number of nodes of the sinh layout for a scale of at most `a_max` at `bits` bits (from
+/// the plan alone: no table is built).
+pub(super) fn sinh_node_count(bits: u32, a_max: f64) -> usize {
+    left_plan(bits, units_for(a_max))
+        .iter()
+        .map(|&l| left_nodes(bits, l))
+        .sum()
+}
+
+impl<'r, T: Real> SinhLayout<'r, T> {
+    fn new(rules: &'r Rules<T>, a_max: f64) -> Self {
+        let units = units_for(a_max);
+        let far = (units >= rules.plans.len()).then(|| left_plan(T::bits(rules.prec), units));
+        SinhLayout { rules, far, units }
+    }
+
+    fn plan(&self) -> &[usize] {
+        match &self.far {
+            Some(plan) => plan,
+            None => &self.rules.plans[self.units],
+        }
+    }
+
+    /// The number of nodes.
+    pub(super) fn nodes(&self) -> Result<usize> {
+        self.plan()
+            .iter()
+            .map(|&l| self.rules.left_rule(l).map(|r| r.ep.len()))
+            .sum()
+    }
+
+    /// Writes w² into `s` and the weights (dw/dx)·(panel weight)·`scale` into `wt` (both of
+    /// length [`SinhLayout::nodes`]), panel by panel from x = 0.
+    pub(super) fn fill(&self, scale: &T, s: &mut [T], wt: &mut [T]) -> Result<()> {
+        let plan = self.plan();
+        let total: usize = plan.iter().sum();
+        // a/2 = 1/(2^C − 2^−C), C = the panels' total length in units of ln 2.
+        let two_c = T::one(self.rules.prec).mul_pow2(total as i32);
+        let half_a = (two_c.clone() - two_c.recip()).recip();
+        let half_a_g = half_a.clone() * scale;
+        let (mut start, mut i0) = (0i32, 0usize);
+        for &l in plan {
+            // e^{±x} on a panel from x0 = c ln 2: the cached 2^{±(1+t)ℓ/2} times 2^{±c},
+            // exactly.
+            let rule = self.rules.left_rule(l)?;
+            let range = i0..i0 + rule.ep.len();
+            let nodes = s[range.clone()].iter_mut().zip(&mut wt[range]);
+            for ((s, f), ((ep, em), w)) in nodes.zip(rule.ep.iter().zip(&rule.em).zip(&rule.lw)) {
+                let ex = ep.clone().mul_pow2(start);
+                let emx = em.clone().mul_pow2(-start);
+                *s = ((ex.clone() - &emx) * &half_a).square();
+                *f = (ex + emx) * &half_a_g * w;
+            }
+            start += l as i32;
+            i0 += rule.ep.len();
+        }
+        Ok(())
+    }
+}
+
+/// The sinh layout for a scale of at most `a_max` at precision `p`, with `f(layout)` run on it
+/// (the tables of the precision from the shared cache).
+pub(super) fn with_sinh_layout<T: Real, R>(
+    p: T::Prec,
+    a_max: f64,
+    f: impl FnOnce(&SinhLayout<'_, T>) -> Result<R>,
+) -> Result<R> {
+    let rules = Rules::<T>::get(p)?;
+    f(&SinhLayout::new(&rules, a_max))
 }
 
 fn check_k<T: Real>(k: &T) -> Result<()> {
@@ -321,51 +437,16 @@ impl<T: Real> GradedSetup<T> {
             .recip()
             .min(sc.eps2.to_f64().sqrt())
             .min(sc.d2.to_f64().sqrt());
-        let units = ((1.0 / a_max).asinh() / std::f64::consts::LN_2)
-            .ceil()
-            .max(1.0) as usize;
-        let far;
-        let plan: &[usize] = match rules.plans.get(units) {
-            Some(plan) => plan,
-            None => {
-                far = left_plan(T::bits(p), units);
-                &far
-            }
-        };
-        let total: usize = plan.iter().sum();
-        // a/2 = 1/(2^C − 2^−C), C = the panels' total length in units of ln 2.
-        let two_c = one.clone().mul_pow2(total as i32);
-        let half_a = (two_c.clone() - two_c.recip()).recip();
-        // (a/2)·(2/m1): G's constant factor folded into the weights' scale.
-        let half_a_g = half_a.clone() * &sc.two_over_m1;
-        let nl = plan
-            .iter()
-            .map(|&l| rules.left_rule(l).map(|r| r.ep.len()))
-            .sum::<Result<usize>>()?;
-        // Left: s and the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 at each node, then f in place of
-        // the weight, then s·f and s²·f.
+        let layout = SinhLayout::new(&rules, a_max);
+        let nl = layout.nodes()?;
+        // Left: s and the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 at each node, with G's constant
+        // factor 2/m1 folded in, then f in place of the weight, then s·f and s²·f.
         let mut left = vec![T::zero(p); 4 * nl];
         {
             let (ls, rest) = left.split_at_mut(nl);
             let (lf, rest) = rest.split_at_mut(nl);
             let (lsf, lssf) = rest.split_at_mut(nl);
-            let (mut start, mut i0) = (0i32, 0usize);
-            for &l in plan {
-                // e^{±x} on a panel from x0 = c ln 2: the cached 2^{±(1+t)ℓ/2} times 2^{±c},
-                // exactly.
-                let rule = rules.left_rule(l)?;
-                let range = i0..i0 + rule.ep.len();
-                let nodes = ls[range.clone()].iter_mut().zip(&mut lf[range]);
-                for ((s, f), ((ep, em), w)) in nodes.zip(rule.ep.iter().zip(&rule.em).zip(&rule.lw))
-                {
-                    let ex = ep.clone().mul_pow2(start);
-                    let emx = em.clone().mul_pow2(-start);
-                    *s = ((ex.clone() - &emx) * &half_a).square();
-                    *f = (ex + emx) * &half_a_g * w;
-                }
-                start += l as i32;
-                i0 += rule.ep.len();
-            }
+            layout.fill(&sc.two_over_m1, ls, lf)?;
             node_map(ls, lf, |s, w| {
                 let pp = one.clone() + s;
                 let (e1, dd, qq) =
@@ -379,11 +460,12 @@ impl<T: Real> GradedSetup<T> {
             node_map(ls, lssf, |s, f| s.clone() * f);
         }
         // Right: σ, f, σ·f.
-        let nr = rules.right_s.len();
+        let (right_s, right_w) = rules.right()?;
+        let nr = right_s.len();
         let mut right = Vec::with_capacity(3 * nr);
-        right.extend(rules.right_s.iter().cloned());
-        right.extend(rules.right_w.iter().cloned());
-        right.extend(rules.right_s.iter().cloned());
+        right.extend(right_s.iter().cloned());
+        right.extend(right_w.iter().cloned());
+        right.extend(right_s.iter().cloned());
         {
             let (rs, rest) = right.split_at_mut(nr);
             let (rf, rsf) = rest.split_at_mut(nr);
@@ -476,7 +558,7 @@ const CHUNK: usize = 32;
 /// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node),
 /// summed in chunks of [`CHUNK`] nodes (each chunk's sum added to the total).
 #[inline(always)]
-fn power_sums<T: Real>(
+pub(super) fn power_sums<T: Real>(
     nodes: &[T],
     factors: [&[T]; 4],
     dk: bool,

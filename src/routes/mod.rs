@@ -226,6 +226,7 @@ impl<T: Real> Evaluation<T> {
     /// The result of a fixed rule ([`fast`] or [`graded`]): I1 and I2 checked finite and
     /// positive (else [`Error::NoConvergence`] naming `what`), the a-priori bounds
     /// `bounds[0]`·ε on I1, I2 and `bounds[1]`·ε on the k-derivatives, the route and the nodes.
+    #[inline]
     pub(crate) fn from_rule(
         what: &'static str,
         [i1, i2]: [T; 2],
@@ -278,25 +279,64 @@ impl<T: Real> Evaluation<T> {
     /// The public result: every value finite and every estimate finite (else a typed error
     /// naming the route), estimates as [`RelError`].
     pub fn publish(self) -> Result<Integrals<T>> {
-        let what = self.route.label();
+        let dk_finite = self
+            .dk
+            .as_ref()
+            .is_none_or(|[a, b]| a.is_finite() && b.is_finite());
+        let finite = self.i1.is_finite()
+            && self.i2.is_finite()
+            && dk_finite
+            && self.j0.as_ref().is_none_or(|j| j.is_finite())
+            && self.error_estimate.is_finite()
+            && self.extra_error.is_finite();
+        if !finite {
+            return Err(self.not_finite());
+        }
         let precision = Precision::of::<T>(self.i1.prec());
-        let est = |x: T, e: &T| Estimated::new(x, RelError::of(e)).checked(what);
-        let err = self.error_estimate.clone();
-        let extra = self.extra_error.clone();
-        let dk = match self.dk {
-            Some([a, b]) => Some([est(a, &extra)?, est(b, &extra)?]),
-            None => None,
+        let err = RelError::of(&self.error_estimate);
+        let extra = RelError::of(&self.extra_error);
+        let (di1_dk, di2_dk) = match self.dk {
+            Some([a, b]) => (
+                Some(Estimated::new(a, extra)),
+                Some(Estimated::new(b, extra)),
+            ),
+            None => (None, None),
         };
         Ok(Integrals {
-            i1: est(self.i1, &err)?,
-            i2: est(self.i2, &err)?,
-            di1_dk: dk.as_ref().map(|d| d[0].clone()),
-            di2_dk: dk.map(|[_, b]| b),
-            j0: self.j0.map(|j| est(j, &extra)).transpose()?,
+            i1: Estimated::new(self.i1, err),
+            i2: Estimated::new(self.i2, err),
+            di1_dk,
+            di2_dk,
+            j0: self.j0.map(|j| Estimated::new(j, extra)),
             route: self.route,
             precision,
             work: self.work,
         })
+    }
+
+    /// The typed error for a value or estimate that is not finite.
+    #[cold]
+    fn not_finite(&self) -> Error {
+        let what = self.route.label();
+        let mut values = vec![("I1", &self.i1), ("I2", &self.i2)];
+        if let Some([a, b]) = &self.dk {
+            values.extend([("dI1/dk", a), ("dI2/dk", b)]);
+        }
+        if let Some(j) = &self.j0 {
+            values.push(("J0", j));
+        }
+        match values.into_iter().find(|(_, v)| !v.is_finite()) {
+            Some((name, v)) => Error::NoConvergence {
+                what,
+                iterations: self.work,
+                reached: format!("{name} = {}", short(v)),
+            },
+            None => Error::NoConvergence {
+                what,
+                iterations: self.work,
+                reached: "an unbounded error estimate".into(),
+            },
+        }
     }
 }
 

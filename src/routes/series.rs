@@ -174,15 +174,17 @@ impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
     ) -> Result<Option<Evaluation<T>>> {
         let n = self.n_max;
         let one = W::one(pw);
-        let mat = self.speed.material();
-        let nu = up(mat.nu());
+        // The material at the guarded precision: its Rayleigh root m1 and H = πG(1), the limit
+        // of h_n.
+        let mat = self.speed.material().at::<W>(pw)?;
+        let nu = mat.nu().clone();
         let mr = up(self.speed.mr());
         let k = up(&self.axis.k);
         let mc = k.square();
-        let m1 = polish_m1(&nu, up(mat.m1()));
+        let m1 = mat.m1().clone();
         let mr2 = mr.square();
         let one_minus_mr2 = up(self.speed.gap()) * (one.clone() + &mr);
-        let h_lim = green_limit(&nu, &m1);
+        let h_lim = mat.pi_g_rayleigh().clone();
         let tab = table_at(&mc, n + 1, self.method)?;
         // Binomial terms below ε·2⁻³⁰ (of the guarded precision) cannot change h_n ≥ H ≈ 0.2.
         let tiny = W::epsilon(pw).mul_pow2(-30);
@@ -234,39 +236,4 @@ impl<T: Real> GuardedJob<T> for SeriesJob<'_, T> {
             s1.terms.max(s2.terms),
         )))
     }
-}
-
-/// The Rayleigh root m1 at the guarded precision: two Newton steps on the cubic
-/// (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8 from the working-precision root (within 4 ε of it, so
-/// each step squares the relative error; m1 is a simple root, well separated from m2, m3 > 1).
-fn polish_m1<W: Real>(nu: &W, m1: W) -> W {
-    let p = nu.prec();
-    let a = W::one(p) - nu;
-    let (c2, c1) = (a.clone().mul_i64(-8), (W::from_i64(2, p) - nu).mul_i64(8));
-    let mut x = m1;
-    for _ in 0..2 {
-        // P and P' by Horner.
-        let pv = ((a.clone() * &x + &c2) * &x + &c1) * &x - W::from_i64(8, p);
-        let dv = (a.clone().mul_i64(3) * &x + c2.clone().mul_i64(2)) * &x + &c1;
-        if dv.is_zero() {
-            break;
-        }
-        x -= pv / dv;
-    }
-    x
-}
-
-/// H = lim h_n = πG(1) = √(1 − γm1)·D(m1) / (m1 (m1 − m2)(m1 − m3)) with
-/// D = (2 − m1)² + 4√((1 − γm1)(1 − m1)) and (m1 − m2)(m1 − m3) = 2m1² − 8m1 + 8/((1 − ν)m1)
-/// (Vieta). Positive; all terms well conditioned.
-fn green_limit<W: Real>(nu: &W, m1: &W) -> W {
-    let p = nu.prec();
-    let one = W::one(p);
-    let omn = one.clone() - nu;
-    let gamma = (one.clone() - nu.clone().mul_i64(2)) / omn.clone().mul_i64(2);
-    let a = one.clone() - gamma * m1;
-    let b = one - m1;
-    let d = (W::from_i64(2, p) - m1).square() + (a.clone() * &b).sqrt().mul_i64(4);
-    let quad = (m1.square().mul_i64(2) - m1.clone().mul_i64(8)) + W::from_i64(8, p) / (omn * m1);
-    a.sqrt() * d / (m1.clone() * quad)
 }

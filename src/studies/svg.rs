@@ -129,28 +129,16 @@ impl Chart {
 
     /// Renders the chart as an SVG document.
     pub fn to_svg(&self) -> String {
-        let (w, h) = (self.width, self.height);
-        let (ml, mr, mt, mb) = (78.0, 190.0, 40.0, 58.0);
-        let (pw, ph) = (w - ml - mr, h - mt - mb);
+        let f = Frame::new(self.width, self.height, 190.0);
         let xr = self.x_range.unwrap_or_else(|| self.data_range(true));
         let yr = self.y_range.unwrap_or_else(|| self.data_range(false));
         let xa = Axis::new(xr, self.x_log);
         let ya = Axis::new(yr, self.y_log);
-        let px = |x: f64| ml + pw * xa.frac(x);
-        let py = |y: f64| mt + ph * (1.0 - ya.frac(y));
-        let mut o = String::new();
-        let _ = write!(
-            o,
-            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="Helvetica, Arial, sans-serif" font-size="12">"#
-        );
-        let _ = write!(o, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
-        let _ = write!(
-            o,
-            r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
-            ml + pw / 2.0,
-            esc(&self.title)
-        );
+        let px = |x: f64| f.ml + f.pw * xa.frac(x);
+        let py = |y: f64| f.mt + f.ph * (1.0 - ya.frac(y));
+        let mut o = f.open(&self.title);
         // Grid and ticks.
+        let (ml, mt, pw, ph) = (f.ml, f.mt, f.pw, f.ph);
         for (v, label) in xa.ticks() {
             let x = px(v);
             let _ = write!(
@@ -180,36 +168,24 @@ impl Chart {
                 esc(&label)
             );
         }
+        f.border(&mut o);
+        f.axis_labels(&mut o, &self.x_label, &self.y_label);
+        self.curves(&mut o, &f, &px, &py);
+        self.legend(&mut o, &f);
+        o.push_str("</svg>\n");
+        o
+    }
+
+    /// The series, clipped to the plot area.
+    fn curves(&self, o: &mut String, f: &Frame, px: &dyn Fn(f64) -> f64, py: &dyn Fn(f64) -> f64) {
         let _ = write!(
             o,
-            r#"<rect x="{ml}" y="{mt}" width="{pw}" height="{ph}" fill="none" stroke="black"/>"#
-        );
-        let _ = write!(
-            o,
-            r#"<text x="{:.1}" y="{:.1}" text-anchor="middle" font-size="13">{}</text>"#,
-            ml + pw / 2.0,
-            h - 14.0,
-            esc(&self.x_label)
-        );
-        let _ = write!(
-            o,
-            r#"<text transform="translate(18,{:.1}) rotate(-90)" text-anchor="middle" font-size="13">{}</text>"#,
-            mt + ph / 2.0,
-            esc(&self.y_label)
-        );
-        // Series, clipped to the plot area.
-        let _ = write!(
-            o,
-            r#"<clipPath id="plot"><rect x="{ml}" y="{mt}" width="{pw}" height="{ph}"/></clipPath><g clip-path="url(#plot)">"#
+            r#"<clipPath id="plot"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath><g clip-path="url(#plot)">"#,
+            f.ml, f.mt, f.pw, f.ph
         );
         for (i, s) in self.series.iter().enumerate() {
             let c = PALETTE[i % PALETTE.len()];
             if s.style != Style::Markers {
-                let dash = if s.style == Style::Dashed {
-                    r#" stroke-dasharray="6,4""#
-                } else {
-                    ""
-                };
                 let mut path = String::new();
                 let mut pen_up = true;
                 for &(x, y) in &s.points {
@@ -228,7 +204,8 @@ impl Chart {
                 }
                 let _ = write!(
                     o,
-                    r#"<path d="{path}" fill="none" stroke="{c}" stroke-width="1.8"{dash}/>"#
+                    r#"<path d="{path}" fill="none" stroke="{c}" stroke-width="1.8"{}/>"#,
+                    dash(s.style)
                 );
             }
             if matches!(s.style, Style::Markers | Style::LineMarkers) {
@@ -240,21 +217,20 @@ impl Chart {
             }
         }
         o.push_str("</g>");
-        // Legend.
-        let lx = ml + pw + 14.0;
+    }
+
+    /// The legend, right of the plot area.
+    fn legend(&self, o: &mut String, f: &Frame) {
+        let lx = f.ml + f.pw + 14.0;
         for (i, s) in self.series.iter().enumerate() {
             let c = PALETTE[i % PALETTE.len()];
-            let y = mt + 10.0 + 18.0 * i as f64;
+            let y = f.mt + 10.0 + 18.0 * i as f64;
             if s.style != Style::Markers {
-                let dash = if s.style == Style::Dashed {
-                    r#" stroke-dasharray="6,4""#
-                } else {
-                    ""
-                };
                 let _ = write!(
                     o,
-                    r#"<line x1="{lx}" y1="{y}" x2="{}" y2="{y}" stroke="{c}" stroke-width="1.8"{dash}/>"#,
-                    lx + 22.0
+                    r#"<line x1="{lx}" y1="{y}" x2="{}" y2="{y}" stroke="{c}" stroke-width="1.8"{}/>"#,
+                    lx + 22.0,
+                    dash(s.style)
                 );
             }
             if matches!(s.style, Style::Markers | Style::LineMarkers) {
@@ -268,8 +244,85 @@ impl Chart {
                 esc(&s.label)
             );
         }
-        o.push_str("</svg>\n");
+    }
+}
+
+/// The dash attribute of a series' line.
+fn dash(style: Style) -> &'static str {
+    if style == Style::Dashed {
+        r#" stroke-dasharray="6,4""#
+    } else {
+        ""
+    }
+}
+
+/// A chart's canvas (w × h) and plot area (left and top margins, width and height).
+struct Frame {
+    w: f64,
+    h: f64,
+    ml: f64,
+    mt: f64,
+    pw: f64,
+    ph: f64,
+}
+
+impl Frame {
+    /// The canvas `w` × `h` with the standard left, top and bottom margins and `right` for
+    /// the legend or colour bar.
+    fn new(w: f64, h: f64, right: f64) -> Frame {
+        let (ml, mt, mb) = (78.0, 40.0, 58.0);
+        Frame {
+            w,
+            h,
+            ml,
+            mt,
+            pw: w - ml - right,
+            ph: h - mt - mb,
+        }
+    }
+
+    /// The SVG document's opening, white background and title.
+    fn open(&self, title: &str) -> String {
+        let (w, h) = (self.w, self.h);
+        let mut o = String::new();
+        let _ = write!(
+            o,
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="Helvetica, Arial, sans-serif" font-size="12">"#
+        );
+        let _ = write!(o, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
+        let _ = write!(
+            o,
+            r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
+            self.ml + self.pw / 2.0,
+            esc(title)
+        );
         o
+    }
+
+    /// The plot area's border.
+    fn border(&self, o: &mut String) {
+        let _ = write!(
+            o,
+            r#"<rect x="{}" y="{}" width="{}" height="{}" fill="none" stroke="black"/>"#,
+            self.ml, self.mt, self.pw, self.ph
+        );
+    }
+
+    /// The axis labels below and left of the plot area.
+    fn axis_labels(&self, o: &mut String, x_label: &str, y_label: &str) {
+        let _ = write!(
+            o,
+            r#"<text x="{:.1}" y="{:.1}" text-anchor="middle" font-size="13">{}</text>"#,
+            self.ml + self.pw / 2.0,
+            self.h - 14.0,
+            esc(x_label)
+        );
+        let _ = write!(
+            o,
+            r#"<text transform="translate(18,{:.1}) rotate(-90)" text-anchor="middle" font-size="13">{}</text>"#,
+            self.mt + self.ph / 2.0,
+            esc(y_label)
+        );
     }
 }
 
@@ -301,40 +354,14 @@ pub struct Heatmap {
 impl Heatmap {
     /// Renders the map as an SVG document (760×480 px).
     pub fn to_svg(&self) -> String {
-        let (w, h) = (760.0, 480.0);
-        let (ml, mr, mt, mb) = (78.0, 120.0, 40.0, 58.0);
-        let (pw, ph) = (w - ml - mr, h - mt - mb);
-        let edges = |c: &[f64], log: bool| -> Vec<f64> {
-            let t: Vec<f64> = c.iter().map(|&v| if log { v.log10() } else { v }).collect();
-            let n = t.len();
-            let mut e = Vec::with_capacity(n + 1);
-            if n == 1 {
-                return vec![t[0] - 0.5, t[0] + 0.5];
-            }
-            e.push(t[0] - (t[1] - t[0]) / 2.0);
-            for i in 0..n - 1 {
-                e.push((t[i] + t[i + 1]) / 2.0);
-            }
-            e.push(t[n - 1] + (t[n - 1] - t[n - 2]) / 2.0);
-            e
-        };
-        let ex = edges(&self.xs, self.x_log);
-        let ey = edges(&self.ys, self.y_log);
+        let f = Frame::new(760.0, 480.0, 120.0);
+        let ex = cell_edges(&self.xs, self.x_log);
+        let ey = cell_edges(&self.ys, self.y_log);
         let (x0, x1) = (ex[0], *ex.last().unwrap_or(&1.0));
         let (y0, y1) = (ey[0], *ey.last().unwrap_or(&1.0));
-        let px = |t: f64| ml + pw * (t - x0) / (x1 - x0);
-        let py = |t: f64| mt + ph * (1.0 - (t - y0) / (y1 - y0));
-        let mut o = String::new();
-        let _ = write!(
-            o,
-            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="Helvetica, Arial, sans-serif" font-size="12"><rect width="{w}" height="{h}" fill="white"/>"#
-        );
-        let _ = write!(
-            o,
-            r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
-            ml + pw / 2.0,
-            esc(&self.title)
-        );
+        let px = |t: f64| f.ml + f.pw * (t - x0) / (x1 - x0);
+        let py = |t: f64| f.mt + f.ph * (1.0 - (t - y0) / (y1 - y0));
+        let mut o = f.open(&self.title);
         for (j, row) in self.z.iter().enumerate() {
             for (i, &v) in row.iter().enumerate() {
                 if i + 1 >= ex.len() || j + 1 >= ey.len() {
@@ -357,73 +384,40 @@ impl Heatmap {
                 );
             }
         }
-        let _ = write!(
-            o,
-            r#"<rect x="{ml}" y="{mt}" width="{pw}" height="{ph}" fill="none" stroke="black"/>"#
-        );
-        for (v, label) in Axis::new(
-            if self.x_log {
-                (10f64.powf(x0), 10f64.powf(x1))
-            } else {
-                (x0, x1)
-            },
-            self.x_log,
-        )
-        .ticks()
-        {
-            let t = if self.x_log { v.log10() } else { v };
-            if t < x0.min(x1) - 1e-9 || t > x0.max(x1) + 1e-9 {
-                continue;
-            }
-            let x = px(t);
+        f.border(&mut o);
+        let (ml, mt, ph) = (f.ml, f.mt, f.ph);
+        for t in ticks_within(x0, x1, self.x_log) {
+            let x = px(t.0);
             let _ = write!(
                 o,
                 r#"<line x1="{x:.1}" y1="{:.1}" x2="{x:.1}" y2="{:.1}" stroke="black"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{}</text>"#,
                 mt + ph,
                 mt + ph + 5.0,
                 mt + ph + 18.0,
-                esc(&label)
+                esc(&t.1)
             );
         }
-        for (v, label) in Axis::new(
-            if self.y_log {
-                (10f64.powf(y0), 10f64.powf(y1))
-            } else {
-                (y0, y1)
-            },
-            self.y_log,
-        )
-        .ticks()
-        {
-            let t = if self.y_log { v.log10() } else { v };
-            if t < y0.min(y1) - 1e-9 || t > y0.max(y1) + 1e-9 {
-                continue;
-            }
-            let y = py(t);
+        for t in ticks_within(y0, y1, self.y_log) {
+            let y = py(t.0);
             let _ = write!(
                 o,
                 r#"<line x1="{:.1}" y1="{y:.1}" x2="{ml}" y2="{y:.1}" stroke="black"/><text x="{:.1}" y="{:.1}" text-anchor="end">{}</text>"#,
                 ml - 5.0,
                 ml - 7.0,
                 y + 4.0,
-                esc(&label)
+                esc(&t.1)
             );
         }
-        let _ = write!(
-            o,
-            r#"<text x="{:.1}" y="{:.1}" text-anchor="middle" font-size="13">{}</text>"#,
-            ml + pw / 2.0,
-            h - 14.0,
-            esc(&self.x_label)
-        );
-        let _ = write!(
-            o,
-            r#"<text transform="translate(18,{:.1}) rotate(-90)" text-anchor="middle" font-size="13">{}</text>"#,
-            mt + ph / 2.0,
-            esc(&self.y_label)
-        );
-        // Colour bar.
-        let bx = ml + pw + 24.0;
+        f.axis_labels(&mut o, &self.x_label, &self.y_label);
+        self.colour_bar(&mut o, &f);
+        o.push_str("</svg>\n");
+        o
+    }
+
+    /// The colour bar and its label, right of the map.
+    fn colour_bar(&self, o: &mut String, f: &Frame) {
+        let (mt, ph) = (f.mt, f.ph);
+        let bx = f.ml + f.pw + 24.0;
         let n = 50;
         for k in 0..n {
             let v =
@@ -457,9 +451,39 @@ impl Heatmap {
             mt + ph / 2.0,
             esc(&self.z_label)
         );
-        o.push_str("</svg>\n");
-        o
     }
+}
+
+/// The cell edges of a heat map axis with cell centres `c` (in log10 on a log axis).
+fn cell_edges(c: &[f64], log: bool) -> Vec<f64> {
+    let t: Vec<f64> = c.iter().map(|&v| if log { v.log10() } else { v }).collect();
+    let n = t.len();
+    if n == 1 {
+        return vec![t[0] - 0.5, t[0] + 0.5];
+    }
+    let mut e = Vec::with_capacity(n + 1);
+    e.push(t[0] - (t[1] - t[0]) / 2.0);
+    for i in 0..n - 1 {
+        e.push((t[i] + t[i + 1]) / 2.0);
+    }
+    e.push(t[n - 1] + (t[n - 1] - t[n - 2]) / 2.0);
+    e
+}
+
+/// The ticks of a heat map axis spanning [t0, t1] (log10 values on a log axis), as positions
+/// on that scale with their labels.
+fn ticks_within(t0: f64, t1: f64, log: bool) -> Vec<(f64, String)> {
+    let range = if log {
+        (10f64.powf(t0), 10f64.powf(t1))
+    } else {
+        (t0, t1)
+    };
+    Axis::new(range, log)
+        .ticks()
+        .into_iter()
+        .map(|(v, label)| (if log { v.log10() } else { v }, label))
+        .filter(|(t, _)| *t >= t0.min(t1) - 1e-9 && *t <= t0.max(t1) + 1e-9)
+        .collect()
 }
 
 /// A perceptually ordered colour (viridis-like) for `v` in `range`.

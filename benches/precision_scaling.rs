@@ -1,0 +1,128 @@
+//! The cost of precision, from `f64` to 8192 bits (issue 16): I1, I2 at one axis ratio and the
+//! ellipse solve (33), warm (rules built) and cold (every rule above double-double forgotten
+//! before each call, so that it is built again), and the Gauss–Legendre construction itself.
+//!
+//! Inputs: ν = 0.25, M_R = 0.9990234375, k = 0.5 (the integrals) and A1/B1 = 2 (the ellipse),
+//! exact at every precision; material and speed are built outside the timed call.
+//!
+//! * `scaling_integrals/{warm,cold}/<precision>`: `moving_hertz::integrals` (the fixed rule);
+//! * `scaling_ellipse/{warm,cold}/<precision>`: `solve_ellipse` (the precision ladder);
+//! * `gl_rule/{short_point,newton}/n=<n>,bits=<bits>`: one n-point Gauss–Legendre rule, by the
+//!   construction the routes use and by Newton on the three-term recurrence at the guard
+//!   precision (`numerics::gauss_legendre::reference_rule`), n the fast route's left rule.
+//!
+//! "Cold" forgets the shared rule cache and the Gauss–Legendre store
+//! (`numerics::quadrature::clear_rule_caches`); the rules of `f64` and double-double stay in
+//! their static slots, so that cold and warm coincide there. The comparison with Arb and
+//! mpmath, in fresh processes, is `tools/compare_arb_mpmath.py` (docs/data/precision_scaling.csv).
+//!
+//! Run: `cargo bench --bench precision_scaling -- --warm-up-time 1 --measurement-time 3`
+//! (about 20 minutes; the 8192-bit cold cases take a few seconds a call). A filter such as
+//! `-- warm` or `-- /4096` runs a part.
+
+use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
+use moving_hertz::numerics::gauss_legendre::reference_rule;
+use moving_hertz::numerics::quadrature::{clear_rule_caches, GaussLegendre};
+use moving_hertz::routes::fast::RuleSizes;
+use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use moving_hertz::{integrals, solve_ellipse, IntegralOptions, Material, Options};
+use std::time::{Duration, Instant};
+
+/// The precisions measured.
+fn precisions() -> Vec<Precision> {
+    let mut v = vec![Precision::F64, Precision::DoubleDouble];
+    for bits in [256, 512, 1024, 2048, 4096, 8192] {
+        v.push(Precision::Mpfr(MpPrec::new(bits).expect("precision")));
+    }
+    v
+}
+
+/// Times `f` once per iteration after forgetting the rules (cold) or not (warm).
+fn timed(cold: bool, iters: u64, mut f: impl FnMut()) -> Duration {
+    let mut total = Duration::ZERO;
+    for _ in 0..iters {
+        if cold {
+            clear_rule_caches();
+        }
+        let t = Instant::now();
+        f();
+        total += t.elapsed();
+    }
+    total
+}
+
+fn run<T: Real>(c: &mut Criterion, prec: Precision, p: T::Prec) {
+    let mat = Material::new(T::parse("0.25", p).expect("nu")).expect("material");
+    let sp = mat
+        .speed(T::parse("0.9990234375", p).expect("speed"))
+        .expect("speed");
+    let k = T::parse("0.5", p).expect("k");
+    let ratio = T::from_i64(2, p);
+    let label = prec.label();
+    for cold in [false, true] {
+        let kind = if cold { "cold" } else { "warm" };
+        let mut g = c.benchmark_group(format!("scaling_integrals/{kind}"));
+        if T::bits(p) > 300 {
+            g.sample_size(10);
+        }
+        let opts = IntegralOptions::default();
+        g.bench_function(BenchmarkId::from_parameter(&label), |b| {
+            b.iter_custom(|iters| {
+                timed(cold, iters, || {
+                    black_box(integrals(&sp, black_box(&k), &opts).expect("integrals"));
+                })
+            })
+        });
+        g.finish();
+        let mut g = c.benchmark_group(format!("scaling_ellipse/{kind}"));
+        if T::bits(p) > 300 {
+            g.sample_size(10);
+        }
+        let opts = Options::default();
+        g.bench_function(BenchmarkId::from_parameter(&label), |b| {
+            b.iter_custom(|iters| {
+                timed(cold, iters, || {
+                    black_box(solve_ellipse(&sp, black_box(&ratio), &opts).expect("ellipse"));
+                })
+            })
+        });
+        g.finish();
+    }
+}
+
+fn gl_rules(c: &mut Criterion) {
+    let mut g = c.benchmark_group("gl_rule");
+    g.sample_size(10);
+    for bits in [256u32, 1024, 2048, 4096, 8192] {
+        let n = RuleSizes::for_bits(bits).left;
+        let p = MpPrec::new(bits as u64).expect("precision");
+        let id = format!("n={n},bits={bits}");
+        g.bench_function(BenchmarkId::new("short_point", &id), |b| {
+            b.iter_custom(|iters| {
+                timed(true, iters, || {
+                    black_box(GaussLegendre::<Mp>::get(n, p).expect("rule"));
+                })
+            })
+        });
+        if bits <= 2048 {
+            g.bench_function(BenchmarkId::new("newton", &id), |b| {
+                b.iter(|| black_box(reference_rule(n, bits).expect("rule")))
+            });
+        }
+    }
+    g.finish();
+}
+
+fn bench(c: &mut Criterion) {
+    for prec in precisions() {
+        match prec {
+            Precision::F64 => run::<f64>(c, prec, ()),
+            Precision::DoubleDouble => run::<Dd>(c, prec, ()),
+            Precision::Mpfr(p) => run::<Mp>(c, prec, p),
+        }
+    }
+    gl_rules(c);
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
