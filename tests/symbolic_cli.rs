@@ -101,10 +101,10 @@ fn bad_arguments_print_one_line_and_fail() {
             "1 <= n <= 120",
         ),
         (vec!["symbolic", "moments", "--n", "151"], "1 <= n <= 150"),
-        (vec!["symbolic", "moments", "--n", "-3"], "--n"),
+        (vec!["symbolic", "moments", "--n", "-3"], "-3"),
         (vec!["symbolic", "moments"], "--n"),
         (vec!["symbolic", "series", "--n", "3"], "coefficients"),
-        (vec!["symbolic"], "coefficients"),
+        (vec!["symbolic"], "<KIND>"),
         (
             vec!["symbolic", "moments", "--n", "3", "--format", "pdf"],
             "--format",

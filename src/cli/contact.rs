@@ -1,118 +1,201 @@
-//! `moving-hertz ellipse` and `moving-hertz contact`: the contact ellipse's shape (33) and the
-//! full moving-punch Hertz solution.
+//! `moving-hertz contact`: the full moving-punch Hertz solution by [`ContactProblem::solve`].
 
-use super::args::Args;
-use super::json::{s, Json};
-use moving_hertz::physics::Material;
-use moving_hertz::scalar::Real;
-use moving_hertz::{solve_ellipse, with_precision, ContactProblem, Loading, Method, Options};
-use std::time::Instant;
+use super::args::{self, Decimal, MaterialSpeed};
+use super::output::{json_pair, largest, print_json, OutputArgs, Text};
+use super::CliError;
+use moving_hertz::scalar::{Precision, Real};
+use moving_hertz::{with_precision, ContactProblem, ContactSolution, Loading, Method, Options};
+use serde::Serialize;
 
-fn parse<T: Real>(name: &str, text: &str, p: T::Prec) -> Result<T, String> {
-    T::parse(text, p).map_err(|e| format!("--{name}: {e}"))
+#[derive(clap::Args, Debug)]
+#[command(group = clap::ArgGroup::new("loading").required(true).args(["load", "approach"]))]
+pub struct ContactArgs {
+    #[command(flatten)]
+    pub input: MaterialSpeed,
+    /// R1: the punch's radius of curvature along the motion, > 0 (length, e.g. m).
+    #[arg(long, value_name = "R1", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub r_along: Decimal,
+    /// R2: the punch's radius of curvature across the motion, > 0 (length, same unit as R1).
+    #[arg(long, value_name = "R2", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub r_across: Decimal,
+    /// The load P > 0 (force, e.g. N). Exactly one of --load and --approach.
+    #[arg(long, value_name = "P", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub load: Option<Decimal>,
+    /// The approach (central displacement) d0 > 0 (length, same unit as R1).
+    #[arg(long, value_name = "D0", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub approach: Option<Decimal>,
+    /// The half-space's shear modulus mu > 0 (pressure, e.g. Pa: force/length^2 in the units
+    /// of P and R1).
+    #[arg(long, value_name = "MU", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub shear_modulus: Decimal,
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
+    /// (24 to 1048576).
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    pub precision: Precision,
+    /// How the ellipse solve evaluates the integrals: auto, adaptive or fixed (as for
+    /// `ellipse`; series and adaptive-subtracted are refused).
+    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::method())]
+    pub method: Method,
+    #[command(flatten)]
+    pub output: OutputArgs,
 }
 
-pub fn ellipse(args: &Args) -> Result<(), String> {
-    let prec = args.precision()?;
-    let json = args.flag("json");
-    let method = Method::parse(args.optional("method").unwrap_or("auto"))
-        .map_err(|e| format!("--method: {e}"))?;
-
-    let repeat: usize = match args.optional("repeat") {
-        Some(r) => r
-            .parse()
-            .map_err(|_| format!("--repeat: cannot parse {r:?}"))?,
-        None => 0,
-    };
-    with_precision!(prec, T, p => {
-        let mat = Material::<T>::parse(args.required("nu")?, p).map_err(|e| format!("--nu: {e}"))?;
-        let sp = mat.parse_speed(args.required("speed")?).map_err(|e| format!("--speed: {e}"))?;
-        let ratio = parse::<T>("ratio", args.required("ratio")?, p)?;
-        let opts = Options::<T> { method, ..Default::default() };
-        let sol = solve_ellipse(&sp, &ratio, &opts).map_err(|e| e.to_string())?;
-        let mut times: Vec<f64> = (0..repeat)
-            .map(|_| {
-                let t = Instant::now();
-                let r = solve_ellipse(&sp, &ratio, &opts);
-                let ns = t.elapsed().as_nanos() as f64;
-                std::hint::black_box(r.is_ok());
-                ns
-            })
-            .collect();
-        times.sort_by(|a, b| a.total_cmp(b));
-        let ci = &sol.integrals;
-        if json {
-            let mut fields = vec![
-                ("k".into(), s(sol.k.value.to_decimal())),
-                ("e".into(), s(sol.e.value.to_decimal())),
-                ("I1".into(), s(ci.i1.value.to_decimal())),
-                ("I2".into(), s(ci.i2.value.to_decimal())),
-                ("method".into(), s(ci.route.label())),
-                ("precision".into(), s(prec.label())),
-                ("error_estimate".into(), s(format!("{}", sol.k.error))),
-                ("major_axis".into(), s(sol.major.label())),
-            ];
-            if !times.is_empty() {
-                fields.push(("median_ns".into(), s(format!("{:.0}", times[times.len() / 2]))));
-                fields.push(("min_ns".into(), s(format!("{:.0}", times[0]))));
-            }
-            println!("{}", Json::Obj(fields).render());
-        } else {
-            println!("contact ellipse for A1/B1 = R2/R1 = {} at M_R = {}, nu = {}", ratio.to_decimal(), sp.mr().to_decimal(), mat.nu().to_decimal());
-            println!("k = b/a (across/along the motion) = {}", sol.k.value.to_decimal());
-            println!("eccentricity e = {}  (major axis {} the motion)", sol.e.value.to_decimal(), sol.major.label());
-            println!("I1 = {}", ci.i1.value.to_decimal());
-            println!("I2 = {}", ci.i2.value.to_decimal());
-            println!("relative error estimate of k: {}; {} Newton steps at {}", sol.k.error, sol.iterations, prec.label());
-            if !times.is_empty() {
-                println!("time per solve over {} runs: median {:.0} ns, min {:.0} ns", times.len(), times[times.len() / 2], times[0]);
-            }
-        }
-        Ok(())
-    })
+/// The inputs as typed (JSON `inputs`).
+#[derive(Serialize)]
+struct Inputs<'a> {
+    nu: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    speed: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    gap: Option<&'a str>,
+    r_along: &'a str,
+    r_across: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    load: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    approach: Option<&'a str>,
+    shear_modulus: &'a str,
+    method: &'a str,
+    precision: String,
 }
 
-pub fn contact(args: &Args) -> Result<(), String> {
-    let prec = args.precision()?;
-    let json = args.flag("json");
-    with_precision!(prec, T, p => {
-        let mat = Material::<T>::parse(args.required("nu")?, p).map_err(|e| format!("--nu: {e}"))?;
-        let sp = mat.parse_speed(args.required("speed")?).map_err(|e| format!("--speed: {e}"))?;
-        let r1 = parse::<T>("r-along", args.required("r-along")?, p)?;
-        let r2 = parse::<T>("r-across", args.required("r-across")?, p)?;
-        let mu = parse::<T>("shear-modulus", args.required("shear-modulus")?, p)?;
-        let loading = match (args.optional("load"), args.optional("approach")) {
-            (Some(l), None) => Loading::Load(parse::<T>("load", l, p)?),
-            (None, Some(d)) => Loading::Approach(parse::<T>("approach", d, p)?),
-            _ => return Err("`contact` needs exactly one of --load P or --approach D0".into()),
+/// The JSON object of `contact` (docs/cli.md).
+#[derive(Serialize)]
+struct Json<'a> {
+    command: &'static str,
+    inputs: Inputs<'a>,
+    precision: String,
+    bits: String,
+    route: &'static str,
+    a: String,
+    a_error: String,
+    b: String,
+    b_error: String,
+    k: String,
+    k_error: String,
+    e: String,
+    e_error: String,
+    major_axis: &'static str,
+    p0: String,
+    p0_error: String,
+    d0: String,
+    d0_error: String,
+    load: String,
+    load_error: String,
+    error_estimate: String,
+}
+
+pub fn run(a: &ContactArgs) -> Result<(), CliError> {
+    with_precision!(a.precision, T, p => {
+        let speed = a.input.at::<T>(p)?;
+        let loading = match (&a.load, &a.approach) {
+            (Some(l), None) => Loading::Load(args::positive::<T>(l, "--load", "load P", p)?),
+            (None, Some(d)) => Loading::Approach(args::positive::<T>(d, "--approach", "approach d0", p)?),
+            _ => return Err(CliError::Input("exactly one of --load P and --approach D0 is required".into())),
         };
-        let problem = ContactProblem { speed: sp.clone(), radius_along: r1, radius_across: r2, loading, shear_modulus: mu };
-        let sol = problem.solve(&Options::default()).map_err(|e| e.to_string())?;
-        if json {
-            let obj = Json::Obj(vec![
-                ("a".into(), s(sol.a.to_decimal())),
-                ("b".into(), s(sol.b.to_decimal())),
-                ("k".into(), s(sol.k().to_decimal())),
-                ("e".into(), s(sol.e().to_decimal())),
-                ("p0".into(), s(sol.p0.to_decimal())),
-                ("d0".into(), s(sol.d0.to_decimal())),
-                ("load".into(), s(sol.load.to_decimal())),
-                ("precision".into(), s(prec.label())),
-                ("error_estimate".into(), s(format!("{}", sol.k().error))),
-            ]);
-            println!("{}", obj.render());
-        } else {
-            println!("moving rigid punch on an elastic half-space, nu = {}, M_R = V/c_R = {}", mat.nu().to_decimal(), sp.mr().to_decimal());
-            println!("(units: as given; SI inputs give SI outputs: m, Pa, N)");
-            println!("semi-axis along the motion  a  = {}", sol.a.to_decimal());
-            println!("semi-axis across the motion b  = {}", sol.b.to_decimal());
-            println!("axis ratio k = b/a             = {}", sol.k().to_decimal());
-            println!("eccentricity e                 = {}  (major axis {} the motion)", sol.e().to_decimal(), sol.ellipse.major.label());
-            println!("central pressure p0            = {}", sol.p0.to_decimal());
-            println!("approach d0                    = {}", sol.d0.to_decimal());
-            println!("load P                         = {}", sol.load.to_decimal());
-            println!("relative error estimate (k): {} at {}", sol.k().error, prec.label());
-        }
-        Ok(())
+        let problem = ContactProblem {
+            speed,
+            radius_along: args::positive(&a.r_along, "--r-along", "radius along the motion R1", p)?,
+            radius_across: args::positive(&a.r_across, "--r-across", "radius across the motion R2", p)?,
+            loading,
+            shear_modulus: args::positive(&a.shear_modulus, "--shear-modulus", "shear modulus mu", p)?,
+        };
+        let opts = Options::<T> { method: a.method, ..Default::default() };
+        let inputs = [("method", "--method", a.method.label())];
+        let context = format!("solving the contact at {}", a.precision);
+        let sol = problem.solve(&opts).map_err(|e| CliError::from_run(e, &inputs, &context))?;
+        report(a, &sol)
     })
+}
+
+fn report<T: Real>(a: &ContactArgs, sol: &ContactSolution<T>) -> Result<(), CliError> {
+    let ig = &sol.ellipse.integrals;
+    let prec = ig.precision;
+    let (speed_kind, speed_text) = a.input.given();
+    if a.output.json {
+        let (av, a_error) = json_pair(&sol.a);
+        let (b, b_error) = json_pair(&sol.b);
+        let (k, k_error) = json_pair(sol.k());
+        let (e, e_error) = json_pair(sol.e());
+        let (p0, p0_error) = json_pair(&sol.p0);
+        let (d0, d0_error) = json_pair(&sol.d0);
+        let (load, load_error) = json_pair(&sol.load);
+        let bounds = [
+            sol.a.error,
+            sol.b.error,
+            sol.k().error,
+            sol.e().error,
+            sol.p0.error,
+            sol.d0.error,
+            sol.load.error,
+        ];
+        return print_json(&Json {
+            command: "contact",
+            inputs: Inputs {
+                nu: &a.input.nu.text,
+                speed: (speed_kind == "speed").then_some(speed_text),
+                gap: (speed_kind == "gap").then_some(speed_text),
+                r_along: &a.r_along.text,
+                r_across: &a.r_across.text,
+                load: a.load.as_ref().map(|d| d.text.as_str()),
+                approach: a.approach.as_ref().map(|d| d.text.as_str()),
+                shear_modulus: &a.shear_modulus.text,
+                method: a.method.label(),
+                precision: a.precision.label(),
+            },
+            precision: prec.label(),
+            bits: prec.bits().to_string(),
+            route: ig.route.label(),
+            a: av,
+            a_error,
+            b,
+            b_error,
+            k,
+            k_error,
+            e,
+            e_error,
+            major_axis: sol.ellipse.major.label(),
+            p0,
+            p0_error,
+            d0,
+            d0_error,
+            load,
+            load_error,
+            error_estimate: largest(&bounds),
+        });
+    }
+    let mut t = Text::new(a.output.digits);
+    let given = match (&a.load, &a.approach) {
+        (Some(l), _) => format!("load P = {}", l.text),
+        (_, Some(d)) => format!("approach d0 = {}", d.text),
+        _ => String::new(),
+    };
+    t.line(format!(
+        "moving rigid punch on an elastic half-space: nu = {}, {}, R1 (along) = {}, \
+         R2 (across) = {}, {given}, mu = {}",
+        a.input.nu.text,
+        a.input.phrase(),
+        a.r_along.text,
+        a.r_across.text,
+        a.shear_modulus.text
+    ));
+    t.line(format!(
+        "at {} ({} bits), method {}: route {}; units as given (SI inputs give SI outputs: m, Pa, N)",
+        prec.label(),
+        prec.bits(),
+        a.method,
+        ig.route
+    ));
+    t.result("semi-axis along the motion a", &sol.a);
+    t.result("semi-axis across the motion b", &sol.b);
+    t.result("axis ratio k = b/a", sol.k());
+    let major = format!(
+        "eccentricity e (major axis {} the motion)",
+        sol.ellipse.major.label()
+    );
+    t.result_abs(&major, sol.e());
+    t.result("central pressure p0", &sol.p0);
+    t.result("approach d0", &sol.d0);
+    t.result("load P", &sol.load);
+    t.print()
 }

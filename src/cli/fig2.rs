@@ -1,15 +1,54 @@
 //! `moving-hertz fig2`: the paper's Fig. 2 reproduced and extended (the README's main job).
 
-use super::args::Args;
+use super::args::{self, Decimal, OutDir};
+use super::output::emit;
 use super::progress::Progress;
+use super::CliError;
 use crate::studies::{self, fig2};
-use moving_hertz::with_precision;
-use std::path::PathBuf;
+use moving_hertz::scalar::Precision;
+use moving_hertz::{with_precision, Material};
+use std::fmt::Write as _;
 
-pub fn run(args: &Args) -> Result<(), String> {
-    let nu = args.optional("nu").unwrap_or("0.2").to_string();
-    let prec = args.precision()?;
-    let out = PathBuf::from(args.optional("out").unwrap_or("docs"));
+#[derive(clap::Args, Debug)]
+pub struct Fig2Args {
+    /// Poisson's ratio ν, -1 < NU <= 1/2 (dimensionless decimal; default 0.2 as in the paper).
+    /// Other values, or another precision, add `_nu<NU>_<precision>` to the file names.
+    #[arg(long, value_name = "NU", default_value = "0.2", value_parser = args::decimal,
+          allow_hyphen_values = true)]
+    pub nu: Decimal,
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
+    /// (24 to 1048576).
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    pub precision: Precision,
+    #[command(flatten)]
+    pub out: OutDir,
+}
+
+/// The file-name suffix for ν (as typed, trimmed) and the precision: empty for the paper's
+/// ν = 0.2 at f64, else `_nu<NU>_<precision>`.
+fn suffix(nu: &str, prec: Precision) -> String {
+    if nu == "0.2" && prec == Precision::F64 {
+        return String::new();
+    }
+    format!("_nu{nu}_{}", prec.label())
+}
+
+pub fn run(a: &Fig2Args) -> Result<(), CliError> {
+    let nu = a.nu.text.as_str();
+    let prec = a.precision;
+    // ν checked exactly at the working precision before any work or any directory is made; a
+    // decimal, as it goes into the file names.
+    if nu.contains('/') {
+        return Err(CliError::value(
+            "--nu",
+            nu,
+            "fig2 takes a decimal (it names the files)",
+        ));
+    }
+    with_precision!(prec, T, p => {
+        Material::<T>::parse(nu, p).map_err(|e| CliError::value("--nu", nu, e))?;
+    });
+    let out = a.out.prepare()?;
     let by_ratio_pairs: Vec<(f64, f64)> = fig2::SPEEDS
         .iter()
         .flat_map(|&mr| fig2::ratio_grid().into_iter().map(move |r| (mr, r)))
@@ -22,13 +61,13 @@ pub fn run(args: &Args) -> Result<(), String> {
         format!("fig2 at {}", prec.label()),
         by_ratio_pairs.len() + by_speed_pairs.len(),
     );
-    let (a, b) = with_precision!(prec, T, p => {
-        let a = fig2::solve_all::<T>(&nu, &by_ratio_pairs, p, || bar.tick()).map_err(|e| e.to_string())?;
-        let b = fig2::solve_all::<T>(&nu, &by_speed_pairs, p, || bar.tick()).map_err(|e| e.to_string())?;
+    let (a_pts, b_pts) = with_precision!(prec, T, p => {
+        let a = fig2::solve_all::<T>(nu, &by_ratio_pairs, p, || bar.tick()).map_err(CliError::lib)?;
+        let b = fig2::solve_all::<T>(nu, &by_speed_pairs, p, || bar.tick()).map_err(CliError::lib)?;
         (a, b)
     });
     bar.finish();
-    let io = |e: std::io::Error| format!("writing fig2 output: {e}");
+    let io = |e: std::io::Error| CliError::Failed(format!("writing fig2 output: {e}"));
     let rows = |pts: &[fig2::Point]| -> Vec<Vec<String>> {
         pts.iter()
             .map(|q| {
@@ -42,43 +81,46 @@ pub fn run(args: &Args) -> Result<(), String> {
             })
             .collect()
     };
-    let suffix = if nu == "0.2" && prec == moving_hertz::scalar::Precision::F64 {
-        String::new()
-    } else {
-        format!("_nu{}_{}", nu, prec.label())
-    };
+    let suffix = suffix(nu, prec);
     let header = ["M_R", "A1_over_B1", "k", "e", "k_rel_error_estimate"];
     let d1 = out.join(format!("data/fig2_e_vs_ratio{suffix}.csv"));
     let d2 = out.join(format!("data/fig2_e_vs_speed{suffix}.csv"));
-    studies::write_csv(&d1, &header, &rows(&a)).map_err(io)?;
-    studies::write_csv(&d2, &header, &rows(&b)).map_err(io)?;
-    for (name, svg) in fig2::charts(&nu, &a, &b) {
+    studies::write_csv(&d1, &header, &rows(&a_pts)).map_err(io)?;
+    studies::write_csv(&d2, &header, &rows(&b_pts)).map_err(io)?;
+    for (name, svg) in fig2::charts(nu, &a_pts, &b_pts) {
         let name = name.replace(".svg", &format!("{suffix}.svg"));
         studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
     }
-    let worst = a
+    let worst = a_pts
         .iter()
-        .chain(&b)
+        .chain(&b_pts)
         .map(|q| q.error_estimate)
         .fold(0.0f64, f64::max);
-    println!(
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
         "fig2: {} ellipse solves at {} (nu = {nu}); worst relative error estimate of k {:.1e}",
-        a.len() + b.len(),
+        a_pts.len() + b_pts.len(),
         prec.label(),
         worst
     );
-    println!(
+    let _ = writeln!(
+        s,
         "wrote {}, {} and figures/fig2_*{suffix}.svg under {}",
         d1.display(),
         d2.display(),
         out.display()
     );
     // A few values for the terminal, as in the paper's figure.
-    println!("\n e at A1/B1 = 0.5:");
+    let _ = writeln!(s, "\n e at A1/B1 = 0.5:");
     for mr in fig2::SPEEDS {
-        if let Some(q) = a.iter().find(|q| q.mr == mr && q.ratio == 0.5) {
-            println!("   M_R = {mr:<6} e = {:.10}  k = {:.10}", q.e_f64, q.k_f64);
+        if let Some(q) = a_pts.iter().find(|q| q.mr == mr && q.ratio == 0.5) {
+            let _ = writeln!(
+                s,
+                "   M_R = {mr:<6} e = {:.10}  k = {:.10}",
+                q.e_f64, q.k_f64
+            );
         }
     }
-    Ok(())
+    emit(&s)
 }

@@ -1,73 +1,285 @@
-//! `moving-hertz integrals`: I1 and I2 of (34) (normalisation of (37)) by a chosen or automatic
-//! method, at a chosen precision or the lowest one reaching `--tol`.
+//! `moving-hertz integrals`: I1 and I2 of (34) (normalisation of (37)) by [`integrals`] at a
+//! chosen precision, or by [`integrals_to_tolerance`] at the lowest precision that reaches
+//! `--tol`.
 
-use super::args::Args;
-use super::json::{s, Json};
-use moving_hertz::scalar::Real;
+use super::args::{self, Decimal, MaterialSpeed};
+use super::output::{json_pair, largest, print_json, OutputArgs, Text};
+use super::CliError;
+use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{
-    integrals, integrals_to_tolerance, with_precision, ExactInputs, IntegralOptions, Method,
-    RelError,
+    integrals, integrals_to_tolerance, with_precision, Estimated, ExactInputs, IntegralOptions,
+    Integrals, Method, Mp, RelError,
 };
+use serde::Serialize;
 
-pub fn run(args: &Args) -> Result<(), String> {
-    let inputs = ExactInputs::parse(
-        args.required("nu")?,
-        args.required("speed")?,
-        args.required("k")?,
-    )
-    .map_err(|e| e.to_string())?;
-    let method = Method::parse(args.optional("method").unwrap_or("auto"))
-        .map_err(|e| format!("--method: {e}"))?;
-    let json = args.flag("json");
-    let tol = match args.optional("tol") {
-        Some(t) => Some(RelError::parse(t).map_err(|e| format!("--tol: {e}"))?),
-        None => None,
-    };
-    let r = match (tol, args.optional("precision")) {
-        (Some(tol), None) => {
-            integrals_to_tolerance(&inputs, tol, method).map_err(|e| e.to_string())?
-        }
-        (tol, _) => {
-            let prec = args.precision()?;
+#[derive(clap::Args, Debug)]
+pub struct IntegralsArgs {
+    #[command(flatten)]
+    pub input: MaterialSpeed,
+    /// The axis ratio k = b/a > 0 (dimensionless; a along the motion, b across).
+    #[arg(long, value_name = "K", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub k: Decimal,
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
+    /// (24 to 1048576). Default f64; without it, --tol chooses the precision.
+    #[arg(long, value_name = "P", value_parser = args::precision)]
+    pub precision: Option<Precision>,
+    /// The relative tolerance for I1 and I2, 0 < TOL (dimensionless, any exponent: 1e-10000
+    /// is fine). Alone: the lowest precision that reaches it is chosen (TOL < 1). With
+    /// --precision: met at that precision or refused (a higher precision reaches it).
+    #[arg(long, value_name = "TOL", value_parser = tol, allow_hyphen_values = true)]
+    pub tol: Option<Tol>,
+    /// The route: auto (the cheapest that meets the request), series, adaptive,
+    /// adaptive-subtracted (k <= 1) or fixed (2^-40 <= k <= 2^40). The route that ran is
+    /// printed (fixed-rule for k <= 1, graded-rule for k > 1, ...).
+    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::method())]
+    pub method: Method,
+    /// Also dI1/dk and dI2/dk (not by series or adaptive-subtracted; needs --precision when
+    /// --tol is given).
+    #[arg(long)]
+    pub derivatives: bool,
+    /// Also J0 of (32), the approach integral (adaptive route only; needs --precision when
+    /// --tol is given).
+    #[arg(long)]
+    pub j0: bool,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// `--tol`: the text as typed and the bound it denotes.
+#[derive(Clone, Debug)]
+pub struct Tol {
+    text: String,
+    rel: RelError,
+}
+
+fn tol(s: &str) -> Result<Tol, String> {
+    let rel = RelError::parse(s).map_err(|e| e.to_string())?;
+    Ok(Tol {
+        text: s.trim().to_string(),
+        rel,
+    })
+}
+
+/// The inputs as typed (JSON `inputs`).
+#[derive(Serialize)]
+struct Inputs<'a> {
+    nu: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    speed: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    gap: Option<&'a str>,
+    k: &'a str,
+    method: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    precision: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tol: Option<&'a str>,
+    derivatives: bool,
+    j0: bool,
+}
+
+/// The JSON object of `integrals` (docs/cli.md).
+#[derive(Serialize)]
+struct Json<'a> {
+    command: &'static str,
+    inputs: Inputs<'a>,
+    precision: String,
+    bits: String,
+    route: &'static str,
+    #[serde(rename = "I1")]
+    i1: String,
+    #[serde(rename = "I1_error")]
+    i1_error: String,
+    #[serde(rename = "I2")]
+    i2: String,
+    #[serde(rename = "I2_error")]
+    i2_error: String,
+    #[serde(rename = "dI1_dk", skip_serializing_if = "Option::is_none")]
+    di1_dk: Option<String>,
+    #[serde(rename = "dI1_dk_error", skip_serializing_if = "Option::is_none")]
+    di1_dk_error: Option<String>,
+    #[serde(rename = "dI2_dk", skip_serializing_if = "Option::is_none")]
+    di2_dk: Option<String>,
+    #[serde(rename = "dI2_dk_error", skip_serializing_if = "Option::is_none")]
+    di2_dk_error: Option<String>,
+    #[serde(rename = "J0", skip_serializing_if = "Option::is_none")]
+    j0: Option<String>,
+    #[serde(rename = "J0_error", skip_serializing_if = "Option::is_none")]
+    j0_error: Option<String>,
+    work: String,
+    error_estimate: String,
+}
+
+pub fn run(a: &IntegralsArgs) -> Result<(), CliError> {
+    match (&a.tol, a.precision) {
+        (Some(tol), None) => to_tolerance(a, tol),
+        (tol, precision) => {
+            let prec = precision.unwrap_or(Precision::F64);
             with_precision!(prec, T, p => {
-                let (sp, k) = inputs.at::<T>(p).map_err(|e| e.to_string())?;
-                let opts = IntegralOptions { method, tolerance: tol, ..Default::default() };
-                let r = integrals(&sp, &k, &opts).map_err(|e| e.to_string())?;
-                let bits = T::bits(p) + 64;
-                let up = |e: moving_hertz::Estimated<T>| moving_hertz::Estimated::new(
-                    moving_hertz::Mp::from_float(&e.value.to_float(bits), moving_hertz::MpPrec::clamped(bits)), e.error);
-                moving_hertz::Integrals { i1: up(r.i1), i2: up(r.i2), di1_dk: None, di2_dk: None, j0: None, route: r.route, precision: r.precision, work: r.work }
+                let r = at_precision::<T>(a, tol.as_ref(), p)?;
+                report(a, &r)
             })
         }
-    };
-    let prec = r.precision;
-    let (i1, i2) = with_precision!(prec, T, p => {
-        (T::from_float(&r.i1.value.to_float(T::bits(p) + 64), p).to_decimal(),
-         T::from_float(&r.i2.value.to_float(T::bits(p) + 64), p).to_decimal())
-    });
-    let est = r.i1.error.max(r.i2.error);
-    if json {
-        let obj = Json::Obj(vec![
-            ("I1".into(), s(i1)),
-            ("I2".into(), s(i2)),
-            ("method".into(), s(r.route.label())),
-            ("precision".into(), s(prec.label())),
-            ("error_estimate".into(), s(format!("{est}"))),
-            ("work".into(), s(r.work.to_string())),
-        ]);
-        println!("{}", obj.render());
-    } else {
-        println!("I1 = {i1}");
-        println!("I2 = {i2}");
-        println!("A1/B1 = I2/I1 for this k; normalisation of (37) (pi times the paper's (34))");
-        println!(
-            "route {} at {} ({} bits), {} evaluations/terms, relative error estimate {}",
-            r.route.label(),
-            prec.label(),
-            prec.bits(),
-            r.work,
-            est
-        );
     }
-    Ok(())
+}
+
+/// The library errors of an evaluation: about the method, k or the tolerance, against the
+/// option; an unreachable tolerance names `--tol` as typed (and the precision, if given).
+fn run_error(a: &IntegralsArgs, e: moving_hertz::Error) -> CliError {
+    let tol_text = a.tol.as_ref().map_or("", |t| t.text.as_str());
+    if let (moving_hertz::Error::Unreachable { .. }, Some(t)) = (&e, &a.tol) {
+        let at = a
+            .precision
+            .map(|p| format!(" at '--precision {p}'"))
+            .unwrap_or_default();
+        return CliError::Failed(format!("cannot meet '--tol {}'{at}: {e}", t.text));
+    }
+    let inputs = [
+        ("method", "--method", a.method.label()),
+        ("axis ratio k", "--k", a.k.text.as_str()),
+        ("relative tolerance", "--tol", tol_text),
+    ];
+    CliError::from_run(e, &inputs, &format!("I1, I2 at k = {}", a.k.text))
+}
+
+/// At the precision given (default f64), with the tolerance, if any, checked there.
+fn at_precision<T: Real>(
+    a: &IntegralsArgs,
+    tol: Option<&Tol>,
+    p: T::Prec,
+) -> Result<Integrals<T>, CliError> {
+    let speed = a.input.at::<T>(p)?;
+    let k: T = args::positive(&a.k, "--k", "axis ratio k = b/a", p)?;
+    let opts = IntegralOptions {
+        method: a.method,
+        tolerance: tol.map(|t| t.rel),
+        derivatives: a.derivatives,
+        j0: a.j0,
+    };
+    integrals(&speed, &k, &opts).map_err(|e| run_error(a, e))
+}
+
+/// `--tol` alone: the inputs held exactly, the precision chosen from the tolerance's exponent,
+/// the result printed at the precision that ran.
+fn to_tolerance(a: &IntegralsArgs, tol: &Tol) -> Result<(), CliError> {
+    if a.derivatives || a.j0 {
+        return Err(CliError::Input(
+            "--derivatives and --j0 need --precision: --tol alone chooses the precision for \
+             I1 and I2 only"
+                .into(),
+        ));
+    }
+    let nu = &a.input.nu.text;
+    let (kind, speed) = a.input.given();
+    let parsed = match kind {
+        "gap" => ExactInputs::parse_gap(nu, speed, &a.k.text),
+        _ => ExactInputs::parse(nu, speed, &a.k.text),
+    };
+    let speed_option = if kind == "gap" { "--gap" } else { "--speed" };
+    let inputs = parsed.map_err(|e| {
+        CliError::from_run(
+            e,
+            &[
+                ("nu", "--nu", nu.as_str()),
+                ("speed", speed_option, speed),
+                ("axis ratio k", "--k", a.k.text.as_str()),
+            ],
+            "the inputs",
+        )
+    })?;
+    let r = integrals_to_tolerance(&inputs, tol.rel, a.method).map_err(|e| run_error(a, e))?;
+    with_precision!(r.precision, T, p => report(a, &narrow::<T>(r, p)))
+}
+
+/// A result of [`integrals_to_tolerance`] (MPFR numbers carrying the working precision's
+/// values exactly) back at the precision that ran.
+fn narrow<T: Real>(r: Integrals<Mp>, p: T::Prec) -> Integrals<T> {
+    let bits = T::bits(p) + 64;
+    let down =
+        |e: Estimated<Mp>| Estimated::new(T::from_float(&e.value.to_float(bits), p), e.error);
+    Integrals {
+        i1: down(r.i1),
+        i2: down(r.i2),
+        di1_dk: r.di1_dk.map(down),
+        di2_dk: r.di2_dk.map(down),
+        j0: r.j0.map(down),
+        route: r.route,
+        precision: r.precision,
+        work: r.work,
+    }
+}
+
+fn report<T: Real>(a: &IntegralsArgs, r: &Integrals<T>) -> Result<(), CliError> {
+    let prec = r.precision;
+    let (speed_kind, speed_text) = a.input.given();
+    if a.output.json {
+        let (i1, i1_error) = json_pair(&r.i1);
+        let (i2, i2_error) = json_pair(&r.i2);
+        let opt = |x: &Option<Estimated<T>>| x.as_ref().map(json_pair).unzip();
+        let (di1_dk, di1_dk_error) = opt(&r.di1_dk);
+        let (di2_dk, di2_dk_error) = opt(&r.di2_dk);
+        let (j0, j0_error) = opt(&r.j0);
+        return print_json(&Json {
+            command: "integrals",
+            inputs: Inputs {
+                nu: &a.input.nu.text,
+                speed: (speed_kind == "speed").then_some(speed_text),
+                gap: (speed_kind == "gap").then_some(speed_text),
+                k: &a.k.text,
+                method: a.method.label(),
+                precision: a.precision.map(|p| p.label()),
+                tol: a.tol.as_ref().map(|t| t.text.as_str()),
+                derivatives: a.derivatives,
+                j0: a.j0,
+            },
+            precision: prec.label(),
+            bits: prec.bits().to_string(),
+            route: r.route.label(),
+            i1,
+            i1_error,
+            i2,
+            i2_error,
+            di1_dk,
+            di1_dk_error,
+            di2_dk,
+            di2_dk_error,
+            j0,
+            j0_error,
+            work: r.work.to_string(),
+            error_estimate: largest(&[r.i1.error, r.i2.error]),
+        });
+    }
+    let mut t = Text::new(a.output.digits);
+    let tol = a
+        .tol
+        .as_ref()
+        .map(|t| format!(", tolerance {}", t.text))
+        .unwrap_or_default();
+    t.line(format!(
+        "I1, I2 of (34) in the normalisation of (37) (pi times the paper's) for k = {}, {}, \
+         nu = {}{tol}",
+        a.k.text,
+        a.input.phrase(),
+        a.input.nu.text
+    ));
+    t.line(format!(
+        "at {} ({} bits), method {}: route {}, {} evaluations or terms; A1/B1 = I2/I1 for this k",
+        prec.label(),
+        prec.bits(),
+        a.method,
+        r.route,
+        r.work
+    ));
+    t.result("I1 (the cos^2 integral, (46))", &r.i1);
+    t.result("I2 (the sin^2 integral, (47))", &r.i2);
+    for (label, x) in [
+        ("dI1/dk", &r.di1_dk),
+        ("dI2/dk", &r.di2_dk),
+        ("J0 of (32)", &r.j0),
+    ] {
+        if let Some(x) = x {
+            t.result(label, x);
+        }
+    }
+    t.print()
 }

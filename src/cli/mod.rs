@@ -1,130 +1,227 @@
-//! Command-line front end: argument parsing, dispatch on precision, text and JSON output.
-//! Nothing in the library depends on this module.
+//! The command line: `clap` (derive) parses the arguments, builds the help of every command and
+//! the shell completions; each command builds the library's inputs from the decimal text as
+//! typed, runs, and prints a text summary or one JSON object (`serde_json`). Reference:
+//! `docs/cli.md` (every command, option, JSON key and exit code). Nothing in the library depends
+//! on this module.
+//!
+//! Exit codes: 0 success; 1 the computation failed or cannot meet the request (no convergence,
+//! an unreachable tolerance, a file that cannot be written); 2 the command line was refused (an
+//! unknown command or option, a missing or conflicting option, a value that does not parse or
+//! lies outside its domain). Every failure prints one line on standard error.
 
 mod args;
 mod contact;
+mod ellipse;
 mod fig2;
 mod integrals;
-mod json;
+mod output;
 mod progress;
 mod rayleigh;
 mod study;
 mod symbolic;
 
-use args::Args;
+use clap::{CommandFactory, Parser, Subcommand};
+use std::fmt;
 
-const HELP: &str = "\
-moving-hertz — Hertz contact of a rigid punch sliding at sub-Rayleigh speed
+/// moving-hertz: the Hertz contact of a rigid punch sliding without friction at a constant
+/// speed below the Rayleigh wave speed over an elastic half-space, at f64, double-double or any
+/// MPFR precision.
+#[derive(Parser, Debug)]
+#[command(
+    name = "moving-hertz",
+    version,
+    propagate_version = true,
+    arg_required_else_help = true,
+    after_help = "Numbers are read from their decimal text exactly and rounded once to the working \
+precision; results are printed with every digit of it. Units are the caller's (SI in, SI out). \
+Reference: docs/cli.md."
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
 
-USAGE: moving-hertz <COMMAND> [OPTIONS]
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// The paper's Fig. 2: the eccentricity of the contact ellipse against A1/B1 for several
+    /// speeds and against the speed for several A1/B1 (CSV in DIR/data, SVG in DIR/figures).
+    Fig2(fig2::Fig2Args),
+    /// The Rayleigh root m1 = (c_R/c2)^2, c_R/c2, c_R/c1 and the three roots of the Rayleigh
+    /// cubic for one Poisson's ratio.
+    Rayleigh(rayleigh::RayleighArgs),
+    /// I1, I2 of (34) in the normalisation of (37) at one axis ratio k, each with its error
+    /// bound, at a chosen precision or the lowest one that reaches --tol.
+    Integrals(integrals::IntegralsArgs),
+    /// The contact ellipse's axis ratio k = b/a (a along the motion) and eccentricity for a
+    /// curvature ratio A1/B1 = R2/R1, solving (33) I2(k)/I1(k) = A1/B1.
+    Ellipse(ellipse::EllipseArgs),
+    /// The full moving-punch Hertz solution: a, b, k, e, p0, d0 and the load, each with its
+    /// error bound.
+    Contact(contact::ContactArgs),
+    /// A study of the crate's docs: runs it and writes its CSV (DIR/data), SVG (DIR/figures)
+    /// and summary tables.
+    Study(study::StudyArgs),
+    /// Prints a completion script for SHELL on standard output, e.g.
+    /// `moving-hertz completions bash > /etc/bash_completion.d/moving-hertz`.
+    Completions {
+        /// The shell: bash, elvish, fish, powershell or zsh.
+        #[arg(value_name = "SHELL")]
+        shell: clap_complete::Shell,
+    },
+    /// Exact coefficients of (36) as rational functions of nu, and of the recursion (40) as
+    /// rational functions of e2, derived by the crate's own recurrences; or the condition of
+    /// the K, E basis from them.
+    Symbolic(symbolic::SymbolicArgs),
+}
 
-COMMANDS:
-  fig2 [--nu NU] [--precision f64|dd|BITS] [--out DIR]
-        the paper's Fig. 2: eccentricity of the contact ellipse against A1/B1 for several
-        speeds, and against the speed for several A1/B1 (CSV in DIR/data, SVG in DIR/figures)
-  rayleigh --nu NU [--precision f64|dd|BITS] [--json]
-        m1 = (c_R/c2)^2, c_R/c2 and the three roots of the Rayleigh cubic
-  integrals --nu NU --speed MR --k K [--precision f64|dd|BITS | --tol TOL]
-            [--method auto|series|quadrature|subtracted] [--json]
-        I1, I2 of (34) in the normalisation of (37), with an error estimate; with --tol
-        (and no --precision) the lowest precision reaching TOL is chosen
-  ellipse --nu NU --speed MR --ratio A1_OVER_B1 [--precision ...] [--method auto|quadrature|fast]
-          [--repeat N] [--json]
-        the contact ellipse's axis ratio k = b/a (a along the motion) and eccentricity for
-        the curvature ratio A1/B1 = R2/R1 (R1 along the motion, R2 across)
-  contact --nu NU --speed MR --r-along R1 --r-across R2 (--load P | --approach D0)
-          --shear-modulus MU [--precision ...] [--json]
-        the full moving-punch Hertz solution: a, b, k, e, p0, d0, load
-  study rayleigh|series|recursion [--out DIR]
-        rayleigh: stability of the closed-form Rayleigh roots against nu and precision;
-        series: terms and time of the series (37) against M_R per target accuracy;
-        recursion: error growth of the forward recursion (40), bits lost in the K, E basis
-  study poisson [--out DIR]
-        how much Poisson's ratio changes e, k and a (the paper's 'about 2%' claim)
-  study stability [--out DIR]
-        maps of the digits each method delivers at f64 and double-double
-  study pareto [--out DIR]
-        accuracy against time of the ellipse solve for each method x precision
-  study integrals [--out DIR]
-        accuracy against cost of every method x precision for I1, I2 as M_R -> 1
-        (writes DIR/data/*.csv and DIR/figures/*.svg; DIR defaults to docs)
-  symbolic coefficients|moments|condition --n N [--format text|latex|sympy|json]
-        f_n(nu) of (36) and alpha_n, beta_n(e2) of (40) as exact rational functions;
-        condition: their pole at e2 = 0 and the bits the K, E basis loses (text, json)
-  help  this text
+/// A failure of a command, printed as one line; its kind fixes the exit code.
+#[derive(Debug)]
+pub enum CliError {
+    /// The command line was refused (exit code 2).
+    Input(String),
+    /// The computation failed or cannot meet the request (exit code 1).
+    Failed(String),
+}
 
-Numbers are parsed from their decimal text at the working precision and printed with every
-digit of it. --precision takes f64, dd (double-double) or a number of MPFR bits (24 or more).";
+impl CliError {
+    /// A value refused, naming the option and quoting the text as typed:
+    /// `invalid value '0.7' for '--nu': nu (Poisson's ratio) = 0.7 is outside …` (the form of
+    /// clap's own messages).
+    pub fn value(option: &str, text: &str, why: impl fmt::Display) -> CliError {
+        CliError::Input(format!("invalid value '{text}' for '{option}': {why}"))
+    }
+
+    /// A library error: refusals of an input (domain, not finite, parse, precision) exit 2,
+    /// computations that fail or cannot meet the request exit 1.
+    pub fn lib(e: moving_hertz::Error) -> CliError {
+        use moving_hertz::Error as E;
+        match e {
+            E::Domain { .. } | E::NotFinite { .. } | E::Parse { .. } | E::Precision { .. } => {
+                CliError::Input(e.to_string())
+            }
+            E::NoConvergence { .. } | E::TermCap { .. } | E::Unreachable { .. } => {
+                CliError::Failed(e.to_string())
+            }
+        }
+    }
+
+    /// A library error from a run whose inputs are `inputs` (the library's name of a quantity,
+    /// or its prefix; the option; the text as typed): an error about one of them names the
+    /// option and quotes the text, any other is passed through as [`CliError::lib`] after
+    /// `context` (what was being computed, from which inputs).
+    pub fn from_run(
+        e: moving_hertz::Error,
+        inputs: &[(&str, &str, &str)],
+        context: &str,
+    ) -> CliError {
+        use moving_hertz::Error as E;
+        let name = match &e {
+            E::Domain { name, .. } | E::NotFinite { name, .. } => Some(*name),
+            _ => None,
+        };
+        let hit = name.and_then(|n| inputs.iter().find(|(lib, _, _)| n.starts_with(lib)));
+        match hit {
+            Some((_, option, text)) => CliError::value(option, text, &e),
+            None => match CliError::lib(e) {
+                CliError::Input(m) => CliError::Input(format!("{context}: {m}")),
+                CliError::Failed(m) => CliError::Failed(format!("{context}: {m}")),
+            },
+        }
+    }
+
+    fn code(&self) -> i32 {
+        match self {
+            CliError::Input(_) => 2,
+            CliError::Failed(_) => 1,
+        }
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CliError::Input(m) | CliError::Failed(m) => f.write_str(m),
+        }
+    }
+}
 
 /// Runs the command line; returns the process's exit code.
 pub fn main() -> i32 {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match run(&args) {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_failure(e),
+    };
+    match run(cli.command) {
         Ok(()) => 0,
-        Err(msg) => {
-            eprintln!("moving-hertz: {msg}");
+        Err(e) => {
+            eprintln!("moving-hertz: error: {e}");
+            e.code()
+        }
+    }
+}
+
+fn run(command: Command) -> Result<(), CliError> {
+    match command {
+        Command::Fig2(a) => fig2::run(&a),
+        Command::Rayleigh(a) => rayleigh::run(&a),
+        Command::Integrals(a) => integrals::run(&a),
+        Command::Ellipse(a) => ellipse::run(&a),
+        Command::Contact(a) => contact::run(&a),
+        Command::Study(a) => study::run(&a),
+        Command::Symbolic(a) => symbolic::run(a.kind, a.n, a.format),
+        Command::Completions { shell } => {
+            let mut script = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "moving-hertz", &mut script);
+            output::emit(&String::from_utf8_lossy(&script))
+        }
+    }
+}
+
+/// Help and version go to standard output with exit code 0; a refused command line prints one
+/// line on standard error (clap's message, its tips, and where the help is) and exits 2.
+fn clap_failure(e: clap::Error) -> i32 {
+    use clap::error::ErrorKind;
+    match e.kind() {
+        ErrorKind::DisplayHelp
+        | ErrorKind::DisplayVersion
+        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            e.exit_code()
+        }
+        _ => {
+            eprintln!("moving-hertz: {}", one_line(&e.render().to_string()));
             2
         }
     }
 }
 
-/// Runs the command in `argv`; an `Err` is one line for the user.
-pub fn run(argv: &[String]) -> Result<(), String> {
-    let Some(cmd) = argv.first() else {
-        println!("{HELP}");
-        return Ok(());
-    };
-    let rest = &argv[1..];
-    match cmd.as_str() {
-        "help" | "--help" | "-h" => {
-            println!("{HELP}");
-            Ok(())
+/// clap's rendered error on one line: `error: …` first, then its tips and the pointer to the
+/// help, separated by semicolons (the usage block is left out: `--help` shows it).
+fn one_line(rendered: &str) -> String {
+    let mut out = String::new();
+    let mut in_usage = false;
+    for line in rendered.lines() {
+        let t = line.trim();
+        if t.is_empty() {
+            in_usage = false;
+            continue;
         }
-        "integrals" => integrals::run(&Args::parse(
-            cmd,
-            rest,
-            &["nu", "speed", "k", "precision", "method", "tol"],
-            &["json"],
-        )?),
-        "fig2" => fig2::run(&Args::parse(cmd, rest, &["nu", "precision", "out"], &[])?),
-        "ellipse" => contact::ellipse(&Args::parse(
-            cmd,
-            rest,
-            &["nu", "speed", "ratio", "precision", "method", "repeat"],
-            &["json"],
-        )?),
-        "contact" => contact::contact(&Args::parse(
-            cmd,
-            rest,
-            &[
-                "nu",
-                "speed",
-                "r-along",
-                "r-across",
-                "load",
-                "approach",
-                "shear-modulus",
-                "precision",
-            ],
-            &["json"],
-        )?),
-        "rayleigh" => rayleigh::run(&Args::parse(cmd, rest, &["nu", "precision"], &["json"])?),
-        "study" => {
-            let Some(name) = rest.first() else {
-                return Err("`study` needs a study name (rayleigh, series, recursion)".into());
-            };
-            study::run(name, &Args::parse(cmd, &rest[1..], &["out"], &[])?)
+        if t.starts_with("Usage:") {
+            in_usage = true;
         }
-        "symbolic" => {
-            let a = Args::parse(cmd, rest.get(1..).unwrap_or(&[]), &["n", "format"], &[])?;
-            symbolic::run(
-                symbolic::SymbolicKind::parse(rest.first().map_or("", |s| s.as_str()))?,
-                symbolic::parse_n(a.required("n")?)?,
-                symbolic::SymbolicFormat::parse(a.optional("format").unwrap_or("text"))?,
-            )
+        if in_usage {
+            continue;
         }
-        other => Err(format!(
-            "unknown command `{other}` (try `moving-hertz help`)"
-        )),
+        let t = t.replace("For more information, try", "for more information, try");
+        let sep = if out.is_empty() {
+            ""
+        } else if out.ends_with(':') {
+            " "
+        } else {
+            "; "
+        };
+        out.push_str(sep);
+        out.push_str(t.trim_end_matches('.'));
     }
+    out
 }

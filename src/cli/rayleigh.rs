@@ -1,48 +1,89 @@
-//! `moving-hertz rayleigh`: the Rayleigh root and the other two roots of the cubic.
+//! `moving-hertz rayleigh`: the Rayleigh root and the other two roots of the cubic (section 3).
 
-use super::args::Args;
-use super::json::{s, Json};
-use moving_hertz::physics::Material;
-use moving_hertz::scalar::Real;
-use moving_hertz::with_precision;
+use super::args::{self, Decimal};
+use super::output::{print_json, OutputArgs, Text};
+use super::CliError;
+use moving_hertz::scalar::{Precision, Real};
+use moving_hertz::{with_precision, Material};
+use serde::Serialize;
 
-pub fn run(args: &Args) -> Result<(), String> {
-    let nu_text = args.required("nu")?;
-    let prec = args.precision()?;
-    let json = args.flag("json");
-    with_precision!(prec, T, p => {
-        let nu = T::parse(nu_text, p).map_err(|e| format!("--nu: {e}"))?;
-        let mat = Material::new(nu).map_err(|e| e.to_string())?;
-        let r = mat.roots();
-        let roots = r.all();
-        if json {
-            let obj = Json::Obj(vec![
-                ("nu".into(), s(mat.nu().to_decimal())),
-                ("precision".into(), s(prec.label())),
-                ("m1".into(), s(r.m1.to_decimal())),
-                ("cR_over_c2".into(), s(mat.cr_over_c2().to_decimal())),
-                (
-                    "roots".into(),
-                    Json::Arr(
-                        roots
-                            .iter()
-                            .map(|z| Json::Arr(vec![s(z.re.to_decimal()), s(z.im.to_decimal())]))
-                            .collect(),
-                    ),
-                ),
-            ]);
-            println!("{}", obj.render());
-        } else {
-            println!("Rayleigh cubic (1-nu)x^3 - 8(1-nu)x^2 + 8(2-nu)x - 8 = 0, x = (V/c2)^2");
-            println!("nu        = {}", mat.nu().to_decimal());
-            println!("precision = {} ({} bits)", prec.label(), prec.bits());
-            println!("m1 = (c_R/c2)^2 = {}", r.m1.to_decimal());
-            println!("c_R/c2          = {}", mat.cr_over_c2().to_decimal());
-            println!("c_R/c1          = {}", mat.cr_over_c1().to_decimal());
-            for (i, z) in roots.iter().enumerate() {
-                println!("root m{}: re = {}  im = {}", i + 1, z.re.to_decimal(), z.im.to_decimal());
-            }
-        }
-        Ok(())
+#[derive(clap::Args, Debug)]
+pub struct RayleighArgs {
+    /// Poisson's ratio ν, -1 < NU <= 1/2 (dimensionless; decimal or p/q, checked exactly
+    /// before it is rounded).
+    #[arg(long, value_name = "NU", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub nu: Decimal,
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
+    /// (24 to 1048576).
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    pub precision: Precision,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+#[derive(Serialize)]
+struct Inputs<'a> {
+    nu: &'a str,
+    precision: String,
+}
+
+/// The JSON object of `rayleigh` (docs/cli.md).
+#[derive(Serialize)]
+struct Json<'a> {
+    command: &'static str,
+    inputs: Inputs<'a>,
+    precision: String,
+    bits: String,
+    m1: String,
+    #[serde(rename = "cR_over_c2")]
+    cr_over_c2: String,
+    #[serde(rename = "cR_over_c1")]
+    cr_over_c1: String,
+    roots: Vec<[String; 2]>,
+}
+
+pub fn run(a: &RayleighArgs) -> Result<(), CliError> {
+    with_precision!(a.precision, T, p => {
+        let mat = Material::<T>::parse(&a.nu.text, p).map_err(|e| CliError::value("--nu", &a.nu.text, e))?;
+        report(a, &mat)
     })
+}
+
+fn report<T: Real>(a: &RayleighArgs, mat: &Material<T>) -> Result<(), CliError> {
+    let prec = a.precision;
+    let r = mat.roots();
+    let roots = r.all();
+    if a.output.json {
+        return print_json(&Json {
+            command: "rayleigh",
+            inputs: Inputs {
+                nu: &a.nu.text,
+                precision: prec.label(),
+            },
+            precision: prec.label(),
+            bits: prec.bits().to_string(),
+            m1: r.m1.to_decimal(),
+            cr_over_c2: mat.cr_over_c2().to_decimal(),
+            cr_over_c1: mat.cr_over_c1().to_decimal(),
+            roots: roots
+                .iter()
+                .map(|z| [z.re.to_decimal(), z.im.to_decimal()])
+                .collect(),
+        });
+    }
+    let mut t = Text::new(a.output.digits);
+    t.line(format!(
+        "Rayleigh cubic (1-nu)x^3 - 8(1-nu)x^2 + 8(2-nu)x - 8 = 0, x = (V/c2)^2, for nu = {}",
+        a.nu.text
+    ));
+    t.line(format!("at {} ({} bits)", prec.label(), prec.bits()));
+    t.plain("m1 = (c_R/c2)^2, the Rayleigh root", &r.m1);
+    t.plain("c_R/c2", &mat.cr_over_c2());
+    t.plain("c_R/c1", &mat.cr_over_c1());
+    for (i, z) in roots.iter().enumerate() {
+        t.line(format!("root m{} (real part, imaginary part):", i + 1));
+        t.line(format!("  {}", t.value(&z.re)));
+        t.line(format!("  {}", t.value(&z.im)));
+    }
+    t.print()
 }

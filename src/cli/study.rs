@@ -1,33 +1,67 @@
 //! `moving-hertz study <name>`: runs a study and writes its CSV data, SVG charts and summary
 //! under `docs/` (or `--out DIR`).
 
-use super::args::Args;
+use super::args::OutDir;
 use super::progress::Progress;
+use super::CliError;
 use crate::studies::{self, integrals, pareto, poisson, rayleigh, series, stability};
 use moving_hertz::Method;
-use std::path::PathBuf;
 
-pub fn run(name: &str, args: &Args) -> Result<(), String> {
-    let out = PathBuf::from(args.optional("out").unwrap_or("docs"));
-    match name {
-        "rayleigh" => study_rayleigh(&out),
-        "integrals" => study_integrals(&out),
-        "poisson" => study_poisson(&out),
-        "pareto" => study_pareto(&out),
-        "series" => study_series(&out),
-        "recursion" => study_recursion(&out),
-        "stability" => study_stability(&out),
-        other => Err(format!(
-            "unknown study `{other}` (available: rayleigh, series, recursion, integrals, poisson, pareto, stability)"
-        )),
+/// `println!` that ignores a reader that closed the pipe (the studies print as they go).
+macro_rules! say {
+    ($($t:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($t)*);
+    }};
+}
+
+#[derive(clap::Args, Debug)]
+pub struct StudyArgs {
+    /// The study to run.
+    #[arg(value_enum, value_name = "NAME")]
+    pub name: Study,
+    #[command(flatten)]
+    pub out: OutDir,
+}
+
+/// The studies behind the pages of docs/.
+#[derive(clap::ValueEnum, Clone, Copy, Debug)]
+pub enum Study {
+    /// Stability of the closed-form Rayleigh roots against nu and precision (docs/rayleigh.md).
+    Rayleigh,
+    /// Terms and time of the series (37) against M_R per target accuracy (docs/series.md).
+    Series,
+    /// Error growth of the forward recursion (40), bits lost in the K, E basis (docs/series.md).
+    Recursion,
+    /// Accuracy against cost of every method x precision for I1, I2 as M_R -> 1
+    /// (docs/integrals.md).
+    Integrals,
+    /// How much Poisson's ratio changes e, k and a (docs/results.md).
+    Poisson,
+    /// Accuracy against time of the ellipse solve for each method x precision.
+    Pareto,
+    /// Maps of the digits each method delivers at f64 and double-double (docs/stability.md).
+    Stability,
+}
+
+pub fn run(a: &StudyArgs) -> Result<(), CliError> {
+    let out = a.out.prepare()?;
+    match a.name {
+        Study::Rayleigh => study_rayleigh(out),
+        Study::Integrals => study_integrals(out),
+        Study::Poisson => study_poisson(out),
+        Study::Pareto => study_pareto(out),
+        Study::Series => study_series(out),
+        Study::Recursion => study_recursion(out),
+        Study::Stability => study_stability(out),
     }
 }
 
-fn io(e: std::io::Error) -> String {
-    format!("writing study output: {e}")
+fn io(e: std::io::Error) -> CliError {
+    CliError::Failed(format!("writing study output: {e}"))
 }
 
-fn study_rayleigh(out: &std::path::Path) -> Result<(), String> {
+fn study_rayleigh(out: &std::path::Path) -> Result<(), CliError> {
     let nus = rayleigh::nu_grid();
     eprintln!(
         "rayleigh roots: {} values of nu at 4 precisions ...",
@@ -68,8 +102,8 @@ fn study_rayleigh(out: &std::path::Path) -> Result<(), String> {
         md.push_str(&format!("| {} |\n", row.join(" | ")));
     }
     studies::write_text(&out.join("data/rayleigh_summary.md"), &md).map_err(io)?;
-    println!("{md}");
-    println!(
+    say!("{md}");
+    say!(
         "wrote {} and charts under {}",
         data.display(),
         out.join("figures").display()
@@ -77,10 +111,10 @@ fn study_rayleigh(out: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
-fn study_integrals(out: &std::path::Path) -> Result<(), String> {
+fn study_integrals(out: &std::path::Path) -> Result<(), CliError> {
     let (nu, k) = ("0.2", "0.3");
     let rows = integrals::run(nu, k, 60.0, |mr| eprintln!("integrals: M_R = {mr} ..."))
-        .map_err(|e| e.to_string())?;
+        .map_err(CliError::lib)?;
     let csv: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
@@ -115,11 +149,11 @@ fn study_integrals(out: &std::path::Path) -> Result<(), String> {
     for (name, svg) in integrals::charts(&rows) {
         studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
     }
-    println!("| M_R | method | precision | rel. error | estimate | time | work |");
-    println!("|---|---|---|---|---|---|---|");
+    say!("| M_R | method | precision | rel. error | estimate | time | work |");
+    say!("|---|---|---|---|---|---|---|");
     for r in &rows {
         match &r.failure {
-            None => println!(
+            None => say!(
                 "| {} | {} | {} | {:.1e} | {:.1e} | {:.3} µs | {} |",
                 r.mr,
                 r.method.label(),
@@ -129,7 +163,7 @@ fn study_integrals(out: &std::path::Path) -> Result<(), String> {
                 r.time_ns / 1e3,
                 r.work
             ),
-            Some(f) => println!(
+            Some(f) => say!(
                 "| {} | {} | {} | failed: {} | | | |",
                 r.mr,
                 r.method.label(),
@@ -138,7 +172,7 @@ fn study_integrals(out: &std::path::Path) -> Result<(), String> {
             ),
         }
     }
-    println!(
+    say!(
         "wrote {} and charts under {} (nu = {nu}, k = {k})",
         data.display(),
         out.join("figures").display()
@@ -146,10 +180,10 @@ fn study_integrals(out: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
-fn study_poisson(out: &std::path::Path) -> Result<(), String> {
+fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
     let total = poisson::nu_grid().len() * poisson::SPEEDS.len() * poisson::ratio_grid().len();
     let mut bar = Progress::new("poisson", total);
-    let pts = poisson::run(|| bar.tick()).map_err(|e| e.to_string())?;
+    let pts = poisson::run(|| bar.tick()).map_err(CliError::lib)?;
     bar.finish();
     let csv: Vec<Vec<String>> = pts
         .iter()
@@ -183,14 +217,13 @@ fn study_poisson(out: &std::path::Path) -> Result<(), String> {
     for (name, svg) in poisson::charts(&pts) {
         studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
     }
-    println!(
-        "Largest deviation from nu = 0.2 (max over A1/B1 in [0.01, 1]), in %: e absolute (x100),"
-    );
-    println!("k and a(M_R)/a(0) relative:");
-    println!("| M_R | e, 0<=nu<=1/2 | e, all nu | k, 0<=nu<=1/2 | k, all nu | a/a0, 0<=nu<=1/2 | a/a0, all nu |");
-    println!("|---|---|---|---|---|---|---|");
+    say!("Largest deviation from nu = 0.2 (max over A1/B1 in [0.01, 1]), in %: e absolute (x100),");
+    say!("k and a(M_R)/a(0) relative:");
+    say!("| M_R | e, 0<=nu<=1/2 | e, all nu | k, 0<=nu<=1/2 | k, all nu | a/a0, 0<=nu<=1/2 | a/a0, all nu |");
+    say!("|---|---|---|---|---|---|---|");
     use poisson::Deviation::{Absolute, Relative};
-    let fs: [(poisson::Deviation, fn(&poisson::Point) -> f64); 3] = [
+    type Metric = (poisson::Deviation, fn(&poisson::Point) -> f64);
+    let fs: [Metric; 3] = [
         (Absolute, |q| q.e),
         (Relative, |q| q.k),
         (Relative, |q| q.a_rel),
@@ -207,16 +240,16 @@ fn study_poisson(out: &std::path::Path) -> Result<(), String> {
                 cells.push(format!("{:.3}", 100.0 * w));
             }
         }
-        println!("| {mr} | {} |", cells.join(" | "));
+        say!("| {mr} | {} |", cells.join(" | "));
     }
-    println!("wrote {} and figures/poisson_*.svg", data.display());
+    say!("wrote {} and figures/poisson_*.svg", data.display());
     Ok(())
 }
 
-fn study_pareto(out: &std::path::Path) -> Result<(), String> {
+fn study_pareto(out: &std::path::Path) -> Result<(), CliError> {
     let methods = [Method::Fixed, Method::Adaptive];
     let rows = pareto::run(&methods, 200.0, |what| eprintln!("pareto: {what} ..."))
-        .map_err(|e| e.to_string())?;
+        .map_err(CliError::lib)?;
     let csv: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
@@ -251,11 +284,11 @@ fn study_pareto(out: &std::path::Path) -> Result<(), String> {
     for (name, svg) in pareto::charts(&rows, &methods) {
         studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
     }
-    println!("| M_R | method | precision | error of k | estimate | time per solve |");
-    println!("|---|---|---|---|---|---|");
+    say!("| M_R | method | precision | error of k | estimate | time per solve |");
+    say!("|---|---|---|---|---|---|");
     for r in &rows {
         match &r.failure {
-            None => println!(
+            None => say!(
                 "| {} | {} | {} | {:.1e} | {:.1e} | {:.3} ms |",
                 r.mr,
                 r.method.label(),
@@ -264,7 +297,7 @@ fn study_pareto(out: &std::path::Path) -> Result<(), String> {
                 r.estimate,
                 r.time_ns / 1e6
             ),
-            Some(f) => println!(
+            Some(f) => say!(
                 "| {} | {} | {} | failed: {f} | | |",
                 r.mr,
                 r.method.label(),
@@ -272,18 +305,18 @@ fn study_pareto(out: &std::path::Path) -> Result<(), String> {
             ),
         }
     }
-    println!("wrote {} and figures/pareto_*.svg", data.display());
+    say!("wrote {} and figures/pareto_*.svg", data.display());
     Ok(())
 }
 
-fn study_series(out: &std::path::Path) -> Result<(), String> {
+fn study_series(out: &std::path::Path) -> Result<(), CliError> {
     let speeds = series::speed_grid();
     eprintln!(
         "series (37): terms and time at {} speeds x {} targets (about a minute) ...",
         speeds.len(),
         series::targets().len()
     );
-    let rows = series::terms_study(&speeds, 20.0).map_err(|e| e.to_string())?;
+    let rows = series::terms_study(&speeds, 20.0).map_err(CliError::lib)?;
     let csv: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
@@ -342,8 +375,8 @@ fn study_series(out: &std::path::Path) -> Result<(), String> {
         ));
     }
     studies::write_text(&out.join("data/series_summary.md"), &md).map_err(io)?;
-    println!("{md}");
-    println!(
+    say!("{md}");
+    say!(
         "wrote {} and charts under {}",
         data.display(),
         out.join("figures").display()
@@ -351,9 +384,9 @@ fn study_series(out: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
-fn study_recursion(out: &std::path::Path) -> Result<(), String> {
+fn study_recursion(out: &std::path::Path) -> Result<(), CliError> {
     eprintln!("forward recursion (40) against the exact form at 4 precisions ...");
-    let (points, growth) = series::forward_study().map_err(|e| e.to_string())?;
+    let (points, growth) = series::forward_study().map_err(CliError::lib)?;
     let csv: Vec<Vec<String>> = points
         .iter()
         .map(|p| {
@@ -442,7 +475,7 @@ fn study_recursion(out: &std::path::Path) -> Result<(), String> {
     }
     eprintln!("bits lost in the K, E basis over (n, e) and (n, k) ...");
     for k_side in [false, true] {
-        let map = series::condition_map(k_side).map_err(|e| e.to_string())?;
+        let map = series::condition_map(k_side).map_err(CliError::lib)?;
         let mut rows = Vec::new();
         for (i, x) in map.params.iter().enumerate() {
             for (j, n) in map.ns.iter().enumerate() {
@@ -465,8 +498,8 @@ fn study_recursion(out: &std::path::Path) -> Result<(), String> {
         studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
     }
     studies::write_text(&out.join("data/recursion_summary.md"), &md).map_err(io)?;
-    println!("{md}");
-    println!(
+    say!("{md}");
+    say!(
         "wrote CSV under {} and charts under {}",
         out.join("data").display(),
         out.join("figures").display()
@@ -474,7 +507,7 @@ fn study_recursion(out: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
-fn study_stability(out: &std::path::Path) -> Result<(), String> {
+fn study_stability(out: &std::path::Path) -> Result<(), CliError> {
     let mut bar = Progress::new("stability maps", stability::cells());
     let maps = stability::run(|| bar.tick());
     bar.finish();
@@ -490,7 +523,7 @@ fn study_stability(out: &std::path::Path) -> Result<(), String> {
         let all: Vec<f64> = m.z.iter().flatten().cloned().collect();
         let min = all.iter().cloned().fold(f64::INFINITY, f64::min);
         let full = all.iter().filter(|&&d| d >= m.full - 1.0).count();
-        println!(
+        say!(
             "{}: min {:.1} digits, {} of {} cells within a digit of full ({:.1})",
             m.name,
             min,

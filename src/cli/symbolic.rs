@@ -3,6 +3,7 @@
 //! exact (`moving_hertz::symbolic`); `symbolic condition --n N [--format text|json]`: what the
 //! closed forms say about the K, E basis (the pole at e² = 0, the bits lost on a grid of e²).
 
+use super::CliError;
 use moving_hertz::routes::moments::KeTerm;
 use moving_hertz::scalar::decimal_to_rational;
 use moving_hertz::symbolic::{
@@ -91,8 +92,28 @@ fn condition(forms: &[KeTerm<RatFunc>], style: Style) -> Result<(), String> {
     Ok(())
 }
 
+/// `moving-hertz symbolic KIND --n N [--format FORMAT]`.
+#[derive(clap::Args, Debug)]
+pub struct SymbolicArgs {
+    /// What to derive: `coefficients` (f_n of (35)-(36) as F_n(nu) x^n, n = 0..N, with the
+    /// paper's printed f1, f2 beside them), `moments` (alpha_n..delta_n(e2) of (40),
+    /// L_n = alpha_n K + beta_n E, M_n = gamma_n K + delta_n E) or `condition` (the pole of
+    /// alpha_n, beta_n at e2 = 0 and the bits the K, E basis loses on a grid of e2).
+    #[arg(value_enum)]
+    pub kind: SymbolicKind,
+    /// The largest index N: 1 <= N <= 120 for coefficients, 1 <= N <= 150 for moments and
+    /// condition (each derived in about a second).
+    #[arg(long, value_name = "N")]
+    pub n: usize,
+    /// Output: plain text, LaTeX (align*), sympy (`name = expression` lines that
+    /// `sympy.sympify` parses, in the variables nu, x, e2) or JSON. `condition` prints text or
+    /// JSON.
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: SymbolicFormat,
+}
+
 /// What to derive.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum SymbolicKind {
     /// f_n = F_n(ν)·x^n, n = 0 … N, and the paper's printed f1, f2 beside them.
     Coefficients,
@@ -103,22 +124,8 @@ pub enum SymbolicKind {
     Condition,
 }
 
-impl SymbolicKind {
-    /// `coefficients`, `moments` or `condition`.
-    pub fn parse(s: &str) -> Result<Self, String> {
-        match s {
-            "coefficients" => Ok(SymbolicKind::Coefficients),
-            "moments" => Ok(SymbolicKind::Moments),
-            "condition" => Ok(SymbolicKind::Condition),
-            other => Err(format!(
-                "`symbolic` takes `coefficients`, `moments` or `condition`, not `{other}`"
-            )),
-        }
-    }
-}
-
 /// The output format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum SymbolicFormat {
     /// Plain text.
     Text,
@@ -130,43 +137,30 @@ pub enum SymbolicFormat {
     Json,
 }
 
-impl SymbolicFormat {
-    /// `text`, `latex`, `sympy` or `json`.
-    pub fn parse(s: &str) -> Result<Self, String> {
-        match s {
-            "text" => Ok(SymbolicFormat::Text),
-            "latex" => Ok(SymbolicFormat::Latex),
-            "sympy" => Ok(SymbolicFormat::Sympy),
-            "json" => Ok(SymbolicFormat::Json),
-            other => Err(format!(
-                "--format: `{other}` is not one of text, latex, sympy, json"
-            )),
-        }
-    }
-}
-
-/// The largest index `--n` may take: [`MAX_COEFFICIENT_INDEX`] or [`MAX_MOMENT_INDEX`] (each
-/// derived in about a second).
-pub fn parse_n(s: &str) -> Result<usize, String> {
-    s.trim()
-        .parse::<usize>()
-        .map_err(|_| format!("--n: `{s}` is not a non-negative integer"))
-}
-
 /// Derives and prints the functions of `kind` for indices 0 … `n` in `format`.
-pub fn run(kind: SymbolicKind, n: usize, format: SymbolicFormat) -> Result<(), String> {
+pub fn run(kind: SymbolicKind, n: usize, format: SymbolicFormat) -> Result<(), CliError> {
+    let max = match kind {
+        SymbolicKind::Coefficients => MAX_COEFFICIENT_INDEX,
+        _ => MAX_MOMENT_INDEX,
+    };
+    if n == 0 || n > max {
+        let why = format!("n = {n} is outside 1 <= n <= {max}");
+        return Err(CliError::value("--n", &n.to_string(), why));
+    }
     let style = match format {
         SymbolicFormat::Text => Style::Text,
         SymbolicFormat::Latex => Style::Latex,
         SymbolicFormat::Sympy => Style::Sympy,
         SymbolicFormat::Json => Style::Json,
     };
-    let err = |e: moving_hertz::Error| format!("--n: {e}");
+    let err = |e: moving_hertz::Error| CliError::Failed(e.to_string());
     if kind == SymbolicKind::Condition {
         if !matches!(style, Style::Text | Style::Json) {
-            return Err("--format: `symbolic condition` prints text or json".into());
+            return Err(CliError::Input(
+                "invalid value for '--format': `symbolic condition` prints text or json".into(),
+            ));
         }
-        return condition(&moment_forms(n).map_err(err)?, style);
+        return condition(&moment_forms(n).map_err(err)?, style).map_err(CliError::Failed);
     }
     let (title, items) = match kind {
         SymbolicKind::Coefficients => (

@@ -1,0 +1,178 @@
+//! `moving-hertz ellipse`: the contact ellipse's shape, (33) I2(k)/I1(k) = A1/B1, by
+//! [`solve_ellipse`].
+
+use super::args::{self, Decimal, MaterialSpeed, REPEAT_CAP};
+use super::output::{json_pair, largest, print_json, OutputArgs, Text};
+use super::CliError;
+use moving_hertz::scalar::{Precision, Real};
+use moving_hertz::{solve_ellipse, with_precision, Ellipse, Method, Options};
+use serde::Serialize;
+use std::time::Instant;
+
+#[derive(clap::Args, Debug)]
+pub struct EllipseArgs {
+    #[command(flatten)]
+    pub input: MaterialSpeed,
+    /// The curvature ratio A1/B1 = R2/R1 > 0 (dimensionless; R1 the punch's radius of
+    /// curvature along the motion, R2 across it).
+    #[arg(long, value_name = "A1/B1", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub ratio: Decimal,
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
+    /// (24 to 1048576).
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    pub precision: Precision,
+    /// How the integrals are evaluated at each Newton iterate: auto (the fixed rules where they
+    /// apply, else adaptive quadrature), adaptive or fixed. series and adaptive-subtracted
+    /// give no k-derivatives and are refused.
+    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::method())]
+    pub method: Method,
+    /// Also time N further solves (1 <= N <= 1000, checked before any work) and report the
+    /// median and the minimum wall time per solve, in nanoseconds.
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u64).range(1..=REPEAT_CAP as u64))]
+    pub repeat: Option<u64>,
+    #[command(flatten)]
+    pub output: OutputArgs,
+}
+
+/// The inputs as typed (JSON `inputs`).
+#[derive(Serialize)]
+struct Inputs<'a> {
+    nu: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    speed: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    gap: Option<&'a str>,
+    ratio: &'a str,
+    method: &'a str,
+    precision: String,
+}
+
+/// The JSON object of `ellipse` (docs/cli.md).
+#[derive(Serialize)]
+struct Json<'a> {
+    command: &'static str,
+    inputs: Inputs<'a>,
+    precision: String,
+    bits: String,
+    route: &'static str,
+    k: String,
+    k_error: String,
+    e: String,
+    e_error: String,
+    major_axis: &'static str,
+    #[serde(rename = "I1")]
+    i1: String,
+    #[serde(rename = "I1_error")]
+    i1_error: String,
+    #[serde(rename = "I2")]
+    i2: String,
+    #[serde(rename = "I2_error")]
+    i2_error: String,
+    iterations: String,
+    error_estimate: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    repeat: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    median_ns: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    min_ns: Option<String>,
+}
+
+pub fn run(a: &EllipseArgs) -> Result<(), CliError> {
+    with_precision!(a.precision, T, p => {
+        let speed = a.input.at::<T>(p)?;
+        let ratio: T = args::positive(&a.ratio, "--ratio", "curvature ratio A1/B1", p)?;
+        let opts = Options::<T> { method: a.method, ..Default::default() };
+        let inputs = [("method", "--method", a.method.label()), ("curvature ratio", "--ratio", a.ratio.text.as_str())];
+        let context = format!("solving (33) for A1/B1 = {} at {}", a.ratio.text, a.precision);
+        let sol = solve_ellipse(&speed, &ratio, &opts).map_err(|e| CliError::from_run(e, &inputs, &context))?;
+        let times = time(a.repeat.unwrap_or(0), || solve_ellipse(&speed, &ratio, &opts).is_ok());
+        report(a, &sol, &times)
+    })
+}
+
+/// Wall times of `n` calls of `f`, in nanoseconds, sorted.
+pub fn time(n: u64, mut f: impl FnMut() -> bool) -> Vec<f64> {
+    let mut t: Vec<f64> = (0..n)
+        .map(|_| {
+            let start = Instant::now();
+            std::hint::black_box(f());
+            start.elapsed().as_nanos() as f64
+        })
+        .collect();
+    t.sort_by(|a, b| a.total_cmp(b));
+    t
+}
+
+fn report<T: Real>(a: &EllipseArgs, sol: &Ellipse<T>, times: &[f64]) -> Result<(), CliError> {
+    let ig = &sol.integrals;
+    let prec = ig.precision;
+    let (speed_kind, speed_text) = a.input.given();
+    let median = (!times.is_empty()).then(|| format!("{:.0}", times[times.len() / 2]));
+    let min = times.first().map(|t| format!("{t:.0}"));
+    if a.output.json {
+        let (k, k_error) = json_pair(&sol.k);
+        let (e, e_error) = json_pair(&sol.e);
+        let (i1, i1_error) = json_pair(&ig.i1);
+        let (i2, i2_error) = json_pair(&ig.i2);
+        return print_json(&Json {
+            command: "ellipse",
+            inputs: Inputs {
+                nu: &a.input.nu.text,
+                speed: (speed_kind == "speed").then_some(speed_text),
+                gap: (speed_kind == "gap").then_some(speed_text),
+                ratio: &a.ratio.text,
+                method: a.method.label(),
+                precision: a.precision.label(),
+            },
+            precision: prec.label(),
+            bits: prec.bits().to_string(),
+            route: ig.route.label(),
+            k,
+            k_error,
+            e,
+            e_error,
+            major_axis: sol.major.label(),
+            i1,
+            i1_error,
+            i2,
+            i2_error,
+            iterations: sol.iterations.to_string(),
+            error_estimate: largest(&[sol.k.error, sol.e.error, ig.i1.error, ig.i2.error]),
+            repeat: (!times.is_empty()).then(|| times.len().to_string()),
+            median_ns: median,
+            min_ns: min,
+        });
+    }
+    let mut t = Text::new(a.output.digits);
+    t.line(format!(
+        "contact ellipse (33) for A1/B1 = R2/R1 = {}, {}, nu = {}",
+        a.ratio.text,
+        a.input.phrase(),
+        a.input.nu.text
+    ));
+    t.line(format!(
+        "at {} ({} bits), method {}: route {}, {} evaluations",
+        prec.label(),
+        prec.bits(),
+        a.method,
+        ig.route,
+        sol.iterations
+    ));
+    t.result("k = b/a (across/along the motion)", &sol.k);
+    let major = format!(
+        "eccentricity e (major axis {} the motion)",
+        sol.major.label()
+    );
+    t.result_abs(&major, &sol.e);
+    t.result("I1 (normalisation of (37))", &ig.i1);
+    t.result("I2 (normalisation of (37))", &ig.i2);
+    if let (Some(med), Some(min)) = (median, min) {
+        t.line(format!(
+            "time per solve over {} runs: median {med} ns, min {min} ns",
+            times.len()
+        ));
+    }
+    t.print()
+}
