@@ -97,7 +97,9 @@ def cpu():
             info = fh.read()
         model = re.search(r"^model name\s*:\s*(.+)$", info, re.M)
         n = len(re.findall(r"^processor\s*:", info, re.M))
-        return f"{model.group(1).strip() if model else 'unknown CPU'}, {n} logical cores"
+        mhz = re.search(r"^cpu MHz\s*:\s*([0-9.]+)", info, re.M)
+        clock = f" at {float(mhz.group(1)) / 1000:.1f} GHz" if mhz else ""
+        return f"{model.group(1).strip() if model else 'unknown CPU'}{clock}, {n} logical cores"
     except OSError:
         return "unknown CPU"
 
@@ -230,6 +232,7 @@ def page(data):
     times = [t for _, t in data.values()]
     day = lambda t: datetime.datetime.fromtimestamp(t, datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
     head = sh("git", "rev-parse", "--short=12", "HEAD") or "unknown"
+    code = sh("git", "log", "-1", "--format=%h", "--abbrev=12", "--", "src", "benches", "Cargo.lock") or head
     dirty = sh("git", "status", "--porcelain", "--", "src", "benches", "Cargo.toml", "Cargo.lock")
     rustc = sh("rustc", "--version") or "rustc (unknown version)"
 
@@ -243,7 +246,8 @@ def page(data):
          "**Measurement.**", "",
          f"* command: `for b in {BENCHES}; do cargo bench --bench $b -- --warm-up-time 1 "
          "--measurement-time 3; done`, then `python3 tools/gen_performance.py`",
-         f"* code: commit `{head}`" + (" with uncommitted changes in src/ or benches/" if dirty else ""),
+         f"* code: src/ and benches/ as of commit `{code}` (page generated at `{head}`)"
+         + (", with uncommitted changes in src/ or benches/" if dirty else ""),
          f"* CPU: {cpu()}; {rustc}; `--release`, default target (double-double uses the FMA "
          "instruction, detected at run time)",
          f"* date: {day(min(times))} to {day(max(times))}" if times else "* date: (no data)", "",
