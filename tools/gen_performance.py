@@ -9,6 +9,7 @@ Usage (from the repository root, after the benches have run):
     cargo build --release && python3 tools/baseline_solve.py > target/baseline_solve.md   # optional
     python3 tools/gen_performance.py            # writes docs/performance.md
     python3 tools/gen_performance.py --check    # prints the page instead of writing it
+    python3 tools/gen_performance.py --note "load average 3-4 on 2 cores"   # conditions, in the header
 
 It reads every target/criterion/**/new/benchmark.json (the group and function of a benchmark)
 with the estimates.json beside it (the median), groups the benchmarks by bench and precision
@@ -220,7 +221,7 @@ def targets(fams, flat):
     return lines
 
 
-def page(data):
+def page(data, note=None):
     fams, other = {}, {}
     for (g, f), (ns, _) in data.items():
         fam, prec = family_of(g, f)
@@ -250,7 +251,10 @@ def page(data):
          + (", with uncommitted changes in src/ or benches/" if dirty else ""),
          f"* CPU: {cpu()}; {rustc}; `--release`, default target (double-double uses the FMA "
          "instruction, detected at run time)",
-         f"* date: {day(min(times))} to {day(max(times))}" if times else "* date: (no data)", "",
+         f"* date: {day(min(times))} to {day(max(times))}" if times else "* date: (no data)"]
+    if note:
+        L.append(f"* conditions: {note}")
+    L += ["",
          "The accuracy behind each route is asserted by the tests and stated in each item's rustdoc; "
          "how the cost grows beyond 256 bits is in [precision.md](precision.md); the thresholds the "
          "solvers use and how they were chosen are in [calibration.md](calibration.md).", "",
@@ -304,11 +308,12 @@ def page(data):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true", help="print the page instead of writing it")
+    ap.add_argument("--note", help="conditions of the run for the header, e.g. the machine's load")
     args = ap.parse_args()
     data = load()
     if not data:
         sys.exit(f"gen_performance: no criterion output under {CRIT}; run the benches first")
-    text = page(data)
+    text = page(data, args.note)
     if args.check:
         sys.stdout.write(text)
     else:
