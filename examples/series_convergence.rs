@@ -1,7 +1,7 @@
 //! A convergence study from the library: how many terms the series (37) needs as the speed
 //! approaches the Rayleigh speed, at f64 and at 256 bits, against the adaptive quadrature 64 bits
-//! higher on the same exact inputs — and the typed error the series returns once its term cap is
-//! exceeded.
+//! higher on the inputs as rounded to each precision — and the typed error the series returns
+//! once its term cap is exceeded.
 //!
 //! Run: `cargo run --release --example series_convergence`
 
@@ -27,7 +27,9 @@ fn study<T: Real>(label: &str, p: T::Prec) -> Result<()> {
         // The decimal inputs held exactly, rounded once to each precision.
         let inputs = ExactInputs::parse("0.2", mr, "0.3")?;
         let (speed, k) = inputs.at::<T>(p)?;
-        let (speed_w, k_w) = inputs.at::<Mp>(pw)?;
+        // The reference: the adaptive quadrature 64 bits higher on the inputs as rounded to `p`
+        // (an error estimate is for the inputs as represented at the working precision).
+        let (speed_w, k_w) = inputs.rounded::<T>(p)?.at::<Mp>(pw)?;
         let r = integrals(&speed_w, &k_w, &adaptive)?;
         match integrals(&speed, &k, &series) {
             Ok(s) => {
