@@ -18,7 +18,7 @@ pub struct EllipseArgs {
     #[arg(long, value_name = "A1/B1", value_parser = args::decimal, allow_hyphen_values = true)]
     pub ratio: Decimal,
     /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 1048576).
+    /// (24 to 32768, the largest precision the quadrature rules are built for).
     #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
     pub precision: Precision,
     /// How the integrals are evaluated at each Newton iterate: auto (the fixed rules where they

@@ -17,7 +17,7 @@ pub struct Fig2Args {
           allow_hyphen_values = true)]
     pub nu: Decimal,
     /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 1048576).
+    /// (24 to 32768, the largest precision the quadrature rules are built for).
     #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
     pub precision: Precision,
     #[command(flatten)]

@@ -20,7 +20,7 @@ pub struct IntegralsArgs {
     #[arg(long, value_name = "K", value_parser = args::decimal, allow_hyphen_values = true)]
     pub k: Decimal,
     /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 1048576). Default f64; without it, --tol chooses the precision.
+    /// (24 to 32768, the largest precision the quadrature rules are built for). Default f64; without it, --tol chooses the precision.
     #[arg(long, value_name = "P", value_parser = args::precision)]
     pub precision: Option<Precision>,
     /// The relative tolerance for I1 and I2, 0 < TOL (dimensionless, any exponent: 1e-10000
