@@ -24,21 +24,19 @@
 //! bits only lengths whose rule has at most [`MAX_RULE_NODES`] nodes, [`max_units`], since a
 //! rule's construction grows like n² and the rules are built on first use). Panel
 //! boundaries at whole multiples of ln 2 make every node's e^{±x} a product of a cached
-//! 2^{±(1+t)ℓ/2} by 2^{±c}: no exponential a node. (Equal panels of ln 4, the layout this
-//! replaced, took 1.4–1.6 times the left nodes for k ≥ 3 at `f64`, 1.4–1.5 at double-double.)
+//! 2^{±(1+t)ℓ/2} by 2^{±c}: no exponential a node (the choice of layout: docs/calibration.md).
 //! The right half, for k ≥ 1, has its nearest singularities at v = ±i (the factor
 //! (1 + σ)^{−1/2} of b) and ±ik: one panel of [`panel_nodes`] (17 at `f64`, 36 at double-double,
-//! 86 at 256 bits; 23 at double-double gave 6500ε in dI/dk at k = 1). The integrands are
+//! 86 at 256 bits; the evidence for these counts is in docs/calibration.md). The integrands are
 //! positive: no cancellation, rounding error a few ε.
 //!
 //! **Cost.** The plan's left nodes + [`panel_nodes`] evaluations of G (two square roots and
-//! one division each): at `f64` 31 at M_R = 0, k = 1; 35 at M_R = 0.9, k = 3 (45 with panels of
-//! ln 4, 51 with the geometric panels in w before them); 57 at M_R = 0.9999, k = 3 (73, 102);
-//! 78 at k = 10³ (101, 119); 127 at k = 10⁶ (171, 204); at double-double 62, 69, 110, 150, 240.
+//! one division each): at `f64` 31 at M_R = 0, k = 1; 35 at M_R = 0.9, k = 3; 57 at
+//! M_R = 0.9999, k = 3; 78 at k = 10³; 127 at k = 10⁶; at double-double 62, 69, 110, 150, 240.
 //! [`GradedSetup`] keeps the
 //! layout for every k up to 5/4 of the k it was laid out for, so that a further k costs one
-//! square root and one division a node (the ellipse solve's Newton iterates; 0.08–0.26 µs with
-//! the derivatives). The Gauss–Legendre rules come from the shared cache.
+//! square root and one division a node (the ellipse solve's Newton iterates; timings in
+//! docs/performance.md). The Gauss–Legendre rules come from the shared cache.
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^40, else [`Error::Domain`].
 //!

@@ -11,8 +11,8 @@
 //!   ([`two_prod`]) uses the hardware FMA — inlined when the crate is compiled with it
 //!   (`-C target-cpu=native`), otherwise detected once at run time and issued by inline
 //!   assembly — and Dekker's splitting on processors without one, out of line so that the FMA
-//!   path stays a load, a compare and the instruction (3–4 % off a double-double ellipse solve;
-//!   a processor without FMA pays a call a product). Both are exact, so results are the same bit
+//!   path stays a load, a compare and the instruction (a processor without FMA pays a call a
+//!   product). Both are exact, so results are the same bit
 //!   for bit. The `dd_arith` bench measures the variants.
 //! * **Division** is ours: `twofloat`'s `TwoFloat / TwoFloat` is accurate only to ~1e-16. We use
 //!   the three-quotient long division (as in Hida, Li & Bailey's QD library), error ≈ 2^-105,

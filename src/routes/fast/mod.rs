@@ -494,7 +494,7 @@ fn run<T: Real>(
 /// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 2^−40 ≤ k ≤ 1, else [`Error::Domain`]. Accuracy: relative
 /// error of I1 and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate` (at
 /// `f64` 3.6e-15; measured ≤ 2.8ε). Work: [`RuleSizes::nodes`] evaluations of G (32 at `f64`,
-/// about 0.23 µs; 70 at double-double), no allocation at `f64` and double-double once the rule
+/// 70 at double-double; timings in docs/performance.md), no allocation at `f64` and double-double once the rule
 /// is built; above double-double the right half's sinh-mapped panels where they are cheaper
 /// (module docs). The route reported is [`Route::FixedRule`].
 pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
@@ -505,7 +505,7 @@ pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evalu
 /// I1, I2 (as [`integrals`]) and dI1/dk, dI2/dk, differentiated under the integral sign on the
 /// same nodes (see the module docs). The derivatives' relative error is not bounded by the
 /// reported estimate (which is for I1, I2): measured ≤ 47ε at `f64`, ≤ 53ε at double-double
-/// (near k = 1, M_R = 0), ≤ 3ε at MPFR; tested ≤ 128ε. Cost: about 15 % more than [`integrals`].
+/// (near k = 1, M_R = 0), ≤ 3ε at MPFR; tested ≤ 128ε. Cost: the same nodes as [`integrals`] and a few products more a node.
 pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
     let rule = FastRule::<T>::get(axes.k.prec())?;
     run(speed, axes, &rule, true, true)
