@@ -405,6 +405,39 @@ fn study_recursion(out: &std::path::Path) -> Result<(), CliError> {
         &csv,
     )
     .map_err(io)?;
+    let (md, gcsv) = growth_table(&growth);
+    studies::write_csv(
+        &out.join("data/recursion_growth.csv"),
+        &[
+            "k2",
+            "precision",
+            "predicted_bits_per_step",
+            "measured_L",
+            "measured_M",
+            "total_loss_n",
+            "predicted_total_loss_n",
+            "worst_err_eps",
+            "n_max",
+        ],
+        &gcsv,
+    )
+    .map_err(io)?;
+    for (name, svg) in series::forward_charts(&points, &growth) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    write_condition_maps(out)?;
+    studies::write_text(&out.join("data/recursion_summary.md"), &md).map_err(io)?;
+    say!("{md}");
+    say!(
+        "wrote CSV under {} and charts under {}",
+        out.join("data").display(),
+        out.join("figures").display()
+    );
+    Ok(())
+}
+
+/// The recursion study's growth table: Markdown for the summary and CSV rows.
+fn growth_table(growth: &[series::Growth]) -> (String, Vec<Vec<String>>) {
     let opt = |x: f64| {
         if x.is_nan() {
             "—".to_string()
@@ -416,7 +449,7 @@ fn study_recursion(out: &std::path::Path) -> Result<(), CliError> {
         "| k² | e² | predicted bits/step | precision | measured bits/step (L) | (M) | total loss at n (L) | predicted n | worst error (ε) | n studied |\n|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let mut gcsv = Vec::new();
-    for g in &growth {
+    for g in growth {
         let loss = g.total_loss_n.map_or("—".to_string(), |n| n.to_string());
         let pred = g
             .predicted_loss_n
@@ -454,25 +487,11 @@ fn study_recursion(out: &std::path::Path) -> Result<(), CliError> {
             g.n_max.to_string(),
         ]);
     }
-    studies::write_csv(
-        &out.join("data/recursion_growth.csv"),
-        &[
-            "k2",
-            "precision",
-            "predicted_bits_per_step",
-            "measured_L",
-            "measured_M",
-            "total_loss_n",
-            "predicted_total_loss_n",
-            "worst_err_eps",
-            "n_max",
-        ],
-        &gcsv,
-    )
-    .map_err(io)?;
-    for (name, svg) in series::forward_charts(&points, &growth) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
+    (md, gcsv)
+}
+
+/// The bits lost in the K, E basis over (n, e) and (n, k): CSV and charts.
+fn write_condition_maps(out: &std::path::Path) -> Result<(), CliError> {
     eprintln!("bits lost in the K, E basis over (n, e) and (n, k) ...");
     for k_side in [false, true] {
         let map = series::condition_map(k_side).map_err(CliError::lib)?;
@@ -497,13 +516,6 @@ fn study_recursion(out: &std::path::Path) -> Result<(), CliError> {
         let (name, svg) = series::condition_chart(&map, k_side);
         studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
     }
-    studies::write_text(&out.join("data/recursion_summary.md"), &md).map_err(io)?;
-    say!("{md}");
-    say!(
-        "wrote CSV under {} and charts under {}",
-        out.join("data").display(),
-        out.join("figures").display()
-    );
     Ok(())
 }
 
