@@ -271,25 +271,31 @@ pub fn render(title: &str, items: &[Named], style: Style) -> String {
             }
             let _ = writeln!(out, "\\end{{align*}}");
         }
-        Style::Json => {
-            let _ = writeln!(out, "{{\n  \"title\": \"{title}\",\n  \"functions\": [");
-            for (i, it) in items.iter().enumerate() {
-                let var = it.var.name(Style::Sympy);
-                let e = expression(&it.value, it.var, it.xpow, Style::Sympy);
-                let comma = if i + 1 < items.len() { "," } else { "" };
-                let _ = writeln!(
-                    out,
-                    "    {{\"name\": \"{}\", \"variable\": \"{var}\", \"power_of_x\": {}, \
-                     \"numerator\": {}, \"denominator\": {}, \"sympy\": \"{e}\"}}{comma}",
-                    it.name,
-                    it.xpow,
-                    json_list(it.value.numer()),
-                    json_list(&it.value.denom()),
-                );
-            }
-            let _ = writeln!(out, "  ]\n}}");
-        }
+        Style::Json => out = render_json(title, items),
     }
+    out
+}
+
+/// [`render`]'s JSON: the title and, per function, its name, variable, power of x, the
+/// canonical coefficient lists of numerator and denominator, and the sympy form.
+fn render_json(title: &str, items: &[Named]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "{{\n  \"title\": \"{title}\",\n  \"functions\": [");
+    for (i, it) in items.iter().enumerate() {
+        let var = it.var.name(Style::Sympy);
+        let e = expression(&it.value, it.var, it.xpow, Style::Sympy);
+        let comma = if i + 1 < items.len() { "," } else { "" };
+        let _ = writeln!(
+            out,
+            "    {{\"name\": \"{}\", \"variable\": \"{var}\", \"power_of_x\": {}, \
+             \"numerator\": {}, \"denominator\": {}, \"sympy\": \"{e}\"}}{comma}",
+            it.name,
+            it.xpow,
+            json_list(it.value.numer()),
+            json_list(&it.value.denom()),
+        );
+    }
+    let _ = writeln!(out, "  ]\n}}");
     out
 }
 
