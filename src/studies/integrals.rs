@@ -92,7 +92,7 @@ fn measure<T: Real>(
         Err(e) => return failed(exact, method, label, e.to_string()),
     };
     let reference = &reference;
-    let mr = format!("{}", exact.mr().to_f64());
+    let mr = speed_label(exact);
     match run_route::<T>(method, &prepared) {
         Ok(r) => {
             let bits = 600;
@@ -119,9 +119,14 @@ fn measure<T: Real>(
     }
 }
 
+/// The speed as the charts look it up: M_R rounded to the nearest `f64` (0.1 prints as 0.1).
+fn speed_label(exact: &ExactInputs) -> String {
+    format!("{}", rug::Float::with_val(53, exact.mr()).to_f64())
+}
+
 fn failed(exact: &ExactInputs, method: Route, precision: Precision, why: String) -> Row {
     Row {
-        mr: format!("{}", exact.mr().to_f64()),
+        mr: speed_label(exact),
         method,
         precision,
         error: f64::NAN,

@@ -28,8 +28,17 @@ pub fn write_csv(path: &Path, header: &[&str], rows: &[Vec<String>]) -> std::io:
     f.flush()
 }
 
-/// Writes text (an SVG chart, a Markdown table) to `path`, creating parent directories.
+/// Writes text (an SVG chart, a Markdown table) to `path`, creating parent directories. A
+/// chart with a series that has no point to draw is refused (an error naming the file and the
+/// series): a figure never silently omits a curve its legend promises.
 pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
+    if let Some(i) = text.find(&format!("<!-- {}: ", svg::EMPTY_SERIES)) {
+        let label = text[i..].split("-->").next().unwrap_or_default();
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("{}: {} --> refused", path.display(), &label[5..]),
+        ));
+    }
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;
     }

@@ -185,6 +185,10 @@ impl Chart {
         );
         for (i, s) in self.series.iter().enumerate() {
             let c = PALETTE[i % PALETTE.len()];
+            if !s.points.iter().any(|&(x, y)| self.usable(x, y)) {
+                // Refused by `studies::write_text`: a chart never shows an empty series.
+                let _ = write!(o, "<!-- {EMPTY_SERIES}: {} -->", esc(&s.label));
+            }
             if s.style != Style::Markers {
                 let mut path = String::new();
                 let mut pen_up = true;
@@ -246,6 +250,9 @@ impl Chart {
         }
     }
 }
+
+/// The mark an SVG carries for a series without a usable point (see `studies::write_text`).
+pub const EMPTY_SERIES: &str = "empty series";
 
 /// The dash attribute of a series' line.
 fn dash(style: Style) -> &'static str {
