@@ -194,13 +194,23 @@ pub fn charts(rows: &[Row]) -> Vec<(String, String)> {
             "relative error (0 plotted as 1e-80)",
         )
         .log(true, true);
+        // A route that refused at every precision (the series' term cap) is named as refused,
+        // not drawn.
+        let mut refused = Vec::new();
         for m in METHODS {
             let pts: Vec<(f64, f64)> = rows
                 .iter()
                 .filter(|r| r.mr == key && r.method == m && r.failure.is_none())
                 .map(|r| (r.time_ns, r.error.max(1e-80)))
                 .collect();
-            chart.push(Series::new(m.label(), pts, Style::LineMarkers));
+            if pts.is_empty() {
+                refused.push(m.label());
+            } else {
+                chart.push(Series::new(m.label(), pts, Style::LineMarkers));
+            }
+        }
+        if !refused.is_empty() {
+            chart.title = format!("{} — refused: {}", chart.title, refused.join(", "));
         }
         out.push((format!("integrals_pareto_{i}.svg"), chart.to_svg()));
     }
