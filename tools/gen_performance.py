@@ -231,7 +231,7 @@ def page(data, note=None):
             fams.setdefault(fam, {}).setdefault(f, {})[prec] = ns
     flat = data
     times = [t for _, t in data.values()]
-    day = lambda t: datetime.datetime.fromtimestamp(t, datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
+    day = lambda t: datetime.datetime.fromtimestamp(t, datetime.timezone.utc).strftime("%Y-%m-%d")
     head = sh("git", "rev-parse", "--short=12", "HEAD") or "unknown"
     code = sh("git", "log", "-1", "--format=%h", "--abbrev=12", "--", "src", "benches", "Cargo.lock") or head
     dirty = sh("git", "status", "--porcelain", "--", "src", "benches", "Cargo.toml", "Cargo.lock")
@@ -251,7 +251,7 @@ def page(data, note=None):
          + (", with uncommitted changes in src/ or benches/" if dirty else ""),
          f"* CPU: {cpu()}; {rustc}; `--release`, default target (double-double uses the FMA "
          "instruction, detected at run time)",
-         f"* date: {day(min(times))} to {day(max(times))}" if times else "* date: (no data)"]
+         ("* date: " + " to ".join(sorted({day(min(times)), day(max(times))}))) if times else "* date: (no data)"]
     if note:
         L.append(f"* conditions: {note}")
     L += ["",
