@@ -71,6 +71,7 @@ pub mod numerics;
 pub mod physics;
 pub mod routes;
 pub mod scalar;
+pub mod sweep;
 pub mod symbolic;
 
 pub use contact::{

@@ -24,7 +24,7 @@
 //! (`log_model_step`). The thresholds and the evidence they were chosen on:
 //! `docs/calibration.md`.
 //!
-//! **Precision ladder** ([`solve_ladder`]): a solve at high precision is started from
+//! **Precision ladder** (`ShapeSolver::ladder`): a solve at high precision is started from
 //! the `f64` root and its F′ (good to ~2^-40). At double-double one evaluation with
 //! k-derivatives and a Halley step whose F″ (and the integrals' second derivatives, for carrying
 //! I1, I2 to the new k) come by secants from the `f64` stage's iterates (`halley_from_f64`):
@@ -45,6 +45,7 @@ use crate::physics::Speed;
 use crate::routes::evaluate::{Evaluator, IntegralOptions};
 use crate::routes::{fast, AxisRatio, Evaluation, Integrals, Method};
 use crate::scalar::{check_finite, short, Dd, Real};
+use std::cell::OnceCell;
 
 /// Which axis of the contact ellipse is the longer one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -120,7 +121,7 @@ pub struct Ellipse<T: Real> {
 
 /// The solve's internal result: k, the integrals at k, the error estimate of k, the work.
 #[derive(Clone, Debug)]
-struct Shape<T: Real> {
+pub(crate) struct Shape<T: Real> {
     k: T,
     integrals: Evaluation<T>,
     error_estimate: T,
@@ -129,7 +130,7 @@ struct Shape<T: Real> {
 
 impl<T: Real> Shape<T> {
     /// The public result: e and its absolute bound from k's, everything checked finite.
-    fn publish(self) -> Result<Ellipse<T>> {
+    pub(crate) fn publish(self) -> Result<Ellipse<T>> {
         let p = self.k.prec();
         let one = T::one(p);
         let (q, major) = if self.k <= one {
@@ -240,7 +241,16 @@ pub fn solve_ellipse<T: Real>(
     opts: &Options<T>,
 ) -> Result<Ellipse<T>> {
     check_ratio(ratio)?;
-    let p = ratio.prec();
+    let tol = checked_options(opts, ratio.prec())?;
+    ShapeSolver::new(speed, opts.method)?
+        .solve(ratio, tol, opts.seed.as_ref(), None)?
+        .publish()
+}
+
+/// The checks of [`solve_ellipse`] that the options decide, before any work: a method that
+/// gives k-derivatives, a tolerance not below 4ε. Returns the tolerance at the working
+/// precision `p` (`None`: its floor).
+pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<Option<T>> {
     if matches!(opts.method, Method::Series | Method::AdaptiveSubtracted) {
         return Err(Error::Domain {
             name: "method for the ellipse solve",
@@ -258,19 +268,111 @@ pub fn solve_ellipse<T: Real>(
             });
         }
     }
-    let tol = opts.tolerance.map(|t| t.to_real::<T>(p));
-    let shape = match &opts.seed {
-        Some(seed) => {
-            let stage = Stage {
-                seed: Some(seed),
-                tol,
-                ..Stage::final_stage()
-            };
-            solve_core(speed, ratio, opts.method, stage)?.0
+    Ok(opts.tolerance.map(|t| t.to_real::<T>(p)))
+}
+
+/// The ellipse solve for one speed and method: the evaluators of the precision ladder's
+/// stages, each built on first use and kept, so that the fixed rules' set-ups serve every
+/// solve at this speed (a sweep's points).
+pub(crate) struct ShapeSolver<T: Real + 'static> {
+    top: Evaluator<T>,
+    stage64: OnceCell<Option<Evaluator<f64>>>,
+    stage_dd: OnceCell<Option<Evaluator<Dd>>>,
+}
+
+impl<T: Real> ShapeSolver<T> {
+    /// The solver for `speed` by `method` (checked by the caller).
+    pub(crate) fn new(speed: &Speed<T>, method: Method) -> Result<Self> {
+        Ok(ShapeSolver {
+            top: Evaluator::new(speed, newton_options(method))?,
+            stage64: OnceCell::new(),
+            stage_dd: OnceCell::new(),
+        })
+    }
+
+    /// Solves (33) at `ratio` to the tolerance `tol` (`None`: the working precision's floor).
+    /// With a `seed`, Newton's method at the working precision from it; without, the
+    /// precision ladder ([`ShapeSolver::ladder`]), whose lowest stage starts from `guess` (a
+    /// neighbouring point's root, in `f64`) when it converges from there within
+    /// [`GUESS_EVALUATIONS`], from the static ellipse otherwise.
+    pub(crate) fn solve(
+        &self,
+        ratio: &T,
+        tol: Option<T>,
+        seed: Option<&T>,
+        guess: Option<f64>,
+    ) -> Result<Shape<T>> {
+        match seed {
+            Some(seed) => {
+                let stage = Stage {
+                    seed: Some(seed),
+                    tol,
+                    ..Stage::final_stage()
+                };
+                Ok(solve_core(&self.top, ratio, stage)?.0)
+            }
+            None => self.ladder(ratio, tol, guess),
         }
-        None => solve_ladder(speed, ratio, opts.method, tol)?,
+    }
+
+    /// The speed this solver serves.
+    pub(crate) fn speed(&self) -> &Speed<T> {
+        self.top.speed()
+    }
+
+    /// The evaluator of the ladder's `f64` or double-double stage (`None` where the speed does
+    /// not convert).
+    fn lower<'s, S: Real<Prec = ()>>(
+        &'s self,
+        cell: &'s OnceCell<Option<Evaluator<S>>>,
+    ) -> Option<&'s Evaluator<S>> {
+        cell.get_or_init(|| {
+            let speed = self.top.speed().at::<S>(()).ok()?;
+            Evaluator::new(&speed, newton_options(self.top.method())).ok()
+        })
+        .as_ref()
+    }
+}
+
+/// The integral options of a Newton iterate: the method, with k-derivatives.
+fn newton_options(method: Method) -> IntegralOptions {
+    IntegralOptions {
+        method,
+        derivatives: true,
+        ..Default::default()
+    }
+}
+
+/// The evaluations a stage started from a neighbour's root may spend before the solve starts
+/// again from the static ellipse (a converging start needs 2–4).
+const GUESS_EVALUATIONS: usize = 8;
+
+/// Runs the lowest stage of the ladder (chord steps at its end as `allow_chord` says) from
+/// `guess` when there is one and it converges within [`GUESS_EVALUATIONS`], from the static
+/// ellipse otherwise.
+fn lowest_stage<S: Real>(
+    ev: &Evaluator<S>,
+    ratio: &S,
+    allow_chord: bool,
+    tol: Option<S>,
+    guess: Option<f64>,
+) -> Result<(Shape<S>, Option<Chord<S>>)> {
+    let seed = guess
+        .filter(|g| g.is_finite() && *g > 0.0)
+        .map(|g| S::from_f64(g, ratio.prec()));
+    let stage = |seed, budget| Stage {
+        seed,
+        allow_chord,
+        budget,
+        tol: tol.clone(),
+        ..Stage::final_stage()
     };
-    shape.publish()
+    if let Some(seed) = &seed {
+        if let Ok(r) = solve_core(ev, ratio, stage(Some(seed), GUESS_EVALUATIONS)) {
+            return Ok(r);
+        }
+    }
+    solve_core(ev, ratio, stage(None, MAX_EVALUATIONS))
 }
 
 /// How one stage of the solve runs: its seed and the derivatives handed on by the stage below,
@@ -283,6 +385,8 @@ struct Stage<'s, T: Real> {
     allow_chord: bool,
     halley: bool,
     tol: Option<T>,
+    /// The evaluations the stage may spend.
+    budget: usize,
 }
 
 impl<T: Real> Stage<'_, T> {
@@ -294,6 +398,7 @@ impl<T: Real> Stage<'_, T> {
             allow_chord: true,
             halley: false,
             tol: None,
+            budget: MAX_EVALUATIONS,
         }
     }
 }
@@ -306,20 +411,21 @@ impl<T: Real> Stage<'_, T> {
 /// Returns the shape and the derivatives of the last evaluation that computed them (the hand-off
 /// to the next stage).
 fn solve_core<T: Real>(
-    speed: &Speed<T>,
+    evaluator: &Evaluator<T>,
     ratio: &T,
-    method: Method,
     stage: Stage<'_, T>,
 ) -> Result<(Shape<T>, Option<Chord<T>>)> {
     check_ratio(ratio)?;
+    let method = evaluator.method();
     let Stage {
         seed,
         seed_slope,
         allow_chord,
         halley,
         tol,
+        budget,
     } = stage;
-    let mut newton = Newton::new(speed, ratio, method, seed, allow_chord, tol)?;
+    let mut newton = Newton::new(evaluator, ratio, seed, allow_chord, tol, budget);
     let halley_slope = seed_slope.and_then(|(c, err)| newton.adopt_slope(c, &err, halley));
     if seed.is_none() && method != Method::Adaptive {
         newton.probe_k_one()?;
@@ -332,13 +438,13 @@ fn solve_core<T: Real>(
     newton.iterate()
 }
 
-/// The bound on the evaluations of one stage.
+/// The bound on the evaluations of one stage (from the static ellipse).
 const MAX_EVALUATIONS: usize = 200;
 
 /// The state of one stage's iteration.
 struct Newton<'a, T: Real + 'static> {
     ratio: &'a T,
-    evaluator: Evaluator<'a, T>,
+    evaluator: &'a Evaluator<T>,
     /// The stopping rules' unit: ε, or the tolerance asked for.
     eps: T,
     /// ε_R = √(1 − M_R²), the width of G's Rayleigh pole: the asymptotic step needs k·ε_R ≫ 1.
@@ -360,32 +466,29 @@ struct Newton<'a, T: Real + 'static> {
     prev: Option<Point<T>>,
     /// Evaluations spent.
     spent: usize,
+    /// The evaluations it may spend.
+    budget: usize,
 }
 
 impl<'a, T: Real> Newton<'a, T> {
     fn new(
-        speed: &'a Speed<T>,
+        evaluator: &'a Evaluator<T>,
         ratio: &'a T,
-        method: Method,
         seed: Option<&T>,
         allow_chord: bool,
         tol: Option<T>,
-    ) -> Result<Self> {
+        budget: usize,
+    ) -> Self {
         let p = ratio.prec();
         let k0 = match seed {
             Some(s) if s.is_positive() && s.is_finite() => s.clone(),
             _ => T::from_f64(static_seed(ratio.to_f64()), p),
         };
-        let opts = IntegralOptions {
-            method,
-            derivatives: true,
-            ..Default::default()
-        };
-        Ok(Newton {
+        Newton {
             ratio,
-            evaluator: Evaluator::new(speed, opts)?,
+            evaluator,
             eps: tol.map_or_else(|| T::epsilon(p), |t| t.max_of(T::epsilon(p))),
-            pole_width: speed.one_minus_mr2().to_f64().sqrt(),
+            pole_width: evaluator.speed().one_minus_mr2().to_f64().sqrt(),
             seeded: seed.is_some(),
             allow_chord,
             lam: k0.ln(),
@@ -396,7 +499,8 @@ impl<'a, T: Real> Newton<'a, T> {
             fresh_slope: None,
             prev: None,
             spent: 0,
-        })
+            budget,
+        }
     }
 
     fn prec(&self) -> T::Prec {
@@ -503,7 +607,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// The Newton iteration proper: evaluate, step, stop.
     fn iterate(mut self) -> Result<(Shape<T>, Option<Chord<T>>)> {
         let p = self.prec();
-        while self.spent < MAX_EVALUATIONS {
+        while self.spent < self.budget {
             let lam = self.lam.clone();
             let (f, df, ci) = self.eval(&lam, self.chord.as_ref(), false)?;
             self.spent += 1;
@@ -988,94 +1092,91 @@ fn finish<T: Real>(
     }
 }
 
-/// The precision ladder: solves at `f64` first (inputs rounded to `f64`, the speed by its gap),
-/// above 106 bits then at double-double, and refines the root at the working precision of `T`
-/// from the last stage's root and derivative — one Halley step or two chord steps at
-/// double-double, two chord steps at 256 bits, three at 512 (module docs): a few high-precision
-/// evaluations of the integrals instead of a search. At `f64` it is the plain solve. If a lower
-/// stage fails (inputs beyond its range), the working precision solves on its own from the
-/// static seed. `tol`: the tolerance on k at the working precision (`None`: its floor).
-fn solve_ladder<T: Real>(
-    speed: &Speed<T>,
-    ratio: &T,
-    method: Method,
-    tol: Option<T>,
-) -> Result<Shape<T>> {
-    let p = ratio.prec();
-    let alone = |tol: Option<T>| {
+impl<T: Real> ShapeSolver<T> {
+    /// The precision ladder (module docs): solves at `f64` first (inputs rounded to `f64`, the speed by its gap),
+    /// above 106 bits then at double-double, and refines the root at the working precision of `T`
+    /// from the last stage's root and derivative — one Halley step or two chord steps at
+    /// double-double, two chord steps at 256 bits, three at 512 — a few high-precision
+    /// evaluations of the integrals instead of a search. At `f64` it is the plain solve. If a lower
+    /// stage fails (inputs beyond its range), the working precision solves on its own from the
+    /// static seed. The `f64` stage starts from `guess` when given. `tol`: the tolerance on k at
+    /// the working precision (`None`: its floor).
+    fn ladder(&self, ratio: &T, tol: Option<T>, guess: Option<f64>) -> Result<Shape<T>> {
+        let p = ratio.prec();
+        if T::bits(p) <= 53 {
+            return lowest_stage(&self.top, ratio, true, tol, guess).map(|(s, _)| s);
+        }
+        let alone =
+            |tol: Option<T>| lowest_stage(&self.top, ratio, true, tol, None).map(|(s, _)| s);
+        // Each stage ends on a Newton step (no chord), so that its last derivatives lie one
+        // rounding-level step from its root and serve the next stage's chord steps.
+        let ratio64 = ratio.to_f64();
+        let stage64 = match self.lower(&self.stage64) {
+            Some(ev) => lowest_stage(ev, &ratio64, false, None, guess),
+            None => return alone(tol),
+        };
+        let (k64, slope64) = match stage64 {
+            Ok((s, c)) => (s.k, c),
+            Err(_) => return alone(tol),
+        };
+        // Above double-double, a double-double stage in between: its root is off by ~2^-100,
+        // so the target precision needs one Newton step fewer (two chord steps up to ~600 bits).
+        if T::bits(p) > 106 {
+            if let Some(shape) = self.via_dd(ratio, &tol, k64, slope64.as_ref()) {
+                return shape;
+            }
+        }
+        let seed = T::from_f64(k64, p);
+        // Straight from the f64 stage at double-double: one evaluation with derivatives and a
+        // Halley step ([`halley_from_f64`]) — unless the f64 stage's inputs, rounded to f64,
+        // moved the root by more than ~1e-15, where one step cannot reach ε and two chord steps
+        // are cheaper than the Halley attempt and a Newton step. k's sensitivity to the
+        // relative change of the gap 1 − M_R is about 1/4.
+        let moved = |x: &T| {
+            let x64 = x.to_f64();
+            (x.clone() - T::from_f64(x64, p)).abs().to_f64() / x64.abs().max(f64::MIN_POSITIVE)
+        };
+        let speed = self.top.speed();
+        let perturbation = moved(ratio) + moved(speed.material().nu()) + moved(speed.gap());
         let stage = Stage {
+            seed: Some(&seed),
+            seed_slope: slope64.as_ref().map(|c| lift(c, p, F64_SLOPE, F64_SEED)),
+            halley: T::bits(p) <= 106 && perturbation <= 1e-15,
             tol,
             ..Stage::final_stage()
         };
-        solve_core(speed, ratio, method, stage).map(|(s, _)| s)
-    };
-    if T::bits(p) <= 53 {
-        return alone(tol);
+        solve_core(&self.top, ratio, stage).map(|(r, _)| r)
     }
-    // Each stage ends on a Newton step (no chord), so that its last derivatives lie one
-    // rounding-level step from its root and serve the next stage's chord steps.
-    fn handing_on<'s, S: Real>() -> Stage<'s, S> {
-        Stage {
+
+    /// The double-double stage from the `f64` root `k64` and its derivatives, then the working
+    /// precision's stage from the double-double root; `None` when the double-double stage
+    /// fails (the caller goes on from the `f64` root).
+    fn via_dd(
+        &self,
+        ratio: &T,
+        tol: &Option<T>,
+        k64: f64,
+        slope64: Option<&Chord<f64>>,
+    ) -> Option<Result<Shape<T>>> {
+        let p = ratio.prec();
+        let seed_dd = Dd::from_f64(k64, ());
+        let stage = Stage {
+            seed: Some(&seed_dd),
+            seed_slope: slope64.map(|c| lift(c, (), F64_SLOPE, F64_SEED)),
             allow_chord: false,
             ..Stage::final_stage()
-        }
+        };
+        let ratio_dd = Dd::from_float(&ratio.to_float(T::bits(p)), ());
+        let (s, c) = solve_core(self.lower(&self.stage_dd)?, &ratio_dd, stage).ok()?;
+        let seed = T::from_float(&s.k.to_float(106), p);
+        let stage = Stage {
+            seed: Some(&seed),
+            seed_slope: c.as_ref().map(|c| lift(c, p, DD_SLOPE, DD_SEED)),
+            tol: tol.clone(),
+            ..Stage::final_stage()
+        };
+        Some(solve_core(&self.top, ratio, stage).map(|(r, _)| r))
     }
-    let ratio64 = ratio.to_f64();
-    let stage64 = speed
-        .at::<f64>(())
-        .and_then(|sp| solve_core(&sp, &ratio64, method, handing_on()));
-    let (k64, slope64) = match stage64 {
-        Ok((s, c)) => (s.k, c),
-        Err(_) => return alone(tol),
-    };
-    // Above double-double, a double-double stage in between: its root is off by ~2^-100, so
-    // the target precision needs one Newton step fewer (two chord steps up to ~600 bits).
-    if T::bits(p) > 106 {
-        let seed_dd = Dd::from_f64(k64, ());
-        let stage_dd = speed.at::<Dd>(()).and_then(|sp| {
-            let stage = Stage {
-                seed: Some(&seed_dd),
-                seed_slope: slope64.as_ref().map(|c| lift(c, (), F64_SLOPE, F64_SEED)),
-                ..handing_on()
-            };
-            solve_core(
-                &sp,
-                &Dd::from_float(&ratio.to_float(T::bits(p)), ()),
-                method,
-                stage,
-            )
-        });
-        if let Ok((s, c)) = stage_dd {
-            let seed = T::from_float(&s.k.to_float(106), p);
-            let stage = Stage {
-                seed: Some(&seed),
-                seed_slope: c.as_ref().map(|c| lift(c, p, DD_SLOPE, DD_SEED)),
-                tol,
-                ..Stage::final_stage()
-            };
-            return solve_core(speed, ratio, method, stage).map(|(r, _)| r);
-        }
-    }
-    let seed = T::from_f64(k64, p);
-    // Straight from the f64 stage at double-double: one evaluation with derivatives and a Halley
-    // step ([`halley_from_f64`]) — unless the f64 stage's inputs, rounded to f64, moved the
-    // root by more than ~1e-15, where one step cannot reach ε and two chord steps are cheaper
-    // than the Halley attempt and a Newton step. k's sensitivity to the relative change of the
-    // gap 1 − M_R is about 1/4.
-    let moved = |x: &T| {
-        let x64 = x.to_f64();
-        (x.clone() - T::from_f64(x64, p)).abs().to_f64() / x64.abs().max(f64::MIN_POSITIVE)
-    };
-    let mat = speed.material();
-    let perturbation = moved(ratio) + moved(mat.nu()) + moved(speed.gap());
-    let stage = Stage {
-        seed: Some(&seed),
-        seed_slope: slope64.as_ref().map(|c| lift(c, p, F64_SLOPE, F64_SEED)),
-        halley: T::bits(p) <= 106 && perturbation <= 1e-15,
-        tol,
-        ..Stage::final_stage()
-    };
-    solve_core(speed, ratio, method, stage).map(|(r, _)| r)
 }
 
 /// Bounds on a stage's derivative F′ (relative, with a margin over the fixed rules' measured

@@ -11,4 +11,5 @@ mod ellipse;
 mod solution;
 
 pub use ellipse::{check_ratio, solve_ellipse, Ellipse, MajorAxis, Options};
+pub(crate) use ellipse::{checked_options, ShapeSolver};
 pub use solution::{ContactProblem, ContactSolution, Loading};

@@ -125,6 +125,15 @@ impl<T: Real> ContactProblem<T> {
     /// that is not positive and finite, and for a result that overflows or underflows the
     /// working type; the ellipse solve's errors.
     pub fn solve(&self, opts: &Options<T>) -> Result<ContactSolution<T>> {
+        self.solve_by(|speed, ratio| solve_ellipse(speed, ratio, opts))
+    }
+
+    /// [`ContactProblem::solve`] with the ellipse (33) solved by `ellipse` (a sweep's solver,
+    /// which keeps its set-up and starts from a neighbour's root) at the speed and A1/B1.
+    pub(crate) fn solve_by(
+        &self,
+        ellipse: impl FnOnce(&Speed<T>, &T) -> Result<Ellipse<T>>,
+    ) -> Result<ContactSolution<T>> {
         positive("radius along the motion R1", &self.radius_along)?;
         positive("radius across the motion R2", &self.radius_across)?;
         positive("shear modulus mu", &self.shear_modulus)?;
@@ -147,7 +156,7 @@ impl<T: Real> ContactProblem<T> {
             }
         }
         let ratio = self.radius_across.clone() / &self.radius_along;
-        let ellipse = solve_ellipse(&self.speed, &ratio, opts)?;
+        let ellipse = ellipse(&self.speed, &ratio)?;
         let k = ellipse.k.value.clone();
         let j0 = contact_integrals(&self.speed, &AxisRatio::new(k.clone())?, &T::zero(p))?;
         let j0 = Estimated::new(

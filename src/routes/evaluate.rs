@@ -41,7 +41,7 @@ pub const FLOOR_EPS: u32 = 12;
 
 /// Evaluates I1, I2 at many axis ratios for one speed: the fixed rules' k-independent part
 /// (G at every node) is built on first use and kept, so that a further k costs a square root and
-/// a division a node.
+/// a division a node. The evaluator keeps its own copy of the speed.
 ///
 /// ```
 /// use moving_hertz::{Evaluator, IntegralOptions, Material};
@@ -53,8 +53,8 @@ pub const FLOOR_EPS: u32 = 12;
 /// }
 /// # Ok::<(), moving_hertz::Error>(())
 /// ```
-pub struct Evaluator<'a, T: Real + 'static> {
-    speed: &'a Speed<T>,
+pub struct Evaluator<T: Real + 'static> {
+    speed: Speed<T>,
     opts: IntegralOptions,
     /// The tolerance at the working precision (`None`: its floor).
     tol: Option<T>,
@@ -84,10 +84,10 @@ pub fn integrals<T: Real>(speed: &Speed<T>, k: &T, opts: &IntegralOptions) -> Re
     Evaluator::new(speed, *opts)?.at(k)
 }
 
-impl<'a, T: Real> Evaluator<'a, T> {
+impl<T: Real> Evaluator<T> {
     /// The evaluator for `speed` with `opts`; [`Error::Unreachable`] for a tolerance below
     /// [`FLOOR_EPS`]·ε, [`Error::Domain`] for a method that cannot give what `opts` asks for.
-    pub fn new(speed: &'a Speed<T>, opts: IntegralOptions) -> Result<Self> {
+    pub fn new(speed: &Speed<T>, opts: IntegralOptions) -> Result<Self> {
         let p = speed.mr().prec();
         check_method(&opts)?;
         let tol = match opts.tolerance {
@@ -108,7 +108,7 @@ impl<'a, T: Real> Evaluator<'a, T> {
             None => None,
         };
         Ok(Evaluator {
-            speed,
+            speed: speed.clone(),
             opts,
             tol,
             fast: OnceCell::new(),
@@ -177,7 +177,7 @@ impl<'a, T: Real> Evaluator<'a, T> {
 
     /// Runs `route` at `axes`.
     fn run(&self, route: Route, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-        let sp = self.speed;
+        let sp = &self.speed;
         let p = axes.k.prec();
         // The adaptive routes aim at half the tolerance (their estimate must meet it).
         let tol = self
@@ -227,11 +227,11 @@ impl<'a, T: Real> Evaluator<'a, T> {
         probe: bool,
     ) -> Result<Evaluation<T>> {
         if probe && self.fast.get().is_none() {
-            return fast::integrals_with_dk(self.speed, axes);
+            return fast::integrals_with_dk(&self.speed, axes);
         }
         match self
             .fast
-            .get_or_init(|| FastSetup::new(self.speed).map(Box::new))
+            .get_or_init(|| FastSetup::new(&self.speed).map(Box::new))
         {
             Ok(f) if dk => f.integrals_with_dk(axes),
             Ok(f) => f.integrals(axes),
@@ -250,7 +250,7 @@ impl<'a, T: Real> Evaluator<'a, T> {
                 let p = axes.k.prec();
                 let k_ref =
                     (axes.k.clone() * &T::from_ratio(9, 8, p)).min_of(T::from_i64(1 << 40, p));
-                kept.insert(GradedSetup::new(self.speed, &k_ref)?)
+                kept.insert(GradedSetup::new(&self.speed, &k_ref)?)
             }
         };
         if dk {
@@ -283,12 +283,17 @@ impl<'a, T: Real> Evaluator<'a, T> {
                 Err(_) => {}
             }
         }
-        direct::contact_integrals(self.speed, axes, &T::zero(axes.k.prec()))
+        direct::contact_integrals(&self.speed, axes, &T::zero(axes.k.prec()))
+    }
+
+    /// The method the options name.
+    pub(crate) fn method(&self) -> Method {
+        self.opts.method
     }
 
     /// The speed this evaluator serves.
     pub fn speed(&self) -> &Speed<T> {
-        self.speed
+        &self.speed
     }
 }
 

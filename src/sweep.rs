@@ -1,0 +1,286 @@
+//! Sweeps: many solves at once — the ellipse (33) over points of (ν, speed, A1/B1), full contact
+//! solutions over a list of problems, and I1, I2 of (34) over a list of axis ratios — returned
+//! in input order, each point with its own result or its own typed error (one bad point never
+//! fails the others).
+//!
+//! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points; the
+//! blocks run in parallel (with `rayon`, on its global pool or the pool the caller installs), the
+//! points of a block one after another. Within a block, consecutive points at the same speed
+//! share the fixed rules' set-up (the Green's function at every node, at each stage of the
+//! precision ladder), and each root starts from its neighbours' (continuation): the lowest stage
+//! of the ladder starts from the extrapolation, in ln k against ln(A1/B1) (or against ln(1 − M_R)
+//! along a curve of speeds at one A1/B1), of up to three earlier roots of the block, and from the
+//! static ellipse when that does not converge within a few evaluations. The higher stages run as
+//! in [`crate::solve_ellipse`], so that the ladder's accuracy is unchanged.
+//!
+//! **Reproducibility.** A point's result depends only on its block (never on the number of
+//! threads): a sweep gives the same bits on one thread and on many, and a sweep split at
+//! multiples of [`BLOCK`] gives the same bits as the whole.
+//!
+//! Accuracy: each point as [`crate::solve_ellipse`], [`crate::ContactProblem::solve`] or
+//! [`crate::integrals`] gives it, with its error bound (`tests/sweep.rs` checks every point of
+//! a grid against the independent solve of the same point).
+//!
+//! ```
+//! use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven};
+//! use moving_hertz::Options;
+//!
+//! let ratios: Vec<f64> = (0..100).map(|j| 10f64.powf(-3.0 + 6.0 * j as f64 / 99.0)).collect();
+//! let points = EllipsePoint::grid(&[0.25, 0.7], &[SpeedGiven::Mr(0.9)], &ratios);
+//! let solved = sweep::ellipses(&points, &Options::default());
+//! assert_eq!(solved.len(), 200);
+//! assert!(solved[..100].iter().all(|r| r.as_ref().is_ok_and(|e| e.k.error.to_f64() < 1e-14)));
+//! assert!(solved[100..].iter().all(|r| r.is_err())); // ν = 0.7 is outside (-1, 1/2]
+//! # Ok::<(), moving_hertz::Error>(())
+//! ```
+
+use crate::contact::{
+    check_ratio, checked_options, ContactProblem, ContactSolution, Ellipse, Options, ShapeSolver,
+};
+use crate::error::Result;
+use crate::physics::{Material, Speed};
+use crate::routes::{Evaluator, IntegralOptions, Integrals};
+use crate::scalar::Real;
+use rayon::prelude::*;
+
+/// The points of one block: solved one after another, sharing set-ups and continuation (module
+/// docs); blocks run in parallel.
+pub const BLOCK: usize = 32;
+
+/// How a point's speed is given.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SpeedGiven<T> {
+    /// M_R = V/c_R ∈ [0, 1) ([`Material::speed`]).
+    Mr(T),
+    /// The gap 1 − M_R ∈ (0, 1] ([`Material::speed_from_gap`]), for speeds near c_R.
+    Gap(T),
+}
+
+/// One point of an ellipse sweep: Poisson's ratio ν, the speed and the curvature ratio
+/// A1/B1 = R2/R1, as the caller gives them (checked point by point).
+#[derive(Clone, Debug, PartialEq)]
+pub struct EllipsePoint<T> {
+    /// Poisson's ratio ν ∈ (−1, 1/2].
+    pub nu: T,
+    /// The speed.
+    pub speed: SpeedGiven<T>,
+    /// A1/B1 = R2/R1 > 0.
+    pub ratio: T,
+}
+
+impl<T: Clone> EllipsePoint<T> {
+    /// Every (ν, speed, A1/B1) of the three lists, ν slowest and A1/B1 fastest: a curve of
+    /// A1/B1 at each (ν, speed).
+    pub fn grid(nus: &[T], speeds: &[SpeedGiven<T>], ratios: &[T]) -> Vec<Self> {
+        let mut out = Vec::with_capacity(nus.len() * speeds.len() * ratios.len());
+        for nu in nus {
+            for speed in speeds {
+                for ratio in ratios {
+                    out.push(EllipsePoint {
+                        nu: nu.clone(),
+                        speed: speed.clone(),
+                        ratio: ratio.clone(),
+                    });
+                }
+            }
+        }
+        out
+    }
+}
+
+/// Solves the ellipse (33) at every point by the options' method and tolerance (their `seed`,
+/// when given, starts every point at the working precision instead of the ladder), in parallel
+/// blocks with shared set-ups and continuation (module docs). Returns one result per point, in
+/// input order: the [`Ellipse`] of [`crate::solve_ellipse`] or that point's typed error
+/// ([`Error::Domain`] / [`Error::NotFinite`] for its ν, speed or ratio, or the solve's own).
+pub fn ellipses<T>(points: &[EllipsePoint<T>], opts: &Options<T>) -> Vec<Result<Ellipse<T>>>
+where
+    T: Real + Send + Sync,
+{
+    in_blocks(points, |block| {
+        let mut run = Run::new(opts);
+        let mut last: Option<(&EllipsePoint<T>, Result<Speed<T>>)> = None;
+        let mut out = Vec::with_capacity(block.len());
+        for pt in block {
+            let speed = match last {
+                Some((prev, ref sp)) if prev.nu == pt.nu && prev.speed == pt.speed => sp.clone(),
+                _ => pt.make_speed(),
+            };
+            out.push(speed.clone().and_then(|sp| run.solve(&sp, &pt.ratio)));
+            last = Some((pt, speed));
+        }
+        out
+    })
+}
+
+/// Solves every contact problem ([`ContactProblem::solve`] with `opts`) in parallel blocks,
+/// the ellipses with shared set-ups and continuation along consecutive problems (module docs).
+/// One result per problem, in input order.
+pub fn contacts<T>(
+    problems: &[ContactProblem<T>],
+    opts: &Options<T>,
+) -> Vec<Result<ContactSolution<T>>>
+where
+    T: Real + Send + Sync,
+{
+    in_blocks(problems, |block| {
+        let mut run = Run::new(opts);
+        block
+            .iter()
+            .map(|pb| pb.solve_by(|speed, ratio| run.solve(speed, ratio)))
+            .collect()
+    })
+}
+
+/// I1, I2 of (34) (and what `opts` asks for) at every axis ratio of `ks` for one speed, as
+/// [`crate::integrals`] gives them, in parallel blocks that each keep one [`Evaluator`] (the
+/// fixed rules' set-up built once a block). One result per k, in input order; an options
+/// error (a tolerance below the floor, a method that cannot give what is asked) is every
+/// point's.
+pub fn integrals<T>(speed: &Speed<T>, ks: &[T], opts: &IntegralOptions) -> Vec<Result<Integrals<T>>>
+where
+    T: Real + Send + Sync,
+{
+    in_blocks(ks, |block| match Evaluator::new(speed, *opts) {
+        Ok(ev) => block.iter().map(|k| ev.at(k)).collect(),
+        Err(e) => block.iter().map(|_| Err(e.clone())).collect(),
+    })
+}
+
+/// Runs `solve_block` on the blocks of `items` in parallel and concatenates the results.
+fn in_blocks<I: Sync, R: Send>(
+    items: &[I],
+    solve_block: impl Fn(&[I]) -> Vec<R> + Sync + Send,
+) -> Vec<R> {
+    let blocks: Vec<Vec<R>> = items.par_chunks(BLOCK).map(solve_block).collect();
+    blocks.into_iter().flatten().collect()
+}
+
+impl<T: Real> EllipsePoint<T> {
+    /// The point's speed, made from its ν and its M_R or gap (their typed errors).
+    fn make_speed(&self) -> Result<Speed<T>> {
+        let mat = Material::new(self.nu.clone())?;
+        match &self.speed {
+            SpeedGiven::Mr(mr) => mat.speed(mr.clone()),
+            SpeedGiven::Gap(gap) => mat.speed_from_gap(gap.clone()),
+        }
+    }
+}
+
+/// One block's solves: the solver of the current speed (its set-ups kept while the speed
+/// stays) and the trail of the block's roots for the next start.
+struct Run<'o, T: Real + 'static> {
+    opts: &'o Options<T>,
+    solver: Option<ShapeSolver<T>>,
+    trail: Trail,
+}
+
+impl<'o, T: Real> Run<'o, T> {
+    fn new(opts: &'o Options<T>) -> Self {
+        Run {
+            opts,
+            solver: None,
+            trail: Trail::default(),
+        }
+    }
+
+    /// The ellipse at `speed` and `ratio`, as [`crate::solve_ellipse`] with the run's options,
+    /// started from the trail's guess.
+    fn solve(&mut self, speed: &Speed<T>, ratio: &T) -> Result<Ellipse<T>> {
+        check_ratio(ratio)?;
+        let tol = checked_options(self.opts, ratio.prec())?;
+        let solver = match self.solver.take() {
+            Some(s) if same_speed(s.speed(), speed) => s,
+            _ => ShapeSolver::new(speed, self.opts.method)?,
+        };
+        let solver = self.solver.insert(solver);
+        let at = Place::of(speed, ratio);
+        let guess = self.trail.guess(&at);
+        let shape = solver.solve(ratio, tol, self.opts.seed.as_ref(), guess)?;
+        let ellipse = shape.publish()?;
+        self.trail.push(at, ellipse.k.value.to_f64());
+        Ok(ellipse)
+    }
+}
+
+/// Whether two speeds are the same (material and M_R, bit for bit).
+fn same_speed<T: Real>(a: &Speed<T>, b: &Speed<T>) -> bool {
+    a.material().nu() == b.material().nu() && a.mr() == b.mr() && a.gap() == b.gap()
+}
+
+/// Where a point lies, for continuation: ν, ln(1 − M_R) and ln(A1/B1) in `f64`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Place {
+    nu: f64,
+    ln_gap: f64,
+    ln_ratio: f64,
+}
+
+impl Place {
+    fn of<T: Real>(speed: &Speed<T>, ratio: &T) -> Self {
+        Place {
+            nu: speed.material().nu().to_f64(),
+            ln_gap: speed.gap().to_f64().ln(),
+            ln_ratio: ratio.to_f64().ln(),
+        }
+    }
+}
+
+/// The last roots of a block (at most three), for the next point's start.
+#[derive(Default)]
+struct Trail {
+    roots: Vec<(Place, f64)>,
+}
+
+impl Trail {
+    /// A start for the point at `at`: ln k extrapolated (a polynomial through up to three
+    /// earlier roots) along the coordinate that varies — ln(A1/B1) at one speed, ln(1 − M_R) at
+    /// one A1/B1 — or the last root where neither holds; `None` for a block's first point.
+    fn guess(&self, at: &Place) -> Option<f64> {
+        let &(last, ln_k) = self.roots.last()?;
+        let by_ratio = last.ln_gap == at.ln_gap;
+        let on_curve = |p: &Place| {
+            p.nu == at.nu
+                && if by_ratio {
+                    p.ln_gap == at.ln_gap
+                } else {
+                    p.ln_ratio == at.ln_ratio
+                }
+        };
+        let x = |p: &Place| if by_ratio { p.ln_ratio } else { p.ln_gap };
+        let line: Vec<(f64, f64)> = self
+            .roots
+            .iter()
+            .rev()
+            .take_while(|(p, _)| on_curve(p))
+            .map(|(p, y)| (x(p), *y))
+            .collect();
+        let predicted = lagrange(&line, x(at)).filter(|y| (y - ln_k).abs() <= 2.0);
+        Some(predicted.unwrap_or(ln_k).exp())
+    }
+
+    fn push(&mut self, at: Place, k: f64) {
+        if self.roots.len() == 3 {
+            self.roots.remove(0);
+        }
+        self.roots.push((at, k.ln()));
+    }
+}
+
+/// The polynomial through `pts` (distinct abscissae; `None` otherwise or when empty) at `t`.
+fn lagrange(pts: &[(f64, f64)], t: f64) -> Option<f64> {
+    let mut sum = 0.0;
+    for (i, &(xi, yi)) in pts.iter().enumerate() {
+        let mut w = 1.0;
+        for (j, &(xj, _)) in pts.iter().enumerate() {
+            if i != j {
+                if xi == xj {
+                    return None;
+                }
+                w *= (t - xj) / (xi - xj);
+            }
+        }
+        sum += w * yi;
+    }
+    (!pts.is_empty() && sum.is_finite()).then_some(sum)
+}

@@ -1,0 +1,220 @@
+//! Sweeps (`moving_hertz::sweep`): every point within its error bound of the independent solve
+//! of the same point (and, at double-double, of a 256-bit solve), results identical on 1 and 4
+//! threads and when a sweep is split at block boundaries, invalid points as their own typed
+//! errors.
+
+use moving_hertz::prelude::*;
+use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
+use moving_hertz::{solve_ellipse, Ellipse, Error, Integrals};
+
+/// ν from −0.9 to 0.5, speeds from rest to 1 − M_R = 10⁻¹⁰, A1/B1 log-spaced over `decades`
+/// either side of 1 with `per_curve` points.
+fn grid<T: Real>(p: T::Prec, per_curve: usize, decades: f64) -> Vec<EllipsePoint<T>> {
+    let x = |v: f64| T::from_f64(v, p);
+    let nus = [-0.9, 0.0, 0.25, 0.5].map(x);
+    let speeds = [
+        SpeedGiven::Mr(x(0.0)),
+        SpeedGiven::Mr(x(0.7)),
+        SpeedGiven::Gap(x(1e-4)),
+        SpeedGiven::Gap(x(1e-10)),
+    ];
+    let ratios: Vec<T> = (0..per_curve)
+        .map(|j| x(10f64.powf(decades * (2.0 * j as f64 / (per_curve - 1) as f64 - 1.0))))
+        .collect();
+    EllipsePoint::grid(&nus, &speeds, &ratios)
+}
+
+/// The same point solved on its own.
+fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellipse<T>> {
+    let mat = Material::new(pt.nu.clone())?;
+    let speed = match &pt.speed {
+        SpeedGiven::Mr(m) => mat.speed(m.clone())?,
+        SpeedGiven::Gap(g) => mat.speed_from_gap(g.clone())?,
+    };
+    solve_ellipse(&speed, &pt.ratio, &Options::default())
+}
+
+/// |k − k_ref|/k_ref over the sum of both bounds (≤ 1: within the bounds).
+fn within<T: Real>(got: &Ellipse<T>, want: &Ellipse<T>) -> f64 {
+    let d = ((got.k.value.clone() - &want.k.value) / &want.k.value).abs();
+    d.to_f64() / (got.k.error.to_f64() + want.k.error.to_f64())
+}
+
+/// Every point of the sweep is Ok and within the error bounds of the independent solve; the
+/// sweep's bounds are as tight as the independent ones (within a factor 4).
+fn check_against_independent<T: Real + Send + Sync>(points: &[EllipsePoint<T>]) {
+    let swept = sweep::ellipses(points, &Options::default());
+    assert_eq!(swept.len(), points.len());
+    let mut worst = 0f64;
+    for (pt, got) in points.iter().zip(&swept) {
+        let want = independent(pt).unwrap();
+        let got = got.as_ref().unwrap_or_else(|e| panic!("{pt:?}: {e}"));
+        let w = within(got, &want);
+        assert!(w <= 1.0, "{pt:?}: k {:?} vs {:?}", got.k, want.k);
+        assert!(
+            got.k.error.to_f64() <= 4.0 * want.k.error.to_f64(),
+            "{pt:?}: bound {} vs {}",
+            got.k.error,
+            want.k.error
+        );
+        worst = worst.max(w);
+    }
+    eprintln!("{} points, worst |dk| / bounds = {worst:.3}", points.len());
+}
+
+#[test]
+fn every_point_within_its_bound_of_the_independent_solve_f64() {
+    check_against_independent(&grid::<f64>((), 60, 6.0));
+}
+
+#[test]
+fn every_point_within_its_bound_of_the_independent_solve_dd() {
+    check_against_independent(&grid::<Dd>((), 16, 6.0));
+}
+
+#[test]
+fn every_point_within_its_bound_of_the_independent_solve_256() {
+    let p = MpPrec::new(256).unwrap();
+    let pts: Vec<_> = grid::<Mp>(p, 6, 3.0).into_iter().step_by(2).collect();
+    check_against_independent(&pts);
+}
+
+/// At double-double the sweep's k is within its bound of a 256-bit solve of the same
+/// (double-double) inputs: continuation keeps the ladder's accuracy.
+#[test]
+fn double_double_sweep_against_256_bits() {
+    let p = MpPrec::new(256).unwrap();
+    let pts = grid::<Dd>((), 12, 4.0);
+    let swept = sweep::ellipses(&pts, &Options::default());
+    for (pt, got) in pts.iter().zip(&swept) {
+        let got = got.as_ref().unwrap();
+        let up = |x: &Dd| Mp::from_float(&x.to_float(106), p);
+        let hi = EllipsePoint {
+            nu: up(&pt.nu),
+            speed: match &pt.speed {
+                SpeedGiven::Mr(m) => SpeedGiven::Mr(up(m)),
+                SpeedGiven::Gap(g) => SpeedGiven::Gap(up(g)),
+            },
+            ratio: up(&pt.ratio),
+        };
+        let want = independent(&hi).unwrap().k.value;
+        let err = ((up(&got.k.value) - &want) / &want).abs().to_f64();
+        assert!(
+            err <= got.k.error.to_f64(),
+            "{pt:?}: error {err:e} > bound {}",
+            got.k.error
+        );
+    }
+}
+
+/// k of every point, as bits (for comparisons bit for bit).
+fn bits<T: Real>(r: &[moving_hertz::Result<Ellipse<T>>]) -> Vec<String> {
+    r.iter()
+        .map(|e| match e {
+            Ok(e) => format!("{} {}", e.k.value.to_decimal(), e.k.error),
+            Err(e) => e.to_string(),
+        })
+        .collect()
+}
+
+fn on_threads<R: Send>(n: usize, f: impl FnOnce() -> R + Send) -> R {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(n)
+        .build()
+        .unwrap()
+        .install(f)
+}
+
+/// The same results on 1 and 4 threads, and from a sweep split at a multiple of [`BLOCK`].
+fn check_reproducible<T: Real + Send + Sync>(pts: &[EllipsePoint<T>]) {
+    let opts = Options::default();
+    let one = bits(&on_threads(1, || sweep::ellipses(pts, &opts)));
+    let four = bits(&on_threads(4, || sweep::ellipses(pts, &opts)));
+    assert_eq!(one, four);
+    let cut = 2 * BLOCK;
+    let mut split = bits(&sweep::ellipses(&pts[..cut], &opts));
+    split.extend(bits(&sweep::ellipses(&pts[cut..], &opts)));
+    assert_eq!(one, split);
+}
+
+#[test]
+fn same_bits_on_one_and_four_threads() {
+    check_reproducible(&grid::<f64>((), 40, 5.0));
+    check_reproducible(&grid::<Dd>((), 12, 5.0)[..5 * BLOCK]);
+    let p = MpPrec::new(256).unwrap();
+    check_reproducible(&grid::<Mp>(p, 20, 2.0)[..3 * BLOCK]);
+}
+
+/// ν = 0.7, a ratio of 0 and a NaN ratio in the middle of a curve: those points' own typed
+/// errors; every other point Ok and within its bounds of the sweep of the valid curve.
+#[test]
+fn an_invalid_point_fails_alone() {
+    let valid = grid::<f64>((), 50, 3.0)[..100].to_vec();
+    let mut bad = valid.clone();
+    bad[17].nu = 0.7;
+    bad[40].ratio = 0.0;
+    bad[41].ratio = f64::NAN;
+    let opts = Options::default();
+    let good = sweep::ellipses(&valid, &opts);
+    let got = sweep::ellipses(&bad, &opts);
+    for (i, (g, w)) in got.iter().zip(&good).enumerate() {
+        match (i, g) {
+            (17, Err(Error::Domain { name, value, .. })) => {
+                assert!(name.contains("nu") && value == "0.7", "{name} {value}")
+            }
+            (40, Err(Error::Domain { name, .. })) => assert!(name.contains("A1/B1")),
+            (41, Err(Error::NotFinite { name, .. })) => assert!(name.contains("A1/B1")),
+            (17 | 40 | 41, other) => panic!("point {i}: {other:?}"),
+            (_, g) => assert!(within(g.as_ref().unwrap(), w.as_ref().unwrap()) <= 1.0),
+        }
+    }
+}
+
+/// Contact solutions along a load curve and I1, I2 over a grid of k: within their bounds of the
+/// one-by-one calls.
+#[test]
+fn contacts_and_integrals_as_one_by_one() {
+    let speed = Material::new(0.3).unwrap().speed(0.95).unwrap();
+    let problems: Vec<ContactProblem<f64>> = (0..80)
+        .map(|j| ContactProblem {
+            speed: speed.clone(),
+            radius_along: 0.05,
+            radius_across: 0.05 * 10f64.powf(-2.0 + j as f64 / 20.0),
+            loading: Loading::Load(10f64.powf(j as f64 / 40.0)),
+            shear_modulus: 80e9,
+        })
+        .collect();
+    let swept = sweep::contacts(&problems, &Options::default());
+    for (pb, got) in problems.iter().zip(&swept) {
+        let (got, want) = (
+            got.as_ref().unwrap(),
+            pb.solve(&Options::default()).unwrap(),
+        );
+        let d = (got.a.value / want.a.value - 1.0).abs();
+        assert!(
+            d <= got.a.error.to_f64() + want.a.error.to_f64(),
+            "a {} vs {}",
+            got.a.value,
+            want.a.value
+        );
+    }
+    let ks: Vec<f64> = (1..=200).map(|j| j as f64 / 50.0).collect();
+    let opts = IntegralOptions {
+        derivatives: true,
+        ..Default::default()
+    };
+    let swept: Vec<Integrals<f64>> = sweep::integrals(&speed, &ks, &opts)
+        .into_iter()
+        .map(Result::unwrap)
+        .collect();
+    for (k, got) in ks.iter().zip(&swept) {
+        let want = moving_hertz::integrals(&speed, k, &opts).unwrap();
+        for (g, w) in [(&got.i1, &want.i1), (&got.i2, &want.i2)] {
+            let bound = g.error.to_f64() + w.error.to_f64();
+            assert!(
+                (g.value / w.value - 1.0).abs() <= bound,
+                "k = {k}: {g:?} vs {w:?}"
+            );
+        }
+    }
+}
