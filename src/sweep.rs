@@ -45,7 +45,7 @@ use rayon::prelude::*;
 
 /// The points of one block: solved one after another, sharing set-ups and continuation (module
 /// docs); blocks run in parallel.
-pub const BLOCK: usize = 32;
+pub const BLOCK: usize = 64;
 
 /// How a point's speed is given.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,6 +54,9 @@ pub enum SpeedGiven<T> {
     Mr(T),
     /// The gap 1 − M_R ∈ (0, 1] ([`Material::speed_from_gap`]), for speeds near c_R.
     Gap(T),
+    /// M_R as decimal text, the gap 1 − M_R formed exactly from it
+    /// ([`Material::parse_speed`]): `"0.9999999999"` keeps its gap 10⁻¹⁰ to within ε.
+    Text(String),
 }
 
 /// One point of an ellipse sweep: Poisson's ratio ν, the speed and the curvature ratio
@@ -163,6 +166,7 @@ impl<T: Real> EllipsePoint<T> {
         match &self.speed {
             SpeedGiven::Mr(mr) => mat.speed(mr.clone()),
             SpeedGiven::Gap(gap) => mat.speed_from_gap(gap.clone()),
+            SpeedGiven::Text(mr) => mat.parse_speed(mr),
         }
     }
 }
@@ -189,11 +193,17 @@ impl<'o, T: Real> Run<'o, T> {
     fn solve(&mut self, speed: &Speed<T>, ratio: &T) -> Result<Ellipse<T>> {
         check_ratio(ratio)?;
         let tol = checked_options(self.opts, ratio.prec())?;
-        let solver = match self.solver.take() {
-            Some(s) if same_speed(s.speed(), speed) => s,
-            _ => ShapeSolver::new(speed, self.opts.method)?,
+        if !self
+            .solver
+            .as_ref()
+            .is_some_and(|s| same_speed(s.speed(), speed))
+        {
+            self.solver = None;
+        }
+        let solver = match &mut self.solver {
+            Some(s) => s,
+            empty => empty.insert(ShapeSolver::new(speed, self.opts.method)?),
         };
-        let solver = self.solver.insert(solver);
         let at = Place::of(speed, ratio);
         let guess = self.trail.guess(&at);
         let shape = solver.solve(ratio, tol, self.opts.seed.as_ref(), guess)?;
@@ -226,7 +236,10 @@ impl Place {
     }
 }
 
-/// The last roots of a block (at most three), for the next point's start.
+/// The roots a trail keeps.
+const TRAIL: usize = 3;
+
+/// The last roots of a block (at most [`TRAIL`]), for the next point's start.
 #[derive(Default)]
 struct Trail {
     roots: Vec<(Place, f64)>,
@@ -248,19 +261,18 @@ impl Trail {
                 }
         };
         let x = |p: &Place| if by_ratio { p.ln_ratio } else { p.ln_gap };
-        let line: Vec<(f64, f64)> = self
-            .roots
-            .iter()
-            .rev()
-            .take_while(|(p, _)| on_curve(p))
-            .map(|(p, y)| (x(p), *y))
-            .collect();
-        let predicted = lagrange(&line, x(at)).filter(|y| (y - ln_k).abs() <= 2.0);
+        let mut line = [(0.0, 0.0); TRAIL];
+        let mut n = 0;
+        for (p, y) in self.roots.iter().rev().take_while(|(p, _)| on_curve(p)) {
+            line[n] = (x(p), *y);
+            n += 1;
+        }
+        let predicted = lagrange(&line[..n], x(at)).filter(|y| (y - ln_k).abs() <= 2.0);
         Some(predicted.unwrap_or(ln_k).exp())
     }
 
     fn push(&mut self, at: Place, k: f64) {
-        if self.roots.len() == 3 {
+        if self.roots.len() == TRAIL {
             self.roots.remove(0);
         }
         self.roots.push((at, k.ln()));

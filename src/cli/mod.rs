@@ -18,6 +18,7 @@ mod output;
 mod progress;
 mod rayleigh;
 mod study;
+mod sweep;
 mod symbolic;
 
 use clap::{CommandFactory, Parser, Subcommand};
@@ -58,6 +59,10 @@ enum Command {
     /// The full moving-punch Hertz solution: a, b, k, e, p0, d0 and the load, each with its
     /// error bound.
     Contact(contact::ContactArgs),
+    /// The contact ellipse over every (nu, speed, A1/B1) of three lists or ranges, in parallel
+    /// on every core, as CSV or JSON lines written as they are solved (a progress bar on
+    /// stderr past a second). Exit code 1 if a point failed (its row carries the error).
+    Sweep(sweep::SweepArgs),
     /// A study of the crate's docs: runs it and writes its CSV (DIR/data), SVG (DIR/figures)
     /// and summary tables.
     Study(study::StudyArgs),
@@ -168,6 +173,7 @@ fn run(command: Command) -> Result<(), CliError> {
         Command::Ellipse(a) => ellipse::run(&a),
         Command::Contact(a) => contact::run(&a),
         Command::Study(a) => study::run(&a),
+        Command::Sweep(a) => sweep::run(&a),
         Command::Symbolic(a) => symbolic::run(a.kind, a.n, a.format),
         Command::Completions { shell } => {
             let mut script = Vec::new();

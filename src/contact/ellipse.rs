@@ -368,11 +368,33 @@ fn lowest_stage<S: Real>(
         ..Stage::final_stage()
     };
     if let Some(seed) = &seed {
-        if let Ok(r) = solve_core(ev, ratio, stage(Some(seed), GUESS_EVALUATIONS)) {
-            return Ok(r);
+        if let Ok((shape, slope)) = solve_core(ev, ratio, stage(Some(seed), GUESS_EVALUATIONS)) {
+            let slope = match slope {
+                Some(c) if !allow_chord && c.before.is_none() => Some(secant_partner(ev, ratio, c)),
+                other => other,
+            };
+            return Ok((shape, slope));
         }
     }
     solve_core(ev, ratio, stage(None, MAX_EVALUATIONS))
+}
+
+/// The distance in λ = ln k of [`secant_partner`]'s evaluation: about √r for derivatives with
+/// relative error r ~ 2⁻⁴⁰, where the secant's rounding and truncation errors balance.
+const PARTNER_STEP: f64 = 9.5367431640625e-7; // 2^-20
+
+/// A stage started from a neighbour's root may converge in one evaluation, leaving its
+/// derivatives without the earlier iterate that the next stage's Halley step takes F″ from
+/// ([`f_second`]): one more evaluation with derivatives at [`PARTNER_STEP`] from its root
+/// supplies it (at the stage's own, lower, precision). Unchanged if that evaluation fails.
+fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Chord<S> {
+    let p = ratio.prec();
+    let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, p);
+    let newton = Newton::new(ev, ratio, None, false, None, 1);
+    if let Ok((_, df, ci)) = newton.eval(&lam, None, false) {
+        c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
+    }
+    c
 }
 
 /// How one stage of the solve runs: its seed and the derivatives handed on by the stage below,

@@ -1,0 +1,398 @@
+//! `moving-hertz sweep`: the contact ellipse (33) over every (ν, speed, A1/B1) of three lists or
+//! ranges, by the library's [`sweep::ellipses`] (parallel blocks, shared set-ups,
+//! continuation), written as CSV or JSON lines in batches as they are solved.
+
+use super::args::{self, Decimal};
+use super::output::emit;
+use super::progress::Progress;
+use super::CliError;
+use moving_hertz::scalar::{Precision, Real};
+use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
+use moving_hertz::{with_precision, Ellipse, Method, Options};
+use rug::{Float, Rational};
+
+/// The most points one sweep solves (checked before any work).
+pub const POINT_CAP: usize = 10_000_000;
+
+/// Points solved and written per batch (a multiple of the library's block).
+const BATCH: usize = 16 * BLOCK;
+
+#[derive(clap::Args, Debug)]
+pub struct SweepArgs {
+    /// Poisson's ratios, -1 < NU <= 1/2: a list `0.1,0.2,1/4` or a range `lin:START:STOP:N`.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub nu: Axis,
+    #[command(flatten)]
+    pub speed: SpeedAxis,
+    /// Curvature ratios A1/B1 = R2/R1 > 0: a list, `lin:START:STOP:N` or `log:START:STOP:N`
+    /// (N points, log-spaced).
+    #[arg(long, value_name = "LIST", value_parser = axis)]
+    pub ratio: Axis,
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
+    /// (24 to 32768).
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    pub precision: Precision,
+    /// How the integrals are evaluated at each Newton iterate: auto, adaptive or fixed.
+    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::method())]
+    pub method: Method,
+    /// The output: csv (a header line, then one row a point) or jsonl (one JSON object a line).
+    #[arg(long, value_name = "FORMAT", default_value = "csv")]
+    pub format: Format,
+}
+
+/// `--speed LIST` or `--gap LIST`: exactly one.
+#[derive(clap::Args, Debug)]
+#[group(required = true, multiple = false)]
+pub struct SpeedAxis {
+    /// Speeds M_R = V/c_R, 0 <= M_R < 1: a list or `lin:START:STOP:N` (each gap 1 - M_R formed
+    /// exactly from the decimal).
+    #[arg(long, value_name = "LIST", value_parser = axis)]
+    pub speed: Option<Axis>,
+    /// Speeds by their gap G = 1 - M_R, 0 < G <= 1: a list, `lin:…` or `log:START:STOP:N`
+    /// (e.g. `log:1e-2:1e-12:11` walks M_R -> 1).
+    #[arg(long, value_name = "LIST", value_parser = axis)]
+    pub gap: Option<Axis>,
+}
+
+/// The output format.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Csv,
+    Jsonl,
+}
+
+/// One option's values: decimals as typed, or a linear or logarithmic range.
+#[derive(Clone, Debug)]
+pub enum Axis {
+    List(Vec<Decimal>),
+    Range {
+        log: bool,
+        start: Decimal,
+        stop: Decimal,
+        n: usize,
+    },
+}
+
+/// The value parser of a list or a range (`lin:START:STOP:N`, `log:START:STOP:N`, N ≥ 2, log
+/// ranges of positive ends); each number as [`args::decimal`] reads it.
+pub fn axis(s: &str) -> Result<Axis, String> {
+    let s = s.trim();
+    for (prefix, log) in [("lin:", false), ("log:", true)] {
+        if let Some(rest) = s.strip_prefix(prefix) {
+            let parts: Vec<&str> = rest.split(':').collect();
+            let [a, b, n] = parts[..] else {
+                return Err(format!("a range is {prefix}START:STOP:N"));
+            };
+            let n: usize = n
+                .trim()
+                .parse()
+                .ok()
+                .filter(|n| (2..=POINT_CAP).contains(n))
+                .ok_or_else(|| format!("N = {n} is not a count from 2 to {POINT_CAP}"))?;
+            let (start, stop) = (args::decimal(a)?, args::decimal(b)?);
+            if log && (start.exact <= 0 || stop.exact <= 0) {
+                return Err("a log range needs positive ends".into());
+            }
+            return Ok(Axis::Range {
+                log,
+                start,
+                stop,
+                n,
+            });
+        }
+    }
+    let items = s
+        .split(',')
+        .map(args::decimal)
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(Axis::List(items))
+}
+
+impl Axis {
+    fn len(&self) -> usize {
+        match self {
+            Axis::List(v) => v.len(),
+            Axis::Range { n, .. } => *n,
+        }
+    }
+
+    /// The smallest and largest exact value (a range's ends, which bound it).
+    fn extremes(&self) -> Vec<&Decimal> {
+        match self {
+            Axis::List(v) => v.iter().collect(),
+            Axis::Range { start, stop, .. } => vec![start, stop],
+        }
+    }
+
+    /// The values at precision `p` with their text: a list's as typed, a range's as the value
+    /// at the working precision prints (a linear range's points exact before their one
+    /// rounding, a log range's formed 64 bits above the working precision).
+    fn values<T: Real>(&self, p: T::Prec) -> Vec<(String, T)> {
+        match self {
+            Axis::List(v) => v
+                .iter()
+                .map(|d| (d.text.clone(), exact::<T>(&d.exact, p)))
+                .collect(),
+            Axis::Range {
+                log,
+                start,
+                stop,
+                n,
+            } => (0..*n)
+                .map(|j| {
+                    let bits = T::bits(p) + 64;
+                    let t = Rational::from((j as u64, *n as u64 - 1));
+                    let x = if *log {
+                        let (a, b) = (
+                            Float::with_val(bits, &start.exact),
+                            Float::with_val(bits, &stop.exact),
+                        );
+                        let ln = a.clone().ln() + (b.ln() - a.ln()) * Float::with_val(bits, &t);
+                        T::from_float(&ln.exp(), p)
+                    } else {
+                        exact::<T>(
+                            &(start.exact.clone() + (stop.exact.clone() - &start.exact) * t),
+                            p,
+                        )
+                    };
+                    (x.to_decimal(), x)
+                })
+                .collect(),
+        }
+    }
+}
+
+/// An exact value rounded once to precision `p`.
+fn exact<T: Real>(q: &Rational, p: T::Prec) -> T {
+    T::from_float(&Float::with_val(T::bits(p) + 64, q), p)
+}
+
+/// Checks every value of an option against its domain, exactly, before any work: `lower`
+/// (exclusive or not) and `upper`; refusals name the option and quote the text.
+fn check(
+    option: &str,
+    what: &str,
+    axis: &Axis,
+    lower: (i64, bool),
+    upper: Option<(Rational, bool)>,
+    bound: &str,
+) -> Result<(), CliError> {
+    for d in axis.extremes() {
+        let low_ok = if lower.1 {
+            d.exact >= lower.0
+        } else {
+            d.exact > lower.0
+        };
+        let up_ok = upper
+            .as_ref()
+            .is_none_or(|(u, incl)| if *incl { d.exact <= *u } else { d.exact < *u });
+        if !(low_ok && up_ok) {
+            let why = format!("{what} = {} is outside its domain {bound}", d.text);
+            return Err(CliError::value(option, &d.text, why));
+        }
+    }
+    Ok(())
+}
+
+/// The inputs' domains, checked exactly before any work, and the point count against its cap.
+fn check_inputs(a: &SweepArgs) -> Result<(), CliError> {
+    let half = Some((Rational::from((1, 2)), true));
+    check(
+        "--nu",
+        "nu (Poisson's ratio)",
+        &a.nu,
+        (-1, false),
+        half,
+        "(-1, 1/2]",
+    )?;
+    if let Some(s) = &a.speed.speed {
+        check(
+            "--speed",
+            "speed M_R",
+            s,
+            (0, true),
+            Some((Rational::from(1), false)),
+            "[0, 1)",
+        )?;
+    }
+    if let Some(g) = &a.speed.gap {
+        check(
+            "--gap",
+            "gap 1 - M_R",
+            g,
+            (0, false),
+            Some((Rational::from(1), true)),
+            "(0, 1]",
+        )?;
+    }
+    check(
+        "--ratio",
+        "curvature ratio A1/B1",
+        &a.ratio,
+        (0, false),
+        None,
+        "(0, inf)",
+    )?;
+    let speeds = a
+        .speed
+        .speed
+        .as_ref()
+        .or(a.speed.gap.as_ref())
+        .map_or(0, Axis::len);
+    let total =
+        a.nu.len()
+            .saturating_mul(speeds)
+            .saturating_mul(a.ratio.len());
+    if total > POINT_CAP {
+        return Err(CliError::Input(format!(
+            "the sweep has {total} points, more than the {POINT_CAP} one run solves"
+        )));
+    }
+    Ok(())
+}
+
+pub fn run(a: &SweepArgs) -> Result<(), CliError> {
+    check_inputs(a)?;
+    with_precision!(a.precision, T, p => solve_and_write::<T>(a, p))
+}
+
+type Grid<T> = (Vec<EllipsePoint<T>>, Vec<[String; 3]>);
+
+/// The grid's points with the text of each input, in the order ν, speed, ratio (ratio fastest);
+/// a ratio that overflows or underflows the working precision is refused before any work.
+fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
+    let nus = a.nu.values::<T>(p);
+    let (by_gap, speeds) = match (&a.speed.speed, &a.speed.gap) {
+        (Some(s), _) => (false, s.values::<T>(p)),
+        (None, Some(g)) => (true, g.values::<T>(p)),
+        (None, None) => (false, Vec::new()),
+    };
+    let ratios = a.ratio.values::<T>(p);
+    if let Some((text, _)) = ratios
+        .iter()
+        .find(|(_, r)| !(r.is_finite() && *r >= T::min_positive(p)))
+    {
+        let why = format!(
+            "curvature ratio A1/B1 = {text} is not a normal number of {} (rescale, or use a \
+             wider precision)",
+            a.precision
+        );
+        return Err(CliError::value("--ratio", text, why));
+    }
+    let (mut pts, mut texts) = (Vec::new(), Vec::new());
+    for (nt, nu) in &nus {
+        for (st, sp) in &speeds {
+            let speed = if by_gap {
+                SpeedGiven::Gap(sp.clone())
+            } else {
+                SpeedGiven::Text(st.clone())
+            };
+            for (rt, ratio) in &ratios {
+                let (nu, speed, ratio) = (nu.clone(), speed.clone(), ratio.clone());
+                pts.push(EllipsePoint { nu, speed, ratio });
+                texts.push([nt.clone(), st.clone(), rt.clone()]);
+            }
+        }
+    }
+    Ok((pts, texts))
+}
+
+/// Solves the sweep in batches, writing each batch's rows as it is solved; exit code 1 when a
+/// point failed (its row carries the error).
+fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(), CliError> {
+    let (pts, texts) = points::<T>(a, p)?;
+    let opts = Options::<T> {
+        method: a.method,
+        ..Default::default()
+    };
+    let speed_key = if a.speed.gap.is_some() {
+        "gap"
+    } else {
+        "speed"
+    };
+    if a.format == Format::Csv {
+        emit(&format!(
+            "nu,{speed_key},ratio,k,k_error,e,e_error,major_axis,route,iterations,error\n"
+        ))?;
+    }
+    let mut bar = Progress::new("sweep", pts.len());
+    let mut failed = 0;
+    for (batch, text) in pts.chunks(BATCH).zip(texts.chunks(BATCH)) {
+        let mut out = String::new();
+        for (r, t) in sweep::ellipses(batch, &opts).iter().zip(text) {
+            failed += usize::from(r.is_err());
+            out.push_str(&row(a.format, speed_key, t, r));
+            bar.tick();
+        }
+        emit(&out)?;
+    }
+    bar.finish();
+    if failed > 0 {
+        return Err(CliError::Failed(format!(
+            "{failed} of {} points failed at {}; their rows carry the error",
+            pts.len(),
+            a.precision
+        )));
+    }
+    Ok(())
+}
+
+/// One point's line.
+fn row<T: Real>(
+    format: Format,
+    speed_key: &str,
+    t: &[String; 3],
+    r: &moving_hertz::Result<Ellipse<T>>,
+) -> String {
+    let cells: Vec<String> = match r {
+        Ok(e) => vec![
+            e.k.value.to_decimal(),
+            e.k.error.to_string(),
+            e.e.value.to_decimal(),
+            e.e.error.to_string(),
+            e.major.label().into(),
+            e.integrals.route.label().into(),
+            e.iterations.to_string(),
+            String::new(),
+        ],
+        Err(err) => {
+            let mut v = vec![String::new(); 7];
+            v.push(err.to_string());
+            v
+        }
+    };
+    let keys = [
+        "k",
+        "k_error",
+        "e",
+        "e_error",
+        "major_axis",
+        "route",
+        "iterations",
+        "error",
+    ];
+    match format {
+        Format::Csv => {
+            let quoted = |s: &str| {
+                if s.contains([',', '"']) {
+                    format!("\"{}\"", s.replace('"', "\"\""))
+                } else {
+                    s.to_string()
+                }
+            };
+            let all: Vec<String> = t.iter().chain(&cells).map(|s| quoted(s)).collect();
+            all.join(",") + "\n"
+        }
+        Format::Jsonl => {
+            let json = |s: &str| serde_json::Value::from(s).to_string();
+            let pairs: Vec<String> = ["nu", speed_key, "ratio"]
+                .iter()
+                .zip(t)
+                .chain(keys.iter().zip(&cells))
+                .filter(|(_, v)| !v.is_empty())
+                .map(|(k, v)| format!("{}:{}", json(k), json(v)))
+                .collect();
+            format!("{{{}}}\n", pairs.join(","))
+        }
+    }
+}
