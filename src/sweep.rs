@@ -102,12 +102,22 @@ where
 {
     in_blocks(points, |block| {
         let mut run = Run::new(opts);
+        let mut material: Option<(&T, Result<Material<T>>)> = None;
         let mut last: Option<(&EllipsePoint<T>, Result<Speed<T>>)> = None;
         let mut out = Vec::with_capacity(block.len());
         for pt in block {
             let speed = match last {
                 Some((prev, ref sp)) if prev.nu == pt.nu && prev.speed == pt.speed => sp.clone(),
-                _ => pt.make_speed(),
+                _ => {
+                    if !material.as_ref().is_some_and(|(nu, _)| **nu == pt.nu) {
+                        material = Some((&pt.nu, Material::new(pt.nu.clone())));
+                    }
+                    match material.as_ref().map(|(_, m)| m) {
+                        Some(Ok(mat)) => pt.speed_of(mat),
+                        Some(Err(e)) => Err(e.clone()),
+                        None => Material::new(pt.nu.clone()).and_then(|m| pt.speed_of(&m)),
+                    }
+                }
             };
             out.push(speed.clone().and_then(|sp| run.solve(&sp, &pt.ratio)));
             last = Some((pt, speed));
@@ -160,9 +170,8 @@ fn in_blocks<I: Sync, R: Send>(
 }
 
 impl<T: Real> EllipsePoint<T> {
-    /// The point's speed, made from its ν and its M_R or gap (their typed errors).
-    fn make_speed(&self) -> Result<Speed<T>> {
-        let mat = Material::new(self.nu.clone())?;
+    /// The point's speed in the material of its ν, from its M_R or gap (their typed errors).
+    fn speed_of(&self, mat: &Material<T>) -> Result<Speed<T>> {
         match &self.speed {
             SpeedGiven::Mr(mr) => mat.speed(mr.clone()),
             SpeedGiven::Gap(gap) => mat.speed_from_gap(gap.clone()),

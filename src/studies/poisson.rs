@@ -6,6 +6,7 @@
 
 use super::svg::{Chart, Heatmap, Series, Style};
 use moving_hertz::physics::Material;
+use moving_hertz::sweep;
 use moving_hertz::{ContactProblem, Loading, Options};
 
 /// One solved point.
@@ -43,43 +44,55 @@ pub fn ratio_grid() -> Vec<f64> {
         .collect()
 }
 
-/// Solves every (ν, M_R, A1/B1) of the grids at f64 (P = μ = R1 = 1, R2 = A1/B1).
+/// Solves every (ν, M_R, A1/B1) of the grids at f64 (P = μ = R1 = 1, R2 = A1/B1) by the
+/// library's sweep, in batches (every core); `tick` after each point.
 pub fn run(mut tick: impl FnMut()) -> moving_hertz::Result<Vec<Point>> {
-    let mut out = Vec::new();
+    let mut problems = Vec::new();
+    let mut at = Vec::new();
     for nu in nu_grid() {
         let mat = Material::new(nu)?;
         for mr in SPEEDS {
             let sp = mat.speed(mr)?;
             for ratio in ratio_grid() {
-                let problem = ContactProblem {
+                problems.push(ContactProblem {
                     speed: sp.clone(),
                     radius_along: 1.0,
                     radius_across: ratio,
                     loading: Loading::Load(1.0),
                     shear_modulus: 1.0,
-                };
-                let s = problem.solve(&Options::default())?;
-                out.push(Point {
-                    nu,
-                    mr,
-                    ratio,
-                    e: s.e().value,
-                    k: s.k().value,
-                    a: s.a.value,
-                    a_rel: f64::NAN,
                 });
-                tick();
+                at.push((nu, mr, ratio));
             }
         }
     }
+    let mut out = Vec::with_capacity(problems.len());
+    let batch = 16 * sweep::BLOCK;
+    for (pbs, at) in problems.chunks(batch).zip(at.chunks(batch)) {
+        for (s, &(nu, mr, ratio)) in sweep::contacts(pbs, &Options::default())
+            .into_iter()
+            .zip(at)
+        {
+            let s = s?;
+            out.push(Point {
+                nu,
+                mr,
+                ratio,
+                e: s.e().value,
+                k: s.k().value,
+                a: s.a.value,
+                a_rel: f64::NAN,
+            });
+            tick();
+        }
+    }
     // a relative to the static a at the same (ν, A1/B1).
-    let statics: Vec<(f64, f64, f64)> = out
+    let statics: std::collections::HashMap<(u64, u64), f64> = out
         .iter()
         .filter(|q| q.mr == 0.0)
-        .map(|q| (q.nu, q.ratio, q.a))
+        .map(|q| ((q.nu.to_bits(), q.ratio.to_bits()), q.a))
         .collect();
     for q in out.iter_mut() {
-        if let Some((_, _, a0)) = statics.iter().find(|(n, r, _)| *n == q.nu && *r == q.ratio) {
+        if let Some(a0) = statics.get(&(q.nu.to_bits(), q.ratio.to_bits())) {
             q.a_rel = q.a / a0;
         }
     }
@@ -104,12 +117,18 @@ pub fn spread(
     value: impl Fn(&Point) -> f64,
 ) -> Vec<(f64, f64, f64)> {
     let mut out = Vec::new();
+    let mut cells: std::collections::HashMap<(u64, u64), Vec<&Point>> = Default::default();
+    for q in points {
+        cells
+            .entry((q.mr.to_bits(), q.ratio.to_bits()))
+            .or_default()
+            .push(q);
+    }
     for mr in SPEEDS {
         for ratio in ratio_grid() {
-            let here: Vec<&Point> = points
-                .iter()
-                .filter(|q| q.mr == mr && q.ratio == ratio)
-                .collect();
+            let here = cells
+                .get(&(mr.to_bits(), ratio.to_bits()))
+                .map_or(&[][..], Vec::as_slice);
             let Some(base) = here.iter().find(|q| (q.nu - 0.2).abs() < 1e-9) else {
                 continue;
             };
