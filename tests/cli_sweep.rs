@@ -1,0 +1,247 @@
+//! `moving-hertz sweep`: one row a point in input order (ratio fastest), each k within its
+//! bound of the `ellipse` command's for the same inputs, JSON lines with the same values,
+//! ranges that hold their ends, domains refused before any work naming the option and the text.
+
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_moving-hertz"))
+        .args(args)
+        .output()
+        .expect("the moving-hertz binary runs")
+}
+
+fn stdout_of(args: &[&str]) -> String {
+    let out = run(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+/// The CSV rows as maps from the header's names.
+fn rows(csv: &str) -> Vec<std::collections::HashMap<String, String>> {
+    let mut lines = csv.lines();
+    let header: Vec<String> = lines
+        .next()
+        .expect("header")
+        .split(',')
+        .map(String::from)
+        .collect();
+    lines
+        .map(|l| {
+            header
+                .iter()
+                .cloned()
+                .zip(l.split(',').map(String::from))
+                .collect()
+        })
+        .collect()
+}
+
+/// k of the `ellipse` command and its bound.
+fn ellipse_k(nu: &str, speed: (&str, &str), ratio: &str, precision: &str) -> (f64, f64) {
+    let out = stdout_of(&[
+        "ellipse",
+        "--nu",
+        nu,
+        speed.0,
+        speed.1,
+        "--ratio",
+        ratio,
+        "--precision",
+        precision,
+        "--json",
+    ]);
+    let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let num = |key: &str| v[key].as_str().expect(key).parse::<f64>().expect(key);
+    (num("k"), num("k_error"))
+}
+
+#[test]
+fn rows_in_input_order_as_the_ellipse_command() {
+    let csv = stdout_of(&[
+        "sweep",
+        "--nu",
+        "0.2,-0.5",
+        "--speed",
+        "0.5,0.9999999999",
+        "--ratio",
+        "0.01,1/4,30",
+    ]);
+    let rows = rows(&csv);
+    assert_eq!(rows.len(), 12);
+    let mut i = 0;
+    for nu in ["0.2", "-0.5"] {
+        for speed in ["0.5", "0.9999999999"] {
+            for ratio in ["0.01", "1/4", "30"] {
+                let r = &rows[i];
+                assert_eq!(
+                    (r["nu"].as_str(), r["speed"].as_str(), r["ratio"].as_str()),
+                    (nu, speed, ratio)
+                );
+                let (k, bound) = (
+                    r["k"].parse::<f64>().unwrap(),
+                    r["k_error"].parse::<f64>().unwrap(),
+                );
+                let (want, want_bound) = ellipse_k(nu, ("--speed", speed), ratio, "f64");
+                assert!(
+                    (k / want - 1.0).abs() <= bound + want_bound,
+                    "{r:?}: k {k} vs {want}"
+                );
+                assert!(r["error"].is_empty());
+                i += 1;
+            }
+        }
+    }
+}
+
+#[test]
+fn json_lines_and_log_ranges_of_the_gap_at_256_bits() {
+    let out = stdout_of(&[
+        "sweep",
+        "--nu",
+        "0.25",
+        "--gap",
+        "log:1e-2:1e-10:3",
+        "--ratio",
+        "0.5",
+        "--precision",
+        "256",
+        "--format",
+        "jsonl",
+    ]);
+    let lines: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("one JSON object a line"))
+        .collect();
+    assert_eq!(lines.len(), 3);
+    for (v, gap) in lines.iter().zip(["1e-2", "1e-6", "1e-10"]) {
+        let got: f64 = v["gap"].as_str().unwrap().parse().unwrap();
+        let want: f64 = gap.parse().unwrap();
+        assert!((got / want - 1.0).abs() < 1e-15, "gap {got} for {gap}");
+        let k = rug::Float::with_val(300, rug::Float::parse(v["k"].as_str().unwrap()).unwrap());
+        let out = stdout_of(&[
+            "ellipse",
+            "--nu",
+            "0.25",
+            "--gap",
+            v["gap"].as_str().unwrap(),
+            "--ratio",
+            "0.5",
+            "--precision",
+            "256",
+            "--json",
+        ]);
+        let e: serde_json::Value = serde_json::from_str(&out).unwrap();
+        let want = rug::Float::with_val(300, rug::Float::parse(e["k"].as_str().unwrap()).unwrap());
+        let rel = ((k - &want) / want).abs().to_f64();
+        let bound: f64 = v["k_error"].as_str().unwrap().parse::<f64>().unwrap()
+            + e["k_error"].as_str().unwrap().parse::<f64>().unwrap();
+        assert!(rel <= bound, "{v}: relative difference {rel:e} > {bound:e}");
+    }
+}
+
+#[test]
+fn linear_ranges_hold_their_ends() {
+    let csv = stdout_of(&[
+        "sweep",
+        "--nu",
+        "lin:-0.5:0.5:5",
+        "--speed",
+        "0",
+        "--ratio",
+        "1",
+    ]);
+    let nus: Vec<f64> = rows(&csv)
+        .iter()
+        .map(|r| r["nu"].parse().unwrap())
+        .collect();
+    assert_eq!(nus, vec![-0.5, -0.25, 0.0, 0.25, 0.5]);
+}
+
+/// A refused run: exit code 2, nothing on standard output, one line naming `option` and `text`.
+fn refused(args: &[&str], option: &str, text: &str) {
+    let out = run(args);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+    assert!(out.stdout.is_empty(), "{args:?}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.contains(option) && err.contains(text),
+        "{args:?}: {err}"
+    );
+}
+
+#[test]
+fn domains_refused_before_any_work() {
+    let base = ["sweep", "--speed", "0.5", "--ratio", "1"];
+    let with = |extra: &[&'static str]| -> Vec<&'static str> {
+        base.iter().copied().chain(extra.iter().copied()).collect()
+    };
+    refused(&with(&["--nu", "0.2,0.7"]), "--nu", "0.7");
+    refused(&with(&["--nu", "lin:-1:0.5:4"]), "--nu", "-1");
+    refused(
+        &with(&["--nu", "0.5000000000000000001"]),
+        "--nu",
+        "0.5000000000000000001",
+    );
+    refused(
+        &["sweep", "--nu", "0.2", "--speed", "1", "--ratio", "1"],
+        "--speed",
+        "1",
+    );
+    refused(
+        &["sweep", "--nu", "0.2", "--gap", "0,0.1", "--ratio", "1"],
+        "--gap",
+        "0",
+    );
+    refused(
+        &[
+            "sweep",
+            "--nu",
+            "0.2",
+            "--speed",
+            "0.5",
+            "--ratio",
+            "log:0:1:3",
+        ],
+        "--ratio",
+        "log:0:1:3",
+    );
+    refused(
+        &[
+            "sweep", "--nu", "0.2", "--speed", "0.5", "--ratio", "1e-400",
+        ],
+        "--ratio",
+        "1e-400",
+    );
+    refused(
+        &[
+            "sweep",
+            "--nu",
+            "0.2",
+            "--speed",
+            "0.5",
+            "--ratio",
+            "lin:1:2:1",
+        ],
+        "--ratio",
+        "lin:1:2:1",
+    );
+    refused(
+        &[
+            "sweep",
+            "--nu",
+            "lin:0:0.5:10000",
+            "--speed",
+            "lin:0:0.9:10000",
+            "--ratio",
+            "1",
+        ],
+        "10000000",
+        "points",
+    );
+}
