@@ -7,7 +7,7 @@
 //! the corrections of `docs/errata.md`), at any precision: `f64`, double-double ([`Dd`]) and
 //! MPFR ([`Mp`]), with exact rationals where a recurrence has exact coefficients.
 //!
-//! ## The library in five nouns
+//! ## The library in six nouns
 //!
 //! * [`Material`] (Poisson's ratio) makes a [`Speed`], which carries it: from M_R, from the gap
 //!   1 − M_R, from V and c2, or from decimal text with the gap formed exactly.
@@ -20,6 +20,9 @@
 //! * [`integrals`] / [`Evaluator`] evaluate I1, I2 of (34) (with k-derivatives and J0 on
 //!   request) by the [`Route`] the [`Method`] and [`IntegralOptions`] select;
 //!   [`integrals_to_tolerance`] picks the precision for a tolerance from [`ExactInputs`].
+//! * [`sweep`] solves many points at once — ellipses over (ν, speed, A1/B1), contact problems,
+//!   I1, I2 over k — in parallel, sharing set-ups and starting each root from its neighbours',
+//!   each point with its own result or typed error.
 //! * [`RelError`] is every error bound and tolerance: a mantissa and a binary exponent, so that
 //!   it neither underflows nor overflows at any precision.
 //!
@@ -53,6 +56,7 @@
 //! | [`physics`] | [`Material`] and [`Speed`], the Rayleigh function and roots, the Green's function (sections 3, 6) |
 //! | [`routes`] | the integrals I1, I2: the series route (section 5), the direct, subtracted and fixed-rule quadratures (sections 6–7), the evaluator and the choice of precision |
 //! | [`contact`] | the ellipse (33), the full solution with the corrected (28), (30), (32), the convolution (7) check, the precision ladder (section 4) |
+//! | [`sweep`] | many ellipses, contact solutions or integrals at once, in parallel blocks |
 //! | [`symbolic`] | the coefficients of (36) and (40) as exact rational functions of ν and e² |
 //!
 //! The command-line tool (`moving-hertz`, the binary of this package) adds the studies and

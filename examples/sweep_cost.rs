@@ -1,0 +1,67 @@
+//! The calibration driver of the sweep (docs/calibration.md, "Sweeps"): a 1,000-point A1/B1
+//! curve (10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9, solved one point at a time
+//! (`indep`), by `sweep::ellipses` on one thread (`sweep`), or neither (`none`: the fixed costs
+//! alone, after the same warm-up); prints the evaluations at the working precision. Per-point
+//! instruction counts come from running it under callgrind and subtracting `none`:
+//!
+//! `valgrind --tool=callgrind target/release/examples/sweep_cost f64 sweep -3 0`
+//!
+//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI`
+//! (PRECISION f64, dd or bits; MODE indep, sweep or none).
+
+use moving_hertz::prelude::*;
+use moving_hertz::solve_ellipse;
+use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven};
+use std::time::Instant;
+
+fn run<T: Real + Send + Sync>(p: T::Prec, mode: &str, lo: f64, hi: f64) -> Result<()> {
+    let n = 1000;
+    let x = |v: f64| T::from_f64(v, p);
+    let ratios: Vec<T> = (0..n)
+        .map(|j| x(10f64.powf(lo + (hi - lo) * j as f64 / (n - 1) as f64)))
+        .collect();
+    let points = EllipsePoint::grid(&[x(0.25)], &[SpeedGiven::Mr(x(0.9))], &ratios);
+    let speed = Material::new(x(0.25))?.speed(x(0.9))?;
+    let opts = Options::default();
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("a pool of one thread");
+    // Warm-up: the rules and constants every mode builds once.
+    for j in 0..13 {
+        solve_ellipse(&speed, &x(10f64.powf(-3.0 + 0.5 * j as f64)), &opts)?;
+    }
+    pool.install(|| sweep::ellipses(&points[..3], &opts));
+    let start = Instant::now();
+    let mut evaluations = 0;
+    match mode {
+        "indep" => {
+            for r in &ratios {
+                evaluations += solve_ellipse(&speed, r, &opts)?.iterations;
+            }
+        }
+        "sweep" => {
+            for r in pool.install(|| sweep::ellipses(&points, &opts)) {
+                evaluations += r?.iterations;
+            }
+        }
+        _ => {}
+    }
+    println!(
+        "{mode}: {evaluations} evaluations at the working precision, {:.3} ms",
+        start.elapsed().as_secs_f64() * 1e3
+    );
+    Ok(())
+}
+
+fn main() -> Result<()> {
+    let a: Vec<String> = std::env::args().collect();
+    let arg = |i: usize, default: &str| a.get(i).cloned().unwrap_or_else(|| default.into());
+    let (mode, lo, hi) = (arg(2, "sweep"), arg(3, "-3"), arg(4, "3"));
+    let (lo, hi): (f64, f64) = (lo.parse().unwrap_or(-3.0), hi.parse().unwrap_or(3.0));
+    match Precision::parse(&arg(1, "f64"))? {
+        Precision::F64 => run::<f64>((), &mode, lo, hi),
+        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi),
+        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi),
+    }
+}
