@@ -3,7 +3,7 @@
 
 Usage (from the repository root, after the benches have run):
 
-    for b in dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded; do
+    for b in dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded sweep; do
         cargo bench --bench $b -- --warm-up-time 1 --measurement-time 3
     done
     cargo build --release && python3 tools/baseline_solve.py > target/baseline_solve.md   # optional
@@ -32,7 +32,7 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), 
 CRIT = os.path.join(ROOT, "target", "criterion")
 OUT = os.path.join(ROOT, "docs", "performance.md")
 BASELINE = os.path.join(ROOT, "target", "baseline_solve.md")
-BENCHES = "dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded"
+BENCHES = "dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded sweep"
 
 
 def bench_const(bench, name, default):
@@ -54,6 +54,8 @@ T_FAST_F64_NS = 300.0
 T_ELLIPSE_F64_NS = 2000.0
 T_ELLIPSE_DD_RATIO = 25.0
 T_ELLIPSE_MP256_NS = 2.0e6
+T_SWEEP = {"f64": 0.4, "dd": 0.5, "mpfr256": 0.6}  # sweep on one thread / independent solves
+T_SWEEP_THREADS = 0.55  # two threads / one thread
 
 # Bench groups in page order: family, title, what it measures.
 FAMILIES = [
@@ -216,9 +218,27 @@ def targets(fams, flat):
         rows.append((f"ellipse solve at 256 bits ≤ {fmt(T_ELLIPSE_MP256_NS)}",
                      f"{fmt(min(mp))}–{fmt(max(mp))} ({len(mp)} cases)",
                      verdict(max(mp) <= T_ELLIPSE_MP256_NS)))
+    rows += sweep_targets(fams.get("sweep", {}))
     lines = ["| target | measured (range over the bench's cases) | met? |", "|---|---|---|"]
     lines += [f"| {a} | {b} | {c} |" for a, b, c in rows]
     return lines
+
+
+def sweep_targets(cells):
+    """The sweep bench's targets: per point against independent solves, two threads against one."""
+    rows = []
+    ind, one, two = (cells.get(f, {}) for f in ("independent", "sweep_1_thread", "sweep_2_threads"))
+    for prec, target in T_SWEEP.items():
+        if prec in ind and prec in one:
+            r = one[prec] / ind[prec]
+            rows.append((f"1,000-point A1/B1 curve at {prec}, one thread: ≤ {target} × independent solves",
+                         f"{r:.2f}", "yes" if r <= target else "**no**"))
+    for prec in T_SWEEP:
+        if prec in one and prec in two:
+            r = two[prec] / one[prec]
+            rows.append((f"the same curve at {prec} on two threads: ≤ {T_SWEEP_THREADS} × one thread",
+                         f"{r:.2f}", "yes" if r <= T_SWEEP_THREADS else "**no**"))
+    return rows
 
 
 def page(data, note=None):
