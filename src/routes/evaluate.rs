@@ -231,7 +231,7 @@ impl<T: Real> Evaluator<T> {
         }
         match self
             .fast
-            .get_or_init(|| FastSetup::new(&self.speed).map(Box::new))
+            .get_or_init(|| FastSetup::boxed(&self.speed))
         {
             Ok(f) if dk => f.integrals_with_dk(axes),
             Ok(f) => f.integrals(axes),

@@ -555,19 +555,33 @@ struct TaylorRight<T> {
 
 impl<T: Real> TaylorRight<T> {
     fn new(rule: &FastRule<T>, sc: &SpeedConsts<T>) -> Result<Self> {
+        let mut t = TaylorRight::zeros(rule)?;
+        t.fill(rule, sc)?;
+        Ok(t)
+    }
+
+    /// The tables sized for `rule`, zero.
+    fn zeros(rule: &FastRule<T>) -> Result<Self> {
         let p = rule.prec;
-        let one = T::one(p);
-        let mut b = Buf::zeros(rule.sizes.taylor, p);
-        taylor_b(sc, rule, &mut b);
         let h = rule.right_half()?;
-        let mut r = Buf::zeros(h.len(), p);
-        taylor_poly(&b, &h.s, &mut r);
-        for ((sg, pp, two_p, four_p), ri) in h.nodes().zip(r.iter_mut()) {
+        Ok(TaylorRight {
+            b: Buf::zeros(rule.sizes.taylor, p),
+            r: Buf::zeros(h.len(), p),
+        })
+    }
+
+    /// Fills the tables in place.
+    fn fill(&mut self, rule: &FastRule<T>, sc: &SpeedConsts<T>) -> Result<()> {
+        let one = T::one(rule.prec);
+        taylor_b(sc, rule, &mut self.b);
+        let h = rule.right_half()?;
+        taylor_poly(&self.b, &h.s, &mut self.r);
+        for ((sg, pp, two_p, four_p), ri) in h.nodes().zip(self.r.iter_mut()) {
             let (f1, dd, e) = sc.right_node(sg, pp, two_p, four_p, &one);
             let bi = sc.two_over_m1.clone() * dd * f1.sqrt_div(&e);
             *ri = bi - &*ri;
         }
-        Ok(TaylorRight { b, r })
+        Ok(())
     }
 }
 
@@ -590,34 +604,48 @@ impl<T: Real> FastSetup<T> {
     /// double-double the right half is laid out on first use for each octave of k
     /// ([`sinh_octave`]).
     pub fn new(speed: &Speed<T>) -> Result<Self> {
+        Self::boxed(speed).map(|b| *b)
+    }
+
+    /// [`FastSetup::new`] built in its box: the inline tables are filled where they stay,
+    /// not moved (an evaluator keeps its set-up boxed).
+    pub(crate) fn boxed(speed: &Speed<T>) -> Result<Box<Self>> {
         let p = speed.mr().prec();
         let rule = FastRule::<T>::get(p)?;
-        let sc = SpeedConsts::new(speed);
-        let l = &rule.left;
-        let n = l.len();
-        let (mut left_lq, mut left_ih) = (Buf::zeros(n, p), Buf::zeros(n, p));
-        let left_out = left_lq.iter_mut().zip(left_ih.iter_mut());
-        for ((s, pp, two_p, four_p), (lq, ih)) in l.nodes().zip(left_out) {
-            let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
-            *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
-            *ih = (s.clone() + &sc.eps2).recip();
-        }
-        let (taylor, sinh) = if T::bits(p) <= 106 {
-            (OnceLock::from(TaylorRight::new(&rule, &sc)), Vec::new())
-        } else {
-            (
-                OnceLock::new(),
-                (0..OCTAVES).map(|_| OnceLock::new()).collect(),
-            )
-        };
-        Ok(FastSetup {
+        let n = rule.left.len();
+        let mut setup = Box::new(FastSetup {
+            sc: SpeedConsts::new(speed),
+            left_lq: Buf::zeros(n, p),
+            left_ih: Buf::zeros(n, p),
+            taylor: OnceLock::new(),
+            sinh: Vec::new(),
+            rule,
+        });
+        let FastSetup {
             rule,
             sc,
             left_lq,
             left_ih,
             taylor,
             sinh,
-        })
+        } = &mut *setup;
+        let left_out = left_lq.iter_mut().zip(left_ih.iter_mut());
+        for ((s, pp, two_p, four_p), (lq, ih)) in rule.left.nodes().zip(left_out) {
+            let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
+            *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
+            *ih = (s.clone() + &sc.eps2).recip();
+        }
+        if T::bits(p) <= 106 {
+            let _ = taylor.set(TaylorRight::zeros(rule));
+            if let Some(Ok(t)) = taylor.get_mut() {
+                if let Err(e) = t.fill(rule, sc) {
+                    *taylor = OnceLock::from(Err(e));
+                }
+            }
+        } else {
+            *sinh = (0..OCTAVES).map(|_| OnceLock::new()).collect();
+        }
+        Ok(setup)
     }
 
     /// I1, I2 at the axis ratio `axes` (same domain and accuracy as [`integrals`]).
