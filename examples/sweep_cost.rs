@@ -1,12 +1,12 @@
 //! The calibration driver of the sweep (docs/calibration.md, "Sweeps"): a 1,000-point A1/B1
 //! curve (10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9, solved one point at a time
-//! (`indep`), by `sweep::ellipses` on one thread (`sweep`), or neither (`none`: the fixed costs
+//! (`indep`), by `sweep::ellipses` on THREADS threads (`sweep`; default 1), or neither (`none`: the fixed costs
 //! alone, after the same warm-up); prints the evaluations at the working precision. Per-point
 //! instruction counts come from running it under callgrind and subtracting `none`:
 //!
 //! `valgrind --tool=callgrind target/release/examples/sweep_cost f64 sweep -3 0`
 //!
-//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI`
+//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI [THREADS]`
 //! (PRECISION f64, dd or bits; MODE indep, sweep or none).
 
 use moving_hertz::prelude::*;
@@ -14,7 +14,13 @@ use moving_hertz::solve_ellipse;
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven};
 use std::time::Instant;
 
-fn run<T: Real + Send + Sync>(p: T::Prec, mode: &str, lo: f64, hi: f64) -> Result<()> {
+fn run<T: Real + Send + Sync>(
+    p: T::Prec,
+    mode: &str,
+    lo: f64,
+    hi: f64,
+    threads: usize,
+) -> Result<()> {
     let n = 1000;
     let x = |v: f64| T::from_f64(v, p);
     let ratios: Vec<T> = (0..n)
@@ -24,9 +30,9 @@ fn run<T: Real + Send + Sync>(p: T::Prec, mode: &str, lo: f64, hi: f64) -> Resul
     let speed = Material::new(x(0.25))?.speed(x(0.9))?;
     let opts = Options::default();
     let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(1)
+        .num_threads(threads)
         .build()
-        .expect("a pool of one thread");
+        .expect("a pool of THREADS threads");
     // Warm-up: the rules and constants every mode builds once.
     for j in 0..13 {
         solve_ellipse(&speed, &x(10f64.powf(-3.0 + 0.5 * j as f64)), &opts)?;
@@ -59,9 +65,10 @@ fn main() -> Result<()> {
     let arg = |i: usize, default: &str| a.get(i).cloned().unwrap_or_else(|| default.into());
     let (mode, lo, hi) = (arg(2, "sweep"), arg(3, "-3"), arg(4, "3"));
     let (lo, hi): (f64, f64) = (lo.parse().unwrap_or(-3.0), hi.parse().unwrap_or(3.0));
+    let threads: usize = arg(5, "1").parse().unwrap_or(1);
     match Precision::parse(&arg(1, "f64"))? {
-        Precision::F64 => run::<f64>((), &mode, lo, hi),
-        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi),
-        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi),
+        Precision::F64 => run::<f64>((), &mode, lo, hi, threads),
+        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi, threads),
+        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi, threads),
     }
 }
