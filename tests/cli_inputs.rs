@@ -74,13 +74,31 @@ fn refusals_name_the_option_and_quote_the_value_as_typed() {
         2,
         &["'--nu'", "= 0.5000000000000000001 is outside"],
     );
-    // A ratio whose k leaves the working range: a short message, no page of zeros.
+    // A ratio beyond the supported range: refused before any work, a short message, no page
+    // of zeros — at 256 and 1024 bits (where the solve took minutes).
+    for precision in ["256", "1024"] {
+        refused(
+            &[
+                "ellipse",
+                "--nu",
+                "0.2",
+                "--speed",
+                "0.5",
+                "--ratio",
+                "1e-400",
+                "--precision",
+                precision,
+            ],
+            2,
+            &["'--ratio'", "A1/B1 = R2/R1 = 1e-400", "[1e-100, 1e100]"],
+        );
+    }
     let msg = refused(
         &[
             "ellipse", "--nu", "0.2", "--speed", "0.5", "--ratio", "1e-300",
         ],
         2,
-        &["A1/B1 = 1e-300", "axis ratio k"],
+        &["A1/B1 = R2/R1 = 1e-300", "axis ratio k", "[1e-100, 1e100]"],
     );
     assert!(msg.len() < 300 && !msg.contains("0000000000"), "{msg}");
     // Values that do not fit the working precision are refused as such, not as inf or 0.

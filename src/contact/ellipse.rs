@@ -170,7 +170,8 @@ impl<T: Real> Shape<T> {
     }
 }
 
-/// Checks a curvature ratio A1/B1 = R2/R1: positive and finite.
+/// Checks a curvature ratio A1/B1 = R2/R1: positive, finite and within the supported range
+/// [10⁻¹⁰⁰, 10¹⁰⁰] ([`RATIO_RANGE`]), before any work.
 pub fn check_ratio<T: Real>(ratio: &T) -> Result<()> {
     check_finite("curvature ratio A1/B1", ratio)?;
     if !ratio.is_positive() {
@@ -180,8 +181,21 @@ pub fn check_ratio<T: Real>(ratio: &T) -> Result<()> {
             bound: "(0, inf)",
         });
     }
+    let p = ratio.prec();
+    let (lo, hi) = RATIO_RANGE;
+    if *ratio < T::from_f64(lo, p) || *ratio > T::from_f64(hi, p) {
+        return Err(Error::Domain {
+            name: "curvature ratio A1/B1 = R2/R1",
+            value: short(ratio),
+            bound: "[1e-100, 1e100], the supported range (beyond it the axis ratio k passes 1e-50 or 1e50, where the quadrature overflows f64 and takes a minute at 256 bits)",
+        });
+    }
     Ok(())
 }
+
+/// The supported curvature ratios A1/B1: a solve inside costs at most about 100 solves at
+/// A1/B1 ~ 1 at 256 bits and a few at `f64` (evidence: `docs/calibration.md`).
+pub const RATIO_RANGE: (f64, f64) = (1e-100, 1e100);
 
 /// A start for Newton: the static Hertz ellipse, by Hamrock & Brewe's approximation
 /// k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a few per cent of the static k down to 10⁻⁶) and by

@@ -229,10 +229,7 @@ impl<T: Real> Evaluator<T> {
         if probe && self.fast.get().is_none() {
             return fast::integrals_with_dk(&self.speed, axes);
         }
-        match self
-            .fast
-            .get_or_init(|| FastSetup::boxed(&self.speed))
-        {
+        match self.fast.get_or_init(|| FastSetup::boxed(&self.speed)) {
             Ok(f) if dk => f.integrals_with_dk(axes),
             Ok(f) => f.integrals(axes),
             Err(e) => Err(e.clone()),

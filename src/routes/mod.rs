@@ -292,6 +292,13 @@ impl<T: Real> Evaluation<T> {
         if !finite {
             return Err(self.not_finite());
         }
+        if let Some((name, value)) = self.underflowed() {
+            return Err(Error::Domain {
+                name,
+                value,
+                bound: "|x| >= the smallest normal number of the working precision (it underflowed: an axis ratio k this far from 1 needs MPFR's exponent range)",
+            });
+        }
         let precision = Precision::of::<T>(self.i1.prec());
         let err = RelError::of(&self.error_estimate);
         let extra = RelError::of(&self.extra_error);
@@ -312,6 +319,24 @@ impl<T: Real> Evaluation<T> {
             precision,
             work: self.work,
         })
+    }
+
+    /// The first returned value that lies below the smallest normal number of the working
+    /// precision (I1, I2, J0 > 0 and the k-derivatives < 0 never vanish: such a value has lost
+    /// its relative accuracy, e.g. dI1/dk ~ k⁻⁴ at k ≳ 10⁸⁰ in `f64`).
+    fn underflowed(&self) -> Option<(&'static str, String)> {
+        let tiny = T::min_positive(self.i1.prec());
+        let mut values = vec![("I1", &self.i1), ("I2", &self.i2)];
+        if let Some([a, b]) = &self.dk {
+            values.extend([("dI1/dk", a), ("dI2/dk", b)]);
+        }
+        if let Some(j) = &self.j0 {
+            values.push(("J0", j));
+        }
+        values
+            .into_iter()
+            .find(|(_, v)| (*v).clone().abs() < tiny)
+            .map(|(name, v)| (name, short(v)))
     }
 
     /// The typed error for a value or estimate that is not finite.
