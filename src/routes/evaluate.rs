@@ -295,7 +295,7 @@ impl<T: Real> Evaluator<T> {
 }
 
 /// Whether k lies in the fixed rules' range 2⁻⁴⁰ ≤ k ≤ 2⁴⁰.
-fn in_fixed_range<T: Real>(k: &T) -> bool {
+pub(crate) fn in_fixed_range<T: Real>(k: &T) -> bool {
     let p = k.prec();
     *k >= T::from_ratio(1, 1 << 40, p) && *k <= T::from_i64(1 << 40, p)
 }

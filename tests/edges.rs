@@ -1,0 +1,123 @@
+//! The library's reproducers of issue 20 (items 1, 2 and 7) as regression tests: extreme
+//! curvature ratios refused before any work as a typed error naming the ratio and the
+//! supported range; the ends of that range solved with an honest bound (checked against 256
+//! bits); an integral or derivative that underflows the working type refused, not returned.
+
+use moving_hertz::prelude::*;
+use moving_hertz::{integrals, solve_ellipse, Error};
+
+fn speed<T: Real>(nu: &str, gap: &str, p: T::Prec) -> Speed<T> {
+    Material::parse(nu, p).unwrap().parse_gap(gap).unwrap()
+}
+
+/// The ratio's typed error: `Error::Domain` naming A1/B1 and the supported range.
+fn refused_ratio<T: Real>(r: moving_hertz::Result<moving_hertz::Ellipse<T>>) {
+    match r {
+        Err(Error::Domain { name, bound, .. }) => {
+            assert!(
+                name.contains("A1/B1") && bound.contains("[1e-100, 1e100]"),
+                "{name}: {bound}"
+            )
+        }
+        other => panic!("expected the ratio's domain error, got {other:?}"),
+    }
+}
+
+/// Item 1 (I1 = NaN returned as a success at A1/B1 ~ 1e-118 near c_R), item 2 (an estimate of
+/// ∞ or 6.8e-3 at A1/B1 = 6.5e159) and item 7 (a minute of Newton at 256 bits, then no
+/// convergence, at 1e-400): each refused before any work at every precision.
+#[test]
+fn extreme_ratios_are_refused_before_any_work() {
+    let sp = speed::<Dd>("0.4994206", "8.47e-22", ());
+    refused_ratio(solve_ellipse(
+        &sp,
+        &Dd::parse("4.12e-118", ()).unwrap(),
+        &Options::default(),
+    ));
+    let sp = speed::<f64>("0.2", "1e-10", ());
+    refused_ratio(solve_ellipse(&sp, &1e-118, &Options::default()));
+    for nu in ["0.5", "0.2"] {
+        let sp = Material::<f64>::parse(nu, ()).unwrap().speed(0.0).unwrap();
+        refused_ratio(solve_ellipse(&sp, &6.5e159, &Options::default()));
+    }
+    let p = MpPrec::new(256).unwrap();
+    let sp = Material::<Mp>::parse("0.2", p)
+        .unwrap()
+        .parse_speed("0.5")
+        .unwrap();
+    let opts = Options::default();
+    refused_ratio(solve_ellipse(&sp, &Mp::parse("1e-400", p).unwrap(), &opts));
+    let problem = ContactProblem {
+        speed: sp,
+        radius_along: Mp::parse("1e400", p).unwrap(),
+        radius_across: Mp::parse("1", p).unwrap(),
+        loading: Loading::Load(Mp::parse("1", p).unwrap()),
+        shear_modulus: Mp::parse("1", p).unwrap(),
+    };
+    match problem.solve(&opts) {
+        Err(Error::Domain { name, .. }) => assert!(name.contains("A1/B1")),
+        other => panic!("contact with R2/R1 = 1e-400: {other:?}"),
+    }
+}
+
+/// The ends of the supported range near the Rayleigh speed (k ~ 1e-53 and 1e51): at `f64` and
+/// double-double the bound on k holds against the 256-bit solve of the same inputs (the
+/// lower precision's ν, gap and ratio, exactly).
+#[test]
+fn the_ends_of_the_range_have_honest_bounds() {
+    for (nu, gap, ratio) in [("0.2", "1e-10", "1e-100"), ("0.5", "8.47e-22", "1e100")] {
+        let sp = speed::<f64>(nu, gap, ());
+        let r = ratio.parse::<f64>().unwrap();
+        let got = solve_ellipse(&sp, &r, &Options::default()).unwrap().k;
+        let up = |x: &f64| x.to_float(256);
+        check_against_256(&got, [up(sp.material().nu()), up(sp.gap()), up(&r)], "f64");
+        let sp = speed::<Dd>(nu, gap, ());
+        let r = Dd::parse(ratio, ()).unwrap();
+        let got = solve_ellipse(&sp, &r, &Options::default()).unwrap().k;
+        let up = |x: &Dd| x.to_float(256);
+        check_against_256(&got, [up(sp.material().nu()), up(sp.gap()), up(&r)], "dd");
+    }
+}
+
+/// |k − k₂₅₆|/k₂₅₆ within the bound of `got`, k₂₅₆ solved at 256 bits for ν, gap, ratio.
+fn check_against_256<T: Real>(got: &Estimated<T>, inputs: [rug::Float; 3], label: &str) {
+    let p = MpPrec::new(256).unwrap();
+    let [nu, gap, ratio] = inputs.map(|x| Mp::from_float(&x, p));
+    let sp = Material::new(nu).unwrap().speed_from_gap(gap).unwrap();
+    let want = solve_ellipse(&sp, &ratio, &Options::default())
+        .unwrap()
+        .k
+        .value
+        .to_float(256);
+    let err = rug::Float::with_val(256, (got.value.to_float(256) - &want) / &want)
+        .abs()
+        .to_f64();
+    let bound = got.error.to_f64();
+    assert!(
+        err <= bound,
+        "{label} at A1/B1 = {ratio:?}: error {err:e} > bound {bound:e}"
+    );
+}
+
+/// Item 2's library half: dI1/dk ~ k⁻⁴ underflows `f64` at k = 1.8e83; refused as a typed
+/// error (it was returned as 0 with a small bound); at 256 bits it is a normal number.
+#[test]
+fn an_underflowing_derivative_is_refused() {
+    let opts = IntegralOptions {
+        derivatives: true,
+        ..Default::default()
+    };
+    let sp = Material::new(0.2).unwrap().speed(0.5).unwrap();
+    match integrals(&sp, &1.8e83, &opts) {
+        Err(Error::Domain { name, .. }) => assert!(name.starts_with("dI"), "{name}"),
+        other => panic!("k = 1.8e83 at f64: {other:?}"),
+    }
+    let p = MpPrec::new(256).unwrap();
+    let sp = Material::<Mp>::parse("0.2", p)
+        .unwrap()
+        .parse_speed("0.5")
+        .unwrap();
+    let r = integrals(&sp, &Mp::parse("1.8e83", p).unwrap(), &opts).unwrap();
+    let d = r.di1_dk.unwrap().value;
+    assert!(d.is_negative() && d.is_finite(), "dI1/dk = {d:?}");
+}
