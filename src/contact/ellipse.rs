@@ -77,9 +77,10 @@ pub struct Options<T> {
     /// The series and the adaptive subtracted routes give no k-derivatives and are refused.
     pub method: Method,
     /// A starting value for k. Without one (the default) the solve starts from the static
-    /// ellipse and, above `f64`, climbs the precision ladder (`f64`, then double-double, then
-    /// the working precision: a few high-precision evaluations, no search); with one it runs
-    /// Newton's method at the working precision from the seed.
+    /// ellipse; with one, from the seed (rounded to `f64`), falling back to the static ellipse
+    /// when Newton's method does not converge from it within a few evaluations. Either way,
+    /// above `f64` the solve climbs the precision ladder (`f64`, then double-double, then the
+    /// working precision: a few high-precision evaluations, no search).
     pub seed: Option<T>,
     /// The relative accuracy wanted for k; `None` (the default) asks for the working
     /// precision's floor (a few ε). A tolerance below 4ε is refused before any work
@@ -305,11 +306,12 @@ impl<T: Real> ShapeSolver<T> {
         })
     }
 
-    /// Solves (33) at `ratio` to the tolerance `tol` (`None`: the working precision's floor).
-    /// With a `seed`, Newton's method at the working precision from it; without, the
-    /// precision ladder ([`ShapeSolver::ladder`]), whose lowest stage starts from `guess` (a
-    /// neighbouring point's root, in `f64`) when it converges from there within
-    /// [`GUESS_EVALUATIONS`], from the static ellipse otherwise.
+    /// Solves (33) at `ratio` to the tolerance `tol` (`None`: the working precision's floor)
+    /// by the precision ladder ([`ShapeSolver::ladder`]), whose lowest stage starts from the
+    /// `seed` (the caller's) or else the `guess` (a neighbouring point's root), rounded to
+    /// `f64`, when it converges from there within [`GUESS_EVALUATIONS`], and from the static
+    /// ellipse otherwise: a far seed costs a few `f64` evaluations, never a search at the
+    /// working precision.
     pub(crate) fn solve(
         &self,
         ratio: &T,
@@ -317,17 +319,37 @@ impl<T: Real> ShapeSolver<T> {
         seed: Option<&T>,
         guess: Option<f64>,
     ) -> Result<Shape<T>> {
-        match seed {
-            Some(seed) => {
-                let stage = Stage {
-                    seed: Some(seed),
-                    tol,
-                    ..Stage::final_stage()
-                };
-                Ok(solve_core(&self.top, ratio, stage)?.0)
-            }
-            None => self.ladder(ratio, tol, guess),
+        let guess = seed.map(|s| s.to_f64()).or(guess);
+        let shape = self.ladder(ratio, tol.clone(), guess)?;
+        self.meet_tolerance(ratio, shape, tol)
+    }
+
+    /// A shape whose bound misses the tolerance (or, without one, exceeds 1/64) — a stop from a
+    /// far seed at |ln k| ≫ 1, where the stopping rules' step relative to ln k is large in k —
+    /// is refined from its own root at the working precision's floor; a bound still missing it
+    /// is [`Error::Unreachable`].
+    fn meet_tolerance(&self, ratio: &T, shape: Shape<T>, tol: Option<T>) -> Result<Shape<T>> {
+        let p = ratio.prec();
+        let wanted = tol.clone().unwrap_or_else(|| T::from_ratio(1, 64, p));
+        if shape.error_estimate <= wanted {
+            return Ok(shape);
         }
+        let stage = Stage {
+            seed: Some(&shape.k),
+            ..Stage::final_stage()
+        };
+        let refined = solve_core(&self.top, ratio, stage)?.0;
+        if refined.error_estimate <= wanted {
+            return Ok(refined);
+        }
+        Err(Error::Unreachable {
+            what: "the axis ratio k",
+            tolerance: RelError::of(&wanted).to_string(),
+            reason: format!(
+                "the solve's bound is {}",
+                RelError::of(&refined.error_estimate)
+            ),
+        })
     }
 
     /// The speed this solver serves.
