@@ -126,7 +126,8 @@ impl<T: Real> DirectSetup<T> {
         let [w2, opw2, t, u] = self.left_node(w);
         let dg = self.green.g_divided_difference(&t, &self.mr2);
         let den = opw2.sqrt() * (self.eps2.clone() + &w2) * u.clone() * u.sqrt();
-        -(self.two_pi.clone() * &self.mr2 * dg * w2 / den)
+        // w²/den first: M_R²·w² alone underflows when both are tiny.
+        -(self.two_pi.clone() * &self.mr2 * dg * (w2 / den))
     }
 
     /// The right-half integrand of I2 (v² F_R) with G(t) − G(M_R²): with
@@ -136,7 +137,7 @@ impl<T: Real> DirectSetup<T> {
         let dg = self.green.g_divided_difference(&t, &self.mr2);
         let one = T::one(v.prec());
         let den = opv2.sqrt() * (one + self.eps2.clone() * &v2) * h.clone() * h.sqrt();
-        -(self.two_pi.clone() * &self.mr2 * dg * v2 / den)
+        -(self.two_pi.clone() * &self.mr2 * dg * (v2 / den))
     }
 
     /// Breakpoints on [0, 1] graded geometrically (ratio 4) about each scale in `scales` that
