@@ -200,6 +200,7 @@ pub fn charts(points: &[Point]) -> Vec<(String, String)> {
         .map(|r| {
             SPEEDS
                 .iter()
+                .rev()
                 .map(|mr| {
                     s.iter()
                         .find(|(m, rr, _)| m == mr && rr == r)
@@ -217,13 +218,14 @@ pub fn charts(points: &[Point]) -> Vec<(String, String)> {
         .fold(0.0f64, f64::max);
     let hm = Heatmap {
         title: "Largest |e(ν) − e(0.2)| over −0.99 ≤ ν ≤ 1/2 (×100)".into(),
-        x_label: "M_R = V/c_R (grid points)".into(),
+        x_label: "1 − M_R (the gap to the Rayleigh speed; grid points)".into(),
         y_label: "A1/B1".into(),
         z_label: "max |e(ν) − e(0.2)| × 100".into(),
-        xs: SPEEDS.to_vec(),
+        // The gap 1 − M_R on a log axis, ascending: the speeds near c_R get their own cells.
+        xs: SPEEDS.iter().rev().map(|mr| 1.0 - mr).collect(),
         ys: ratios,
         z,
-        x_log: false,
+        x_log: true,
         y_log: true,
         z_range: (0.0, zmax.max(1e-6)),
     };
