@@ -3,8 +3,8 @@
 //! points: the material and speed constructors (from numbers and from text), `integrals` with
 //! every method and option, `integrals_to_tolerance`, `solve_ellipse` with every method, seeds
 //! and tolerances, `ContactProblem::solve` with a load or an approach, and `sweep::ellipses`.
-//! Asserted: no panic; every `Ok` holds finite values with finite bounds, and a bound on k below
-//! 1; every `Err` is an `Error` with a message.
+//! Asserted: no panic; every `Ok` holds finite values with finite bounds below 1 (at least one
+//! correct digit); every `Err` is an `Error` with a message.
 //!
 //! Counts: 10⁶ random input sets at `f64` (every set through the constructors, a quarter through
 //! `integrals`, one in 20 through the ellipse solve, fewer through the costlier entries), 10⁴ at
@@ -72,7 +72,7 @@ fn finite<T: Real>(what: &str, values: &[&T], bounds: &[RelError]) {
     for b in bounds {
         let s = b.to_string();
         assert!(
-            !s.contains("inf") && !s.contains("NaN"),
+            !s.contains("inf") && !s.contains("NaN") && *b < RelError::from_f64(1.0),
             "{what}: bound {s} in an Ok"
         );
     }
@@ -104,11 +104,6 @@ fn check_ellipse<T: Real>(what: &str, r: &moving_hertz::Result<moving_hertz::Ell
     match r {
         Ok(s) => {
             finite(what, &[&s.k.value, &s.e.value], &[s.k.error, s.e.error]);
-            assert!(
-                s.k.error < RelError::from_f64(1.0),
-                "{what}: bound on k {}",
-                s.k.error
-            );
             check_integrals(what, &Ok(s.integrals.clone()));
         }
         Err(e) => typed(what, e),

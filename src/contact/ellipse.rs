@@ -111,8 +111,8 @@ pub struct Ellipse<T: Real> {
     pub e: Estimated<T>,
     /// Which axis is the major one.
     pub major: MajorAxis,
-    /// I1, I2 at the solution (normalisation of (37)) with their k-derivatives and the route
-    /// of the last evaluation.
+    /// I1, I2 at the solution (normalisation of (37)) with their k-derivatives (when known to
+    /// at least one digit) and the route of the last evaluation.
     pub integrals: Integrals<T>,
     /// Evaluations of the integrals at the working precision (above `f64` the precision
     /// ladder's stages at `f64` and double-double come on top: their evaluations cost a small
@@ -165,7 +165,7 @@ impl<T: Real> Shape<T> {
             k: Estimated::new(self.k, RelError::of(&self.error_estimate)),
             e: Estimated::new(e, RelError::of(&e_err)),
             major,
-            integrals: self.integrals.publish()?,
+            integrals: self.integrals.without_poor_extras().publish()?,
             iterations: self.iterations,
         })
     }

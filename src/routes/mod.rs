@@ -279,8 +279,20 @@ impl<T: Real> Evaluation<T> {
             .map_or_else(|| T::zero(self.i1.prec()), |d| d[1].clone())
     }
 
-    /// The public result: every value finite and every estimate finite (else a typed error
-    /// naming the route), estimates as [`RelError`].
+    /// The same evaluation without its k-derivatives and J0 when their bound is not below 1
+    /// (not one correct digit: at a loose tolerance far from k = 1 the adaptive route's
+    /// derivatives can be that poor), for a caller that did not ask for them.
+    pub(crate) fn without_poor_extras(mut self) -> Self {
+        if self.extra_error >= T::one(self.i1.prec()) {
+            self.dk = None;
+            self.j0 = None;
+            self.extra_error = T::zero(self.i1.prec());
+        }
+        self
+    }
+
+    /// The public result: every value finite and every estimate finite and below 1 (else a
+    /// typed error naming the route), estimates as [`RelError`].
     pub fn publish(self) -> Result<Integrals<T>> {
         let dk_finite = self
             .dk
@@ -300,6 +312,18 @@ impl<T: Real> Evaluation<T> {
                 name,
                 value,
                 bound: "|x| >= the smallest normal number of the working precision (it underflowed: an axis ratio k this far from 1 needs MPFR's exponent range)",
+            });
+        }
+        let one = T::one(self.i1.prec());
+        if self.error_estimate >= one || self.extra_error >= one {
+            return Err(Error::Unreachable {
+                what: "the integrals I1, I2 (or their k-derivatives and J0)",
+                tolerance: "1 (one correct digit)".into(),
+                reason: format!(
+                    "the route's bounds are {} and {}",
+                    RelError::of(&self.error_estimate),
+                    RelError::of(&self.extra_error)
+                ),
             });
         }
         let precision = Precision::of::<T>(self.i1.prec());
