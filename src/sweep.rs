@@ -93,9 +93,9 @@ impl<T: Clone> EllipsePoint<T> {
 
 /// Solves the ellipse (33) at every point by the options' method and tolerance (their `seed`,
 /// when given, starts each block's first point), in parallel blocks with shared set-ups and
-/// continuation (module docs). Returns one result per point, in
-/// input order: the [`Ellipse`] of [`crate::solve_ellipse`] or that point's typed error
-/// ([`Error::Domain`] / [`Error::NotFinite`] for its ν, speed or ratio, or the solve's own).
+/// continuation (module docs). Returns one result per point, in input order: the [`Ellipse`]
+/// of [`crate::solve_ellipse`] or that point's typed error ([`crate::Error::Domain`] /
+/// [`crate::Error::NotFinite`] for its ν, speed or ratio, or the solve's own).
 pub fn ellipses<T>(points: &[EllipsePoint<T>], opts: &Options<T>) -> Vec<Result<Ellipse<T>>>
 where
     T: Real + Send + Sync,

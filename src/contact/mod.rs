@@ -10,6 +10,6 @@ mod convolution;
 mod ellipse;
 mod solution;
 
-pub use ellipse::{check_ratio, solve_ellipse, Ellipse, MajorAxis, Options};
+pub use ellipse::{check_ratio, solve_ellipse, Ellipse, MajorAxis, Options, RATIO_RANGE};
 pub(crate) use ellipse::{checked_options, ShapeSolver};
 pub use solution::{ContactProblem, ContactSolution, Loading};

@@ -33,7 +33,8 @@ const NU_BOUND: &str = "(-1, 1/2]";
 
 impl<T: Real> Material<T> {
     /// The material with Poisson's ratio `nu`; [`Error::Domain`] unless −1 < ν ≤ 1/2,
-    /// [`Error::NotFinite`] for NaN or ∞.
+    /// [`Error::NotFinite`] for NaN or ∞. Builds γ (M1² = γM2² in (5)), the Rayleigh
+    /// roots (the factorised (6), section 6) and πG(1) of (45); each within a few ε of the working precision.
     pub fn new(nu: T) -> Result<Self> {
         check_finite(NU_NAME, &nu)?;
         let p = nu.prec();
@@ -64,7 +65,8 @@ impl<T: Real> Material<T> {
     /// The material whose Poisson's ratio is the decimal text `nu` (or `p/q`), checked exactly
     /// before it is rounded to the precision `p`: errors quote the text as given
     /// (`nu (Poisson's ratio) = 0.5000000000000000001 is outside its domain (-1, 1/2]`), and a
-    /// value inside the domain that rounds onto its edge at this precision says so.
+    /// value inside the domain that rounds onto its edge at this precision says so. ν is
+    /// rounded once (correctly rounded); then as [`Material::new`] (equations there).
     pub fn parse(nu: &str, p: T::Prec) -> Result<Self> {
         Material::from_exact(&decimal_to_rational(nu)?, nu, p)
     }
@@ -88,7 +90,8 @@ impl<T: Real> Material<T> {
     }
 
     /// The material whose wave-speed ratio is c2/c1 = `ratio`, 0 ≤ ratio < √3/2
-    /// (ν = (1 − 2γ)/(2(1 − γ)) with γ = ratio²).
+    /// (ν = (1 − 2γ)/(2(1 − γ)) with γ = ratio², the inverse of γ(ν) of (5)); ν within
+    /// a few ε, then as [`Material::new`].
     pub fn from_speed_ratio(ratio: T) -> Result<Self> {
         check_finite("c2/c1", &ratio)?;
         let p = ratio.prec();
@@ -105,23 +108,27 @@ impl<T: Real> Material<T> {
         Material::new(nu)
     }
 
-    /// Poisson's ratio ν.
+    /// Poisson's ratio ν of the Green's function (4)–(6), as given (rounded once to the working
+    /// precision).
     pub fn nu(&self) -> &T {
         &self.nu
     }
-    /// 1 − ν (the static value f0 of the normalised Green's function g = −πΓ).
+    /// 1 − ν (the static value f0 of the normalised Green's function g = −πΓ, (35));
+    /// correctly rounded.
     pub fn one_minus_nu(&self) -> &T {
         &self.one_minus_nu
     }
-    /// γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)).
+    /// γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)) (the ratio in M1² = γM2² of (5)); within 2 ε.
     pub fn gamma(&self) -> &T {
         &self.gamma
     }
-    /// The roots of the Rayleigh cubic.
+    /// The roots m1, m2, m3 of the Rayleigh cubic (the factorised (6), section 6 of the paper,
+    /// with errata #1);
+    /// within 4 ε ([`RayleighRoots`]).
     pub fn roots(&self) -> &RayleighRoots<T> {
         &self.roots
     }
-    /// m1 = (c_R/c2)², the Rayleigh root.
+    /// m1 = (c_R/c2)², the Rayleigh root (the zero of (6)); within 4 ε.
     pub fn m1(&self) -> &T {
         &self.roots.m1
     }
@@ -132,11 +139,11 @@ impl<T: Real> Material<T> {
     pub fn pi_g_rayleigh(&self) -> &T {
         &self.pi_g_rayleigh
     }
-    /// c_R/c2 = √m1.
+    /// c_R/c2 = √m1 (the zero of (6)); within a few ε.
     pub fn cr_over_c2(&self) -> T {
         self.roots.m1.clone().sqrt()
     }
-    /// c_R/c1 = √(γ m1).
+    /// c_R/c1 = √(γ m1) (the zero of (6)); within a few ε.
     pub fn cr_over_c1(&self) -> T {
         (self.gamma.clone() * &self.roots.m1).sqrt()
     }
@@ -144,7 +151,8 @@ impl<T: Real> Material<T> {
     /// The speed with Rayleigh Mach number `mr` = V/c_R; [`Error::Domain`] unless 0 ≤ M_R < 1.
     /// The gap 1 − M_R is formed from `mr` exactly (for M_R ≥ 1/2 the subtraction is exact in
     /// binary); a decimal speed near 1 is better given as text ([`Material::parse_speed`]) or by
-    /// its gap ([`Material::speed_from_gap`]), so that it is not rounded first.
+    /// its gap ([`Material::speed_from_gap`]), so that it is not rounded first. The Mach
+    /// numbers of (5) and sections 5–6 of the paper; accuracy as the [`Speed`] accessors state.
     pub fn speed(&self, mr: T) -> Result<Speed<T>> {
         check_finite(MR_NAME, &mr)?;
         let p = mr.prec();
@@ -160,7 +168,8 @@ impl<T: Real> Material<T> {
     }
 
     /// The speed whose gap to the Rayleigh speed is `gap` = 1 − M_R ∈ (0, 1]: the input that
-    /// keeps every digit near the Rayleigh speed (as scipy's `ellipkm1` takes 1 − m).
+    /// keeps every digit near the Rayleigh speed (as scipy's `ellipkm1` takes 1 − m). M_R =
+    /// 1 − gap (sections 5–6 of the paper) is correctly rounded; the Mach numbers as the [`Speed`] accessors state.
     pub fn speed_from_gap(&self, gap: T) -> Result<Speed<T>> {
         check_finite(GAP_NAME, &gap)?;
         let p = gap.prec();
@@ -178,7 +187,7 @@ impl<T: Real> Material<T> {
     /// The speed whose M_R is the decimal text `mr` (or `p/q`): the gap 1 − M_R is formed
     /// exactly from the text, then M_R and the gap are each rounded once to the working
     /// precision, so that at `f64` the answer is accurate to the decimal given even at
-    /// M_R = 0.999999999999. Errors quote the text.
+    /// M_R = 0.999999999999 (M_R of sections 5–6 of the paper). Errors quote the text.
     pub fn parse_speed(&self, mr: &str) -> Result<Speed<T>> {
         let r = decimal_to_rational(mr)?;
         if r < 0 || r >= 1 {
@@ -192,7 +201,8 @@ impl<T: Real> Material<T> {
     }
 
     /// The speed whose gap 1 − M_R is the decimal text `gap` (or `p/q`), checked exactly
-    /// (0 < gap ≤ 1); errors quote the text.
+    /// (0 < gap ≤ 1); errors quote the text. The gap and M_R (sections 5–6 of the paper) each
+    /// correctly rounded.
     pub fn parse_gap(&self, gap: &str) -> Result<Speed<T>> {
         let g = decimal_to_rational(gap)?;
         if g <= 0 || g > 1 {
@@ -227,7 +237,8 @@ impl<T: Real> Material<T> {
         Speed::new(self, m, gap)
     }
 
-    /// The speed with shear Mach number `m2` = V/c2 (must be below c_R/c2).
+    /// The speed with shear Mach number `m2` = V/c2 (must be below c_R/c2): M_R = m2/√m1
+    /// (M2 of (5)), within a few ε.
     pub fn speed_from_m2(&self, m2: T) -> Result<Speed<T>> {
         check_finite("speed M2", &m2)?;
         if m2.is_negative() {
@@ -248,7 +259,8 @@ impl<T: Real> Material<T> {
         self.speed(mr)
     }
 
-    /// The speed `v` in the units of the shear-wave speed `c2` (both positive, v < c_R).
+    /// The speed `v` in the units of the shear-wave speed `c2` (both positive, v < c_R):
+    /// M_R = (v/c2)/√m1 (M2 of (5)), within a few ε.
     pub fn speed_from_velocity(&self, v: T, c2: T) -> Result<Speed<T>> {
         check_finite("velocity V", &v)?;
         check_finite("shear wave speed c2", &c2)?;
@@ -367,39 +379,41 @@ impl<T: Real> Speed<T> {
         })
     }
 
-    /// The material this speed belongs to.
+    /// The material this speed belongs to (exactly the one that made it; ν of (4)–(6)).
     pub fn material(&self) -> &Material<T> {
         &self.material
     }
-    /// M_R = V/c_R ∈ [0, 1).
+    /// M_R = V/c_R ∈ [0, 1) (sections 5–6 of the paper), as given or correctly rounded.
     pub fn mr(&self) -> &T {
         &self.mr
     }
-    /// 1 − M_R ∈ (0, 1], as given or formed exactly from the input.
+    /// 1 − M_R ∈ (0, 1] (ε² = (1 − M_R)(1 + M_R) in (48)–(53)), as given or formed exactly from the input, then
+    /// correctly rounded.
     pub fn gap(&self) -> &T {
         &self.gap
     }
-    /// M_R².
+    /// M_R² (G(M_R²) is the value subtracted in (48)); within 1 ε of M_R's square.
     pub fn mr2(&self) -> &T {
         &self.mr2
     }
-    /// 1 − M_R² = (1 − M_R)(1 + M_R), without cancellation.
+    /// ε² = 1 − M_R² = (1 − M_R)(1 + M_R) of (48)–(53), without cancellation: within 2 ε of
+    /// the value at the stored gap.
     pub fn one_minus_mr2(&self) -> &T {
         &self.one_minus_mr2
     }
-    /// x = M2² = m1·M_R² (the squared shear Mach number).
+    /// x = M2² = m1·M_R² (the squared shear Mach number of (4)–(6) and (35)); within a few ε.
     pub fn m2sq(&self) -> &T {
         &self.m2sq
     }
-    /// M1² = γ·M2².
+    /// M1² = γ·M2² (the squared dilatational Mach number of (5)); within a few ε.
     pub fn m1sq(&self) -> &T {
         &self.m1sq
     }
-    /// M2 = V/c2.
+    /// M2 = V/c2 ((5)); within a few ε.
     pub fn m2(&self) -> T {
         self.m2sq.clone().sqrt()
     }
-    /// M1 = V/c1.
+    /// M1 = V/c1 ((5)); within a few ε.
     pub fn m1(&self) -> T {
         self.m1sq.clone().sqrt()
     }
