@@ -11,6 +11,10 @@
 //!
 //! Arithmetic on bounds ([`RelError::add`], [`RelError::mul`], …) rounds upwards (each result is
 //! enlarged by 2⁻⁵⁰ relative), so a sum of bounds stays a bound.
+//!
+//! No item of this module implements a formula of the paper: they are the error-bound
+//! arithmetic behind every result, and their accuracy is the upward rounding above (a bound is
+//! never made smaller than the exact operation on its inputs would give).
 
 use crate::error::{Error, Result};
 use crate::scalar::{decimal_to_rational, Real};
