@@ -13,51 +13,6 @@ use moving_hertz::{
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-/// Random inputs (the shared SplitMix64 generator).
-struct Rng(common::SplitMix);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0.next_u64()
-    }
-    fn unit(&mut self) -> f64 {
-        self.0.unit()
-    }
-    /// A value for a parameter whose valid range is [lo, hi]: mostly inside, often at or just
-    /// beyond the ends, sometimes pathological.
-    fn value(&mut self, lo: f64, hi: f64) -> f64 {
-        let specials = [
-            f64::NAN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            0.0,
-            -0.0,
-            f64::MIN_POSITIVE,
-            5e-324,
-            f64::MAX,
-            -f64::MAX,
-            1e-300,
-            1e300,
-            lo,
-            hi,
-            lo - f64::EPSILON * lo.abs().max(1.0),
-            hi + f64::EPSILON * hi.abs().max(1.0),
-            hi - f64::EPSILON * hi.abs().max(1.0),
-            1.0 - 1e-12,
-            1e-6,
-            1e6,
-        ];
-        match self.next() % 4 {
-            0 => specials[(self.next() % specials.len() as u64) as usize],
-            1 => lo + (hi - lo) * self.unit(),
-            2 => {
-                10f64.powf(-12.0 + 24.0 * self.unit())
-                    * if self.next() % 5 == 0 { -1.0 } else { 1.0 }
-            }
-            _ => lo + (hi - lo) * self.unit().powi(8),
-        }
-    }
-}
-
 fn finite_or_err<T>(what: &str, r: moving_hertz::Result<T>, values: impl Fn(&T) -> Vec<f64>) {
     if let Ok(v) = r {
         for x in values(&v) {
@@ -68,7 +23,7 @@ fn finite_or_err<T>(what: &str, r: moving_hertz::Result<T>, values: impl Fn(&T) 
 
 #[test]
 fn random_inputs_never_panic_nor_return_nan() {
-    let mut rng = Rng(common::SplitMix(2026));
+    let mut rng = common::SplitMix(2026); // the shared generator of tests/common
     let mut ok = 0usize;
     for case in 0..400 {
         let nu = rng.value(-1.0, 0.5);

@@ -21,49 +21,6 @@ use moving_hertz::{
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-/// Random values for a parameter whose domain is [lo, hi].
-struct Gen(SplitMix);
-
-impl Gen {
-    fn below(&mut self, n: u64) -> u64 {
-        self.0.next_u64() % n
-    }
-
-    fn value(&mut self, lo: f64, hi: f64) -> f64 {
-        let ulp = |x: f64| f64::EPSILON * x.abs().max(f64::MIN_POSITIVE);
-        let specials = [
-            f64::NAN,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            0.0,
-            -0.0,
-            5e-324,
-            f64::MIN_POSITIVE,
-            f64::MAX,
-            -f64::MAX,
-            1e-300,
-            1e300,
-            lo,
-            hi,
-            lo - ulp(lo),
-            lo + ulp(lo),
-            hi - ulp(hi),
-            hi + ulp(hi),
-            1e-100,
-            1e100,
-        ];
-        match self.below(5) {
-            0 => specials[self.below(specials.len() as u64) as usize],
-            1 | 2 => lo + (hi - lo) * self.0.unit(),
-            3 => {
-                10f64.powf(-12.0 + 24.0 * self.0.unit())
-                    * if self.below(6) == 0 { -1.0 } else { 1.0 }
-            }
-            _ => lo + (hi - lo) * self.0.unit().powi(8),
-        }
-    }
-}
-
 /// Every value finite and every bound finite; `what` names the entry.
 fn finite<T: Real>(what: &str, values: &[&T], bounds: &[RelError]) {
     for v in values {
@@ -134,7 +91,7 @@ impl Shares {
 }
 
 /// One random input set at precision `p` through the entries `shares` selects for case `i`.
-fn case<T: Real + Send + Sync>(g: &mut Gen, p: T::Prec, i: u64, shares: &Shares) {
+fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Shares) {
     let x = |v: f64| T::from_f64(v, p);
     let (nu, mr, gap) = (g.value(-1.0, 0.5), g.value(0.0, 1.0), g.value(0.0, 1.0));
     let (k, ratio) = (
@@ -174,8 +131,7 @@ fn case<T: Real + Send + Sync>(g: &mut Gen, p: T::Prec, i: u64, shares: &Shares)
     }
     if i % shares.options == 0 {
         let method = Method::ALL[g.below(Method::ALL.len() as u64) as usize];
-        let tolerance =
-            (g.below(2) == 0).then(|| RelError::from_f64(10f64.powf(-20.0 * g.0.unit())));
+        let tolerance = (g.below(2) == 0).then(|| RelError::from_f64(10f64.powf(-20.0 * g.unit())));
         let opts = IntegralOptions {
             method,
             tolerance,
@@ -194,8 +150,7 @@ fn case<T: Real + Send + Sync>(g: &mut Gen, p: T::Prec, i: u64, shares: &Shares)
         let opts = Options {
             method,
             seed: (g.below(4) == 0).then(|| x(g.value(1e-3, 1e3))),
-            tolerance: (g.below(4) == 0)
-                .then(|| RelError::from_f64(10f64.powf(-18.0 * g.0.unit()))),
+            tolerance: (g.below(4) == 0).then(|| RelError::from_f64(10f64.powf(-18.0 * g.unit()))),
         };
         let what = format!("solve_ellipse nu={nu:e} M_R={mr:e} A1/B1={ratio:e} {opts:?}");
         check_ellipse(&what, &solve_ellipse(&sp, &x(ratio), &opts));
@@ -230,7 +185,7 @@ fn case<T: Real + Send + Sync>(g: &mut Gen, p: T::Prec, i: u64, shares: &Shares)
     }
     if i % shares.tolerance == 0 {
         if let Ok(inputs) = ExactInputs::from_f64(nu, mr, k) {
-            let tol = RelError::from_f64(10f64.powf(-3.0 - 30.0 * g.0.unit()));
+            let tol = RelError::from_f64(10f64.powf(-3.0 - 30.0 * g.unit()));
             check_integrals(
                 "integrals_to_tolerance",
                 &integrals_to_tolerance(&inputs, tol, Method::Auto),
@@ -253,9 +208,9 @@ fn case<T: Real + Send + Sync>(g: &mut Gen, p: T::Prec, i: u64, shares: &Shares)
 
 /// Runs `n` cases at precision `p`, each under `catch_unwind`, reporting the seed of a panic.
 fn run<T: Real + Send + Sync>(seed: u64, n: u64, p: T::Prec, shares: Shares) {
-    let mut g = Gen(SplitMix(seed));
+    let mut g = SplitMix(seed);
     for i in 0..n {
-        let state = g.0 .0;
+        let state = g.0;
         let r = catch_unwind(AssertUnwindSafe(|| case::<T>(&mut g, p, i, &shares)));
         assert!(r.is_ok(), "case {i} panicked (generator state {state:#x})");
     }

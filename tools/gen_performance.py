@@ -320,7 +320,7 @@ def page(data, note=None):
               "compared with moving-hertz at 256 bits. Command: `cargo build --release && python3 "
               f"tools/baseline_solve.py > target/baseline_solve.md` ({when}, same machine).", "", table]
     else:
-        L += ["Not measured in this run: `python3 tools/baseline_solve.py > target/baseline_solve.md` "
+        L += ["Not measured for this page: `python3 tools/baseline_solve.py > target/baseline_solve.md` "
               "(needs scipy and mpmath, tools/requirements.txt), then re-run this script."]
     return "\n".join(L) + "\n"
 

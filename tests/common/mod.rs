@@ -69,6 +69,48 @@ impl SplitMix {
     pub fn unit(&mut self) -> f64 {
         (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
     }
+    /// Uniform in 0 … n − 1.
+    pub fn below(&mut self, n: u64) -> u64 {
+        self.next_u64() % n
+    }
+    /// A value for a parameter whose domain is [lo, hi]: one draw in five from the specials
+    /// (NaN, ±∞, ±0, subnormals, ±MAX, 1e±100, 1e±300, the ends and their neighbours), two
+    /// uniform in [lo, hi], one log-uniform in ±[1e-12, 1e12], one clustered at lo.
+    pub fn value(&mut self, lo: f64, hi: f64) -> f64 {
+        let ulp = |x: f64| f64::EPSILON * x.abs().max(f64::MIN_POSITIVE);
+        let specials = [
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            0.0,
+            -0.0,
+            5e-324,
+            f64::MIN_POSITIVE,
+            f64::MAX,
+            -f64::MAX,
+            1e-300,
+            1e300,
+            lo,
+            hi,
+            lo - ulp(lo),
+            lo + ulp(lo),
+            hi - ulp(hi),
+            hi + ulp(hi),
+            1e-100,
+            1e100,
+            1.0 - 1e-12,
+            1e-6,
+            1e6,
+        ];
+        match self.below(5) {
+            0 => specials[self.below(specials.len() as u64) as usize],
+            1 | 2 => lo + (hi - lo) * self.unit(),
+            3 => {
+                10f64.powf(-12.0 + 24.0 * self.unit()) * if self.below(6) == 0 { -1.0 } else { 1.0 }
+            }
+            _ => lo + (hi - lo) * self.unit().powi(8),
+        }
+    }
 }
 
 /// The MPFR precision token for `bits` bits.
