@@ -2,6 +2,11 @@
 //! M_R ≤ 0.9999, double-double ≤ 25× f64, MPFR 256 bits ≤ 2 ms. ν = 0.2, A1/B1 = 0.5; the
 //! material and speed are built outside the timed call (they are per-problem constants).
 //!
+//! Group `ellipse_extreme/<precision>`: the default solve (`Options::default()`) at the ends of
+//! the supported curvature ratios, A1/B1 = 10⁻¹⁰⁰ (k ≈ 10⁻⁵³, the fixed rule) and 10¹⁰⁰
+//! (k ≈ 10⁵¹, the graded rule), beside A1/B1 = 0.5, at M_R = 0.5 and 1 − 10⁻¹⁰: what a solve at
+//! an extreme input costs against a normal one.
+//!
 //! Run: `cargo bench --bench ellipse -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
@@ -30,6 +35,26 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, methods: &[Method]) 
     g.finish();
 }
 
+fn extreme<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
+    let mut g = c.benchmark_group(format!("ellipse_extreme/{label}"));
+    if T::bits(p) > 200 {
+        g.sample_size(10);
+    }
+    let mat = Material::new(T::parse("0.2", p).expect("nu")).expect("material");
+    for gap in ["0.5", "1e-10"] {
+        let sp = mat
+            .speed_from_gap(T::parse(gap, p).expect("gap"))
+            .expect("speed");
+        for r in ["0.5", "1e-100", "1e100"] {
+            let ratio = T::parse(r, p).expect("ratio");
+            g.bench_function(format!("ratio={r}_gap={gap}"), |b| {
+                b.iter(|| solve_ellipse(black_box(&sp), black_box(&ratio), &Options::default()))
+            });
+        }
+    }
+    g.finish();
+}
+
 fn bench(c: &mut Criterion) {
     let both = [Method::Fixed, Method::Adaptive];
     run::<f64>(c, "f64", (), &both);
@@ -40,6 +65,9 @@ fn bench(c: &mut Criterion) {
         MpPrec::new(256).expect("precision"),
         &[Method::Fixed],
     );
+    extreme::<f64>(c, "f64", ());
+    extreme::<Dd>(c, "dd", ());
+    extreme::<Mp>(c, "mpfr256", MpPrec::new(256).expect("precision"));
 }
 
 criterion_group!(benches, bench);

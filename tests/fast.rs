@@ -209,7 +209,7 @@ fn extremes_of_the_domain() {
 fn outside_the_domain_is_a_typed_error() {
     let mat = Material::new(0.25f64).unwrap();
     let sp = mat.speed(0.5).unwrap();
-    for k in [1.0 + f64::EPSILON, 2.0, 1e6, 2f64.powi(-41)] {
+    for k in [1.0 + f64::EPSILON, 2.0, 1e6] {
         let ax = AxisRatio::new(k).unwrap();
         assert!(
             matches!(fast::integrals(&sp, &ax), Err(Error::Domain { .. })),

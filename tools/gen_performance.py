@@ -56,6 +56,7 @@ T_ELLIPSE_DD_RATIO = 25.0
 T_ELLIPSE_MP256_NS = 2.0e6
 T_SWEEP = {"f64": 0.4, "dd": 0.5, "mpfr256": 0.6}  # sweep on one thread / independent solves
 T_SWEEP_THREADS = 0.55  # two threads / one thread
+T_EXTREME = 25.0  # a solve at A1/B1 = 1e+-100 / the solve at A1/B1 = 0.5, same precision and speed
 
 # Bench groups in page order: family, title, what it measures.
 FAMILIES = [
@@ -66,6 +67,11 @@ FAMILIES = [
     ("ellipse_wide", "The ellipse solve for k > 1 (`benches/graded.rs`, group `ellipse_wide`)",
      "`solve_ellipse` for ν = 0.2 at A1/B1 = 10, 10³, 10⁶ (roots k from 3.1 to 2900, the graded "
      "route)."),
+    ("ellipse_extreme", "The ellipse solve at extreme ratios (`benches/ellipse.rs`, group "
+     "`ellipse_extreme`)",
+     "The default solve at A1/B1 = 10⁻¹⁰⁰ (k ≈ 10⁻⁵³, fixed rule) and 10¹⁰⁰ (k ≈ 10⁵¹, graded rule) "
+     "beside A1/B1 = 0.5, at 1 − M_R = 0.5 and 10⁻¹⁰, ν = 0.2: the cost of an extreme input "
+     "against a normal one at the same precision."),
     ("graded", "The graded route for k ≥ 1 (`benches/graded.rs`)",
      "I1, I2 and their k-derivatives in one call (layout and evaluation), ν = 0.2."),
     ("fast", "The fixed rule for k ≤ 1 (`benches/fast_integrals.rs`, group `fast`)",
@@ -219,9 +225,29 @@ def targets(fams, flat):
                      f"{fmt(min(mp))}–{fmt(max(mp))} ({len(mp)} cases)",
                      verdict(max(mp) <= T_ELLIPSE_MP256_NS)))
     rows += sweep_targets(fams.get("sweep", {}))
+    rows += extreme_targets(fams.get("ellipse_extreme", {}))
     lines = ["| target | measured (range over the bench's cases) | met? |", "|---|---|---|"]
     lines += [f"| {a} | {b} | {c} |" for a, b, c in rows]
     return lines
+
+
+def extreme_targets(cells):
+    """Per precision: the worst ratio of a solve at A1/B1 = 1e±100 to the A1/B1 = 0.5 solve at
+    the same speed."""
+    rows = []
+    precs = sorted({p for row in cells.values() for p in row}, key=prec_key)
+    for prec in precs:
+        rs = []
+        for f, row in cells.items():
+            m = re.fullmatch(r"ratio=(1e-?100)_gap=(.+)", f)
+            base = cells.get(f"ratio=0.5_gap={m.group(2)}", {}).get(prec) if m else None
+            if base and prec in row:
+                rs.append(row[prec] / base)
+        if rs:
+            rows.append((f"ellipse solve at A1/B1 = 10^±100, {prec}: ≤ {T_EXTREME:.0f}× the solve at "
+                         "A1/B1 = 0.5 (same speed)", f"{ratio(min(rs))}–{ratio(max(rs))}",
+                         "yes" if max(rs) <= T_EXTREME else "**no**"))
+    return rows
 
 
 def sweep_targets(cells):

@@ -29,7 +29,7 @@ pub struct IntegralsArgs {
     #[arg(long, value_name = "TOL", value_parser = tol, allow_hyphen_values = true)]
     pub tol: Option<Tol>,
     /// The route: auto (the cheapest that meets the request), series, adaptive,
-    /// adaptive-subtracted (k <= 1) or fixed (2^-40 <= k <= 2^40). The route that ran is
+    /// adaptive-subtracted (k <= 1) or fixed (k <= 2^180). The route that ran is
     /// printed (fixed-rule for k <= 1, graded-rule for k > 1, ...).
     #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::method())]
     pub method: Method,

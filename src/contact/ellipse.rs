@@ -42,7 +42,7 @@
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
 use crate::physics::Speed;
-use crate::routes::evaluate::{in_fixed_range, Evaluator, IntegralOptions};
+use crate::routes::evaluate::{Evaluator, IntegralOptions};
 use crate::routes::{fast, AxisRatio, Evaluation, Integrals, Method};
 use crate::scalar::{check_finite, short, Dd, Real};
 use std::cell::OnceCell;
@@ -73,7 +73,7 @@ impl MajorAxis {
 pub struct Options<T> {
     /// How the integrals are evaluated at each Newton iterate: [`Method::Auto`] (default: the
     /// fixed rules where they apply, the adaptive quadrature elsewhere), [`Method::Fixed`] (the
-    /// fixed rules only; an iterate outside 2⁻⁴⁰ ≤ k ≤ 2⁴⁰ is an error) or [`Method::Adaptive`].
+    /// fixed rules only; an iterate above k = 2¹⁸⁰ is an error) or [`Method::Adaptive`].
     /// The series and the adaptive subtracted routes give no k-derivatives and are refused.
     pub method: Method,
     /// A starting value for k. Without one (the default) the solve starts from the static
@@ -496,10 +496,6 @@ fn solve_core<T: Real>(
     }
     newton.iterate()
 }
-
-/// The rounding (in ε) added to k's bound where k lies outside the fixed rules' range
-/// (evidence: `docs/calibration.md`).
-const EXTREME_K_EPS: i64 = 32;
 
 /// The bound on the evaluations of one stage (from the static ellipse).
 const MAX_EVALUATIONS: usize = 200;
@@ -1137,7 +1133,7 @@ fn finish<T: Real>(
     iterations: usize,
 ) -> Shape<T> {
     let p = lam.prec();
-    let k = lam.exp();
+    let k = lam.clone().exp();
     let dk = k.clone() - lam_old.clone().exp();
     ci.i1 += &(ci.di1_dk() * &dk);
     ci.i2 += &(ci.di2_dk() * &dk);
@@ -1147,16 +1143,11 @@ fn finish<T: Real>(
     // δk/k ≈ (δI2/I2 + δI1/I1)/F′ + last step; F′ ≥ ~1 here, keep it simple and safe.
     let df = k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1);
     let prop = ci.error_estimate.clone().mul_i64(2) / df.abs().max_of(T::from_ratio(1, 4, p));
-    // Beyond the fixed rules' range (k < 2⁻⁴⁰ or k > 2⁴⁰, the adaptive route only) the
-    // integrals' rounding grows past their estimate: up to 30ε on k measured at `f64`
-    // against 256 bits (`docs/calibration.md`), covered by EXTREME_K_EPS·ε more.
-    let rounding = if in_fixed_range(&k) {
-        4
-    } else {
-        4 + EXTREME_K_EPS
-    };
+    // k = e^λ inherits λ's rounding, half an ulp of λ, as a relative error up to |λ|ε/2
+    // (30ε measured at k ~ 10⁻⁸⁰ at `f64`): |λ|ε covers it with exp's own, 4ε the rest.
+    let rounding = T::epsilon(p) * &(lam.abs() + &T::from_i64(4, p));
     Shape {
-        error_estimate: prop + last_step.mul_i64(2) + &T::epsilon(p).mul_i64(rounding),
+        error_estimate: prop + last_step.mul_i64(2) + &rounding,
         k,
         integrals: ci,
         iterations,

@@ -4,7 +4,7 @@
 //!
 //! **Which route runs.** [`Method::Auto`] takes, at k ≤ 1, the fixed rule ([`Route::FixedRule`],
 //! a-priori bound 16ε) and at k > 1 the graded rule ([`Route::GradedRule`], 32ε), when the
-//! tolerance allows their bound and k lies in 2⁻⁴⁰ … 2⁴⁰; otherwise the adaptive quadratures
+//! tolerance allows their bound and k ≤ 2¹⁸⁰; otherwise the adaptive quadratures
 //! (the subtracted form (48) at k ≤ 1 when neither derivatives nor J0 are asked for). J0 only
 //! comes from [`Route::Adaptive`] (one evaluation of G serves all five integrals). A named
 //! method runs that route, and a request it cannot serve is refused before any work: the series
@@ -151,7 +151,7 @@ impl<T: Real> Evaluator<T> {
             Method::AdaptiveSubtracted => {
                 return Err(domain(axes, "(0, 1] for adaptive-subtracted"))
             }
-            Method::Fixed if !fixed_range => return Err(domain(axes, "[2^-40, 2^40] for fixed")),
+            Method::Fixed if !fixed_range => return Err(domain(axes, "(0, 2^180] for fixed")),
             Method::Fixed => {
                 let (r, bound) = if below {
                     (Route::FixedRule, fast::BOUND_EPS)
@@ -245,8 +245,8 @@ impl<T: Real> Evaluator<T> {
             Some(g) if g.covers(&axes.k) => kept.insert(g),
             _ => {
                 let p = axes.k.prec();
-                let k_ref =
-                    (axes.k.clone() * &T::from_ratio(9, 8, p)).min_of(T::from_i64(1 << 40, p));
+                let k_ref = (axes.k.clone() * &T::from_ratio(9, 8, p))
+                    .min_of(T::one(p).mul_pow2(graded::K_MAX_LOG2));
                 kept.insert(GradedSetup::new(&self.speed, &k_ref)?)
             }
         };
@@ -294,10 +294,10 @@ impl<T: Real> Evaluator<T> {
     }
 }
 
-/// Whether k lies in the fixed rules' range 2⁻⁴⁰ ≤ k ≤ 2⁴⁰.
+/// Whether k lies in the fixed rules' range k ≤ 2^180 ([`graded::K_MAX_LOG2`]; the fixed rule
+/// serves every k ≤ 1 that [`AxisRatio`] admits).
 pub(crate) fn in_fixed_range<T: Real>(k: &T) -> bool {
-    let p = k.prec();
-    *k >= T::from_ratio(1, 1 << 40, p) && *k <= T::from_i64(1 << 40, p)
+    *k <= T::one(k.prec()).mul_pow2(graded::K_MAX_LOG2)
 }
 
 fn domain<T: Real>(axes: &AxisRatio<T>, bound: &'static str) -> Error {

@@ -38,7 +38,10 @@
 //! square root and one division a node (the ellipse solve's Newton iterates; timings in
 //! docs/performance.md). The Gauss–Legendre rules come from the shared cache.
 //!
-//! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^40, else [`Error::Domain`].
+//! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^180 ([`K_MAX_LOG2`]), else
+//! [`Error::Domain`]. The left half's x-range, and with it the work, grows like log₂ k: at
+//! k = 10⁵¹ (the largest k of an ellipse solve, A1/B1 = 10¹⁰⁰) about 4–20 times the nodes of
+//! k = 2 (figures: the `ellipse` bench's extreme ratios in docs/performance.md).
 //!
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
 //! checked against the adaptive route at 400 bits in `tests/graded.rs` over ν ∈ {−0.9, 0, 0.25,
@@ -74,6 +77,11 @@ pub fn panel_nodes(bits: u32) -> usize {
         (b * 33).div_ceil(100) + 1
     }
 }
+
+/// The route's largest k is 2^K_MAX_LOG2 (≈ 1.5·10⁵⁴): beyond it (k⁵ > 2⁹⁰⁰) the derivatives'
+/// factors u^{−5/2} ~ k⁻⁵ approach 2⁻⁹⁶⁹, below which a double-double's low part is subnormal
+/// and loses bits (at k = 10⁶⁰ dI/dk was off by 6·10⁷ε at double-double).
+pub const K_MAX_LOG2: i32 = 180;
 
 /// The longest left panel, in units of ln 2 (the plan in [`left_plan`] mixes lengths 1…8).
 pub const MAX_UNITS: usize = 8;
@@ -387,11 +395,11 @@ pub(super) fn with_sinh_layout<T: Real, R>(
 
 fn check_k<T: Real>(k: &T) -> Result<()> {
     let p = k.prec();
-    if *k < T::one(p) || *k > T::from_i64(1 << 40, p) {
+    if *k < T::one(p) || *k > T::one(p).mul_pow2(K_MAX_LOG2) {
         return Err(Error::Domain {
             name: "axis ratio k for the graded route",
             value: short(k),
-            bound: "[1, 2^40]",
+            bound: "[1, 2^180]",
         });
     }
     Ok(())
@@ -418,7 +426,7 @@ pub struct GradedSetup<T: Real> {
 }
 
 impl<T: Real> GradedSetup<T> {
-    /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^40, else [`Error::Domain`]) and evaluates
+    /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^180, else [`Error::Domain`]) and evaluates
     /// G at their nodes: the [`left_plan`] for C = ⌈asinh(1/min(4/(5 k_ref), ε, δ))/ln 2⌉
     /// units of ln 2 on the left, and [`panel_nodes`] on the right.
     pub fn new(speed: &Speed<T>, k_ref: &T) -> Result<Self> {
@@ -607,7 +615,7 @@ fn run<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>, dk: bool) -> Result<Evalu
 
 /// I1, I2 of (34) in the normalisation of (37) for k ≥ 1 by graded fixed panels (module docs).
 ///
-/// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^40, else [`Error::Domain`]. Accuracy: relative
+/// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^180, else [`Error::Domain`]. Accuracy: relative
 /// error below [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: the [`left_plan`] for
 /// x up to asinh(1/min(4/(5k), ε, δ)) plus [`panel_nodes`] nodes.
 pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {

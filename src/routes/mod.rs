@@ -103,9 +103,9 @@ pub enum Route {
     /// k ≤ 1.
     AdaptiveSubtracted,
     /// Fixed Gauss–Legendre rules after the Rayleigh pole and the peak of Δ⁻³ are taken out in
-    /// closed form (the fast route); 2⁻⁴⁰ ≤ k ≤ 1.
+    /// closed form (the fast route); 0 < k ≤ 1.
     FixedRule,
-    /// Fixed rules on sinh-graded panels for the long contact across the motion; 1 ≤ k ≤ 2⁴⁰.
+    /// Fixed rules on sinh-graded panels for the long contact across the motion; 1 ≤ k ≤ 2¹⁸⁰.
     GradedRule,
 }
 
@@ -142,8 +142,8 @@ pub enum Method {
     Adaptive,
     /// [`Route::AdaptiveSubtracted`] (k ≤ 1; I1, I2 only).
     AdaptiveSubtracted,
-    /// The fixed rules: [`Route::FixedRule`] for 2⁻⁴⁰ ≤ k ≤ 1, [`Route::GradedRule`] for
-    /// 1 < k ≤ 2⁴⁰ (with k-derivatives).
+    /// The fixed rules: [`Route::FixedRule`] for 0 < k ≤ 1, [`Route::GradedRule`] for
+    /// 1 < k ≤ 2¹⁸⁰ (with k-derivatives).
     Fixed,
 }
 

@@ -5,7 +5,7 @@ use super::*;
 /// Octaves of k on the route's domain: k ∈ (2^(−j−1), 2^−j], j = 0 … 40.
 pub(crate) const OCTAVES: usize = 41;
 
-/// The octave j of 2^−40 ≤ k ≤ 1.
+/// The octave j of 2^−40 ≤ k ≤ 1 (40 for every smaller k, which [`sinh_octave`] never lays out).
 pub(crate) fn octave<T: Real>(k: &T) -> usize {
     ((-k.to_f64().log2()).floor().max(0.0) as usize).min(OCTAVES - 1)
 }
@@ -23,10 +23,14 @@ pub(crate) const NODE_COST: usize = 30;
 /// The octave of k when the rule's right half takes the sinh-mapped panels ([`RightSinh`]):
 /// above double-double, when their nodes cost less than the Taylor subtraction's
 /// n_r (1 + J/[`NODE_COST`]) (the J products of the polynomial at every node grow like bits²).
-/// At `f64` and double-double, never.
+/// At `f64` and double-double, and below k = 2⁻⁴⁰ (the Taylor form's cost does not grow as k
+/// falls, the panels' does), never.
 pub(crate) fn sinh_octave<T: Real>(rule: &FastRule<T>, k: &T) -> Option<usize> {
     let bits = T::bits(rule.prec);
     if bits <= 106 {
+        return None;
+    }
+    if *k < T::from_ratio(1, 1 << 40, rule.prec) {
         return None;
     }
     let j = octave(k);
