@@ -74,6 +74,7 @@ pub struct EllipsePoint<T> {
 impl<T: Clone> EllipsePoint<T> {
     /// Every (ν, speed, A1/B1) of the three lists, ν slowest and A1/B1 fastest: a curve of
     /// A1/B1 at each (ν, speed).
+    /// The inputs of (33); exact.
     pub fn grid(nus: &[T], speeds: &[SpeedGiven<T>], ratios: &[T]) -> Vec<Self> {
         let mut out = Vec::with_capacity(nus.len() * speeds.len() * ratios.len());
         for nu in nus {
@@ -129,6 +130,7 @@ where
 /// Solves every contact problem ([`ContactProblem::solve`] with `opts`) in parallel blocks,
 /// the ellipses with shared set-ups and continuation along consecutive problems (module docs).
 /// One result per problem, in input order.
+/// Implements (26)–(33) per problem, each within its own bound as [`ContactProblem::solve`].
 pub fn contacts<T>(
     problems: &[ContactProblem<T>],
     opts: &Options<T>,

@@ -4,8 +4,9 @@ comment cites no equation or section of the paper ("(36)", "(39)-(42)", "section
 
 Issue 17 asks every public item to state the paper's equation it implements (or that it
 implements none) and its accuracy; this is the crude check behind that count. A module whose
-items implement no formula of the paper says so once in its module docs (src/estimate.rs) and
-still shows here.
+items implement no formula of the paper says so once in its module docs, with their accuracy
+("No item of this module implements a formula of the paper: ...", as src/estimate.rs does), and
+its functions count as covered.
 
     python3 tools/scan_doc_equations.py          # the count, then every function lacking a citation
 """
@@ -13,6 +14,7 @@ import glob
 import re
 
 CITE = re.compile(r"\(\d{1,2}[a-z]?\)|eq\.|equation|section", re.I)
+NONE = re.compile(r"No item of this module implements a formula of the paper")
 
 
 def scan():
@@ -21,6 +23,8 @@ def scan():
         if "/cli/" in f or f.endswith("main.rs"):
             continue
         lines = open(f, encoding="utf-8").read().split("\n")
+        module_doc = " ".join(l[3:].strip() for l in lines if l.startswith("//!"))
+        module_none = bool(NONE.search(module_doc))
         for i, line in enumerate(lines):
             m = re.match(r"\s*pub fn (\w+)", line)
             if not m:
@@ -30,7 +34,7 @@ def scan():
                 doc.append(lines[j])
                 j -= 1
             total += 1
-            if not CITE.search(" ".join(doc)):
+            if not module_none and not CITE.search(" ".join(doc)):
                 missing.append(f"{f}:{i + 1}: {m.group(1)}")
     return total, missing
 

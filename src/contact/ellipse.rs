@@ -58,6 +58,7 @@ pub enum MajorAxis {
 
 impl MajorAxis {
     /// `along` or `across`.
+    /// Names the axis of (33)'s major-axis convention; exact.
     pub fn label(&self) -> &'static str {
         match self {
             MajorAxis::Along => "along",
@@ -173,6 +174,7 @@ impl<T: Real> Shape<T> {
 
 /// Checks a curvature ratio A1/B1 = R2/R1: positive, finite and within the supported range
 /// [10⁻¹⁰⁰, 10¹⁰⁰] ([`RATIO_RANGE`]), before any work.
+/// The domain of the shape equation (33) as solved here; exact comparisons on the value as given.
 pub fn check_ratio<T: Real>(ratio: &T) -> Result<()> {
     check_finite("curvature ratio A1/B1", ratio)?;
     if !ratio.is_positive() {

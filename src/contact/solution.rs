@@ -263,27 +263,33 @@ impl<T: Real> ContactSolution<T> {
     }
 
     /// The problem this solves.
+    /// The inputs of (26)–(33) as given; no rounding.
     pub fn problem(&self) -> &ContactProblem<T> {
         &self.problem
     }
     /// k = b/a with its bound (the ellipse's).
+    /// The root of (33); its bound as in [`Ellipse::k`].
     pub fn k(&self) -> &Estimated<T> {
         &self.ellipse.k
     }
     /// The eccentricity with its bound (absolute: see [`Ellipse::e`]).
+    /// e = √(1 − k²) (or √(1 − 1/k²)) from the root of (33).
     pub fn e(&self) -> &Estimated<T> {
         &self.ellipse.e
     }
     /// A1 = 1/(2 R1) (curvature along the motion).
+    /// The curvature of (26)–(30), from R1 with one rounding.
     pub fn a1(&self) -> &T {
         &self.a1
     }
     /// B1 = 1/(2 R2) (curvature across the motion).
+    /// The curvature of (26)–(30), from R2 with one rounding.
     pub fn b1(&self) -> &T {
         &self.b1
     }
 
     /// True when (x, y) lies in the closed contact ellipse.
+    /// The contact region of (9), x²/a² + y²/b² ≤ 1, at the working precision.
     pub fn inside(&self, x: &T, y: &T) -> bool {
         self.q(x, y) >= T::zero(x.prec())
     }

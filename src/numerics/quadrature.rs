@@ -18,6 +18,10 @@
 //! cache for every rule of the crate, the routes' tables included): a Gauss–Legendre rule holds
 //! `n` values, a tanh–sinh level about `9·2^level` values at 1024 bits. No rule is built above
 //! [`MAX_RULE_BITS`].
+//!
+//! No item of this module implements a formula of the paper: they are the generic quadratures under
+//! the integral routes ((34), (46)–(48)); each item states the error it reaches (the tolerance
+//! asked, never below a few ε of the working precision, or a typed error).
 
 use super::gauss_legendre;
 use super::sum::CompSum;

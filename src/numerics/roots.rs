@@ -5,6 +5,10 @@
 //! Tolerances are relative and never below the precision: a requested tolerance under `2ε` is
 //! raised to `2ε`, so passing `0` asks for "as accurate as the precision allows". Every loop
 //! stops on the tolerance, on lack of progress, or at its iteration cap (a typed error).
+//!
+//! No item of this module implements a formula of the paper: they are the root finders under the
+//! Rayleigh roots (6) and the shape equation (33), to the relative tolerance asked (at least 2ε) or
+//! a typed error.
 
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, short, Real};

@@ -7,6 +7,10 @@
 //! component is the discrepancy with the one-panel rule, and the panel whose worst component
 //! (relative to that component's threshold) is largest is split, until every component meets
 //! `max(tol·|I_c|, 4ε·Σ|I_c,panel|)` or the evaluation cap is reached ([`Error::NoConvergence`]).
+//!
+//! No item of this module implements a formula of the paper: it is the adaptive vector quadrature
+//! under the direct route's (46)–(47) and J0 of (32), to the relative tolerance stated above or a
+//! typed error.
 
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::{GaussLegendre, Limits};

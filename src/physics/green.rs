@@ -32,6 +32,7 @@ pub struct GreenFunction<T: Real> {
 
 impl<T: Real> GreenFunction<T> {
     /// The Green's function constants of `mat`.
+    /// The constants of (44)–(45) (γ, the Rayleigh roots of (6), 2/m1), each to a few ε.
     pub fn new(mat: &Material<T>) -> Self {
         let p = mat.nu().prec();
         let pi = T::pi(p);
@@ -122,6 +123,8 @@ impl<T: Real> GreenFunction<T> {
     }
 
     /// π at the working precision (shared with callers that normalise by it).
+    /// Implements no equation (the constant of (44)); correctly rounded for MPFR, within an ulp
+    /// otherwise.
     pub fn pi(&self) -> &T {
         &self.pi
     }

@@ -59,6 +59,8 @@ pub enum ClosedForm {
 }
 
 /// Coefficients (descending powers) of (1 − ν)·P(x) = (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8.
+/// The Rayleigh cubic (6) scaled by 1 − ν; exact in the field operations of the backend (rounded
+/// once a coefficient).
 pub fn cubic_coefficients<T: Real>(nu: &T) -> [T; 4] {
     let p = nu.prec();
     let one_m = T::one(p) - nu;
@@ -73,6 +75,8 @@ pub fn cubic_coefficients<T: Real>(nu: &T) -> [T; 4] {
 
 /// The depressed cubic t³ + p t + q = 0 with x = t + 8/3: with w = 1/(1 − ν),
 /// p = 8w − 40/3 and q = 40w/3 − 448/27.
+/// The Rayleigh cubic (6) shifted for Cardano's form; each coefficient rounded a few times (its
+/// cancellation near ν ≈ 0.263 is the closed forms' weakness, docs/rayleigh.md).
 pub fn depressed_cubic<T: Real>(nu: &T) -> (T, T) {
     let pr = nu.prec();
     let w = (T::one(pr) - nu).recip();
@@ -82,6 +86,8 @@ pub fn depressed_cubic<T: Real>(nu: &T) -> (T, T) {
 }
 
 /// The discriminant quantity (q/2)² + (p/3)³: negative when the three roots are real.
+/// Of the Rayleigh cubic (6); a few ε absolute relative to (q/2)², so its sign is unreliable where
+/// it nearly vanishes (ν ≈ 0.263).
 pub fn cardano_discriminant<T: Real>(nu: &T) -> T {
     let (pp, qq) = depressed_cubic(nu);
     qq.mul_pow2(-1).square() + pp.div_i64(3).powi(3)
@@ -100,6 +106,7 @@ pub fn rayleigh_function_direct<T: Real>(gamma: &T, x: &T) -> T {
 impl<T: Real> RayleighRoots<T> {
     /// The default: an `f64` seed, Halley polish of m1 in `T::Wide`, deflation, one rounding.
     /// Accuracy ≤ 4 ε (checked over a dense ν grid in `tests/rayleigh.rs`).
+    /// The roots of the Rayleigh cubic (6).
     pub fn new(nu: &T) -> Result<Self> {
         let p = nu.prec();
         let pw = T::wide_prec(p);
@@ -151,6 +158,8 @@ impl<T: Real> RayleighRoots<T> {
 
     /// The roots by a closed form at the working precision, without polishing (for the
     /// stability study; prefer [`RayleighRoots::new`]).
+    /// The roots of (6) by Cardano's or the trigonometric form; accuracy: docs/rayleigh.md (all
+    /// digits of m1 can be lost near ν = 2/5 by the one-formula form).
     pub fn closed_form(nu: &T, form: ClosedForm) -> Self {
         let pr = nu.prec();
         let (pp, qq) = depressed_cubic(nu);
@@ -245,6 +254,7 @@ impl<T: Real> RayleighRoots<T> {
     }
 
     /// The three roots as complex numbers, m1 first.
+    /// The roots of (6), as [`RayleighRoots::new`] computed them.
     pub fn all(&self) -> [Complex<T>; 3] {
         [
             Complex::from_real(self.m1.clone()),

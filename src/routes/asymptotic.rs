@@ -88,12 +88,15 @@ impl<T: Real> I2Asymptotics<T> {
     }
 
     /// The one-term approximation C (1 − M_R)^(−1/2), given 1 − M_R.
+    /// The first term of the expansion of (48) with (53) as M_R → 1 (end of section 6); relative
+    /// error O((1 − M_R)^{1/2}).
     pub fn leading(&self, one_minus_mr: &T) -> T {
         self.c.clone() / one_minus_mr.clone().sqrt()
     }
 
     /// The two-term approximation C (1 − M_R)^(−1/2) + D, given 1 − M_R; relative error
     /// O(1 − M_R).
+    /// The expansion of (48) with (53) as M_R → 1 (end of section 6).
     pub fn two_term(&self, one_minus_mr: &T) -> T {
         self.leading(one_minus_mr) + &self.d
     }

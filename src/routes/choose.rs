@@ -45,6 +45,7 @@ pub const INPUT_KAPPA: u32 = 8;
 
 impl ExactInputs {
     /// Parses decimal (or p/q) text exactly: Poisson's ratio, the speed M_R, the axis ratio k.
+    /// The inputs of (34); exact.
     pub fn parse(nu: &str, mr: &str, k: &str) -> Result<ExactInputs> {
         ExactInputs::new(
             decimal_to_rational(nu)?,
@@ -55,6 +56,7 @@ impl ExactInputs {
     }
 
     /// As [`ExactInputs::parse`] with the speed given by its gap 1 − M_R.
+    /// The inputs of (34); exact.
     pub fn parse_gap(nu: &str, gap: &str, k: &str) -> Result<ExactInputs> {
         let g = decimal_to_rational(gap)?;
         let text = format!("1 - {}", gap.trim());
@@ -67,6 +69,7 @@ impl ExactInputs {
     }
 
     /// The exact values of three `f64` (NaN and ∞ are typed errors).
+    /// The inputs of (34); exact.
     pub fn from_f64(nu: f64, mr: f64, k: f64) -> Result<ExactInputs> {
         let conv = |name: &'static str, x: f64| {
             Rational::from_f64(x).ok_or_else(|| Error::NotFinite {
@@ -108,14 +111,17 @@ impl ExactInputs {
     }
 
     /// Poisson's ratio ν.
+    /// An input of (34); exact.
     pub fn nu(&self) -> &Rational {
         &self.nu
     }
     /// The speed M_R.
+    /// An input of (34); exact.
     pub fn mr(&self) -> &Rational {
         &self.mr
     }
     /// The axis ratio k.
+    /// An input of (34); exact.
     pub fn k(&self) -> &Rational {
         &self.k
     }
@@ -123,6 +129,7 @@ impl ExactInputs {
     /// The inputs as rounded to precision `p`, held exactly: ν and k rounded, the gap 1 − M_R
     /// rounded and M_R its exact complement (for studies that measure a route's own error
     /// against a reference for the very inputs it saw).
+    /// The inputs of (34); the roundings of `p`, held exactly.
     pub fn rounded<T: Real>(&self, p: T::Prec) -> Result<ExactInputs> {
         let bits = T::bits(p) + 64;
         let r = |q: &Rational| -> Rational {
@@ -140,6 +147,7 @@ impl ExactInputs {
     }
 
     /// The inputs rounded once to precision `p`: the speed (with its material) and k.
+    /// The inputs of (34), each rounded once (the gap 1 − M_R rounded, M_R its complement).
     pub fn at<T: Real>(&self, p: T::Prec) -> Result<(Speed<T>, T)> {
         let mat = Material::<T>::from_exact(&self.nu, &self.text[0], p)?;
         let speed = mat.speed_from_exact(&self.mr, &self.text[1])?;
@@ -151,6 +159,7 @@ impl ExactInputs {
 
 /// The lowest precision whose (route bound + κ)·ε meets `tol` (module docs): bits from the
 /// tolerance's binary exponent, MPFR in steps of 8 bits.
+/// Chooses the precision for I1, I2 of (34); implements no equation.
 pub fn choose_precision(tol: RelError) -> Result<Precision> {
     // The route gets 2/3 of the tolerance, the inputs' rounding the rest:
     // (3/2·16 + κ)·2^(1 − bits) ≤ tol  ⇔  bits ≥ 1 + log2(3/2·16 + κ) − log2(tol).

@@ -62,6 +62,7 @@ impl<F: FieldOps> GreenSeries<F> {
     /// The generator for Poisson's ratio `nu` and scale `x0` (validated by the caller:
     /// −1 < ν ≤ 1/2, 0 ≤ x0 ≤ 1; or ν the variable of a rational function). γ and 1 − ν are
     /// formed from `nu` by field operations, so a symbolic ν gives them as expressions.
+    /// The recurrence (36) (errata #2) for the coefficients of (35).
     pub fn new(nu: &F, x0: F) -> Self {
         let p = nu.prec();
         let one = F::one(p);
@@ -85,11 +86,14 @@ impl<F: FieldOps> GreenSeries<F> {
     }
 
     /// The index of the coefficient the next call to [`GreenSeries::next_coefficient`] returns.
+    /// The index l of (36); exact.
     pub fn index(&self) -> u64 {
         self.l
     }
 
     /// Returns c_l and advances to l + 1.
+    /// One step of (36): c_l = F_l x0^l of (35), exact over an exact field, a few ε per step
+    /// relative to the largest term otherwise (the recurrence is stable: docs/series.md).
     pub fn next_coefficient(&mut self) -> F {
         self.advance(|t| t)
     }
@@ -124,6 +128,7 @@ impl<F: FieldOps> GreenSeries<F> {
     }
 
     /// The first `n` coefficients c_0 … c_{n−1}.
+    /// The coefficients of (35) by (36), as [`GreenSeries::next_coefficient`].
     pub fn take(mut self, n: usize) -> Vec<F> {
         (0..n).map(|_| self.next_coefficient()).collect()
     }
@@ -153,6 +158,7 @@ pub struct SpeedCoefficients<F: Field> {
 impl<F: Field> SpeedCoefficients<F> {
     /// The generator for Poisson's ratio `nu`, the Rayleigh root `m1` = (c_R/c2)² and
     /// `mr2` = M_R² (validated by the caller: −1 < ν ≤ 1/2, 0 ≤ M_R² < 1).
+    /// The recurrence (36) (errata #2) for the coefficients of (35).
     pub fn new(nu: &F, m1: F, mr2: F) -> Self {
         let p = nu.prec();
         SpeedCoefficients {
@@ -163,7 +169,7 @@ impl<F: Field> SpeedCoefficients<F> {
         }
     }
 
-    /// The index n of the pair the next call returns.
+    /// The index n of (35)–(36) the next call returns; exact.
     pub fn index(&self) -> u64 {
         self.gen.index()
     }
@@ -174,12 +180,14 @@ impl<F: Field> SpeedCoefficients<F> {
     /// invisible, and it stops u_l, v_l (which decay like (γm1)^l and m1^l) from wandering through
     /// the subnormal range of `f64` and double-double, where each operation costs a hundred times
     /// more. Not for exact (`Rational`) runs.
+    /// A cut-off inside (36); the change it makes is bounded above.
     pub fn flush_below(mut self, tiny: F) -> Self {
         self.flush = Some(tiny.abs());
         self
     }
 
     /// (h_n, f_n) and advance to n + 1.
+    /// h_n = f_n/M_R^{2n} and f_n of (35) by (36) at x0 = m1, as [`GreenSeries::next_coefficient`].
     pub fn next_pair(&mut self) -> (F, F) {
         let h = match &self.flush {
             None => self.gen.next_coefficient(),

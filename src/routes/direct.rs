@@ -55,6 +55,7 @@ pub struct DirectSetup<T: Real> {
 
 impl<T: Real> DirectSetup<T> {
     /// Precomputes the constants.
+    /// The constants of (46)–(48) (ε² = 1 − M_R², k², G's constants), each to a few ε.
     pub fn new(speed: &Speed<T>, axes: &AxisRatio<T>) -> Self {
         let p = speed.mr().prec();
         DirectSetup {
@@ -106,6 +107,7 @@ impl<T: Real> DirectSetup<T> {
     }
 
     /// F_L(w), the left-half integrand (see the module docs).
+    /// The integrand of (46)–(47) on α ≤ π/4, w = tan α; a few ε relative (positive terms).
     pub fn left(&self, w: &T) -> T {
         let n = self.left_node(w);
         let u = &n[3];
@@ -113,6 +115,7 @@ impl<T: Real> DirectSetup<T> {
     }
 
     /// F_R(v), the right-half integrand.
+    /// The integrand of (46)–(47) on α ≥ π/4, v = cot α; a few ε relative (positive terms).
     pub fn right(&self, v: &T) -> T {
         let n = self.right_node(v);
         let h = &n[3];
@@ -122,6 +125,7 @@ impl<T: Real> DirectSetup<T> {
     /// The left-half integrand of I2 with G(t) replaced by G(t) − G(M_R²), written with the
     /// divided difference DG so that nothing cancels: since t − M_R² = −M_R² w²/(1 + w²),
     /// it is −2π M_R² DG · w² / (√(1 + w²)(ε² + w²)(1 + k²w²)^{3/2}) ≥ 0.
+    /// The integral of (48), left half; a few ε relative (no cancellation).
     pub fn left_subtracted(&self, w: &T) -> T {
         let [w2, opw2, t, u] = self.left_node(w);
         let dg = self.green.g_divided_difference(&t, &self.mr2);
@@ -132,6 +136,7 @@ impl<T: Real> DirectSetup<T> {
 
     /// The right-half integrand of I2 (v² F_R) with G(t) − G(M_R²): with
     /// t − M_R² = −M_R²/(1 + v²), it is −2π M_R² DG · v² / (√(1 + v²)(1 + ε²v²)(v² + k²)^{3/2}).
+    /// The integral of (48), right half; a few ε relative (no cancellation).
     pub fn right_subtracted(&self, v: &T) -> T {
         let [v2, opv2, t, h] = self.right_node(v);
         let dg = self.green.g_divided_difference(&t, &self.mr2);

@@ -87,6 +87,7 @@ pub fn integrals<T: Real>(speed: &Speed<T>, k: &T, opts: &IntegralOptions) -> Re
 impl<T: Real> Evaluator<T> {
     /// The evaluator for `speed` with `opts`; [`Error::Unreachable`] for a tolerance below
     /// [`FLOOR_EPS`]·ε, [`Error::Domain`] for a method that cannot give what `opts` asks for.
+    /// Evaluates (34) (normalisation of (37)) by the routes of the module docs.
     pub fn new(speed: &Speed<T>, opts: IntegralOptions) -> Result<Self> {
         let p = speed.mr().prec();
         check_method(&opts)?;
@@ -117,6 +118,8 @@ impl<T: Real> Evaluator<T> {
     }
 
     /// I1, I2 (and what the options ask for) at the axis ratio `k` = b/a > 0.
+    /// I1, I2 of (34) in the normalisation of (37), k-derivatives of (34) and J0 of (32); each with
+    /// the route's bound (16ε fixed rule, 32ε graded rule, the tolerance for the adaptive routes).
     pub fn at(&self, k: &T) -> Result<Integrals<T>> {
         let axes = AxisRatio::new(k.clone())?;
         let route = self.route_for(&axes)?;
@@ -289,6 +292,7 @@ impl<T: Real> Evaluator<T> {
     }
 
     /// The speed this evaluator serves.
+    /// The M_R of (34); exact.
     pub fn speed(&self) -> &Speed<T> {
         &self.speed
     }

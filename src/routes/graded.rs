@@ -69,6 +69,7 @@ pub const BOUND_EPS: i64 = 32;
 /// Nodes of the right half's single panel at a working precision of `bits` bits: 17 at `f64`,
 /// ⌈0.33·bits⌉ + 1 above (36 at double-double, 86 at 256 bits): its nearest singularities
 /// (v = ±i) allow ρ ≈ 3 in the worst case measured, ρ^{−2n} ≤ 2^{−bits} needs n ≥ 0.316·bits.
+/// Node counts for (46)–(47); implements no equation.
 pub fn panel_nodes(bits: u32) -> usize {
     let b = bits.max(24) as usize;
     if b <= 53 {
@@ -93,6 +94,7 @@ pub const MAX_UNITS: usize = 8;
 /// branch points on the strip's edge with a margin of about two bits (module docs). At `f64`
 /// 10, 14, 18, 22, 26, 31, 35, 40 for units 1…8; at double-double 18, 26, 33, 41, 49, 57, 65,
 /// 74; at 256 bits 42, 59, 77, 95, 113, 132, 151, 170.
+/// Node counts for (46)–(47); implements no equation.
 pub fn left_nodes(bits: u32, units: usize) -> usize {
     let b = bits.max(24) as f64;
     let h = std::f64::consts::PI / (units.max(1) as f64 * std::f64::consts::LN_2);
@@ -107,6 +109,7 @@ pub const MAX_RULE_NODES: usize = 180;
 
 /// The longest panel the plans use at `bits` bits, in units of ln 2: the longest whose rule has
 /// at most [`MAX_RULE_NODES`] nodes, and at least 2 (8 up to 256 bits, 3 at 512, 2 at 1024).
+/// Panel lengths for (46)–(47); implements no equation.
 pub fn max_units(bits: u32) -> usize {
     (3..=MAX_UNITS)
         .take_while(|&l| left_nodes(bits, l) <= MAX_RULE_NODES)
@@ -122,6 +125,7 @@ fn length_costs(bits: u32) -> Vec<usize> {
 /// The left half's panels for an x-range of `units`·ln 2 (or a little more): lengths in units
 /// of ln 2, each at most [`max_units`], summing to at least `units`, with the fewest nodes
 /// ([`left_nodes`]) and, among those, the fewest panels; longest first.
+/// The panels for (46)–(47); implements no equation.
 pub fn left_plan(bits: u32, units: usize) -> Vec<usize> {
     pick_plan(
         &plan_table(&length_costs(bits), units.max(1) + MAX_UNITS),
@@ -429,6 +433,7 @@ impl<T: Real> GradedSetup<T> {
     /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^180, else [`Error::Domain`]) and evaluates
     /// G at their nodes: the [`left_plan`] for C = ⌈asinh(1/min(4/(5 k_ref), ε, δ))/ln 2⌉
     /// units of ln 2 on the left, and [`panel_nodes`] on the right.
+    /// The k-independent part of (46)–(47), G of (45) to a few ε at each node.
     pub fn new(speed: &Speed<T>, k_ref: &T) -> Result<Self> {
         check_k(k_ref)?;
         let p = k_ref.prec();
@@ -494,16 +499,19 @@ impl<T: Real> GradedSetup<T> {
     }
 
     /// Whether `k` lies in the range this layout serves, 1 ≤ k ≤ (5/4)·k_ref.
+    /// The range of (46)–(47) in k this layout serves; an exact comparison.
     pub fn covers(&self, k: &T) -> bool {
         *k >= T::one(k.prec()) && *k <= self.k_max
     }
 
     /// I1, I2 at `axes` ([`integrals`]' accuracy); [`Error::Domain`] outside [`Self::covers`].
+    /// Implements (46)–(47).
     pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.eval(axes, false)
     }
 
     /// I1, I2, dI1/dk, dI2/dk at `axes` ([`integrals_with_dk`]' accuracy).
+    /// Implements (46)–(47) and their k-derivatives.
     pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.eval(axes, true)
     }
@@ -623,6 +631,7 @@ pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evalu
 }
 
 /// [`integrals`] with dI1/dk, dI2/dk differentiated under the integral sign on the same nodes
+/// Implements (46)–(47) and their k-derivatives.
 /// (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵); their relative error is of the same order (positive integrands).
 pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
     run(speed, axes, true)

@@ -59,6 +59,8 @@ impl<T: Real> AxisRatio<T> {
     /// The axis ratio `k` = b/a; [`Error::Domain`] unless k⁴ and 1/k⁴ are normal numbers of
     /// the working precision (1.2·10⁻⁷⁷ ≲ k ≲ 8.2·10⁷⁶ at `f64`, 1.2·10⁻⁷³ ≲ k ≲ 8.4·10⁷² at
     /// double-double).
+    /// The k of (33)–(34), kept as given; k² and e² = (1 − k)(1 + k) of (41) each within an ulp
+    /// or two.
     pub fn new(k: T) -> Result<Self> {
         check_finite("axis ratio k = b/a", &k)?;
         if !k.is_positive() {
@@ -111,6 +113,7 @@ pub enum Route {
 
 impl Route {
     /// `series`, `adaptive`, `adaptive-subtracted`, `fixed-rule` or `graded-rule`.
+    /// Names a route for (34); exact.
     pub fn label(&self) -> &'static str {
         match self {
             Route::Series => "series",
@@ -158,6 +161,7 @@ impl Method {
     ];
 
     /// `auto`, `series`, `adaptive`, `adaptive-subtracted` or `fixed`.
+    /// Names a route for (34); exact.
     pub fn label(&self) -> &'static str {
         match self {
             Method::Auto => "auto",
@@ -169,6 +173,7 @@ impl Method {
     }
 
     /// Parses a label of [`Method::label`].
+    /// Names a route for (34); exact.
     pub fn parse(s: &str) -> Result<Method> {
         Method::ALL
             .into_iter()
@@ -212,6 +217,7 @@ pub struct Evaluation<T: Real> {
 
 impl<T: Real> Evaluation<T> {
     /// I1, I2 with an error estimate, nothing else.
+    /// I1, I2 of (34) as a route computed them.
     pub fn pair(i1: T, i2: T, error_estimate: T, route: Route, work: usize) -> Self {
         let z = T::zero(i1.prec());
         Evaluation {
@@ -266,6 +272,7 @@ impl<T: Real> Evaluation<T> {
     }
 
     /// ∂I1/∂k (zero when not computed).
+    /// The k-derivative of (34) as the route computed it, within its stated bound.
     pub fn di1_dk(&self) -> T {
         self.dk
             .as_ref()
@@ -273,6 +280,7 @@ impl<T: Real> Evaluation<T> {
     }
 
     /// ∂I2/∂k (zero when not computed).
+    /// The k-derivative of (34) as the route computed it, within its stated bound.
     pub fn di2_dk(&self) -> T {
         self.dk
             .as_ref()
@@ -293,6 +301,7 @@ impl<T: Real> Evaluation<T> {
 
     /// The public result: every value finite and every estimate finite and below 1 (else a
     /// typed error naming the route), estimates as [`RelError`].
+    /// I1, I2 of (34) (normalisation of (37)); the estimates are the route's, rounded upwards.
     pub fn publish(self) -> Result<Integrals<T>> {
         let dk_finite = self
             .dk

@@ -102,6 +102,7 @@ pub enum MomentMethod {
 
 impl MomentMethod {
     /// `forward`, `backward-gauss`, `backward-pfaff`.
+    /// Names a method for (40); exact.
     pub fn label(&self) -> &'static str {
         match self {
             MomentMethod::Forward => "forward",
@@ -155,6 +156,7 @@ fn gauss_terms(e2: f64, n: usize, bits: u32) -> u64 {
 /// Forward for e² ≥ 1/2; Gauss-backward for −3/4 ≤ e² < 1/2; for e² < −3/4 the cheaper (by a
 /// cost model: operations × (1 + bits/64)) of forward with n_max·log₂(k²/|e²|) extra guard bits
 /// and Pfaff-backward with about bits/log₂(k²/|e²|) series terms.
+/// The method for (40) with (42) or the series top values; implements no equation.
 pub fn plan(mc: f64, n_max: usize, bits: u32) -> MomentPlan {
     let e2 = 1.0 - mc;
     let base = base_guard(n_max);
@@ -214,6 +216,7 @@ pub struct Moments<T> {
 
 impl<T> Moments<T> {
     /// The largest n of D_n (the table of M and L goes one further).
+    /// The top index of (38)–(41); exact.
     pub fn n_max(&self) -> usize {
         self.d.len() - 1
     }
@@ -226,6 +229,7 @@ impl<T> Moments<T> {
         &self.l
     }
     /// D_n = L_n − L_{n+1} = ∫cos^{2n}α sin²α/Δ³ dα for n = 0 … n_max.
+    /// The differences of (39) entering (37); each within 8ε ([`moments`]).
     pub fn d(&self) -> &[T] {
         &self.d
     }
@@ -259,6 +263,7 @@ fn check_inputs<T: Real>(mc: &T, n_max: usize) -> Result<()> {
 /// Errors: [`Error::Domain`] for k² ≤ 0 or n_max > [`MAX_INDEX`], [`Error::NotFinite`],
 /// [`Error::TermCap`] if a top-value series exceeds its cap, [`Error::Precision`] if the
 /// guard bits exceed the MPFR maximum; errors of the elliptic integrals.
+/// Implements (38)–(42) (recursion (40) from (42), or backwards from series top values).
 pub fn moments<T: Real>(mc: &T, n_max: usize) -> Result<Moments<T>> {
     check_inputs(mc, n_max)?;
     let pl = plan(mc.to_f64(), n_max, T::bits(mc.prec()));
@@ -274,6 +279,8 @@ pub fn moments<T: Real>(mc: &T, n_max: usize) -> Result<Moments<T>> {
 ///
 /// Errors: as [`moments`]; also [`Error::Domain`] for the forward recursion at e² = 0 (it divides
 /// by e²), for Gauss top values with |e²| ≥ 1 and Pfaff top values with e² ≥ 1/2 (divergent).
+/// Implements (38)–(42); accuracy: [`moments`] for the default method, docs/series.md for the
+/// others.
 pub fn moments_with<T: Real>(
     mc: &T,
     n_max: usize,
@@ -595,6 +602,7 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
 /// |e²| ≤ 3/4, Pfaff for e² < −3/4): an independent route for checks, accurate to a few ε·(terms)
 /// (the term recurrences accumulate one rounding per term). Slow as k → ∞ (about 0.7·bits·k²
 /// terms): [`Error::TermCap`] beyond [`MAX_TOP_TERMS`].
+/// Implements (39) and (41) by series (not the paper's route).
 pub fn moment_by_series<T: Real>(mc: &T, n: usize) -> Result<(T, T)> {
     check_inputs(mc, n)?;
     let p = mc.prec();
@@ -662,6 +670,7 @@ pub struct KeTerm<F> {
 impl<F: FieldOps> KeForm<F> {
     /// The generator for k² = `mc`; [`Error::Domain`] when e² = 1 − k² = 0 (the recursion divides
     /// by e²).
+    /// The coefficients of L_n, M_n in K, E by (40) from (42) (A.8).
     pub fn new(mc: F) -> Result<Self> {
         let p = mc.prec();
         let e2 = F::one(p) - &mc;
@@ -690,11 +699,13 @@ impl<F: FieldOps> KeForm<F> {
     }
 
     /// e² = 1 − k².
+    /// e² of (41); exact over an exact field, one rounding otherwise.
     pub fn e2(&self) -> &F {
         &self.e2
     }
 
     /// The coefficients of index n (0, 1, 2, … on successive calls).
+    /// One step of (40) on the coefficients of (42); exact over an exact field.
     pub fn next_term(&mut self) -> KeTerm<F> {
         let n = self.n;
         self.n += 1;
@@ -726,6 +737,7 @@ impl<F: FieldOps> KeForm<F> {
 /// [`moments`]).
 ///
 /// Errors: as [`moments`] and [`KeForm::new`].
+/// The conditioning of (40)–(42) in the K, E basis; to a few percent (an f64 log₂).
 pub fn ke_condition_bits<T: Real>(mc: &T, n_max: usize) -> Result<Vec<(f64, f64)>> {
     let mom = moments(mc, n_max)?;
     let (k, e) = ellipke_mc(mc)?;

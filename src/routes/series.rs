@@ -60,6 +60,7 @@ impl<T> Default for SeriesOptions<T> {
 
 /// Terms the series needs for relative tolerance `tol` at M_R² = `q` (an over-estimate: it
 /// assumes D_n, L_{n+1} do not decrease and h_n = h_0). 1 at q = 0.
+/// Terms of (37); an over-estimate, not a bound on accuracy.
 pub fn terms_estimate(q: f64, tol: f64) -> u64 {
     if q <= 0.0 {
         return 1;

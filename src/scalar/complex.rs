@@ -3,6 +3,11 @@
 //!
 //! The Rayleigh cubic has a complex-conjugate pair of roots for ν above about 0.263; its closed
 //! form (Cardano) needs principal square and cube roots, provided here.
+//!
+//! No item of this module implements a formula of the paper: they are complex arithmetic for the
+//! Rayleigh cubic's closed form (6); each operation is the textbook formula over the backend's
+//! operations, with the rounding error those formulas carry (the Rayleigh roots are polished
+//! afterwards: `physics::rayleigh`).
 
 use super::Real;
 use std::ops::{Add, Div, Mul, Neg, Sub};

@@ -27,6 +27,9 @@
 //!
 //! Accuracy, measured against MPFR at 256 bits over 10^4+ random arguments by
 //! `tests/dd_accuracy.rs`: see `docs/design.md` for the table.
+//!
+//! No item of this module implements a formula of the paper: they are the double-double arithmetic
+//! every formula runs on, to the accuracies above.
 
 use super::{Field, FieldOps, Real};
 use crate::error::{Error, Result};

@@ -5,6 +5,9 @@
 //! A value carries its precision. An operation on two values of different precisions is carried
 //! out at the larger precision (never silently at the smaller) and counted in
 //! [`mixed_precision_events`], which the test suite asserts stays at zero.
+//!
+//! No item of this module implements a formula of the paper: they are the MPFR arithmetic every
+//! formula runs on, correctly rounded to the working precision.
 
 use super::{Field, FieldOps, Real};
 use crate::error::{Error, Result};

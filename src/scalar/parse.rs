@@ -1,5 +1,8 @@
 //! Exact decimal parsing: decimal text to `rug::Rational`, for the exact mode and for inputs that
 //! must be known exactly (a Poisson's ratio given as `0.2` is exactly 1/5 here).
+//!
+//! No item of this module implements a formula of the paper: decimal text becomes an exact
+//! rational, with no rounding.
 
 use crate::error::{Error, Result};
 use rug::{Integer, Rational};

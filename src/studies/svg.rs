@@ -1,6 +1,9 @@
 //! A small SVG chart writer for the studies: line and scatter charts with linear or log axes,
 //! labelled axes, grid, legend; and heat maps with a colour bar. No dependency: the charts are
 //! plain SVG 1.1 text.
+//!
+//! No item of this module implements a formula of the paper: they draw the studies' results (each
+//! study names its equations); coordinates are written to a tenth or a hundredth of a pixel.
 
 use std::fmt::Write;
 

@@ -1,6 +1,9 @@
 //! Dense univariate polynomials over ℚ with exact `rug::Rational` coefficients: the few
 //! operations the rational functions of [`super::RatFunc`] need (ring operations, division with
 //! remainder, the monic gcd, exact evaluation). Every operation is exact.
+//!
+//! No item of this module implements a formula of the paper: they are the polynomial arithmetic
+//! under the exact runs of (36) and (40), and every operation is exact.
 
 use rug::{Integer, Rational};
 use std::cmp::Ordering;

@@ -7,6 +7,11 @@
 //! every gcd small: the recurrences (36) and (40) divide only by 1 − ν, e² and 1 − e², so the
 //! bases are linear and reducing a sum costs a few synthetic divisions instead of a Euclid run
 //! on the full numerator and denominator.
+//!
+//! No item of this module implements a formula of the paper: they are the rational-function
+//! arithmetic on which the generic recurrences (36) and (40) run exactly
+//! ([`super::green_coefficients`], [`super::moment_forms`] name the equations), and every operation
+//! is exact.
 
 use super::poly::Poly;
 use crate::scalar::FieldOps;

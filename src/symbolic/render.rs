@@ -6,6 +6,10 @@
 //! base q_i are integer polynomials with coprime coefficients, written in ascending powers with
 //! their lowest nonzero coefficient positive (`67 - 220 nu + ...`, `1 - nu`, `e2`), and A, B
 //! are coprime positive integers.
+//!
+//! No item of this module implements a formula of the paper: they print the exact results of
+//! [`super::green_coefficients`] ((35)-(36)) and [`super::moment_forms`] ((40), (42)) without
+//! rounding.
 
 use super::poly::Poly;
 use super::ratfunc::RatFunc;

@@ -511,6 +511,7 @@ pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evalu
 /// same nodes (see the module docs). The derivatives' relative error is not bounded by the
 /// reported estimate (which is for I1, I2): measured ≤ 47ε at `f64`, ≤ 53ε at double-double
 /// (near k = 1, M_R = 0), ≤ 3ε at MPFR; tested ≤ 128ε. Cost: the same nodes as [`integrals`] and a few products more a node.
+/// Implements (46)–(47) and their k-derivatives.
 pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
     let rule = FastRule::<T>::get(axes.k.prec())?;
     run(speed, axes, &rule, true, true)
@@ -519,6 +520,7 @@ pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Resu
 /// As [`integrals_with_dk`] with an explicit rule (from [`FastRule::build`]): for convergence
 /// studies. The reported `error_estimate` is the default rule's bound and does not apply to
 /// smaller rules.
+/// Implements (46)–(47).
 pub fn integrals_with_rule<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
@@ -608,6 +610,7 @@ impl<T: Real> FastSetup<T> {
     /// of the working precision (cost about that of one [`integrals`] call). Above
     /// double-double the right half is laid out on first use for each octave of k
     /// ([`sinh_octave`]).
+    /// Implements the k-independent part of (46)–(47).
     pub fn new(speed: &Speed<T>) -> Result<Self> {
         Self::boxed(speed).map(|b| *b)
     }
@@ -654,11 +657,12 @@ impl<T: Real> FastSetup<T> {
     }
 
     /// I1, I2 at the axis ratio `axes` (same domain and accuracy as [`integrals`]).
+    /// Implements (46)–(47).
     pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.run(axes, false)
     }
 
-    /// I1, I2, dI1/dk, dI2/dk at the axis ratio `axes` (as [`integrals_with_dk`]).
+    /// I1, I2 of (46)–(47), dI1/dk, dI2/dk at the axis ratio `axes` (as [`integrals_with_dk`]).
     pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.run(axes, true)
     }

@@ -22,6 +22,7 @@ impl RuleSizes {
     ///
     /// 53 bits (`f64`): 20, 12, J = 8; 106 bits (double-double): 44, 26, J = 14; otherwise
     /// ⌈0.433·bits⌉ − 2, ⌈0.24·bits⌉ + 1, J = ⌈0.13·bits⌉ (256 bits: 109, 63, 34).
+    /// Rule sizes for (46)–(47); implements no equation.
     pub fn for_bits(bits: u32) -> RuleSizes {
         let b = bits.max(24) as usize;
         match b {
@@ -44,6 +45,7 @@ impl RuleSizes {
     }
 
     /// Integrand evaluations per call (G is evaluated once per node).
+    /// Evaluations of G (45) per call; exact.
     pub fn nodes(&self) -> usize {
         self.left + self.right
     }
@@ -157,6 +159,7 @@ fixed_slot!(static_slot, FastRule);
 impl<T: Real> FastRule<T> {
     /// The rule for precision `p` with the sizes of [`RuleSizes::for_bits`], built on first use
     /// and cached for the life of the process.
+    /// The nodes for (46)–(47); implements no equation (accuracy: [`RuleSizes::for_bits`]).
     pub fn get(p: T::Prec) -> Result<RuleRef<T>> {
         check_rule_bits(T::bits(p))?;
         if let Some(slot) = static_slot::<T>() {
@@ -177,6 +180,7 @@ impl<T: Real> FastRule<T> {
     }
 
     /// A rule with explicit sizes (not cached): for convergence studies and calibration.
+    /// The nodes for (46)–(47); implements no equation.
     pub fn build(sizes: RuleSizes, p: T::Prec) -> Result<Self> {
         if sizes.left == 0 || sizes.right == 0 {
             return Err(Error::Domain {
@@ -216,6 +220,7 @@ impl<T: Real> FastRule<T> {
     }
 
     /// The sizes of this rule.
+    /// Of the rule for (46)–(47); exact.
     pub fn sizes(&self) -> RuleSizes {
         self.sizes
     }
@@ -230,6 +235,7 @@ impl<T: Real> FastRule<T> {
     }
 
     /// The precision of this rule.
+    /// Of the rule for (46)–(47); exact.
     pub fn prec(&self) -> T::Prec {
         self.prec
     }
