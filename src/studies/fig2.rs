@@ -33,11 +33,13 @@ pub const SPEEDS: [f64; 8] = [0.0, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99, 0.999];
 pub const RATIOS: [f64; 6] = [0.01, 0.05, 0.1, 0.25, 0.5, 1.0];
 
 /// The grid of A1/B1 for the first chart: 0.005 … 1.
+/// Inputs of (33) for Fig. 2; exact binary values.
 pub fn ratio_grid() -> Vec<f64> {
     (1..=200).map(|j| j as f64 / 200.0).collect()
 }
 
 /// The grid of M_R for the second chart: 0 … 0.9999, denser near 1.
+/// Inputs of (33) for Fig. 2; exact binary values.
 pub fn speed_grid() -> Vec<f64> {
     let mut v: Vec<f64> = (0..=90).map(|j| j as f64 / 100.0).collect();
     for j in 1..=40 {
@@ -49,6 +51,7 @@ pub fn speed_grid() -> Vec<f64> {
 /// Solves the ellipse at every (M_R, A1/B1) of `pairs` at precision `p`, for ν given as text,
 /// by the library's sweep (in batches, every core); `tick` is called after each point (for a
 /// progress bar). The first point that fails fails the whole.
+/// Solves (33) at each point, each k and e within its own bound (as [`crate::solve_ellipse`]).
 pub fn solve_all<T: Real + Send + Sync>(
     nu: &str,
     pairs: &[(f64, f64)],
@@ -92,6 +95,7 @@ pub fn solve_all<T: Real + Send + Sync>(
 }
 
 /// The two charts: e against A1/B1 (one line per M_R) and e against M_R (one line per A1/B1).
+/// Draws the solutions of (33) (Fig. 2 of the paper); no arithmetic beyond plotting.
 pub fn charts(nu: &str, by_ratio: &[Point], by_speed: &[Point]) -> Vec<(String, String)> {
     let mut c1 = Chart::new(
         format!("Eccentricity of the contact ellipse against A1/B1 (ν = {nu}), after the paper's Fig. 2"),

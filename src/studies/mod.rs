@@ -16,6 +16,7 @@ use std::path::Path;
 use std::time::Instant;
 
 /// Writes `rows` under a header line as CSV to `path`, creating parent directories.
+/// Implements no equation; writes the values as given.
 pub fn write_csv(path: &Path, header: &[&str], rows: &[Vec<String>]) -> std::io::Result<()> {
     if let Some(dir) = path.parent() {
         std::fs::create_dir_all(dir)?;
@@ -31,6 +32,7 @@ pub fn write_csv(path: &Path, header: &[&str], rows: &[Vec<String>]) -> std::io:
 /// Writes text (an SVG chart, a Markdown table) to `path`, creating parent directories. A
 /// chart with a series that has no point to draw is refused (an error naming the file and the
 /// series): a figure never silently omits a curve its legend promises.
+/// Implements no equation; writes the text as given.
 pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
     if let Some(i) = text.find(&format!("<!-- {}: ", svg::EMPTY_SERIES)) {
         let label = text[i..].split("-->").next().unwrap_or_default();
@@ -47,6 +49,7 @@ pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
 
 /// Median wall time of `f` in nanoseconds, over enough repetitions to fill about `budget_ms`
 /// milliseconds (at least 3 runs). For the studies' cost axes only; the benches use criterion.
+/// Implements no equation; a median of wall times (noisy on a shared machine).
 pub fn median_ns<R>(budget_ms: f64, mut f: impl FnMut() -> R) -> f64 {
     let t0 = Instant::now();
     std::hint::black_box(f());

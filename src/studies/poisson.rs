@@ -29,6 +29,7 @@ pub struct Point {
 }
 
 /// ν grid: −0.95 … 0.5 (step 0.05), plus −0.99.
+/// The ν of (44)–(45) for the study of section 7's remark; exact binary values.
 pub fn nu_grid() -> Vec<f64> {
     let mut v = vec![-0.99];
     // Multiples of 1/20 formed exactly as j/20, so that 0.2 and 0.5 are the f64 nearest them.
@@ -38,6 +39,7 @@ pub fn nu_grid() -> Vec<f64> {
 /// Speeds.
 pub const SPEEDS: [f64; 10] = [0.0, 0.2, 0.4, 0.6, 0.8, 0.9, 0.95, 0.98, 0.99, 0.999];
 /// Curvature ratios: 0.01 … 1, log-spaced.
+/// The A1/B1 of (33); exact binary values.
 pub fn ratio_grid() -> Vec<f64> {
     (0..=16)
         .map(|j| 10f64.powf(-2.0 + 2.0 * j as f64 / 16.0))
@@ -46,6 +48,7 @@ pub fn ratio_grid() -> Vec<f64> {
 
 /// Solves every (ν, M_R, A1/B1) of the grids at f64 (P = μ = R1 = 1, R2 = A1/B1) by the
 /// library's sweep, in batches (every core); `tick` after each point.
+/// Solves (26)–(33) at every point, each within its own bound.
 pub fn run(mut tick: impl FnMut()) -> moving_hertz::Result<Vec<Point>> {
     let mut problems = Vec::new();
     let mut at = Vec::new();
@@ -110,6 +113,8 @@ pub enum Deviation {
 
 /// The largest relative deviation from ν = 0.2 of a quantity, over the ν in `range`, at each
 /// (M_R, A1/B1).
+/// The ν-dependence remarked on in section 7; relative deviations to a few ε of the solutions' own
+/// bounds.
 pub fn spread(
     points: &[Point],
     range: (f64, f64),
@@ -149,6 +154,7 @@ pub fn spread(
 
 /// Charts: the ν-spread of e, k and a against M_R (one line per A1/B1), for 0 ≤ ν ≤ 1/2 and for
 /// the whole range; and a heat map of the spread of e over (M_R, A1/B1).
+/// Draws the spreads of section 7's remark; no arithmetic beyond plotting.
 pub fn charts(points: &[Point]) -> Vec<(String, String)> {
     let mut out = Vec::new();
     let quantities: [(&str, &str, Deviation, fn(&Point) -> f64); 3] = [

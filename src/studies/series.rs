@@ -28,6 +28,7 @@ use rug::Float;
 // ---------------------------------------------------------------------------------------------
 
 /// The speeds of the terms study: j/16 for j = 0 … 15 and 1 − 2^-k for k = 5 … 10 (dyadic).
+/// The M_R of (35)–(37); exact dyadic values.
 pub fn speed_grid() -> Vec<f64> {
     let mut v: Vec<f64> = (0..16).map(|j| j as f64 / 16.0).collect();
     v.extend((5..=10).map(|k| 1.0 - 2f64.powi(-k)));
@@ -36,6 +37,7 @@ pub fn speed_grid() -> Vec<f64> {
 
 /// The targets of the terms study and the precision each is run at: the lowest precision whose
 /// ε is below the target.
+/// Tolerances for (37); exact.
 pub fn targets() -> Vec<(f64, Precision)> {
     let mp = |b: u32| Precision::Mpfr(MpPrec::clamped(b));
     vec![
@@ -133,6 +135,7 @@ fn terms_at<T: Real>(
 
 /// Runs the terms study over `speeds` (see [`speed_grid`]) for every target of [`targets`],
 /// timing each evaluation for about `budget_ms` ms.
+/// Measures the terms of (37) each tolerance needs, and their cost.
 pub fn terms_study(speeds: &[f64], budget_ms: f64) -> Result<Vec<TermsRow>> {
     let mut out = Vec::new();
     for &mr in speeds {
@@ -150,6 +153,7 @@ fn series_label(target: f64, prec: Precision) -> String {
 }
 
 /// Charts of the terms study: terms needed and time per evaluation against 1 − M_R (log-log).
+/// Draws the terms of (37); no arithmetic beyond plotting.
 pub fn terms_charts(rows: &[TermsRow]) -> Vec<(String, String)> {
     let mut terms = Chart::new(
         "Series (37): terms needed for I1, I2 (ν = 1/4, k = 1/2)",
@@ -216,6 +220,7 @@ pub fn parasitic_root(mc: f64) -> f64 {
 }
 
 /// Predicted growth of the forward recursion's relative error: log₂ max(1, |k²/e²|) bits per step.
+/// The growth rate of the forward recursion (40) (docs/series.md); an `f64` estimate.
 pub fn predicted_bits_per_step(mc: f64) -> f64 {
     parasitic_root(mc).log2().max(0.0)
 }
@@ -368,6 +373,7 @@ fn slope(pts: &[(f64, f64)]) -> f64 {
 }
 
 /// The precisions of the recursion study.
+/// For the study of (40); exact.
 pub fn recursion_precisions() -> Vec<Precision> {
     vec![
         Precision::F64,
@@ -379,6 +385,8 @@ pub fn recursion_precisions() -> Vec<Precision> {
 
 /// Runs the forward study for every k² of [`FORWARD_MC`] at every precision of
 /// [`recursion_precisions`]: sampled errors and growth summaries.
+/// Measures the forward recursion (40) against the exact form α_n K + β_n E of (42) run with
+/// hundreds of guard bits; errors to a few percent.
 pub fn forward_study() -> Result<(Vec<ForwardPoint>, Vec<Growth>)> {
     let mut points = Vec::new();
     let mut growth = Vec::new();
@@ -407,6 +415,7 @@ fn mc_label(mc: f64) -> String {
 
 /// Charts of the forward study: one per precision, relative error of L_n against n (log-log,
 /// errors clipped to [ε/1000, 1000]); and measured against predicted growth.
+/// Draws the errors of (40); no arithmetic beyond plotting.
 pub fn forward_charts(points: &[ForwardPoint], growth: &[Growth]) -> Vec<(String, String)> {
     let mut out = Vec::new();
     for prec in recursion_precisions() {
@@ -487,6 +496,7 @@ pub struct ConditionMap {
 }
 
 /// The n columns of the maps: 1 … 10⁴, 33 log-spaced values.
+/// The n of (38)–(41); exact.
 pub fn map_columns() -> Vec<usize> {
     let mut v: Vec<usize> = (0..=32)
         .map(|j| 10f64.powf(j as f64 / 8.0).round() as usize)
@@ -497,6 +507,7 @@ pub fn map_columns() -> Vec<usize> {
 
 /// Rows: e = 0.02 … 0.98 (step 0.024) for `k_side = false`; k − 1 = 10^(j/6) for
 /// j = −18 … 18 (k from 1.001 to 1001) for `k_side = true`.
+/// The e, k of (41); `f64` values.
 pub fn map_rows(k_side: bool) -> Vec<f64> {
     if k_side {
         (-18..=18).map(|j| 10f64.powf(j as f64 / 6.0)).collect()
@@ -506,6 +517,7 @@ pub fn map_rows(k_side: bool) -> Vec<f64> {
 }
 
 /// Computes the map over `map_rows(k_side)` × [`map_columns`] at 64-bit MPFR.
+/// The condition of (40)–(42) in the K, E basis ([`crate::routes::moments::ke_condition_bits`]).
 pub fn condition_map(k_side: bool) -> Result<ConditionMap> {
     let p = MpPrec::clamped(64);
     let params = map_rows(k_side);
@@ -533,6 +545,7 @@ pub fn condition_map(k_side: bool) -> Result<ConditionMap> {
 }
 
 /// The heat map of bits lost in L_n (colour capped at 256 bits).
+/// Draws the condition of (40)–(42); no arithmetic beyond plotting.
 pub fn condition_chart(map: &ConditionMap, k_side: bool) -> (String, String) {
     let h = Heatmap {
         title: if k_side {

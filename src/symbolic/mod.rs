@@ -104,6 +104,7 @@ pub fn printed_f2() -> RatFunc {
 ///
 /// Errors: [`Error::NotFinite`] for a non-finite `x`, [`Error::Domain`] where the denominator
 /// vanishes.
+/// Evaluates the exact forms of (36) and (40); correctly rounded for MPFR, within an ulp otherwise.
 pub fn eval_real<T: Real>(f: &RatFunc, x: &T) -> Result<T> {
     crate::scalar::check_finite("x (symbolic evaluation)", x)?;
     let p = x.prec();
