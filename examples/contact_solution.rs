@@ -21,7 +21,7 @@ fn solve<T: Real>(p: T::Prec) -> Result<ContactSolution<T>> {
     problem.solve(&Options::default())
 }
 
-fn main() -> Result<()> {
+pub fn main() -> Result<()> {
     let lo = solve::<f64>(())?;
     let hi = solve::<Mp>(MpPrec::new(256)?)?;
     println!("semi-axis along the motion  a  = {} m", lo.a);

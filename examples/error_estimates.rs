@@ -15,7 +15,7 @@ fn true_error<T: Real>(x: &T, reference: &Mp) -> RelError {
     RelError::of(&((x - reference) / reference))
 }
 
-fn main() -> Result<()> {
+pub fn main() -> Result<()> {
     let p256 = MpPrec::new(256)?;
     let ratio = "0.5"; // A1/B1
     let reference =

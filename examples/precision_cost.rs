@@ -29,7 +29,7 @@ fn time_solve<T: Real>(p: T::Prec) -> Result<(Duration, Duration, String)> {
     Ok((first, warm[warm.len() / 2], k))
 }
 
-fn main() -> Result<()> {
+pub fn main() -> Result<()> {
     let max_bits: u64 = std::env::args()
         .nth(1)
         .and_then(|s| s.parse().ok())

@@ -51,7 +51,7 @@ fn study<T: Real>(label: &str, p: T::Prec) -> Result<()> {
     Ok(())
 }
 
-fn main() -> Result<()> {
+pub fn main() -> Result<()> {
     study::<f64>("f64", ())?;
     study::<Mp>("MPFR 256 bits", MpPrec::new(256)?)?;
     Ok(())

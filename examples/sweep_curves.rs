@@ -8,7 +8,7 @@
 use moving_hertz::prelude::*;
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven};
 
-fn main() -> Result<()> {
+pub fn main() -> Result<()> {
     let x = |v: f64| Dd::from_f64(v, ());
     let ratios: Vec<Dd> = (0..1000)
         .map(|j| x(10f64.powf(-3.0 + 6.0 * j as f64 / 999.0)))
