@@ -28,7 +28,8 @@
 //! Work for a rule of n nodes at p bits: n²/2 fixed-point steps of `O(p/64)` word operations and
 //! `O(n·p/80)` products at falling precision, against `O(n²)` p-bit products (about
 //! log₂(p/53) + 1 passes of the recurrence a node) for Newton on the recurrence at the target
-//! precision (`reference_build`); `benches/precision_scaling.rs` measures both. Rules are built
+//! precision (`reference_build`); `benches/precision_scaling.rs` measures both. The nodes are
+//! independent of one another and are built in parallel on `rayon`'s pool. Rules are built
 //! once per (n, precision) and kept (`raw_rule`); a rule built at a higher precision is
 //! rounded down for a lower one.
 //!
@@ -45,6 +46,7 @@ use crate::error::{Error, Result};
 use crate::scalar::FieldOps;
 use crate::scalar::{short, Dd, Field, Mp, MpPrec, Real};
 use rug::{Assign, Float, Integer};
+use rayon::prelude::*;
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
@@ -509,36 +511,47 @@ fn node_dd(n: usize, x: f64) -> Dd {
 }
 
 /// The rule's nonnegative nodes (decreasing) and weights at `raw` bits, by the three stages of
-/// the module docs.
+/// the module docs. The nodes are independent of one another: above [`PARALLEL_NODES`] they are
+/// built in parallel on `rayon`'s pool (the same values whatever the number of threads).
 pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
     let m = n.div_ceil(2);
     let refine = Refine::new(n, raw);
-    let mut nodes = Vec::with_capacity(m);
-    let mut weights = Vec::with_capacity(m);
-    for k in 1..=m {
-        let xn = if 2 * k - 1 == n {
-            Integer::new()
-        } else {
-            let xd = node_dd(n, node_f64(n, k)?);
-            if !(xd.is_positive() && xd < Dd::one(())) {
-                return Err(Error::NoConvergence {
-                    what: "Gauss-Legendre node (double-double Newton left (0, 1))",
-                    iterations: k,
-                    reached: short(&xd),
-                });
-            }
-            let f = xd.to_float(2 * XBITS) << XBITS;
-            f.to_integer().unwrap_or_default()
-        };
-        let (x, w) = refine.node(&xn, raw)?;
-        nodes.push(x);
-        weights.push(w);
-    }
+    let one = |k: usize| build_node(&refine, n, k, raw);
+    let pairs: Vec<(Float, Float)> = if m >= PARALLEL_NODES {
+        (1..=m).into_par_iter().map(one).collect::<Result<_>>()?
+    } else {
+        (1..=m).map(one).collect::<Result<_>>()?
+    };
+    let (nodes, weights) = pairs.into_iter().unzip();
     Ok(RawRule {
         bits: raw,
         nodes,
         weights,
     })
+}
+
+/// Rules with at least this many nonnegative nodes are built in parallel (below, a node costs
+/// less than handing it to another thread).
+const PARALLEL_NODES: usize = 16;
+
+/// The k-th nonnegative node (k = 1 the largest) of the n-point rule and its weight at `raw`
+/// bits.
+fn build_node(refine: &Refine, n: usize, k: usize, raw: u32) -> Result<(Float, Float)> {
+    let xn = if 2 * k - 1 == n {
+        Integer::new()
+    } else {
+        let xd = node_dd(n, node_f64(n, k)?);
+        if !(xd.is_positive() && xd < Dd::one(())) {
+            return Err(Error::NoConvergence {
+                what: "Gauss-Legendre node (double-double Newton left (0, 1))",
+                iterations: k,
+                reached: short(&xd),
+            });
+        }
+        let f = xd.to_float(2 * XBITS) << XBITS;
+        f.to_integer().unwrap_or_default()
+    };
+    refine.node(&xn, raw)
 }
 
 // ---------------------------------------------------------------------------------------------
