@@ -471,3 +471,73 @@ fn fig2_names_files_after_the_trimmed_nu() {
         "{figures:?}"
     );
 }
+
+/// Issue 20 item 4: a Poisson's ratio valid at the working precision but −1 when rounded to the
+/// ladder's `f64` stage is solved, at 256 bits and at double-double, by `ellipse` and `contact`;
+/// the 256-bit k agrees with the 512-bit solve of the same typed ν within its bound.
+#[test]
+fn a_nu_that_rounds_to_minus_one_at_f64_is_solved() {
+    let nu = "-0.99999999999999999999999";
+    let ell = |p: &str| {
+        json(&[
+            "ellipse",
+            "--nu",
+            nu,
+            "--speed",
+            "0.5",
+            "--ratio",
+            "0.5",
+            "--precision",
+            p,
+            "--json",
+        ])
+    };
+    let (lo, hi) = (ell("256"), ell("512"));
+    let k = |v: &serde_json::Value| Float::with_val(600, Float::parse(field(v, "k")).unwrap());
+    let err = ((k(&lo) - k(&hi)) / k(&hi)).abs().to_f64();
+    let bound: f64 = field(&lo, "k_error").parse().unwrap();
+    assert!(err <= bound, "k at 256 bits off by {err:e} > {bound:e}");
+    assert_eq!(field(&ell("dd"), "precision"), "dd");
+    let c = json(&[
+        "contact",
+        "--nu",
+        nu,
+        "--speed",
+        "0.5",
+        "--r-along",
+        "1",
+        "--r-across",
+        "2",
+        "--load",
+        "1",
+        "--shear-modulus",
+        "1",
+        "--precision",
+        "256",
+        "--json",
+    ]);
+    assert!(c.get("a").is_some(), "{c}");
+}
+
+/// Issue 20 item 8: a method's range of k is checked before any work — the adaptive subtracted
+/// route at k = 8335 is refused as a usage error naming `--k` and the range.
+#[test]
+fn a_methods_range_of_k_is_checked_first() {
+    refused(
+        &[
+            "integrals",
+            "--nu",
+            "0.2",
+            "--speed",
+            "0.5",
+            "--k",
+            "8335",
+            "--tol",
+            "1e-290",
+            "--method",
+            "adaptive-subtracted",
+        ],
+        2,
+        &["'--k'", "8335", "(0, 1]", "adaptive-subtracted"],
+    );
+}

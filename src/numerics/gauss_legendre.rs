@@ -45,8 +45,8 @@
 use crate::error::{Error, Result};
 use crate::scalar::FieldOps;
 use crate::scalar::{short, Dd, Field, Mp, MpPrec, Real};
-use rug::{Assign, Float, Integer};
 use rayon::prelude::*;
+use rug::{Assign, Float, Integer};
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
