@@ -254,8 +254,7 @@ struct Place {
 }
 
 /// The roots a trail keeps: a cubic through four roots starts most points of a smooth curve
-/// close enough for one evaluation (1.09 a point on the `sweep` bench's f64 curve, against 1.83
-/// with a quadratic through three).
+/// close enough for one evaluation (the evidence: docs/calibration.md).
 const TRAIL: usize = 4;
 
 /// The last roots of a block (at most [`TRAIL`]), for the next point's start.
