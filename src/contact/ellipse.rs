@@ -1146,7 +1146,7 @@ fn finish<T: Real>(
     let df = k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1);
     let prop = ci.error_estimate.clone().mul_i64(2) / df.abs().max_of(T::from_ratio(1, 4, p));
     // k = e^λ inherits λ's rounding, half an ulp of λ, as a relative error up to |λ|ε/2
-    // (30ε measured at k ~ 10⁻⁸⁰ at `f64`): |λ|ε covers it with exp's own, 4ε the rest.
+    // (docs/calibration.md): |λ|ε covers it with exp's own, 4ε the rest.
     let rounding = T::epsilon(p) * &(lam.abs() + &T::from_i64(4, p));
     Shape {
         error_estimate: prop + last_step.mul_i64(2) + &rounding,
