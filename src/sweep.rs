@@ -190,9 +190,9 @@ impl<T: Real> EllipsePoint<T> {
 /// stays) and the trail of the block's roots for the next start.
 struct Run<'o, T: Real + 'static> {
     opts: &'o Options<T>,
-    solver: Option<ShapeSolver<T>>,
-    /// ν and ln(1 − M_R) of the solver's speed, for the trail's places.
-    here: (f64, f64),
+    /// The solver of the current speed, with ν and ln(1 − M_R) of that speed for the trail's
+    /// places.
+    solver: Option<(ShapeSolver<T>, f64, f64)>,
     trail: Trail,
 }
 
@@ -201,7 +201,6 @@ impl<'o, T: Real> Run<'o, T> {
         Run {
             opts,
             solver: None,
-            here: (0.0, 0.0),
             trail: Trail::default(),
         }
     }
@@ -214,21 +213,21 @@ impl<'o, T: Real> Run<'o, T> {
         if !self
             .solver
             .as_ref()
-            .is_some_and(|s| same_speed(s.speed(), speed))
+            .is_some_and(|(s, _, _)| same_speed(s.speed(), speed))
         {
             self.solver = None;
         }
-        let solver = match &mut self.solver {
+        let (solver, nu, ln_gap) = match &mut self.solver {
             Some(s) => s,
-            empty => {
-                let nu = speed.material().nu().to_f64();
-                self.here = (nu, speed.gap().to_f64().ln());
-                empty.insert(ShapeSolver::new(speed, self.opts.method)?)
-            }
+            empty => empty.insert((
+                ShapeSolver::new(speed, self.opts.method)?,
+                speed.material().nu().to_f64(),
+                speed.gap().to_f64().ln(),
+            )),
         };
         let at = Place {
-            nu: self.here.0,
-            ln_gap: self.here.1,
+            nu: *nu,
+            ln_gap: *ln_gap,
             ln_ratio: ratio.to_f64().ln(),
         };
         let seed = self.opts.seed.as_ref().map(|s| s.to_f64());

@@ -30,7 +30,7 @@ pub(crate) fn sinh_octave<T: Real>(rule: &FastRule<T>, k: &T) -> Option<usize> {
     if bits <= 106 {
         return None;
     }
-    if *k < T::from_ratio(1, 1 << 40, rule.prec) {
+    if *k < T::one(rule.prec).mul_pow2(1 - OCTAVES as i32) {
         return None;
     }
     let j = octave(k);
