@@ -29,7 +29,9 @@
 //! `O(n·p/80)` products at falling precision, against `O(n²)` p-bit products (about
 //! log₂(p/53) + 1 passes of the recurrence a node) for Newton on the recurrence at the target
 //! precision (`reference_build`); `benches/precision_scaling.rs` measures both. The nodes are
-//! independent of one another and are built in parallel on `rayon`'s pool. Rules are built
+//! independent of one another and are built on scoped threads of their own (not on `rayon`'s
+//! pool: a rule is often built inside a `OnceLock` initializer, and a pool worker waiting there
+//! for its node jobs could steal a job that waits on the same `OnceLock`). Rules are built
 //! once per (n, precision) and kept (`raw_rule`); a rule built at a higher precision is
 //! rounded down for a lower one.
 //!
@@ -45,7 +47,6 @@
 use crate::error::{Error, Result};
 use crate::scalar::FieldOps;
 use crate::scalar::{short, Dd, Field, Mp, MpPrec, Real};
-use rayon::prelude::*;
 use rug::{Assign, Float, Integer};
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
@@ -512,15 +513,18 @@ fn node_dd(n: usize, x: f64) -> Dd {
 
 /// The rule's nonnegative nodes (decreasing) and weights at `raw` bits, by the three stages of
 /// the module docs. The nodes are independent of one another: above [`PARALLEL_NODES`] they are
-/// built in parallel on `rayon`'s pool (the same values whatever the number of threads).
+/// built on scoped threads, one contiguous share each (the same values whatever the number of
+/// threads).
 pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
     let m = n.div_ceil(2);
     let refine = Refine::new(n, raw);
     let one = |k: usize| build_node(&refine, n, k, raw);
-    let pairs: Vec<(Float, Float)> = if m >= PARALLEL_NODES {
-        (1..=m).into_par_iter().map(one).collect::<Result<_>>()?
+    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
+    let threads = cores.min(m / PARALLEL_NODES).max(1);
+    let pairs = if threads > 1 {
+        on_threads(m, threads, &one)?
     } else {
-        (1..=m).map(one).collect::<Result<_>>()?
+        (1..=m).map(one).collect::<Result<Vec<_>>>()?
     };
     let (nodes, weights) = pairs.into_iter().unzip();
     Ok(RawRule {
@@ -530,9 +534,50 @@ pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
     })
 }
 
-/// Rules with at least this many nonnegative nodes are built in parallel (below, a node costs
-/// less than handing it to another thread).
+/// The error of a share whose thread stopped without a result (it cannot: nothing in a node's
+/// construction panics).
+fn stopped() -> Error {
+    Error::NoConvergence {
+        what: "Gauss-Legendre nodes (a construction thread stopped)",
+        iterations: 0,
+        reached: "none".into(),
+    }
+}
+
+/// Rules with at least this many nonnegative nodes a thread are built in parallel (below, a
+/// node costs less than starting a thread).
 const PARALLEL_NODES: usize = 16;
+
+/// `one(1..=m)` in order, on `threads` scoped threads taking contiguous shares; a share whose
+/// thread cannot be started runs on the calling thread.
+fn on_threads<R: Send>(
+    m: usize,
+    threads: usize,
+    one: &(impl Fn(usize) -> Result<R> + Sync),
+) -> Result<Vec<R>> {
+    let share = m.div_ceil(threads);
+    let range = |t: usize| (t * share + 1)..=((t + 1) * share).min(m);
+    let run = move |t: usize| range(t).map(one).collect::<Result<Vec<R>>>();
+    std::thread::scope(|s| {
+        let spawned: Vec<_> = (1..threads)
+            .map(|t| {
+                std::thread::Builder::new()
+                    .spawn_scoped(s, move || run(t))
+                    .map_err(|_| t)
+            })
+            .collect();
+        let mut out = run(0)?;
+        out.reserve(m - out.len());
+        for h in spawned {
+            let part = match h {
+                Ok(h) => h.join().unwrap_or_else(|_| Err(stopped()))?,
+                Err(t) => run(t)?,
+            };
+            out.extend(part);
+        }
+        Ok(out)
+    })
+}
 
 /// The k-th nonnegative node (k = 1 the largest) of the n-point rule and its weight at `raw`
 /// bits.
