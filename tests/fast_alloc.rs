@@ -65,3 +65,23 @@ fn no_allocation_per_call_at_f64_and_double_double() {
     no_allocation::<f64>(());
     no_allocation::<Dd>(());
 }
+
+/// A warm ellipse solve (33) allocates its fixed-rule set-ups and nothing per evaluation or for
+/// publishing its result: one box at `f64`; at double-double one box per stage of the precision
+/// ladder (f64, double-double) and one small allocation of the ladder (48 bytes).
+#[test]
+fn a_warm_ellipse_solve_allocates_only_its_set_ups() {
+    fn count<T: Real>(p: T::Prec) -> usize {
+        use moving_hertz::prelude::*;
+        let mat = Material::new(T::from_ratio(1, 5, p)).unwrap();
+        let speed = mat.speed(T::from_ratio(9, 10, p)).unwrap();
+        let ratio = T::from_ratio(1, 2, p);
+        let opts = Options::default();
+        moving_hertz::solve_ellipse(&speed, &ratio, &opts).unwrap();
+        let before = allocations();
+        moving_hertz::solve_ellipse(&speed, &ratio, &opts).unwrap();
+        allocations() - before
+    }
+    assert_eq!(count::<f64>(()), 1);
+    assert!(count::<Dd>(()) <= 3);
+}

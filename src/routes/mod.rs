@@ -362,31 +362,31 @@ impl<T: Real> Evaluation<T> {
     /// its relative accuracy, e.g. dI1/dk ~ k⁻⁴ at k ≳ 10⁸⁰ in `f64`).
     fn underflowed(&self) -> Option<(&'static str, String)> {
         let tiny = T::min_positive(self.i1.prec());
-        let mut values = vec![("I1", &self.i1), ("I2", &self.i2)];
-        if let Some([a, b]) = &self.dk {
-            values.extend([("dI1/dk", a), ("dI2/dk", b)]);
-        }
-        if let Some(j) = &self.j0 {
-            values.push(("J0", j));
-        }
-        values
-            .into_iter()
+        self.named_values()
             .find(|(_, v)| (*v).clone().abs() < tiny)
             .map(|(name, v)| (name, short(v)))
+    }
+
+    /// The returned values with their names: I1, I2, then the k-derivatives and J0 when
+    /// present (without allocating: this runs on every evaluation that is published).
+    fn named_values(&self) -> impl Iterator<Item = (&'static str, &T)> {
+        let dk = self.dk.as_ref();
+        [
+            ("I1", Some(&self.i1)),
+            ("I2", Some(&self.i2)),
+            ("dI1/dk", dk.map(|d| &d[0])),
+            ("dI2/dk", dk.map(|d| &d[1])),
+            ("J0", self.j0.as_ref()),
+        ]
+        .into_iter()
+        .filter_map(|(name, v)| Some((name, v?)))
     }
 
     /// The typed error for a value or estimate that is not finite.
     #[cold]
     fn not_finite(&self) -> Error {
         let what = self.route.label();
-        let mut values = vec![("I1", &self.i1), ("I2", &self.i2)];
-        if let Some([a, b]) = &self.dk {
-            values.extend([("dI1/dk", a), ("dI2/dk", b)]);
-        }
-        if let Some(j) = &self.j0 {
-            values.push(("J0", j));
-        }
-        match values.into_iter().find(|(_, v)| !v.is_finite()) {
+        match self.named_values().find(|(_, v)| !v.is_finite()) {
             Some((name, v)) => Error::NoConvergence {
                 what,
                 iterations: self.work,
