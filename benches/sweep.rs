@@ -5,6 +5,12 @@
 //! ≤ 0.5× at double-double, ≤ 0.6× at 256 bits; two threads ≤ 0.55× one thread (the ratios are
 //! computed by tools/gen_performance.py from one run).
 //!
+//! Each of these runs its timing loop inside `ThreadPool::install` of a pool of that many
+//! threads, the independent solves on the one-thread pool: every measured call runs on a pool
+//! thread, and none pays a hand-off from the caller's thread. What that hand-off adds to a
+//! sweep called from outside the pool, once per call, is `sweep_1_thread_from_outside`
+//! (`install` around each call).
+//!
 //! Run: `cargo bench --bench sweep -- --warm-up-time 1 --measurement-time 5`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
@@ -27,27 +33,30 @@ fn run<T: Real + Send + Sync>(c: &mut Criterion, label: &str, p: T::Prec) {
         .and_then(|m| m.speed(x(0.9)))
         .expect("speed");
     let opts = Options::default();
-    g.bench_function("independent", |b| {
-        b.iter(|| {
-            ratios
-                .iter()
-                .map(|r| solve_ellipse(black_box(&speed), r, &opts).is_ok())
-                .count()
-        })
-    });
-    for threads in [1, 2] {
-        let pool = rayon::ThreadPoolBuilder::new()
+    let pools = [1, 2].map(|threads| {
+        rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
-            .expect("thread pool");
-        let name = format!(
-            "sweep_{threads}_thread{}",
-            if threads > 1 { "s" } else { "" }
-        );
+            .expect("thread pool")
+    });
+    g.bench_function("independent", |b| {
+        pools[0].install(|| {
+            b.iter(|| {
+                ratios
+                    .iter()
+                    .filter(|r| solve_ellipse(black_box(&speed), r, &opts).is_ok())
+                    .count()
+            })
+        })
+    });
+    for (pool, name) in pools.iter().zip(["sweep_1_thread", "sweep_2_threads"]) {
         g.bench_function(name, |b| {
-            b.iter(|| pool.install(|| sweep::ellipses(black_box(&points), &opts).len()))
+            pool.install(|| b.iter(|| sweep::ellipses(black_box(&points), &opts).len()))
         });
     }
+    g.bench_function("sweep_1_thread_from_outside", |b| {
+        b.iter(|| pools[0].install(|| sweep::ellipses(black_box(&points), &opts).len()))
+    });
     g.finish();
 }
 

@@ -37,7 +37,7 @@
 use crate::contact::{
     check_ratio, checked_options, ContactProblem, ContactSolution, Ellipse, Options, ShapeSolver,
 };
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::physics::{Material, Speed};
 use crate::routes::{Evaluator, IntegralOptions, Integrals};
 use crate::scalar::Real;
@@ -101,12 +101,11 @@ pub fn ellipses<T>(points: &[EllipsePoint<T>], opts: &Options<T>) -> Vec<Result<
 where
     T: Real + Send + Sync,
 {
-    in_blocks(points, |block| {
+    in_blocks(points, |block, out| {
         let mut run = Run::new(opts);
         let mut material: Option<(&T, Result<Material<T>>)> = None;
         let mut last: Option<(&EllipsePoint<T>, Result<Speed<T>>)> = None;
-        let mut out = Vec::with_capacity(block.len());
-        for pt in block {
+        for (pt, slot) in block.iter().zip(out) {
             let speed = match last {
                 Some((prev, ref sp)) if prev.nu == pt.nu && prev.speed == pt.speed => sp.clone(),
                 _ => {
@@ -120,10 +119,9 @@ where
                     }
                 }
             };
-            out.push(speed.clone().and_then(|sp| run.solve(&sp, &pt.ratio)));
+            *slot = speed.clone().and_then(|sp| run.solve(&sp, &pt.ratio));
             last = Some((pt, speed));
         }
-        out
     })
 }
 
@@ -138,12 +136,11 @@ pub fn contacts<T>(
 where
     T: Real + Send + Sync,
 {
-    in_blocks(problems, |block| {
+    in_blocks(problems, |block, out| {
         let mut run = Run::new(opts);
-        block
-            .iter()
-            .map(|pb| pb.solve_by(|speed, ratio| run.solve(speed, ratio)))
-            .collect()
+        for (pb, slot) in block.iter().zip(out) {
+            *slot = pb.solve_by(|speed, ratio| run.solve(speed, ratio));
+        }
     })
 }
 
@@ -156,23 +153,38 @@ pub fn integrals<T>(speed: &Speed<T>, ks: &[T], opts: &IntegralOptions) -> Vec<R
 where
     T: Real + Send + Sync,
 {
-    in_blocks(ks, |block| match Evaluator::new(speed, *opts) {
-        Ok(ev) => block.iter().map(|k| ev.at(k)).collect(),
-        Err(e) => block.iter().map(|_| Err(e.clone())).collect(),
+    in_blocks(ks, |block, out| {
+        let ev = Evaluator::new(speed, *opts);
+        for (k, slot) in block.iter().zip(out) {
+            *slot = ev.as_ref().map_err(Error::clone).and_then(|ev| ev.at(k));
+        }
     })
 }
 
-/// Runs `solve_block` on the blocks of `items` in parallel and concatenates the results.
+/// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
+/// share of the output (no copy of the results after the solves). Each block is a job of its
+/// own (`with_max_len(1)`): blocks differ in cost (near the Rayleigh speed, at large k), and
+/// rayon's default splitting into a few jobs a thread left one thread idle at the end.
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
-    solve_block: impl Fn(&[I]) -> Vec<R> + Sync + Send,
-) -> Vec<R> {
-    let blocks: Vec<Vec<R>> = items.par_chunks(BLOCK).map(solve_block).collect();
-    let mut out = Vec::with_capacity(items.len());
-    for block in blocks {
-        out.extend(block);
-    }
+    solve_block: impl Fn(&[I], &mut [Result<R>]) + Sync + Send,
+) -> Vec<Result<R>> {
+    let mut out: Vec<Result<R>> = (0..items.len()).map(|_| Err(unsolved())).collect();
+    out.par_chunks_mut(BLOCK)
+        .zip(items.par_chunks(BLOCK))
+        .with_max_len(1)
+        .for_each(|(slots, block)| solve_block(block, slots));
     out
+}
+
+/// The placeholder of a result before its block writes it (every block writes each of its
+/// slots; cheap to make: no allocation).
+fn unsolved() -> Error {
+    Error::NoConvergence {
+        what: "a sweep point (not solved)",
+        iterations: 0,
+        reached: String::new(),
+    }
 }
 
 impl<T: Real> EllipsePoint<T> {
