@@ -60,9 +60,7 @@ fn one_cold_start() {
     for (pt, got) in pts.iter().zip(&swept) {
         let got = got.as_ref().unwrap();
         let want = independent(pt);
-        let d = ((got.k.value.clone() - want.k.value.clone()) / &want.k.value)
-            .abs()
-            .to_f64();
+        let d = ((got.k.value - want.k.value) / want.k.value).abs().to_f64();
         assert!(d <= got.k.error.to_f64() + want.k.error.to_f64(), "{pt:?}");
     }
 }
