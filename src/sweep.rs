@@ -4,8 +4,10 @@
 //! fails the others).
 //!
 //! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points; the
-//! blocks run in parallel (with `rayon`, on its global pool or the pool the caller installs), the
-//! points of a block one after another. Within a block, consecutive points at the same speed
+//! blocks run in parallel (with `rayon`, each block a job of its own, on its global pool or the
+//! pool the caller installs), the points of a block one after another. A call from a thread
+//! outside the pool hands the work to the pool's threads and waits; the cost of that hand-off,
+//! once per call, is the `sweep` bench's `sweep_1_thread_from_outside` (docs/performance.md). Within a block, consecutive points at the same speed
 //! share the fixed rules' set-up (the Green's function at every node, at each stage of the
 //! precision ladder), and each root starts from its neighbours' (continuation): the lowest stage
 //! of the ladder starts from the extrapolation, in ln k against ln(A1/B1) (or against ln(1 − M_R)
