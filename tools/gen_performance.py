@@ -87,6 +87,12 @@ FAMILIES = [
     ("physics", "The physics (`benches/physics.rs`)",
      "The Rayleigh roots by the default (polished) method and the two closed forms, R(V) of (6), "
      "Γ(V) of (5) and G(V) of (45); ν = 0.25, M_R = 0.9."),
+    ("sweep", "Sweeps (`benches/sweep.rs`)",
+     "A 1,000-point A1/B1 curve (10⁻³ … 10³, log-spaced) at ν = 0.25, M_R = 0.9: one "
+     "`solve_ellipse` a point (`independent`), `sweep::ellipses` on one and on two threads; each "
+     "timing loop runs on a thread of a pool of that size. `sweep_1_thread_from_outside` calls the "
+     "one-thread sweep from the bench's own thread (`install` around each call): the difference "
+     "from `sweep_1_thread` is the hand-off to the pool, once per call."),
     ("elliptic", "Elliptic integrals (`benches/precision_cost.rs`)",
      "Complete and incomplete elliptic integrals (parameter m; `_mc` from the complementary "
      "parameter)."),
