@@ -68,7 +68,8 @@ fn no_allocation_per_call_at_f64_and_double_double() {
 
 /// A warm ellipse solve (33) allocates its fixed-rule set-ups and nothing per evaluation or for
 /// publishing its result: one box at `f64`; at double-double one box per stage of the precision
-/// ladder (f64, double-double) and one small allocation of the ladder (48 bytes).
+/// ladder (f64, double-double), the double-double set-up's four tables and one small
+/// allocation of the ladder (48 bytes).
 #[test]
 fn a_warm_ellipse_solve_allocates_only_its_set_ups() {
     fn count<T: Real>(p: T::Prec) -> usize {
@@ -83,5 +84,5 @@ fn a_warm_ellipse_solve_allocates_only_its_set_ups() {
         allocations() - before
     }
     assert_eq!(count::<f64>(()), 1);
-    assert!(count::<Dd>(()) <= 3);
+    assert!(count::<Dd>(()) <= 7);
 }

@@ -592,12 +592,14 @@ impl<T: Real> TaylorRight<T> {
     }
 }
 
-/// Values a [`FastSetup`] holds inline per table at `f64` and double-double, sized for the
-/// default rules there ([`RuleSizes::for_bits`]: at most 44 left nodes, 26 right nodes and 14
-/// Taylor terms), so that a set-up per solve allocates nothing and moves little.
-const SETUP_INLINE: usize = 44;
-const RIGHT_INLINE: usize = 26;
-const TAYLOR_INLINE: usize = 14;
+/// Values a [`FastSetup`] holds inline per table, sized for the default `f64` rule
+/// ([`RuleSizes::for_bits`]: 20 left nodes, 12 right nodes, 8 Taylor terms), so that an `f64`
+/// set-up (one per solve) allocates nothing beyond its box and moves little. Double-double's
+/// tables (44, 26, 14) are on the heap: four allocations cost that set-up less than moving
+/// tables sized for them would cost every `f64` set-up (docs/calibration.md).
+const SETUP_INLINE: usize = 20;
+const RIGHT_INLINE: usize = 12;
+const TAYLOR_INLINE: usize = 8;
 
 impl<T: Real> std::fmt::Debug for RuleRef<T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
