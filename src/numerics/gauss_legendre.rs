@@ -513,7 +513,7 @@ fn node_dd(n: usize, x: f64) -> Dd {
 
 /// The rule's nonnegative nodes (decreasing) and weights at `raw` bits, by the three stages of
 /// the module docs. The nodes are independent of one another: above [`PARALLEL_NODES`] they are
-/// built on scoped threads, one contiguous share each (the same values whatever the number of
+/// built on scoped threads, in interleaved shares (the same values whatever the number of
 /// threads).
 pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
     let m = n.div_ceil(2);
@@ -548,17 +548,22 @@ fn stopped() -> Error {
 /// node costs less than starting a thread).
 const PARALLEL_NODES: usize = 16;
 
-/// `one(1..=m)` in order, on `threads` scoped threads taking contiguous shares; a share whose
-/// thread cannot be started runs on the calling thread.
+/// `one(1..=m)` in order, on `threads` scoped threads, thread t taking k ≡ t + 1 (mod
+/// `threads`): interleaved shares, so that each thread gets nodes from every part of [0, 1]
+/// (their costs differ between the ends and the middle). A share whose thread cannot be
+/// started runs on the calling thread.
 fn on_threads<R: Send>(
     m: usize,
     threads: usize,
     one: &(impl Fn(usize) -> Result<R> + Sync),
 ) -> Result<Vec<R>> {
-    let share = m.div_ceil(threads);
-    let range = |t: usize| (t * share + 1)..=((t + 1) * share).min(m);
-    let run = move |t: usize| range(t).map(one).collect::<Result<Vec<R>>>();
-    std::thread::scope(|s| {
+    let run = move |t: usize| {
+        (t + 1..=m)
+            .step_by(threads)
+            .map(one)
+            .collect::<Result<Vec<R>>>()
+    };
+    let shares = std::thread::scope(|s| {
         let spawned: Vec<_> = (1..threads)
             .map(|t| {
                 std::thread::Builder::new()
@@ -566,17 +571,17 @@ fn on_threads<R: Send>(
                     .map_err(|_| t)
             })
             .collect();
-        let mut out = run(0)?;
-        out.reserve(m - out.len());
+        let mut shares = vec![run(0)?];
         for h in spawned {
-            let part = match h {
+            shares.push(match h {
                 Ok(h) => h.join().unwrap_or_else(|_| Err(stopped()))?,
                 Err(t) => run(t)?,
-            };
-            out.extend(part);
+            });
         }
-        Ok(out)
-    })
+        Ok::<_, Error>(shares)
+    })?;
+    let mut iters: Vec<_> = shares.into_iter().map(Vec::into_iter).collect();
+    Ok((0..m).filter_map(|k| iters[k % threads].next()).collect())
 }
 
 /// The k-th nonnegative node (k = 1 the largest) of the n-point rule and its weight at `raw`
