@@ -7,8 +7,8 @@
 //! blocks run in parallel (with `rayon`, each block a job of its own, on its global pool or the
 //! pool the caller installs), the points of a block one after another. A call from a thread
 //! outside the pool hands the work to the pool's threads and waits; the cost of that hand-off,
-//! once per call, is the `sweep` bench's `sweep_1_thread_from_outside` (docs/performance.md). Within a block, consecutive points at the same speed
-//! share the fixed rules' set-up (the Green's function at every node, at each stage of the
+//! once per call, is the `sweep` bench's `sweep_1_thread_from_outside` (docs/performance.md).
+//! Within a block, consecutive points at the same speed share the fixed rules' set-up (the Green's function at every node, at each stage of the
 //! precision ladder), and each root starts from its neighbours' (continuation): the lowest stage
 //! of the ladder starts from the extrapolation, in ln k against ln(A1/B1) (or against ln(1 − M_R)
 //! along a curve of speeds at one A1/B1), of up to four earlier roots of the block, and from the
@@ -166,7 +166,8 @@ where
 /// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
 /// share of the output (no copy of the results after the solves). Each block is a job of its
 /// own (`with_max_len(1)`): blocks differ in cost (near the Rayleigh speed, at large k), and
-/// rayon's default splitting into a few jobs a thread left one thread idle at the end.
+/// rayon's default split hands each thread a few large pieces, so that one thread can sit idle
+/// while the other finishes its last piece.
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
     solve_block: impl Fn(&[I], &mut [Result<R>]) + Sync + Send,
