@@ -8,12 +8,13 @@
 //! pool the caller installs), the points of a block one after another. A call from a thread
 //! outside the pool hands the work to the pool's threads and waits; the cost of that hand-off,
 //! once per call, is the `sweep` bench's `sweep_1_thread_from_outside` (docs/performance.md).
-//! Within a block, consecutive points at the same speed share the fixed rules' set-up (the Green's function at every node, at each stage of the
-//! precision ladder), and each root starts from its neighbours' (continuation): the lowest stage
-//! of the ladder starts from the extrapolation, in ln k against ln(A1/B1) (or against ln(1 − M_R)
-//! along a curve of speeds at one A1/B1), of up to four earlier roots of the block, and from the
-//! static ellipse when that does not converge within a few evaluations. The higher stages run as
-//! in [`crate::solve_ellipse`], so that the ladder's accuracy is unchanged.
+//! Within a block, consecutive points at the same speed share the fixed rules' set-up (the
+//! Green's function at every node, at each stage of the precision ladder), and each root starts
+//! from its neighbours' (continuation): the lowest stage of the ladder starts from the
+//! extrapolation, in ln k against ln(A1/B1) (or against ln(1 − M_R) along a curve of speeds at
+//! one A1/B1), of up to four earlier roots of the block, and from the static ellipse when that
+//! does not converge within a few evaluations. The higher stages run as in
+//! [`crate::solve_ellipse`], so that the ladder's accuracy is unchanged.
 //!
 //! **Reproducibility.** A point's result depends only on its block (never on the number of
 //! threads): a sweep gives the same bits on one thread and on many, and a sweep split at
