@@ -221,3 +221,19 @@ fn contacts_and_integrals_as_one_by_one() {
         }
     }
 }
+
+/// Empty inputs give empty results (no block, no work), and a sweep of one point (a block
+/// shorter than [`BLOCK`]) gives that point's result.
+#[test]
+fn empty_and_single_point_sweeps() {
+    let opts = Options::default();
+    let speed = Material::new(0.25).unwrap().speed(0.9).unwrap();
+    assert!(sweep::ellipses::<f64>(&[], &opts).is_empty());
+    assert!(sweep::contacts::<f64>(&[], &opts).is_empty());
+    assert!(sweep::integrals::<f64>(&speed, &[], &IntegralOptions::default()).is_empty());
+    let one = EllipsePoint::grid(&[0.25], &[SpeedGiven::Mr(0.9)], &[0.5]);
+    let swept = sweep::ellipses(&one, &opts);
+    let want = solve_ellipse(&speed, &0.5, &opts).unwrap();
+    assert_eq!(swept.len(), 1);
+    assert!(within(swept[0].as_ref().unwrap(), &want) <= 1.0);
+}
