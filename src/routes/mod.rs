@@ -368,7 +368,7 @@ impl<T: Real> Evaluation<T> {
     }
 
     /// The returned values with their names: I1, I2, then the k-derivatives and J0 when
-    /// present (without allocating: this runs on every evaluation that is published).
+    /// present (without allocating: it is called for every evaluation that is published).
     fn named_values(&self) -> impl Iterator<Item = (&'static str, &T)> {
         let dk = self.dk.as_ref();
         [
