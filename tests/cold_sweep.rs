@@ -9,7 +9,9 @@
 
 use moving_hertz::prelude::*;
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven};
-use moving_hertz::{solve_ellipse, Ellipse};
+
+mod common;
+use common::{independent, within};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
@@ -30,20 +32,6 @@ fn points<T: Real>(p: T::Prec, n: usize) -> Vec<EllipsePoint<T>> {
     EllipsePoint::grid(&[x(0.25)], &speeds, &ratios)
 }
 
-/// The independent solve of one point.
-fn independent<T: Real>(pt: &EllipsePoint<T>) -> Ellipse<T> {
-    let mat = Material::new(pt.nu.clone()).unwrap();
-    let SpeedGiven::Mr(m) = &pt.speed else {
-        panic!("points() gives M_R")
-    };
-    solve_ellipse(
-        &mat.speed(m.clone()).unwrap(),
-        &pt.ratio,
-        &Options::default(),
-    )
-    .unwrap()
-}
-
 /// One cold start: a double-double sweep on the global pool while this thread solves points
 /// of the same sweep on its own; every point Ok and within the bounds of its independent solve.
 #[test]
@@ -53,15 +41,13 @@ fn one_cold_start() {
     let swept = std::thread::scope(|s| {
         let sweeping = s.spawn(|| sweep::ellipses(&pts, &Options::default()));
         pts.iter().step_by(37).for_each(|pt| {
-            independent(pt);
+            independent(pt).unwrap();
         });
         sweeping.join().unwrap()
     });
     for (pt, got) in pts.iter().zip(&swept) {
-        let got = got.as_ref().unwrap();
-        let want = independent(pt);
-        let d = ((got.k.value - want.k.value) / want.k.value).abs().to_f64();
-        assert!(d <= got.k.error.to_f64() + want.k.error.to_f64(), "{pt:?}");
+        let want = independent(pt).unwrap();
+        assert!(within(got.as_ref().unwrap(), &want) <= 1.0, "{pt:?}");
     }
 }
 

@@ -7,6 +7,9 @@ use moving_hertz::prelude::*;
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
 use moving_hertz::{solve_ellipse, Ellipse, Error, Integrals};
 
+mod common;
+use common::{independent, within};
+
 /// ν from −0.9 to 0.5, speeds from rest to 1 − M_R = 10⁻¹⁰, A1/B1 log-spaced over `decades`
 /// either side of 1 with `per_curve` points.
 fn grid<T: Real>(p: T::Prec, per_curve: usize, decades: f64) -> Vec<EllipsePoint<T>> {
@@ -23,23 +26,6 @@ fn grid<T: Real>(p: T::Prec, per_curve: usize, decades: f64) -> Vec<EllipsePoint
         .map(|j| x(10f64.powf(decades * (2.0 * j as f64 / (per_curve - 1) as f64 - 1.0))))
         .collect();
     EllipsePoint::grid(&nus, &speeds, &ratios)
-}
-
-/// The same point solved on its own.
-fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellipse<T>> {
-    let mat = Material::new(pt.nu.clone())?;
-    let speed = match &pt.speed {
-        SpeedGiven::Mr(m) => mat.speed(m.clone())?,
-        SpeedGiven::Gap(g) => mat.speed_from_gap(g.clone())?,
-        SpeedGiven::Text(m) => mat.parse_speed(m)?,
-    };
-    solve_ellipse(&speed, &pt.ratio, &Options::default())
-}
-
-/// |k − k_ref|/k_ref over the sum of both bounds (≤ 1: within the bounds).
-fn within<T: Real>(got: &Ellipse<T>, want: &Ellipse<T>) -> f64 {
-    let d = ((got.k.value.clone() - &want.k.value) / &want.k.value).abs();
-    d.to_f64() / (got.k.error.to_f64() + want.k.error.to_f64())
 }
 
 /// Every point of the sweep is Ok and within the error bounds of the independent solve; the

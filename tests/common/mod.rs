@@ -283,3 +283,26 @@ impl MpmathCase {
         rel_eps(i1, &self.i1).max(rel_eps(i2, &self.i2))
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Sweeps
+
+use moving_hertz::sweep::{EllipsePoint, SpeedGiven};
+use moving_hertz::{solve_ellipse, Ellipse, Options};
+
+/// The same sweep point solved on its own (`solve_ellipse` with default options).
+pub fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellipse<T>> {
+    let mat = Material::new(pt.nu.clone())?;
+    let speed = match &pt.speed {
+        SpeedGiven::Mr(m) => mat.speed(m.clone())?,
+        SpeedGiven::Gap(g) => mat.speed_from_gap(g.clone())?,
+        SpeedGiven::Text(m) => mat.parse_speed(m)?,
+    };
+    solve_ellipse(&speed, &pt.ratio, &Options::default())
+}
+
+/// |k − k_ref|/k_ref over the sum of both bounds (≤ 1: within the bounds).
+pub fn within<T: Real>(got: &Ellipse<T>, want: &Ellipse<T>) -> f64 {
+    let d = ((got.k.value.clone() - &want.k.value) / &want.k.value).abs();
+    d.to_f64() / (got.k.error.to_f64() + want.k.error.to_f64())
+}
