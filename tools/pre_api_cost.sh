@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Per-solve cost of the f64, double-double and 256-bit ellipse solve (nu = 0.2, A1/B1 = 0.5,
-# M_R in {0.5, 0.9, 0.999, 0.9999}) at the working tree against the last commit before the
+# M_R in {0.5, 0.9, 0.999, 0.9999}) at HEAD against the last commit before the
 # public API (26b8fbb), each through its own API: the same harness, built in two worktrees.
 # Prints wall-clock minima per solve (three alternating runs) and, with valgrind installed, the
-# f64 instruction count per solve at M_R = 0.9 (callgrind, 200 solves minus 100).
+# f64 instruction count per solve at each M_R (callgrind, 200 solves minus 100).
 #
 # Run from the repository root: bash tools/pre_api_cost.sh   (about five minutes, cold)
 set -euo pipefail
@@ -38,7 +38,8 @@ fn run<T: Real>(label: &str, p: T::Prec, reps: usize) {
 fn main() {
     if let Some(n) = std::env::args().nth(1) {
         let (mat, ratio) = (Material::new(0.2f64).unwrap(), 0.5f64);
-        let sp = mat.speed(0.9).unwrap();
+        let mr: f64 = std::env::args().nth(2).map_or(0.9, |s| s.parse().unwrap());
+        let sp = mat.speed(mr).unwrap();
         for _ in 0..n.parse::<usize>().unwrap() { black_box($2); }
         return;
     }
@@ -68,12 +69,17 @@ paste "$WORK"/base.{1,2,3} "$WORK"/head.{1,2,3} | awk '{
   h = $12; if ($15 < h) h = $15; if ($18 < h) h = $18
   printf "%-8s %-12s %10d %10d %7.3f\n", $1, $2, b, h, h / b }'
 if command -v valgrind > /dev/null; then
-  for t in base head; do
-    c=()
-    for n in 100 200; do
-      c+=("$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$(bin $t)" $n 2>&1 |
-        sed -n 's/.*Collected : //p')")
+  echo "f64 instructions per solve (callgrind, 200 solves minus 100): M_R, base, head, head/base"
+  for mr in 0.5 0.9 0.999 0.9999; do
+    row=()
+    for t in base head; do
+      c=()
+      for n in 100 200; do
+        c+=("$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$(bin $t)" $n $mr 2>&1 |
+          sed -n 's/.*Collected : //p')")
+      done
+      row+=($(( (c[1] - c[0]) / 100 )))
     done
-    echo "$t: $(( (c[1] - c[0]) / 100 )) instructions per f64 solve (M_R = 0.9)"
+    awk -v m=$mr -v b=${row[0]} -v h=${row[1]} 'BEGIN { printf "%-8s %8d %8d %7.3f\n", m, b, h, h / b }'
   done
 fi

@@ -547,9 +547,18 @@ pub struct FastSetup<T: Real + 'static> {
     left_ih: Buf<T, SETUP_INLINE>,
     /// The right half by the Taylor subtraction (built with the set-up at `f64` and
     /// double-double, on first use above).
-    taylor: OnceLock<Result<TaylorRight<T>>>,
+    taylor: TaylorCell<T>,
     /// The right half on sinh-mapped panels, per octave of k (above double-double; empty below).
     sinh: Vec<OnceLock<Result<RightSinh<T>>>>,
+}
+
+/// The Taylor subtraction's tables of a [`FastSetup`]: built with it, in place, at `f64` and
+/// double-double (where every k ≤ 1 uses them; no `OnceLock` to pass through), on first use
+/// above (where most octaves of k use the sinh-mapped panels instead).
+#[derive(Debug)]
+enum TaylorCell<T> {
+    Built(Result<TaylorRight<T>>),
+    Lazy(OnceLock<Result<TaylorRight<T>>>),
 }
 
 /// The k-independent part of the right half by the Taylor subtraction: the Taylor coefficients
@@ -623,21 +632,32 @@ impl<T: Real> FastSetup<T> {
         let p = speed.mr().prec();
         let rule = FastRule::<T>::get(p)?;
         let n = rule.left.len();
-        let mut setup = Box::new(FastSetup {
-            sc: SpeedConsts::new(speed),
-            left_lq: Buf::zeros(n, p),
-            left_ih: Buf::zeros(n, p),
-            taylor: OnceLock::new(),
-            sinh: Vec::new(),
-            rule,
-        });
+        let eager = T::bits(p) <= 106;
+        let (taylor, sinh) = if eager {
+            (TaylorCell::Built(TaylorRight::zeros(&rule)), Vec::new())
+        } else {
+            let octaves = (0..OCTAVES).map(|_| OnceLock::new()).collect();
+            (TaylorCell::Lazy(OnceLock::new()), octaves)
+        };
+        // Written straight into its allocation (`Box::new` would build it on the stack first).
+        let mut setup = Box::write(
+            Box::new_uninit(),
+            FastSetup {
+                sc: SpeedConsts::new(speed),
+                left_lq: Buf::zeros(n, p),
+                left_ih: Buf::zeros(n, p),
+                taylor,
+                sinh,
+                rule,
+            },
+        );
         let FastSetup {
             rule,
             sc,
             left_lq,
             left_ih,
             taylor,
-            sinh,
+            ..
         } = &mut *setup;
         let left_out = left_lq.iter_mut().zip(left_ih.iter_mut());
         for ((s, pp, two_p, four_p), (lq, ih)) in rule.left.nodes().zip(left_out) {
@@ -645,15 +665,10 @@ impl<T: Real> FastSetup<T> {
             *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
             *ih = (s.clone() + &sc.eps2).recip();
         }
-        if T::bits(p) <= 106 {
-            let _ = taylor.set(TaylorRight::zeros(rule));
-            if let Some(Ok(t)) = taylor.get_mut() {
-                if let Err(e) = t.fill(rule, sc) {
-                    *taylor = OnceLock::from(Err(e));
-                }
+        if let TaylorCell::Built(t @ Ok(_)) = taylor {
+            if let Err(e) = t.as_mut().map(|tr| tr.fill(rule, sc)).unwrap_or(Ok(())) {
+                *t = Err(e);
             }
-        } else {
-            *sinh = (0..OCTAVES).map(|_| OnceLock::new()).collect();
         }
         Ok(setup)
     }
@@ -715,11 +730,11 @@ impl<T: Real> FastSetup<T> {
                 .map_err(Clone::clone)?;
             return combine(lp, rs.parts(&kc, dk), &kc, dk, nl + rs.len());
         }
-        let t = self
-            .taylor
-            .get_or_init(|| TaylorRight::new(rule, &self.sc))
-            .as_ref()
-            .map_err(Clone::clone)?;
+        let t = match &self.taylor {
+            TaylorCell::Built(t) => t,
+            TaylorCell::Lazy(cell) => cell.get_or_init(|| TaylorRight::new(rule, &self.sc)),
+        };
+        let t = t.as_ref().map_err(Clone::clone)?;
         let h = rule.right_half()?;
         let nr = h.len();
         let mut right = Buf::<T, N>::zeros(nr, p);
