@@ -571,6 +571,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// F and F′ = k(I2′/I2 − I1′/I1) at λ, with the integrals. With `chord` (the derivatives
     /// kept from an earlier iterate) the derivatives are not evaluated again: a chord step
     /// instead of a Newton step. `probe`: see [`Evaluator::for_newton`].
+    #[inline(always)]
     fn eval(
         &self,
         lam: &T,
