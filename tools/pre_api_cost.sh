@@ -5,7 +5,8 @@
 # Prints wall-clock minima per solve (three alternating runs) and, with valgrind installed, the
 # f64 instruction count per solve at each M_R (callgrind, 200 solves minus 100).
 #
-# Run from the repository root: bash tools/pre_api_cost.sh   (about five minutes, cold)
+# Run from the repository root: bash tools/pre_api_cost.sh > docs/data/pre_api_cost.txt
+# (about five minutes, cold; the cargo builds' output goes to stderr)
 set -euo pipefail
 BASE=26b8fbb
 WORK=${TMPDIR:-/tmp}/moving-hertz-pre-api
@@ -63,6 +64,8 @@ bin() { echo "$WORK/target-$1/release/examples/pre_api_cost"; }
 for round in 1 2 3; do
   for t in base head; do "$(bin $t)" > "$WORK/$t.$round"; done
 done
+cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
+echo "# bash tools/pre_api_cost.sh   (HEAD $(git rev-parse --short HEAD) against $BASE, the last commit before the public API; $(date -u +%Y-%m-%d), $cpu, $(nproc) cores)"
 echo "ns per solve (minimum over three alternating runs): base $BASE, head, head/base"
 paste "$WORK"/base.{1,2,3} "$WORK"/head.{1,2,3} | awk '{
   b = $2; if ($6 < b) b = $6; if ($9 < b) b = $9
