@@ -28,12 +28,8 @@ pub fn main() -> Result<()> {
     println!("                            a  = {} m", hi.a);
     println!("semi-axis across it         b  = {} m", lo.b);
     println!("axis ratio              k = b/a = {}", lo.k());
-    let e = lo.e(); // the eccentricity's bound is absolute (e vanishes for a circle)
-    println!(
-        "eccentricity                e  = {} (absolute error <= {})",
-        e.to_decimal(),
-        e.error
-    );
+    // The eccentricity's bound is absolute (e vanishes for a circle): `BoundKind::Absolute`.
+    println!("eccentricity                e  = {}", lo.e());
     println!("major axis {} the motion", lo.ellipse.major.label());
     println!("central pressure            p0 = {} Pa", lo.p0);
     println!("approach                    d0 = {} m", lo.d0);

@@ -3,7 +3,9 @@
 //!
 //! Every result of the crate comes with an estimate of its relative error: a bound on
 //! |x̃ − x|/|x|, x the exact value for the inputs as given (or as represented at the working
-//! precision, where a page says so) and x̃ the value returned. At 4096 bits such a bound is
+//! precision, where a page says so) and x̃ the value returned. The one exception is the
+//! eccentricity e, whose bound is on |x̃ − x| ([`BoundKind::Absolute`]): e vanishes for a
+//! circular contact. At 4096 bits such a bound is
 //! about 2⁻⁴⁰⁹⁰ ≈ 10⁻¹²³², far below the smallest `f64`; [`RelError`] holds it as an `f64`
 //! mantissa and an `i64` binary exponent, so that it survives at every MPFR precision and prints
 //! as a decimal string (`3.1e-1232`). The same type carries a requested tolerance, which can then
@@ -292,19 +294,47 @@ impl fmt::Display for RelError {
     }
 }
 
-/// A value with a bound on its relative error.
+/// What the bound of an [`Estimated`] value measures.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum BoundKind {
+    /// |value − exact|/|exact|: every quantity except the eccentricity.
+    #[default]
+    Relative,
+    /// |value − exact|: the eccentricity e, which vanishes for a circular contact (where a
+    /// relative bound would be unbounded); e < 1, so it also bounds the error relative to 1.
+    Absolute,
+}
+
+/// A value with a bound on its error: relative, except where [`Estimated::kind`] says absolute
+/// (the eccentricity).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Estimated<T> {
     /// The value at the working precision.
     pub value: T,
-    /// A bound on its relative error |value − exact|/|exact| (see the module docs).
+    /// A bound on its error, relative or absolute as `kind` says (see the module docs; kept
+    /// as a [`RelError`], which holds either without underflow).
     pub error: RelError,
+    /// What `error` bounds.
+    pub kind: BoundKind,
 }
 
 impl<T: Real> Estimated<T> {
-    /// A value and its bound.
+    /// A value and a bound on its relative error.
     pub fn new(value: T, error: RelError) -> Self {
-        Estimated { value, error }
+        Estimated {
+            value,
+            error,
+            kind: BoundKind::Relative,
+        }
+    }
+
+    /// A value and a bound on its absolute error (the eccentricity's).
+    pub fn absolute(value: T, error: RelError) -> Self {
+        Estimated {
+            value,
+            error,
+            kind: BoundKind::Absolute,
+        }
     }
 
     /// The value as a decimal with every digit of the working precision.
@@ -333,11 +363,15 @@ impl<T: Real> Estimated<T> {
 }
 
 impl<T: Real> fmt::Display for Estimated<T> {
-    /// `value (relative error ≤ bound)`.
+    /// `value (relative error <= bound)`, or `absolute error` for an absolute bound.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let kind = match self.kind {
+            BoundKind::Relative => "relative",
+            BoundKind::Absolute => "absolute",
+        };
         write!(
             f,
-            "{} (relative error <= {})",
+            "{} ({kind} error <= {})",
             self.value.to_decimal(),
             self.error
         )

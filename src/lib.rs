@@ -82,7 +82,7 @@ pub use contact::{
     solve_ellipse, ContactProblem, ContactSolution, Ellipse, Loading, MajorAxis, Options,
 };
 pub use error::{Error, Result};
-pub use estimate::{Estimated, RelError};
+pub use estimate::{BoundKind, Estimated, RelError};
 pub use physics::{Material, Speed};
 pub use routes::{
     integrals, integrals_to_tolerance, Evaluator, ExactInputs, IntegralOptions, Integrals, Method,
@@ -99,7 +99,7 @@ pub struct ReadmeDoctests;
 pub mod prelude {
     pub use crate::contact::{ContactProblem, Loading, Options};
     pub use crate::error::{Error, Result};
-    pub use crate::estimate::{Estimated, RelError};
+    pub use crate::estimate::{BoundKind, Estimated, RelError};
     pub use crate::physics::{Material, Speed};
     pub use crate::routes::{IntegralOptions, Method};
     pub use crate::scalar::{Complex, Dd, Field, FieldOps, Mp, MpPrec, Precision, Real};

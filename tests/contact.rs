@@ -451,3 +451,37 @@ fn dd_ladder_agrees_with_256_bits_on_a_wide_grid() {
     );
     assert!(one_step > 0, "the one-step path never ran");
 }
+
+/// The eccentricity's bound is absolute and says so (`BoundKind::Absolute`, printed as
+/// "absolute error"), every other quantity's relative; and the absolute bound holds against a
+/// 256-bit solve, including at a circular contact (M_R = 0, A1/B1 = 1, e = 0), where no
+/// relative bound could.
+#[test]
+fn the_eccentricity_bound_is_absolute_and_labelled() {
+    let p = MpPrec::new(256).unwrap();
+    for (mr, ratio) in [(0.0, 1.0), (0.0, 0.999), (0.5, 0.5), (0.99, 2.0)] {
+        let hi = Material::new(Mp::from_f64(0.25, p))
+            .and_then(|m| m.speed(Mp::from_f64(mr, p)))
+            .and_then(|sp| solve_ellipse(&sp, &Mp::from_f64(ratio, p), &Options::default()))
+            .unwrap();
+        let e_ref = hi.e.value.to_f64();
+        let lo = ellipse(&Material::new(0.25).unwrap().speed(mr).unwrap(), &ratio);
+        assert_eq!(lo.e.kind, BoundKind::Absolute);
+        assert_eq!(lo.k.kind, BoundKind::Relative);
+        assert!(lo.integrals.i1.kind == BoundKind::Relative);
+        assert!(format!("{}", lo.e).contains("(absolute error <= "), "{}", lo.e);
+        assert!(format!("{}", lo.k).contains("(relative error <= "), "{}", lo.k);
+        let err = (lo.e.value - e_ref).abs();
+        assert!(
+            err <= lo.e.error.to_f64(),
+            "M_R = {mr}, A1/B1 = {ratio}: |e - e_ref| = {err:e} above the bound {}",
+            lo.e.error
+        );
+    }
+    let sp = Material::new(0.25).unwrap().speed(0.9).unwrap();
+    let sol = contact(&sp, &0.05, &0.02, Loading::Load(1000.0), &80e9).unwrap();
+    assert_eq!(sol.e().kind, BoundKind::Absolute);
+    for q in [&sol.a, &sol.b, &sol.p0, &sol.d0] {
+        assert_eq!(q.kind, BoundKind::Relative);
+    }
+}

@@ -164,7 +164,7 @@ impl<T: Real> Shape<T> {
         }
         Ok(Ellipse {
             k: Estimated::new(self.k, RelError::of(&self.error_estimate)),
-            e: Estimated::new(e, RelError::of(&e_err)),
+            e: Estimated::absolute(e, RelError::of(&e_err)),
             major,
             integrals: self.integrals.without_poor_extras().publish()?,
             iterations: self.iterations,
