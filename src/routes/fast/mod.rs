@@ -639,18 +639,14 @@ impl<T: Real> FastSetup<T> {
             let octaves = (0..OCTAVES).map(|_| OnceLock::new()).collect();
             (TaylorCell::Lazy(OnceLock::new()), octaves)
         };
-        // Written straight into its allocation (`Box::new` would build it on the stack first).
-        let mut setup = Box::write(
-            Box::new_uninit(),
-            FastSetup {
-                sc: SpeedConsts::new(speed),
-                left_lq: Buf::zeros(n, p),
-                left_ih: Buf::zeros(n, p),
-                taylor,
-                sinh,
-                rule,
-            },
-        );
+        let mut setup = Box::new(FastSetup {
+            sc: SpeedConsts::new(speed),
+            left_lq: Buf::zeros(n, p),
+            left_ih: Buf::zeros(n, p),
+            taylor,
+            sinh,
+            rule,
+        });
         let FastSetup {
             rule,
             sc,
