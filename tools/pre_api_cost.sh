@@ -2,7 +2,7 @@
 # Per-solve cost of the f64, double-double and 256-bit ellipse solve (nu = 0.2, A1/B1 = 0.5,
 # M_R in {0.5, 0.9, 0.999, 0.9999}) at HEAD against the last commit before the
 # public API (26b8fbb), each through its own API: the same harness, built in two worktrees.
-# Prints wall-clock minima per solve (three alternating runs) and, with valgrind installed, the
+# Prints wall-clock minima per solve (six alternating runs) and, with valgrind installed, the
 # f64 instruction count per solve at each M_R (callgrind, 200 solves minus 100).
 #
 # Run from the repository root: bash tools/pre_api_cost.sh > docs/data/pre_api_cost.txt
@@ -11,7 +11,7 @@ set -euo pipefail
 BASE=26b8fbb
 WORK=${TMPDIR:-/tmp}/moving-hertz-pre-api
 mkdir -p "$WORK"
-rm -rf "$WORK/base" "$WORK/head"
+rm -rf "$WORK/base" "$WORK/head" "$WORK"/base.* "$WORK"/head.*
 git worktree add -q --detach "$WORK/base" "$BASE"
 git worktree add -q --detach "$WORK/head" HEAD
 trap 'git worktree remove --force "$WORK/base"; git worktree remove --force "$WORK/head"' EXIT
@@ -61,16 +61,21 @@ for t in base head; do
   (cd "$WORK/$t" && CARGO_TARGET_DIR="$WORK/target-$t" cargo build -q --release --example pre_api_cost)
 done
 bin() { echo "$WORK/target-$1/release/examples/pre_api_cost"; }
-for round in 1 2 3; do
+ROUNDS=6
+for round in $(seq $ROUNDS); do
   for t in base head; do "$(bin $t)" > "$WORK/$t.$round"; done
 done
 cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')
 echo "# bash tools/pre_api_cost.sh   (HEAD $(git rev-parse --short HEAD) against $BASE, the last commit before the public API; $(date -u +%Y-%m-%d), $cpu, $(nproc) cores)"
-echo "ns per solve (minimum over three alternating runs): base $BASE, head, head/base"
-paste "$WORK"/base.{1,2,3} "$WORK"/head.{1,2,3} | awk '{
-  b = $2; if ($6 < b) b = $6; if ($9 < b) b = $9
-  h = $12; if ($15 < h) h = $15; if ($18 < h) h = $18
-  printf "%-8s %-12s %10d %10d %7.3f\n", $1, $2, b, h, h / b }'
+echo "ns per solve (minimum over $ROUNDS alternating runs): base $BASE, head, head/base"
+# Each file has lines "label M_R=… ns"; the minimum of column 3 over the rounds, per line.
+for t in base head; do
+  for r in $(seq $ROUNDS); do cat "$WORK/$t.$r"; done | awk '{ k = $1 " " $2; if (!(k in m) || $3 < m[k]) m[k] = $3;
+    if (!(k in seen)) { seen[k] = 1; order[n++] = k } }
+    END { for (i = 0; i < n; i++) print order[i], m[order[i]] }' > "$WORK/$t.min"
+done
+paste "$WORK/base.min" "$WORK/head.min" |
+  awk '{ printf "%-8s %-12s %10d %10d %7.3f\n", $1, $2, $3, $6, $6 / $3 }'
 if command -v valgrind > /dev/null; then
   echo "f64 instructions per solve (callgrind, 200 solves minus 100): M_R, base, head, head/base"
   for mr in 0.5 0.9 0.999 0.9999; do
