@@ -1,6 +1,7 @@
 //! docs/tutorial.md's snippets: every ```rust block is quoted verbatim (up to a common
-//! indentation) from the example program it names (`examples/NAME.rs`), and every example the
-//! tutorial quotes runs to completion here.
+//! indentation) from the example program it names (`examples/NAME.rs`), every example the
+//! tutorial quotes runs to completion here, and every output the tutorial shows ("prints" and a
+//! ```text block) is what the example's binary prints.
 
 #[path = "../examples/contact_solution.rs"]
 mod contact_solution;
@@ -96,4 +97,69 @@ fn the_tutorials_examples_run() {
     precision_cost::main().expect("precision_cost");
     series_convergence::main().expect("series_convergence");
     sweep_curves::main().expect("sweep_curves");
+}
+
+/// (example name, the text the tutorial says it prints): every ```text block that follows a
+/// line "prints", the example being the last `cargo run --release --example NAME` before it.
+fn printed_outputs() -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    let mut ran: Option<String> = None;
+    let mut lines = TUTORIAL.lines().peekable();
+    while let Some(line) = lines.next() {
+        if let Some(name) = line.trim().strip_prefix("cargo run --release --example ") {
+            ran = Some(name.trim().to_string());
+        }
+        if line.trim() != "prints" {
+            continue;
+        }
+        while lines.peek().is_some_and(|l| l.trim().is_empty()) {
+            lines.next();
+        }
+        if lines.next().map(str::trim) != Some("```text") {
+            continue;
+        }
+        let mut text = String::new();
+        for l in lines.by_ref().take_while(|l| l.trim() != "```") {
+            text.push_str(l);
+            text.push('\n');
+        }
+        let name = ran.clone().expect("a printed output names its example before it");
+        out.push((name, text));
+    }
+    out
+}
+
+/// What the tutorial says an example prints is what it prints: the example's binary (which
+/// `cargo test` builds beside the tests, in `target/<profile>/examples/`) is run and its
+/// standard output compared with the block, digit for digit.
+#[test]
+fn the_printed_outputs_are_current() {
+    let outputs = printed_outputs();
+    assert!(outputs.len() >= 3, "{} printed outputs", outputs.len());
+    let exe = std::env::current_exe().expect("the test binary's path");
+    let dir = exe
+        .parent()
+        .and_then(|deps| deps.parent())
+        .expect("target/<profile>/deps")
+        .join("examples");
+    for (name, expected) in &outputs {
+        let bin = dir.join(format!("{name}{}", std::env::consts::EXE_SUFFIX));
+        assert!(
+            bin.exists(),
+            "{} is missing: run `cargo test --release` (which builds the examples) or \
+             `cargo build --release --examples` first",
+            bin.display()
+        );
+        let run = std::process::Command::new(&bin)
+            .output()
+            .expect("the example runs");
+        assert!(run.status.success(), "{name} failed");
+        let printed = String::from_utf8(run.stdout).expect("UTF-8 output");
+        assert_eq!(
+            printed.trim_matches('\n'),
+            expected.trim_matches('\n'),
+            "docs/tutorial.md: the output shown for `cargo run --release --example {name}` is \
+             not what it prints"
+        );
+    }
 }
