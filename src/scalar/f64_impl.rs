@@ -132,8 +132,11 @@ impl Real for f64 {
         })
     }
     fn to_decimal(&self) -> String {
-        // 17 significant digits identify every f64.
-        format!("{:.16e}", self)
+        // 17 significant digits identify every f64; 24 characters hold the longest
+        // ("-1.2345678901234567e-308"), so the string is allocated once.
+        let mut s = String::with_capacity(24);
+        let _ = std::fmt::Write::write_fmt(&mut s, format_args!("{:.16e}", self));
+        s
     }
     fn to_float(&self, bits: u32) -> rug::Float {
         rug::Float::with_val(bits.max(53), *self)
