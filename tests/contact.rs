@@ -468,9 +468,17 @@ fn the_eccentricity_bound_is_absolute_and_labelled() {
         let lo = ellipse(&Material::new(0.25).unwrap().speed(mr).unwrap(), &ratio);
         assert_eq!(lo.e.kind, BoundKind::Absolute);
         assert_eq!(lo.k.kind, BoundKind::Relative);
-        assert!(lo.integrals.i1.kind == BoundKind::Relative);
-        assert!(format!("{}", lo.e).contains("(absolute error <= "), "{}", lo.e);
-        assert!(format!("{}", lo.k).contains("(relative error <= "), "{}", lo.k);
+        assert_eq!(lo.integrals.i1.kind, BoundKind::Relative);
+        assert!(
+            format!("{}", lo.e).contains("(absolute error <= "),
+            "{}",
+            lo.e
+        );
+        assert!(
+            format!("{}", lo.k).contains("(relative error <= "),
+            "{}",
+            lo.k
+        );
         let err = (lo.e.value - e_ref).abs();
         assert!(
             err <= lo.e.error.to_f64(),

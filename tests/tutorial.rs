@@ -123,7 +123,9 @@ fn printed_outputs() -> Vec<(String, String)> {
             text.push_str(l);
             text.push('\n');
         }
-        let name = ran.clone().expect("a printed output names its example before it");
+        let name = ran
+            .clone()
+            .expect("a printed output names its example before it");
         out.push((name, text));
     }
     out
