@@ -5,10 +5,9 @@
 //! |x̃ − x|/|x|, x the exact value for the inputs as given (or as represented at the working
 //! precision, where a page says so) and x̃ the value returned. The one exception is the
 //! eccentricity e, whose bound is on |x̃ − x| ([`BoundKind::Absolute`]): e vanishes for a
-//! circular contact. At 4096 bits such a bound is
-//! about 2⁻⁴⁰⁹⁰ ≈ 10⁻¹²³², far below the smallest `f64`; [`RelError`] holds it as an `f64`
-//! mantissa and an `i64` binary exponent, so that it survives at every MPFR precision and prints
-//! as a decimal string (`3.1e-1232`). The same type carries a requested tolerance, which can then
+//! circular contact. At 4096 bits such a bound is about 2⁻⁴⁰⁹⁰ ≈ 10⁻¹²³², far below the
+//! smallest `f64`; [`RelError`] holds it as an `f64` mantissa and an `i64` binary exponent, so
+//! that it survives at every MPFR precision and prints as a decimal string (`3.1e-1232`). The same type carries a requested tolerance, which can then
 //! be as small as 10⁻¹⁰⁰⁰⁰ or 10⁻¹⁰⁰⁰⁰⁰⁰.
 //!
 //! Arithmetic on bounds ([`RelError::add`], [`RelError::mul`], …) rounds upwards (each result is

@@ -666,8 +666,8 @@ impl<T: Real> FastSetup<T> {
             *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
             *ih = (s.clone() + &sc.eps2).recip();
         }
-        if let TaylorCell::Built(t @ Ok(_)) = taylor {
-            if let Err(e) = t.as_mut().map(|tr| tr.fill(rule, sc)).unwrap_or(Ok(())) {
+        if let TaylorCell::Built(t) = taylor {
+            if let Some(Err(e)) = t.as_mut().ok().map(|tr| tr.fill(rule, sc)) {
                 *t = Err(e);
             }
         }
