@@ -8,6 +8,7 @@ use crate::studies::{self, fig2};
 use moving_hertz::scalar::Precision;
 use moving_hertz::{with_precision, Material};
 use rayon::prelude::*;
+use std::collections::HashMap;
 use std::fmt::Write as _;
 
 #[derive(clap::Args, Debug)]
@@ -69,12 +70,22 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
     });
     bar.finish();
     let io = |e: std::io::Error| CliError::Failed(format!("writing fig2 output: {e}"));
+    // The grids' few hundred distinct M_R and A1/B1 written once, not once a row.
+    let mut text: HashMap<u64, String> = HashMap::new();
+    for v in a_pts.iter().chain(&b_pts).flat_map(|q| [q.mr, q.ratio]) {
+        text.entry(v.to_bits()).or_insert_with(|| format!("{v}"));
+    }
+    let text_of = |v: f64| {
+        text.get(&v.to_bits())
+            .cloned()
+            .unwrap_or_else(|| format!("{v}"))
+    };
     let rows = |pts: &[fig2::Point]| -> Vec<Vec<String>> {
         pts.par_iter()
             .map(|q| {
                 vec![
-                    format!("{}", q.mr),
-                    format!("{}", q.ratio),
+                    text_of(q.mr),
+                    text_of(q.ratio),
                     q.k.clone(),
                     q.e.clone(),
                     format!("{:.2e}", q.error_estimate),
