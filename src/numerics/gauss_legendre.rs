@@ -518,14 +518,7 @@ fn node_dd(n: usize, x: f64) -> Dd {
 pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
     let m = n.div_ceil(2);
     let refine = Refine::new(n, raw);
-    let one = |k: usize| build_node(&refine, n, k, raw);
-    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
-    let threads = cores.min(m / PARALLEL_NODES).max(1);
-    let pairs = if threads > 1 {
-        on_threads(m, threads, &one)?
-    } else {
-        (1..=m).map(one).collect::<Result<Vec<_>>>()?
-    };
+    let pairs = map_on_threads(m, &|i: usize| build_node(&refine, n, i + 1, raw))?;
     let (nodes, weights) = pairs.into_iter().unzip();
     Ok(RawRule {
         bits: raw,
@@ -547,6 +540,22 @@ fn stopped() -> Error {
 /// Rules with at least this many nonnegative nodes a thread are built in parallel (below, a
 /// node costs less than starting a thread).
 const PARALLEL_NODES: usize = 16;
+
+/// `f(0) … f(m − 1)` in order: on scoped threads when there are at least
+/// [`PARALLEL_NODES`] items a core ([`on_threads`]), else on the calling thread. Used for the
+/// nodes of a rule and for per-node tables built from them (`routes::graded`).
+pub(crate) fn map_on_threads<R: Send>(
+    m: usize,
+    f: &(impl Fn(usize) -> Result<R> + Sync),
+) -> Result<Vec<R>> {
+    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
+    let threads = cores.min(m / PARALLEL_NODES).max(1);
+    if threads > 1 {
+        on_threads(m, threads, &|k: usize| f(k - 1))
+    } else {
+        (0..m).map(f).collect()
+    }
+}
 
 /// `one(1..=m)` in order, on `threads` scoped threads, thread t taking k ≡ t + 1 (mod
 /// `threads`): interleaved shares, so that each thread gets nodes from every part of [0, 1]

@@ -57,11 +57,12 @@
 //! with 2^{−bits−4} 32ε, with 2^{−bits} 370ε.
 
 use super::fast::SpeedConsts;
+use super::guard::{run_guarded, GuardedJob};
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
+use crate::numerics::gauss_legendre::map_on_threads;
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
 use crate::physics::Speed;
-use crate::scalar::FieldOps;
 use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
 
@@ -273,26 +274,73 @@ impl<T: Real> Rules<T> {
         let (mut ep, mut em, mut lw) = (Vec::new(), Vec::new(), Vec::new());
         // The nodes come in pairs x± = (1 ± t)·ℓ ln 2/2 with x₊ + x₋ = ℓ ln 2, so that one
         // exponential and one reciprocal serve both: e^{x₋} = 2^ℓ e^{−x₊}, e^{−x₋} = 2^{−ℓ} e^{x₊}
-        // (exact scalings). Both are formed at the guard precision of `Real::Wide` and rounded
-        // once. The middle node of an odd rule is its own pair.
-        let pw = T::wide_prec(p);
-        let half_w = T::Wide::ln2(pw) * &T::Wide::from_ratio(l as i64, 2, pw);
+        // (exact scalings). The middle node of an odd rule is its own pair.
+        let exps = run_guarded(
+            p,
+            exp_guard::<T>(p),
+            PanelExps {
+                nodes: gl.nodes(),
+                l,
+            },
+        )?;
         let l2 = l as i32;
-        for (t, w) in gl.nodes().iter().zip(gl.weights()) {
+        for ((t, w), (e, r)) in gl.nodes().iter().zip(gl.weights()).zip(exps) {
             let wh = w.clone() * &half;
-            let e = ((T::Wide::one(pw) + &t.to_wide(pw)) * &half_w).exp();
-            let r = e.clone().recip();
-            ep.push(T::from_wide(&e, p));
-            em.push(T::from_wide(&r, p));
+            ep.push(e.clone());
+            em.push(r.clone());
             lw.push(wh.clone());
             if !t.is_zero() {
-                ep.push(T::from_wide(&r.mul_pow2(l2), p));
-                em.push(T::from_wide(&e.mul_pow2(-l2), p));
+                ep.push(r.mul_pow2(l2));
+                em.push(e.mul_pow2(-l2));
                 lw.push(wh);
             }
         }
         // Another thread may have built it meanwhile: the first one stored wins.
         Ok(cell.get_or_init(|| LeftRule { ep, em, lw }))
+    }
+}
+
+/// The guard bits of a panel's exponentials: those of [`Real::Wide`] up to double-double (a
+/// fixed type there), 64 above — where `Real::Wide` would be twice the precision and an
+/// exponential several times the cost (at 4096 bits the tables of a first call took as long as
+/// building their Gauss–Legendre rule).
+fn exp_guard<T: Real>(p: T::Prec) -> u32 {
+    let bits = T::bits(p);
+    if bits > 106 {
+        64
+    } else {
+        <T::Wide as Real>::bits(T::wide_prec(p)).saturating_sub(bits)
+    }
+}
+
+/// e^{x₊} and e^{−x₊} at each node t of a panel's rule, x₊ = (1 + t)·ℓ ln 2/2, formed at the
+/// guarded precision and rounded once (so within an ulp or so of the working precision). The
+/// exponentials are independent and are formed on scoped threads above a few dozen nodes.
+struct PanelExps<'a, T> {
+    nodes: &'a [T],
+    l: usize,
+}
+
+impl<T: Real> GuardedJob<T> for PanelExps<'_, T> {
+    type Output = Vec<(T, T)>;
+    fn run<W: Real>(
+        self,
+        pw: W::Prec,
+        up: &dyn Fn(&T) -> W,
+        down: &dyn Fn(&W) -> T,
+    ) -> Result<Vec<(T, T)>> {
+        let half = W::ln2(pw) * &W::from_ratio(self.l as i64, 2, pw);
+        let x: Vec<W> = self
+            .nodes
+            .iter()
+            .map(|t| (W::one(pw) + &up(t)) * &half)
+            .collect();
+        let exps = map_on_threads(x.len(), &|i: usize| {
+            let e = x[i].clone().exp();
+            let r = e.clone().recip();
+            Ok((e, r))
+        })?;
+        Ok(exps.iter().map(|(e, r)| (down(e), down(r))).collect())
     }
 }
 
