@@ -71,14 +71,15 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
     bar.finish();
     let io = |e: std::io::Error| CliError::Failed(format!("writing fig2 output: {e}"));
     // The grids' few hundred distinct M_R and A1/B1 written once, not once a row.
+    let decimal = |v: f64| format!("{v}");
     let mut text: HashMap<u64, String> = HashMap::new();
     for v in a_pts.iter().chain(&b_pts).flat_map(|q| [q.mr, q.ratio]) {
-        text.entry(v.to_bits()).or_insert_with(|| format!("{v}"));
+        text.entry(v.to_bits()).or_insert_with(|| decimal(v));
     }
     let text_of = |v: f64| {
         text.get(&v.to_bits())
             .cloned()
-            .unwrap_or_else(|| format!("{v}"))
+            .unwrap_or_else(|| decimal(v))
     };
     let rows = |pts: &[fig2::Point]| -> Vec<Vec<String>> {
         pts.par_iter()

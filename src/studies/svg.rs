@@ -201,9 +201,9 @@ impl Chart {
                         continue;
                     }
                     path.push(if pen_up { 'M' } else { 'L' });
-                    Px(px(x)).push_to(&mut path);
+                    push_px(&mut path, px(x));
                     path.push(',');
-                    Px(py(y)).push_to(&mut path);
+                    push_px(&mut path, py(y));
                     path.push(' ');
                     pen_up = false;
                 }
@@ -516,41 +516,36 @@ fn colour(v: f64, range: (f64, f64)) -> String {
     )
 }
 
-/// A pixel coordinate written with two decimals, as `{:.2}` writes it but from the whole
+/// Appends a pixel coordinate with two decimals, as `{:.2}` writes it but from the whole
 /// number of hundredths, digit by digit (the paths write thousands of coordinates, and the
 /// formatting machinery cost several times the digits). The rounding is of x·100, which can
 /// differ from `{:.2}` in the last digit within the product's rounding of a tie; a value that
 /// rounds to zero is written without a sign. Implements no equation.
-struct Px(f64);
-
-impl Px {
-    /// Appends the coordinate to `o`.
-    fn push_to(&self, o: &mut String) {
-        let c = (self.0 * 100.0).round();
-        if c.is_nan() || c.abs() >= 1e15 {
-            let _ = write!(o, "{:.2}", self.0);
-            return;
-        }
-        if c < 0.0 {
-            o.push('-');
-        }
-        // At most 15 digits and the point; at least "0.00".
-        let mut n = c.abs() as u64;
-        let mut buf = [0u8; 20];
-        let mut i = buf.len();
-        let mut digits = 0;
-        while n > 0 || digits < 3 {
-            i -= 1;
-            buf[i] = b'0' + (n % 10) as u8;
-            n /= 10;
-            digits += 1;
-            if digits == 2 {
-                i -= 1;
-                buf[i] = b'.';
-            }
-        }
-        o.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
+fn push_px(o: &mut String, v: f64) {
+    let c = (v * 100.0).round();
+    if c.is_nan() || c.abs() >= 1e15 {
+        let _ = write!(o, "{v:.2}");
+        return;
     }
+    if c < 0.0 {
+        o.push('-');
+    }
+    // At most 15 digits and the point; at least "0.00".
+    let mut n = c.abs() as u64;
+    let mut buf = [0u8; 20];
+    let mut i = buf.len();
+    let mut digits = 0;
+    while n > 0 || digits < 3 {
+        i -= 1;
+        buf[i] = b'0' + (n % 10) as u8;
+        n /= 10;
+        digits += 1;
+        if digits == 2 {
+            i -= 1;
+            buf[i] = b'.';
+        }
+    }
+    o.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
 }
 
 fn marker(i: usize, x: f64, y: f64, c: &str) -> String {
@@ -651,15 +646,15 @@ fn fmt_tick(v: f64, step: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::Px;
+    use super::push_px;
 
     fn px(v: f64) -> String {
         let mut s = String::new();
-        Px(v).push_to(&mut s);
+        push_px(&mut s, v);
         s
     }
 
-    /// `Px` writes what `{:.2}` writes, except within the product's rounding of a tie of x·100,
+    /// `push_px` writes what `{:.2}` writes, except within the product's rounding of a tie of x·100,
     /// where it may differ by one in the last digit; the sign of a value that rounds to zero is dropped.
     #[test]
     fn px_writes_two_decimals_as_format_does() {
