@@ -268,3 +268,46 @@ fn choose_runs_the_fast_route_when_it_suffices() {
     let r = integrals(&sp, &k, &at("3e-15")).unwrap();
     assert_eq!(r.route, Route::Adaptive);
 }
+
+/// Above double-double the left half lies on sinh-mapped panels (`RuleSizes::left_sinh`): it
+/// agrees with the single Gauss–Legendre rule in w of ⌈0.433·bits⌉ − 2 nodes (the layout used
+/// up to double-double, extended) to a few ε at 256 and 1024 bits, on the left half's hardest
+/// cases (ν = 1/2 and M_R → 1, where G's branch point comes nearest) and across k.
+#[test]
+fn left_layouts_agree() {
+    use moving_hertz::routes::fast::{integrals_with_rule, left_sinh_nodes, FastRule};
+    for bits in [256u32, 1024] {
+        let p = mp(bits as u64);
+        let plain = RuleSizes {
+            left: (bits as usize * 433).div_ceil(1000) - 2,
+            left_sinh: false,
+            ..RuleSizes::for_bits(bits)
+        };
+        let sinh = RuleSizes::for_bits(bits);
+        assert!(sinh.left_sinh && sinh.left == left_sinh_nodes(bits) && sinh.left < plain.left);
+        let (a, b) = (
+            FastRule::build(plain, p).unwrap(),
+            FastRule::build(sinh, p).unwrap(),
+        );
+        let mut worst = 0.0f64;
+        for nu in [-0.9, 0.25, 0.5] {
+            for mr in [0.0, 0.9, 0.9999, 1.0 - 1e-12] {
+                for k in [1e-6, 0.3, 1.0] {
+                    let (sp, ax) = integral_inputs::<Mp>(nu, mr, k, p);
+                    let x = integrals_with_rule(&sp, &ax, &a).unwrap();
+                    let y = integrals_with_rule(&sp, &ax, &b).unwrap();
+                    let e = [
+                        rel_eps(&y.i1, &x.i1.0),
+                        rel_eps(&y.i2, &x.i2.0),
+                        rel_eps(&y.di1_dk(), &x.di1_dk().0),
+                        rel_eps(&y.di2_dk(), &x.di2_dk().0),
+                    ];
+                    let e = e.into_iter().fold(0.0, f64::max);
+                    assert!(e <= 8.0, "{bits} bits nu={nu} M_R={mr} k={k}: {e:.1} eps");
+                    worst = worst.max(e);
+                }
+            }
+        }
+        println!("{bits} bits: sinh-mapped left half against the plain rule, worst {worst:.2} eps");
+    }
+}

@@ -35,6 +35,19 @@
 //! unbounded. The difference a(s) − a0 is formed directly: its cancellation near s = 0 costs an
 //! absolute error ε·a/(s + ε²) at a node, the rounding error of the integrand itself.
 //!
+//! **Above double-double: the left half on sinh-mapped panels.** The single rule in w needs
+//! ⌈0.433·bits⌉ nodes (1772 at 4096 bits), and a rule's construction grows like n². Above 106
+//! bits the left half is laid out instead ([`RuleSizes::left_sinh`]) on the panels of
+//! [`crate::routes::graded`] in w = a sinh x, x ∈ [0, 3 ln 2], a = 1/sinh(3 ln 2) ≈ 0.254 <
+//! δ: the map sends every singularity left after the pole subtraction (G's branch points ±iδ,
+//! the zeros of Q′, the branch points ±i/k of u^{−3/2}) to the edge of the strip
+//! |Im x| < π/2, where the panels' node counts are calibrated ([`graded::left_nodes`]); the
+//! subtracted pole ±iε is removable and may lie inside. Three units of ln 2 take one 3-unit
+//! panel up to 512 bits (77 nodes at 256 bits against 109), a 2-unit and a 1-unit panel above
+//! (1556 nodes at 4096 bits), whose rules and e^{±x} tables the right half's sinh layouts
+//! share. Measured against the single rule at 256 and 1024 bits in `tests/fast.rs`
+//! (`left_layouts_agree`: within 2.2ε, derivatives included).
+//!
 //! **Right half: the k-peak.** The weight (σ + k²)^{−3/2} has branch points at v = ±ik, near the
 //! end v = 0 when k is small, while b is analytic in |σ| < 1 (its nearest singularity is
 //! √(1 + σ) at σ = −1). The Taylor polynomial P = Σ_{j<J} b_j σ^j of b at σ = 0 is subtracted at

@@ -12,6 +12,22 @@ pub struct RuleSizes {
     pub right: usize,
     /// Taylor terms J of b(σ) subtracted on the right half.
     pub taylor: usize,
+    /// The left half on the sinh-mapped panels of [`crate::routes::graded`] (w = a sinh x,
+    /// x ∈ [0, 3 ln 2]) instead of one Gauss–Legendre rule in w; `left` is then the layout's
+    /// node count ([`left_sinh_nodes`]). Above double-double.
+    pub left_sinh: bool,
+}
+
+/// The largest scale a of the left half's map w = a sinh x: below the lowest singularity the
+/// pole subtraction leaves, G's branch point at w = ±iδ with δ ≥ 0.2956 (ν = 1/2, M_R → 1);
+/// the layout rounds it to three units of ln 2, a = 1/sinh(3 ln 2) ≈ 0.254.
+pub(crate) const LEFT_SCALE: f64 = 0.28;
+
+/// Nodes of the left half's sinh-mapped panels at `bits` bits ([`graded::left_plan`] for three
+/// units of ln 2): 77 at 256 bits, 392 at 1024, 1556 at 4096.
+/// Node counts for (46)–(47); implements no equation.
+pub fn left_sinh_nodes(bits: u32) -> usize {
+    graded::sinh_node_count(bits, LEFT_SCALE)
 }
 
 impl RuleSizes {
@@ -21,7 +37,9 @@ impl RuleSizes {
     /// Taylor terms, worst for k between 0.1 and 0.9).
     ///
     /// 53 bits (`f64`): 20, 12, J = 8; 106 bits (double-double): 44, 26, J = 14; otherwise
-    /// ⌈0.433·bits⌉ − 2, ⌈0.24·bits⌉ + 1, J = ⌈0.13·bits⌉ (256 bits: 109, 63, 34).
+    /// ⌈0.24·bits⌉ + 1 right nodes and J = ⌈0.13·bits⌉, with the left half in one rule of
+    /// ⌈0.433·bits⌉ − 2 nodes up to 106 bits and on the sinh-mapped panels above
+    /// ([`left_sinh_nodes`]; 256 bits: 77, 63, 34).
     /// Rule sizes for (46)–(47); implements no equation.
     pub fn for_bits(bits: u32) -> RuleSizes {
         let b = bits.max(24) as usize;
@@ -30,17 +48,27 @@ impl RuleSizes {
                 left: 20,
                 right: 12,
                 taylor: 8,
+                left_sinh: false,
             },
             106 => RuleSizes {
                 left: 44,
                 right: 26,
                 taylor: 14,
+                left_sinh: false,
             },
-            _ => RuleSizes {
-                left: (b * 433).div_ceil(1000) - 2,
-                right: (b * 24).div_ceil(100) + 1,
-                taylor: (b * 13).div_ceil(100),
-            },
+            _ => {
+                let left_sinh = b > 106;
+                RuleSizes {
+                    left: if left_sinh {
+                        left_sinh_nodes(bits)
+                    } else {
+                        (b * 433).div_ceil(1000) - 2
+                    },
+                    right: (b * 24).div_ceil(100) + 1,
+                    taylor: (b * 13).div_ceil(100),
+                    left_sinh,
+                }
+            }
         }
     }
 
@@ -84,19 +112,38 @@ impl<T: Real> Half<T> {
         }
         pts.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal));
         let s: Vec<T> = pts.iter().map(|(x, _)| x.square()).collect();
+        let w: Vec<T> = pts.into_iter().map(|(_, w)| w).collect();
+        Ok(Self::from_squares(s, w, p))
+    }
+
+    /// The left half on the sinh-mapped panels w = a sinh x of [`graded`] for a scale of at
+    /// most [`LEFT_SCALE`]: node squares and weights (dw/dx times the panel weight), each within
+    /// a few ulps (absolute) of the working precision; the panels' rules and e^{±x} tables are
+    /// the graded route's, shared with the right half's sinh layout.
+    pub(crate) fn sinh(p: T::Prec) -> Result<Self> {
+        graded::with_sinh_layout(p, LEFT_SCALE, |layout| {
+            let n = layout.nodes()?;
+            let (mut s, mut w) = (vec![T::zero(p); n], vec![T::zero(p); n]);
+            layout.fill(&T::one(p), &mut s, &mut w)?;
+            Ok(Self::from_squares(s, w, p))
+        })
+    }
+
+    /// The half from its node squares s and weights ω: p = 1 + s, 2p, 4p and ω·s.
+    fn from_squares(s: Vec<T>, w: Vec<T>, p: T::Prec) -> Self {
+        let one = T::one(p);
         let pp: Vec<T> = s.iter().map(|s| one.clone() + s).collect();
         let two_p: Vec<T> = pp.iter().map(|x| x.clone().mul_i64(2)).collect();
         let four_p: Vec<T> = pp.iter().map(|x| x.clone().mul_i64(4)).collect();
-        let w: Vec<T> = pts.into_iter().map(|(_, w)| w).collect();
         let ws: Vec<T> = w.iter().zip(&s).map(|(w, s)| w.clone() * s).collect();
-        Ok(Half {
+        Half {
             s,
             p: pp,
             two_p,
             four_p,
             w,
             ws,
-        })
+        }
     }
 
     pub(crate) fn len(&self) -> usize {
@@ -189,7 +236,19 @@ impl<T: Real> FastRule<T> {
                 bound: ">= 1",
             });
         }
-        let left = Half::new(sizes.left, p)?;
+        let left = if sizes.left_sinh {
+            let h = Half::sinh(p)?;
+            if h.len() != sizes.left {
+                return Err(Error::Domain {
+                    name: "fast route left node count with the sinh layout",
+                    value: sizes.left.to_string(),
+                    bound: "the layout's count (left_sinh_nodes)",
+                });
+            }
+            h
+        } else {
+            Half::new(sizes.left, p)?
+        };
         let right = OnceLock::new();
         if T::bits(p) <= 106 {
             let _ = right.set(Half::new(sizes.right, p)?);
