@@ -306,12 +306,16 @@ fn log2_abs(v: &Float) -> f64 {
     }
 }
 
-/// The Taylor coefficients u_m = s^m P_n^{(m)}(x̃) (up to the common factor 2^e/n!) with the
-/// binary size τ_m of each term u_m η^m/m! of f, for the first-order |η|, until two consecutive
-/// terms fall 2^(w + 24) below the first-order term.
+/// The Taylor coefficients v_m = s^m P_n^{(m)}(x̃)/m! (up to the common factor 2^e/n!) with
+/// the binary size τ_m of each term v_m η^m of f, for the first-order |η|, until two consecutive
+/// terms fall 2^(w + 24) below the first-order term; and those of f′, d_m = (m + 1) v_{m+1},
+/// with the sizes τ′_m of d_m η^m. The factorials are divided out once here, so that each
+/// evaluation of f or f′ (Newton's steps, the weight) costs one product and one sum a term.
 struct Expansion {
-    u: Vec<Float>,
+    v: Vec<Float>,
     tau: Vec<f64>,
+    d: Vec<Float>,
+    tau_d: Vec<f64>,
 }
 
 impl Refine {
@@ -334,7 +338,8 @@ impl Refine {
         (q + 16 - drop).max(64)
     }
 
-    /// The coefficients u_0 … u_J: u_{m+2} = 2(m + 1) x̃ u_{m+1} − (n − m)(n + m + 1) s u_m,
+    /// The coefficients v_0 … v_J from u_{m+2} = 2(m + 1) x̃ u_{m+1} − (n − m)(n + m + 1) s u_m
+    /// divided by (m + 2)!: v_{m+2} = (2(m + 1)² x̃ v_{m+1} − (n − m)(n + m + 1) s v_m)/((m + 1)(m + 2)),
     /// each at the precision its term needs.
     fn expansion(
         &self,
@@ -348,8 +353,7 @@ impl Refine {
         let r = lg(&u1) + lg_eta;
         let floor = r - self.w as f64 - 24.0;
         let mut tau = vec![lg(&u0), r];
-        let mut u = vec![u0, u1];
-        let mut log_fact = 0f64;
+        let mut v = vec![u0, u1];
         let cap = 4 * self.w as usize + 64;
         let mut m = 0usize;
         while !(tau[m] < floor && tau[m + 1] < floor) {
@@ -363,36 +367,38 @@ impl Refine {
             // The next coefficient's term is about as large as these two or smaller (a margin
             // of 32 bits for one that happens to be small).
             let prec = Self::prec_for(self.w, r, tau[m].max(tau[m + 1]) + 32.0);
-            let a = Float::with_val(xt.prec() + 32, xt * (2 * (m as i64) + 2));
+            let m1 = m as u64 + 1;
+            // Both factors exact: x̃ has 114 bits and 2(m + 1)² < 2⁶⁴, s 232 bits.
+            let a = Float::with_val(xt.prec() + 64, xt * (2 * m1 * m1));
             let b = Float::with_val(s.prec() + 64, s * ((n - m as i64) * (n + m as i64 + 1)));
-            let mut next = Float::with_val(prec, &a * &u[m + 1]);
-            next -= Float::with_val(prec, &b * &u[m]);
-            log_fact += ((m + 2) as f64).log2();
-            tau.push(lg(&next) + (m + 2) as f64 * lg_eta - log_fact);
-            u.push(next);
+            let mut next = Float::with_val(prec, &a * &v[m + 1]);
+            next -= Float::with_val(prec, &b * &v[m]);
+            next /= m1 * (m1 + 1);
+            tau.push(lg(&next) + (m + 2) as f64 * lg_eta);
+            v.push(next);
             m += 1;
         }
-        Ok(Expansion { u, tau })
-    }
-
-    /// f(η) = Σ u_m η^m/m! to about 2^−q relative to 2^r (Horner, falling precision).
-    fn f(ex: &Expansion, eta: &Float, q: u32, r: f64) -> Float {
-        Self::horner(&ex.u, &ex.tau, eta, q, r)
-    }
-
-    /// f'(η) = Σ u_{m+1} η^m/m! to about 2^−q relative to |u_1|.
-    fn df(ex: &Expansion, eta: &Float, q: u32, lg_eta: f64) -> Float {
-        // Term m of f' is (m + 1)/η times term m + 1 of f.
-        let r = ex.tau[1] - lg_eta;
-        let tau: Vec<f64> = ex.tau[1..]
-            .iter()
-            .enumerate()
-            .map(|(m, t)| t - lg_eta + ((m + 1) as f64).log2())
+        // f′ = Σ (m + 1) v_{m+1} η^m: each product exact (the factor has at most 32 bits).
+        let d = (1..v.len())
+            .map(|i| Float::with_val(v[i].prec() + 32, &v[i] * i as u64))
             .collect();
-        Self::horner(&ex.u[1..], &tau, eta, q, r)
+        let tau_d = (1..v.len())
+            .map(|i| tau[i] - lg_eta + (i as f64).log2())
+            .collect();
+        Ok(Expansion { v, tau, d, tau_d })
     }
 
-    /// Σ_m c_m η^m/m! by Horner from the top, each partial sum at the precision of its term.
+    /// f(η) = Σ v_m η^m to about 2^−q relative to 2^r (Horner, falling precision).
+    fn f(ex: &Expansion, eta: &Float, q: u32, r: f64) -> Float {
+        Self::horner(&ex.v, &ex.tau, eta, q, r)
+    }
+
+    /// f'(η) = Σ d_m η^m to about 2^−q relative to |d_0| = |u_1|.
+    fn df(ex: &Expansion, eta: &Float, q: u32) -> Float {
+        Self::horner(&ex.d, &ex.tau_d, eta, q, ex.tau_d[0])
+    }
+
+    /// Σ_m c_m η^m by Horner from the top, each partial sum at the precision of its term.
     fn horner(c: &[Float], tau: &[f64], eta: &Float, q: u32, r: f64) -> Float {
         let floor = r - q as f64 - 24.0;
         let top = (0..c.len()).rev().find(|&m| tau[m] >= floor).unwrap_or(0);
@@ -403,10 +409,18 @@ impl Refine {
         for m in (0..top).rev() {
             big = big.max(tau[m]);
             let prec = Self::prec_for(q, r, big);
-            let e = Float::with_val(prec, eta);
-            let mut t = Float::with_val(prec, &e * &acc);
-            t /= (m + 1) as u32;
-            acc = Float::with_val(prec, &c[m] + &t);
+            // η as it is when it is no longer than the partial sum (the same value), else
+            // rounded to it.
+            let short_eta;
+            let e = if eta.prec() <= prec {
+                eta
+            } else {
+                short_eta = Float::with_val(prec, eta);
+                &short_eta
+            };
+            let mut t = Float::with_val(prec, e * &acc);
+            t += &c[m];
+            acc = t;
         }
         acc
     }
@@ -455,13 +469,13 @@ impl Refine {
             let need = need as u32;
             let mut good = (first as u32 - 4).min(need);
             let p0 = (2 * good + 32).min(need + 16);
-            let mut eta = Float::with_val(p0, -(Float::with_val(p0, &ex.u[0]) / &ex.u[1]));
+            let mut eta = Float::with_val(p0, -(Float::with_val(p0, &ex.v[0]) / &ex.v[1]));
             // Each Newton step must land within 2^−(good − 4) of η (relative): quadratic
             // convergence from a first step good to `first` bits.
             while good < need {
                 let next = (2 * good).saturating_sub(8).min(need + 8);
                 let fv = Self::f(&ex, &eta, next, r);
-                let dv = Self::df(&ex, &eta, good + 16, lg_eta);
+                let dv = Self::df(&ex, &eta, good + 16);
                 let step = Float::with_val(next + 16, &fv / &dv);
                 if lg(&step) > lg(&eta) - good as f64 + 4.0 {
                     return Err(fail("Gauss-Legendre node (Newton on the Taylor expansion)"));
@@ -472,7 +486,7 @@ impl Refine {
                 }
                 good = next;
             }
-            let dfull = Self::df(&ex, &eta, w + 16, lg_eta);
+            let dfull = Self::df(&ex, &eta, w + 16);
             (eta, dfull)
         };
         let x = Float::with_val(w, &xt + Float::with_val(w, &s * &eta));
