@@ -9,7 +9,9 @@
 //! * `scaling_ellipse/{warm,cold}/<precision>`: `solve_ellipse` (the precision ladder);
 //! * `gl_rule/{short_point,newton}/n=<n>,bits=<bits>`: one n-point Gauss–Legendre rule, by the
 //!   construction the routes use and by Newton on the three-term recurrence at the guard
-//!   precision (`numerics::gauss_legendre::reference_rule`), n the fast route's left rule.
+//!   precision (`numerics::gauss_legendre::reference_rule`), n the rule of a 2-unit sinh-mapped
+//!   panel (`routes::graded::left_nodes(bits, 2)`: 914 nodes at 4096 bits), the largest rule a
+//!   first solve at k < 1 builds above 512 bits.
 //!
 //! "Cold" forgets the shared rule cache and the Gauss–Legendre store
 //! (`numerics::quadrature::clear_rule_caches`); the rules of `f64` and double-double stay in
@@ -23,7 +25,7 @@
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use moving_hertz::numerics::gauss_legendre::reference_rule;
 use moving_hertz::numerics::quadrature::{clear_rule_caches, GaussLegendre};
-use moving_hertz::routes::fast::RuleSizes;
+use moving_hertz::routes::graded::left_nodes;
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
 use moving_hertz::{integrals, solve_ellipse, IntegralOptions, Material, Options};
 use std::time::{Duration, Instant};
@@ -94,7 +96,7 @@ fn gl_rules(c: &mut Criterion) {
     let mut g = c.benchmark_group("gl_rule");
     g.sample_size(10);
     for bits in [256u32, 1024, 2048, 4096, 8192] {
-        let n = RuleSizes::for_bits(bits).left;
+        let n = left_nodes(bits, 2);
         let p = MpPrec::new(bits as u64).expect("precision");
         let id = format!("n={n},bits={bits}");
         g.bench_function(BenchmarkId::new("short_point", &id), |b| {
