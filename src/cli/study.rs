@@ -228,18 +228,25 @@ fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
         (Relative, |q| q.k),
         (Relative, |q| q.a_rel),
     ];
+    // Each column's spreads over the whole grid once, then a row per speed.
+    let columns: Vec<_> = fs
+        .iter()
+        .flat_map(|&(how, f)| {
+            [(0.0, 0.5), (-0.99, 0.5)].map(|range| poisson::spread(&pts, range, how, f))
+        })
+        .collect();
     for mr in poisson::SPEEDS {
-        let mut cells = Vec::new();
-        for (how, f) in fs {
-            for range in [(0.0, 0.5), (-0.99, 0.5)] {
-                let w = poisson::spread(&pts, range, how, f)
+        let cells: Vec<String> = columns
+            .iter()
+            .map(|col| {
+                let w = col
                     .iter()
                     .filter(|(m, _, _)| *m == mr)
                     .map(|(_, _, w)| *w)
                     .fold(0.0f64, f64::max);
-                cells.push(format!("{:.3}", 100.0 * w));
-            }
-        }
+                format!("{:.3}", 100.0 * w)
+            })
+            .collect();
         say!("| {mr} | {} |", cells.join(" | "));
     }
     say!("wrote {} and figures/poisson_*.svg", data.display());
