@@ -43,7 +43,7 @@ fn bench(c: &mut Criterion) {
             let mut x = black_box(a);
             let y = black_box(b);
             for _ in 0..CHAIN {
-                x = x * y;
+                x *= y;
             }
             x
         })
@@ -53,7 +53,7 @@ fn bench(c: &mut Criterion) {
             let mut x = black_box(ta);
             let y = black_box(tb);
             for _ in 0..CHAIN {
-                x = x * y;
+                x *= y;
             }
             x
         })
@@ -63,7 +63,7 @@ fn bench(c: &mut Criterion) {
             let mut x = black_box(a);
             let y = black_box(b);
             for _ in 0..CHAIN {
-                x = x + y;
+                x += y;
             }
             x
         })
@@ -73,7 +73,7 @@ fn bench(c: &mut Criterion) {
             let mut x = black_box(a);
             let y = black_box(b);
             for _ in 0..CHAIN {
-                x = x / y;
+                x /= y;
             }
             x
         })
@@ -83,7 +83,7 @@ fn bench(c: &mut Criterion) {
             let mut x = black_box(ta);
             let y = black_box(tb);
             for _ in 0..CHAIN {
-                x = x / y;
+                x /= y;
             }
             x
         })
@@ -118,7 +118,7 @@ fn bench(c: &mut Criterion) {
             let mut x = black_box(1.000_000_1f64);
             let y = black_box(0.999_999_9f64);
             for _ in 0..CHAIN {
-                x = x * y;
+                x *= y;
             }
             x
         })

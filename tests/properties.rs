@@ -123,13 +123,13 @@ fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Sh
         Ok(s) => s,
         Err(e) => return typed("speed", &e),
     };
-    if i % shares.integrals == 0 {
+    if i.is_multiple_of(shares.integrals) {
         check_integrals(
             "integrals",
             &integrals(&sp, &x(k), &IntegralOptions::default()),
         );
     }
-    if i % shares.options == 0 {
+    if i.is_multiple_of(shares.options) {
         let method = Method::ALL[g.below(Method::ALL.len() as u64) as usize];
         let tolerance = (g.below(2) == 0).then(|| RelError::from_f64(10f64.powf(-20.0 * g.unit())));
         let opts = IntegralOptions {
@@ -140,7 +140,7 @@ fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Sh
         };
         check_integrals("integrals with options", &integrals(&sp, &x(k), &opts));
     }
-    if i % shares.ellipse == 0 {
+    if i.is_multiple_of(shares.ellipse) {
         let method = [
             Method::Auto,
             Method::Fixed,
@@ -155,7 +155,7 @@ fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Sh
         let what = format!("solve_ellipse nu={nu:e} M_R={mr:e} A1/B1={ratio:e} {opts:?}");
         check_ellipse(&what, &solve_ellipse(&sp, &x(ratio), &opts));
     }
-    if i % shares.contact == 0 {
+    if i.is_multiple_of(shares.contact) {
         let size = g.value(1e-3, 1e3);
         let problem = ContactProblem {
             speed: sp.clone(),
@@ -183,7 +183,7 @@ fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Sh
             Err(e) => typed("contact", &e),
         }
     }
-    if i % shares.tolerance == 0 {
+    if i.is_multiple_of(shares.tolerance) {
         if let Ok(inputs) = ExactInputs::from_f64(nu, mr, k) {
             let tol = RelError::from_f64(10f64.powf(-3.0 - 30.0 * g.unit()));
             check_integrals(
@@ -192,7 +192,7 @@ fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Sh
             );
         }
     }
-    if i % shares.sweep == 0 {
+    if i.is_multiple_of(shares.sweep) {
         let points: Vec<EllipsePoint<T>> = (0..8)
             .map(|j| EllipsePoint {
                 nu: x(if j == 5 { g.value(-1.0, 0.5) } else { nu }),

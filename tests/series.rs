@@ -68,7 +68,7 @@ fn series_case<T: Real>(p: T::Prec, label: &str) {
     // A series with vanishing odd terms (sin 1 = Σ (−1)^k/(2k+1)!, written with zero even-index
     // terms): the two-small-terms rule does not stop at a zero term.
     let gen = |n: usize| {
-        if n % 2 == 0 {
+        if n.is_multiple_of(2) {
             return T::zero(p);
         }
         let mut f = T::one(p);

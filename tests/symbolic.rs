@@ -251,7 +251,7 @@ fn rational_function_arithmetic_is_exact_and_in_lowest_terms() {
     let pick = |rng: &mut SplitMix| {
         let mut d = Poly::constant(Rational::from(1 + (rng.next_u64() % 3) as i64));
         for f in &factors {
-            if rng.next_u64() % 3 == 0 {
+            if rng.next_u64().is_multiple_of(3) {
                 d = d.mul(f);
             }
         }
@@ -500,7 +500,7 @@ fn alpha_and_beta_have_opposite_poles_of_order_n_at_e2_zero() {
         let n = p.n as u32;
         let c = rug::Integer::from(rug::Integer::binomial_u(2 * n, n));
         let mut a = Rational::from((rug::Integer::from(2 * n - 1) << (2 * n), c * (2 * n)));
-        if n % 2 == 0 {
+        if n.is_multiple_of(2) {
             a = -a;
         }
         assert_eq!(p.alpha, a, "n = {n}");

@@ -28,7 +28,7 @@ impl Progress {
         if elapsed < 1.0 && !self.shown {
             return;
         }
-        if self.done % (self.total / 100).max(1) != 0 && self.done != self.total {
+        if !self.done.is_multiple_of((self.total / 100).max(1)) && self.done != self.total {
             return;
         }
         self.shown = true;

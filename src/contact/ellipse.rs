@@ -601,7 +601,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// planned when two of them bring the seed's error to ε/64. Returns the slope for the
     /// Halley step instead when `halley` asks for it and the lower stage's secant F″ exists.
     fn adopt_slope(&mut self, c: Chord<T>, seed_err: &T, halley: bool) -> Option<Chord<T>> {
-        if !self.seeded || !(c.df.is_positive() && c.df.is_finite()) {
+        if !(self.seeded && c.df.is_positive() && c.df.is_finite()) {
             return None;
         }
         if halley && f_second(&c, &self.lam).is_some() {
@@ -921,7 +921,7 @@ fn log_model_step(lam: f64, f: f64, df: f64) -> Option<f64> {
     for _ in 0..30 {
         let step = g(d) / (2.0 - 1.0 / (q0 + d));
         d -= step;
-        if !(q0 + d > 0.5) {
+        if (q0 + d).is_nan() || q0 + d <= 0.5 {
             return None;
         }
         if step.abs() <= 1e-10 * (1.0 + d.abs()) {

@@ -190,7 +190,7 @@ impl<T: Real> Material<T> {
     /// M_R = 0.999999999999 (M_R of sections 5–6 of the paper). Errors quote the text.
     pub fn parse_speed(&self, mr: &str) -> Result<Speed<T>> {
         let r = decimal_to_rational(mr)?;
-        if r < 0 || r >= 1 {
+        if !(0..1).contains(&r) {
             return Err(Error::Domain {
                 name: MR_NAME,
                 value: mr.trim().to_string(),

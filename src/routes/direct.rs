@@ -389,9 +389,8 @@ pub fn contact_integrals<T: Real>(
     let r = integrate_vec(right, &s.breakpoints(&s.right_scales()), &t4, lim)?;
     let v: [T; 5] = std::array::from_fn(|c| l.values[c].clone() + &r.values[c]);
     let mut est = T::zero(p);
-    for c in 0..5 {
-        let e = (l.errors[c].clone() + &r.errors[c]) / &v[c].clone().abs();
-        est = est.max_of(e);
+    for ((le, re), vc) in l.errors.iter().zip(&r.errors).zip(&v) {
+        est = est.max_of((le.clone() + re) / &vc.clone().abs());
     }
     for (c, x) in v.iter().enumerate() {
         if !x.is_finite() || (c < 3 && !x.is_positive()) {

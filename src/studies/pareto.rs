@@ -34,16 +34,25 @@ pub const SPEEDS: [f64; 5] = [0.5, 0.9, 0.99, 0.999, 0.9999];
 /// MPFR precisions of the study.
 pub const MPFR_BITS: [u32; 5] = [64, 128, 256, 512, 1024];
 
-fn measure<T: Real>(
+/// One case of the study: the inputs, the method, the 1536-bit reference k and the time budget.
+struct Case<'a> {
     nu: f64,
     mr: f64,
     ratio: f64,
-    p: T::Prec,
-    label: Precision,
     method: Method,
-    reference: &Float,
+    reference: &'a Float,
     budget_ms: f64,
-) -> Row {
+}
+
+fn measure<T: Real>(case: &Case<'_>, p: T::Prec, label: Precision) -> Row {
+    let Case {
+        nu,
+        mr,
+        ratio,
+        method,
+        reference,
+        budget_ms,
+    } = *case;
     let fail = |why: String| Row {
         mr,
         method,
@@ -103,39 +112,20 @@ pub fn run(
             .k
             .value
             .to_float(1600);
-        for &m in methods {
-            rows.push(measure::<f64>(
+        for &method in methods {
+            let case = Case {
                 nu,
                 mr,
                 ratio,
-                (),
-                Precision::F64,
-                m,
-                &reference,
+                method,
+                reference: &reference,
                 budget_ms,
-            ));
-            rows.push(measure::<Dd>(
-                nu,
-                mr,
-                ratio,
-                (),
-                Precision::DoubleDouble,
-                m,
-                &reference,
-                budget_ms,
-            ));
+            };
+            rows.push(measure::<f64>(&case, (), Precision::F64));
+            rows.push(measure::<Dd>(&case, (), Precision::DoubleDouble));
             for bits in MPFR_BITS {
                 let p = MpPrec::clamped(bits);
-                rows.push(measure::<Mp>(
-                    nu,
-                    mr,
-                    ratio,
-                    p,
-                    Precision::Mpfr(p),
-                    m,
-                    &reference,
-                    budget_ms,
-                ));
+                rows.push(measure::<Mp>(&case, p, Precision::Mpfr(p)));
             }
         }
     }

@@ -157,7 +157,9 @@ pub fn spread(
 /// Draws the spreads of section 7's remark; no arithmetic beyond plotting.
 pub fn charts(points: &[Point]) -> Vec<(String, String)> {
     let mut out = Vec::new();
-    let quantities: [(&str, &str, Deviation, fn(&Point) -> f64); 3] = [
+    // (file name part, axis label, how the spread is measured, the quantity of a point)
+    type Quantity = (&'static str, &'static str, Deviation, fn(&Point) -> f64);
+    let quantities: [Quantity; 3] = [
         (
             "e",
             "eccentricity e (absolute deviation, ×100)",

@@ -232,7 +232,9 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
 /// The worst error per (precision, method, root group, ν region), as Markdown table rows.
 /// Tabulates the errors of the roots of (6) as measured.
 pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
-    let regions: [(&str, fn(f64) -> bool); 4] = [
+    // (name, whether a ν lies in it)
+    type Region = (&'static str, fn(f64) -> bool);
+    let regions: [Region; 4] = [
         ("whole range", |_| true),
         ("dist(ν, ν*) < 1e-3", |nu| {
             (nu - 0.263_082_064_883_363_6).abs() < 1e-3

@@ -129,8 +129,10 @@ fn run_at<T: Real>(inputs: &ExactInputs, p: T::Prec, method: Method) -> Option<I
 fn reference(nu: f64, mr: f64, k: f64) -> Option<(Float, Float)> {
     use std::cell::RefCell;
     use std::collections::HashMap;
+    // (ν, M_R, k) by their bits → (I1, I2) at 320 bits.
+    type Cache = HashMap<(u64, u64, u64), (Float, Float)>;
     thread_local! {
-        static CACHE: RefCell<HashMap<(u64, u64, u64), (Float, Float)>> = RefCell::new(HashMap::new());
+        static CACHE: RefCell<Cache> = RefCell::new(HashMap::new());
     }
     let key = (nu.to_bits(), mr.to_bits(), k.to_bits());
     if let Some(v) = CACHE.with(|c| c.borrow().get(&key).cloned()) {
