@@ -97,6 +97,7 @@ fn agm_cap(bits: u32) -> usize {
 ///
 /// The AGM of two positive numbers loses nothing to cancellation. The loop stops once the
 /// relative gap δ = |a − b|/a is below √ε: then (a + b)/2 is the AGM to δ²/16 ≤ ε/16.
+#[inline]
 fn k_agm<T: Real>(kc: T) -> Result<T> {
     let p = kc.prec();
     let tol = T::epsilon_root(p, 2);
@@ -252,6 +253,7 @@ pub fn ellipk<T: Real>(m: &T) -> Result<T> {
 /// K as a function of the complementary parameter `mc = 1 − m > 0`: π / (2 AGM(1, √mc)).
 ///
 /// Accurate to a few ε for every `mc > 0` (`mc = 10⁻³⁰` or `10¹²` alike).
+#[inline]
 pub fn ellipk_mc<T: Real>(mc: &T) -> Result<T> {
     check_mc(mc, true)?;
     k_agm(mc.clone().sqrt())
