@@ -6,8 +6,9 @@
 //! * `kernel`: the bare AGM loop with its three stopping rules (tolerance √ε, no progress, cap);
 //! * `ellipk_mc`: the library function (argument checks, `Result`, overflow guard) against a
 //!   hand-written `f64` replica of it. The library function and its kernel are marked
-//!   `#[inline]`: without the hint the compiler kept them out of line in this harness and the
-//!   pair measured 1.1–1.5 (the kernel pair, inlined either way, at parity).
+//!   `#[inline]`: without the hint the compiler kept them out of line in this harness, and the
+//!   library call measured slower than the replica (the kernel pair, inlined either way, did
+//!   not differ); docs/performance.md has the figures.
 //!
 //! Run: `cargo bench --bench generic_cost -- --warm-up-time 1 --measurement-time 3`
 
