@@ -1,7 +1,8 @@
 //! Error bounds that work at any precision (issue 16): at 2048, 4096 and 8192 bits the bounds
 //! of I1, I2 and of the ellipse's k are finite, non-zero (an `f64` would underflow them) and
-//! bound the true error, measured against the same computation 256 bits higher. The 8192-bit
-//! case takes about a minute on two cores and runs on request:
+//! bound the true error, measured against the same computation 256 bits higher; and the precision
+//! ladder's half-precision stages over a grid at 1536 bits. The 8192-bit
+//! case takes under half a minute on two cores and runs on request:
 //! `cargo test --release --test high_precision -- --ignored` (its output is quoted in
 //! docs/precision.md).
 
@@ -76,7 +77,56 @@ fn bounds_hold_at_4096_bits() {
 }
 
 #[test]
-#[ignore = "about a minute; run with --ignored"]
+#[ignore = "under half a minute; run with --ignored"]
 fn bounds_hold_at_8192_bits() {
     check(8192);
+}
+
+/// The ladder's half-precision stages (above 1024 bits the stage below p bits is the solve at
+/// p/2 + 32 bits): at 1536 bits, over speeds up to M_R = 1 − 2⁻³³, ν from −0.9 to 0.5 and
+/// A1/B1 from 2⁻²⁰ to 2²⁰, k lies within its bound of the solve 256 bits higher (whose own
+/// stage sits at another precision, 928 bits against 800), and the working precision spends
+/// at most two evaluations (one chord step from the stage's root; Newton's steps from the
+/// double-double root would take four).
+#[test]
+fn half_precision_stage_over_a_grid() {
+    let bits = 1536;
+    let p = MpPrec::new(bits as u64).unwrap();
+    let q = MpPrec::new(bits as u64 + 256).unwrap();
+    let up = |x: &Mp| Mp::from_float(&x.to_float(bits), q);
+    let cases = [
+        ("0.25", "0.9990234375", 2.0),
+        ("-0.9", "0", 0.5f64.powi(20)),
+        ("0.5", "0.999999999883584678173065185546875", 2f64.powi(20)),
+        ("0", "0.5", 1e-3),
+        ("0.3", "0.9", 1e3),
+    ];
+    for (nu, mr, a) in cases {
+        let (sp, _) = ExactInputs::parse(nu, mr, "1")
+            .unwrap()
+            .at::<Mp>(p)
+            .unwrap();
+        let spq = Material::new(up(sp.material().nu()))
+            .unwrap()
+            .speed_from_gap(up(sp.gap()))
+            .unwrap();
+        let ratio = Mp::from_f64(a, p);
+        let s = solve_ellipse(&sp, &ratio, &Options::default()).unwrap();
+        let t = solve_ellipse(&spq, &up(&ratio), &Options::default()).unwrap();
+        let err = rel(&s.k.value, &t.k.value, bits + 256);
+        println!(
+            "nu {nu}, M_R {mr}, A1/B1 {a:e}: k error {err}, bound {}, {} evaluations at {bits} bits",
+            s.k.error, s.iterations
+        );
+        assert!(
+            err <= s.k.error && s.k.error.is_finite(),
+            "{nu} {mr} {a}: k error {err} > bound {}",
+            s.k.error
+        );
+        assert!(
+            s.iterations <= 2,
+            "{nu} {mr} {a}: {} evaluations",
+            s.iterations
+        );
+    }
 }

@@ -36,8 +36,14 @@
 //! chord step with the `f64` F′, then one Newton step, so that it hands on its own F′, good to
 //! ~2^-90), then chord steps from its root (~2^-100 to ~2^-190 to below 2^-256): 2 evaluations without
 //! k-derivatives at 256 bits, 3 at 512, 4 at 1024 — a few high-precision
-//! evaluations of the integrals, no search. Test: `tests/contact.rs` (the ladder's k within 10ε
-//! of a 320-bit adaptive-quadrature solve at f64, double-double and 256 bits).
+//! evaluations of the integrals, no search. Above 1024 bits (MPFR) the stage below p bits is the
+//! same solve at m = p/2 + 32 bits, itself a ladder (`ShapeSolver::via_mid`: 4096 bits climbs
+//! 568, 1072 and 2080): its root and F′, each good to ~2^-m, leave one chord step at p bits —
+//! one evaluation without k-derivatives, where Newton's steps from the double-double root took
+//! log₂(p/100) evaluations with them (six at 4096 bits). Each stage costs about a fifth of the
+//! one above it (`docs/precision.md`). Tests: `tests/contact.rs` (the ladder's k within 10ε
+//! of a 320-bit adaptive-quadrature solve at f64, double-double and 256 bits),
+//! `tests/high_precision.rs` (2048 to 8192 bits, against the solve 256 bits higher).
 
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
@@ -80,8 +86,9 @@ pub struct Options<T> {
     /// A starting value for k. Without one (the default) the solve starts from the static
     /// ellipse; with one, from the seed (rounded to `f64`), falling back to the static ellipse
     /// when Newton's method does not converge from it within a few evaluations. Either way,
-    /// above `f64` the solve climbs the precision ladder (`f64`, then double-double, then the
-    /// working precision: a few high-precision evaluations, no search).
+    /// above `f64` the solve climbs the precision ladder (`f64`, then double-double, above 1024
+    /// bits stages at about half the precision of the next, then the working precision: a few
+    /// high-precision evaluations, no search).
     pub seed: Option<T>,
     /// The relative accuracy wanted for k; `None` (the default) asks for the working
     /// precision's floor (a few ε). A tolerance below 4ε is refused before any work
@@ -116,8 +123,9 @@ pub struct Ellipse<T: Real> {
     /// at least one digit) and the route of the last evaluation.
     pub integrals: Integrals<T>,
     /// Evaluations of the integrals at the working precision (above `f64` the precision
-    /// ladder's stages at `f64` and double-double come on top: their evaluations cost a small
-    /// fraction of one at the working precision).
+    /// ladder's lower stages come on top: an evaluation at `f64` or double-double costs a small
+    /// fraction of one at the working precision, one at the half-precision stage above 1024
+    /// bits about a fifth).
     pub iterations: usize,
 }
 
@@ -296,6 +304,9 @@ pub(crate) struct ShapeSolver<T: Real + 'static> {
     top: Evaluator<T>,
     stage64: OnceCell<Option<Evaluator<f64>>>,
     stage_dd: OnceCell<Option<Evaluator<Dd>>>,
+    /// Above [`MID_ABOVE_BITS`], the solver at about half the working precision
+    /// ([`ShapeSolver::via_mid`]).
+    stage_mid: OnceCell<Option<Box<ShapeSolver<T>>>>,
 }
 
 impl<T: Real> ShapeSolver<T> {
@@ -305,6 +316,7 @@ impl<T: Real> ShapeSolver<T> {
             top: Evaluator::new(speed, newton_options(method))?,
             stage64: OnceCell::new(),
             stage_dd: OnceCell::new(),
+            stage_mid: OnceCell::new(),
         })
     }
 
@@ -434,6 +446,22 @@ fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Cho
         c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
     }
     c
+}
+
+/// F′ and the integrals' k-derivatives at the root `k` (one evaluation with derivatives), for
+/// a stage whose last step was a chord step; `None` if that evaluation fails.
+fn slope_at<S: Real>(ev: &Evaluator<S>, ratio: &S, k: &S) -> Option<Chord<S>> {
+    let lam = k.clone().ln();
+    let newton = Newton::new(ev, ratio, None, false, None, 1);
+    let (_, df, ci) = newton.eval(&lam, None, false).ok()?;
+    Some(Chord {
+        di1: ci.di1_dk(),
+        di2: ci.di2_dk(),
+        df,
+        rel_err: S::zero(lam.prec()),
+        before: None,
+        lam,
+    })
 }
 
 /// How one stage of the solve runs: its seed and the derivatives handed on by the stage below,
@@ -1159,7 +1187,8 @@ fn finish<T: Real>(
 
 impl<T: Real> ShapeSolver<T> {
     /// The precision ladder (module docs): solves at `f64` first (inputs rounded to `f64`, the speed by its gap),
-    /// above 106 bits then at double-double, and refines the root at the working precision of `T`
+    /// above 106 bits then at double-double, above 1024 bits at half the precision
+    /// ([`ShapeSolver::via_mid`]), and refines the root at the working precision of `T`
     /// from the last stage's root and derivative — one Halley step or two chord steps at
     /// double-double, two chord steps at 256 bits, three at 512 — a few high-precision
     /// evaluations of the integrals instead of a search. At `f64` it is the plain solve. If a lower
@@ -1167,12 +1196,27 @@ impl<T: Real> ShapeSolver<T> {
     /// static seed. The `f64` stage starts from `guess` when given. `tol`: the tolerance on k at
     /// the working precision (`None`: its floor).
     fn ladder(&self, ratio: &T, tol: Option<T>, guess: Option<f64>) -> Result<Shape<T>> {
+        self.climb(ratio, tol, guess, true).map(|(s, _)| s)
+    }
+
+    /// The ladder of [`ShapeSolver::ladder`], returning the working precision's last
+    /// derivatives too; `allow_chord`: whether its last evaluation may skip the k-derivatives
+    /// (false for a stage that hands them on, [`ShapeSolver::via_mid`]).
+    fn climb(
+        &self,
+        ratio: &T,
+        tol: Option<T>,
+        guess: Option<f64>,
+        allow_chord: bool,
+    ) -> Result<(Shape<T>, Option<Chord<T>>)> {
         let p = ratio.prec();
         if T::bits(p) <= 53 {
-            return lowest_stage(&self.top, ratio, true, tol, guess).map(|(s, _)| s);
+            return lowest_stage(&self.top, ratio, allow_chord, tol, guess);
         }
-        let alone =
-            |tol: Option<T>| lowest_stage(&self.top, ratio, true, tol, None).map(|(s, _)| s);
+        if let Some(done) = self.via_mid(ratio, &tol, guess, allow_chord) {
+            return done;
+        }
+        let alone = |tol: Option<T>| lowest_stage(&self.top, ratio, allow_chord, tol, None);
         // Each stage ends on a Newton step (no chord), so that its last derivatives lie one
         // rounding-level step from its root and serve the next stage's chord steps.
         let ratio64 = ratio.to_f64();
@@ -1187,7 +1231,7 @@ impl<T: Real> ShapeSolver<T> {
         // Above double-double, a double-double stage in between: its root is off by ~2^-100,
         // so the target precision needs one Newton step fewer (two chord steps up to ~600 bits).
         if T::bits(p) > 106 {
-            if let Some(shape) = self.via_dd(ratio, &tol, k64, slope64.as_ref()) {
+            if let Some(shape) = self.via_dd(ratio, &tol, k64, slope64.as_ref(), allow_chord) {
                 return shape;
             }
         }
@@ -1205,12 +1249,68 @@ impl<T: Real> ShapeSolver<T> {
         let perturbation = moved(ratio) + moved(speed.material().nu()) + moved(speed.gap());
         let stage = Stage {
             seed: Some(&seed),
-            seed_slope: slope64.as_ref().map(|c| lift(c, p, F64_SLOPE, F64_SEED)),
+            seed_slope: slope64
+                .as_ref()
+                .map(|c| lift(c, p, T::from_f64(F64_SLOPE, p), T::from_f64(F64_SEED, p))),
             halley: T::bits(p) <= 106 && perturbation <= 1e-15,
+            allow_chord,
             tol,
             ..Stage::final_stage()
         };
-        solve_core(&self.top, ratio, stage).map(|(r, _)| r)
+        solve_core(&self.top, ratio, stage)
+    }
+
+    /// Above [`MID_ABOVE_BITS`], the ladder's stage below the working precision p is the same
+    /// solve at m = p/2 + [`MID_GUARD_BITS`] bits (itself a ladder): its root, off by ~2^-m,
+    /// and its F′, good to ~2^-m, leave one or two chord steps at p (each contracts the error by
+    /// F′'s accuracy), evaluations without k-derivatives — instead of Newton's steps with them
+    /// from the double-double root (six at 4096 bits). The stage's root error is bounded by its
+    /// own estimate and by 2^(11−m), its F′'s by 2^(16−m): the double-double stage's margins
+    /// ([`DD_SEED`], [`DD_SLOPE`]). `None` (the ladder goes on from `f64`) at or below
+    /// [`MID_ABOVE_BITS`], for the fixed-precision types, and when that stage fails or hands
+    /// on no derivatives.
+    fn via_mid(
+        &self,
+        ratio: &T,
+        tol: &Option<T>,
+        guess: Option<f64>,
+        allow_chord: bool,
+    ) -> Option<Result<(Shape<T>, Option<Chord<T>>)>> {
+        let p = ratio.prec();
+        let bits = T::bits(p);
+        if bits <= MID_ABOVE_BITS {
+            return None;
+        }
+        let pm = T::lower_prec(p, bits / 2 + MID_GUARD_BITS)?;
+        let mid = self
+            .stage_mid
+            .get_or_init(|| {
+                let speed = self.top.speed().at::<T>(pm).ok()?;
+                ShapeSolver::new(&speed, self.top.method())
+                    .ok()
+                    .map(Box::new)
+            })
+            .as_deref()?;
+        let ratio_m = ratio.with_prec(pm);
+        let (s, c) = mid.climb(&ratio_m, None, guess, false).ok()?;
+        // A stage that ended on a chord step hands on no derivatives: one evaluation with them
+        // at its root (at its precision).
+        let c = c.or_else(|| slope_at(&mid.top, &ratio_m, &s.k))?;
+        let m = T::bits(pm) as i32;
+        let one = T::one(p);
+        let seed_err = s
+            .error_estimate
+            .with_prec(p)
+            .max_of(one.clone().mul_pow2(11 - m));
+        let seed = s.k.with_prec(p);
+        let stage = Stage {
+            seed: Some(&seed),
+            seed_slope: Some(lift(&c, p, one.mul_pow2(16 - m), seed_err)),
+            allow_chord,
+            tol: tol.clone(),
+            ..Stage::final_stage()
+        };
+        Some(solve_core(&self.top, ratio, stage))
     }
 
     /// The double-double stage from the `f64` root `k64` and its derivatives, then the working
@@ -1222,12 +1322,20 @@ impl<T: Real> ShapeSolver<T> {
         tol: &Option<T>,
         k64: f64,
         slope64: Option<&Chord<f64>>,
-    ) -> Option<Result<Shape<T>>> {
+        allow_chord: bool,
+    ) -> Option<Result<(Shape<T>, Option<Chord<T>>)>> {
         let p = ratio.prec();
         let seed_dd = Dd::from_f64(k64, ());
         let stage = Stage {
             seed: Some(&seed_dd),
-            seed_slope: slope64.map(|c| lift(c, (), F64_SLOPE, F64_SEED)),
+            seed_slope: slope64.map(|c| {
+                lift(
+                    c,
+                    (),
+                    Dd::from_f64(F64_SLOPE, ()),
+                    Dd::from_f64(F64_SEED, ()),
+                )
+            }),
             allow_chord: false,
             ..Stage::final_stage()
         };
@@ -1236,11 +1344,14 @@ impl<T: Real> ShapeSolver<T> {
         let seed = T::from_float(&s.k.to_float(106), p);
         let stage = Stage {
             seed: Some(&seed),
-            seed_slope: c.as_ref().map(|c| lift(c, p, DD_SLOPE, DD_SEED)),
+            seed_slope: c
+                .as_ref()
+                .map(|c| lift(c, p, T::from_f64(DD_SLOPE, p), T::from_f64(DD_SEED, p))),
+            allow_chord,
             tol: tol.clone(),
             ..Stage::final_stage()
         };
-        Some(solve_core(&self.top, ratio, stage).map(|(r, _)| r))
+        Some(solve_core(&self.top, ratio, stage))
     }
 }
 
@@ -1253,12 +1364,7 @@ const DD_SEED: f64 = 2.524354896707238e-29; // 2^-95
 
 /// A stage's derivatives carried to the precision `p` of the next, with their error bound and
 /// the bound on the stage's root error.
-fn lift<S: Real, T: Real>(
-    c: &Chord<S>,
-    p: T::Prec,
-    slope_err: f64,
-    seed_err: f64,
-) -> (Chord<T>, T) {
+fn lift<S: Real, T: Real>(c: &Chord<S>, p: T::Prec, slope_err: T, seed_err: T) -> (Chord<T>, T) {
     let up = |x: &S| T::from_float(&x.to_float(S::bits(x.prec())), p);
     (
         Chord {
@@ -1266,12 +1372,21 @@ fn lift<S: Real, T: Real>(
             di1: up(&c.di1),
             di2: up(&c.di2),
             df: up(&c.df),
-            rel_err: T::from_f64(slope_err, p),
+            rel_err: slope_err,
             before: c.before.as_ref().map(|b| [0, 1, 2, 3].map(|i| up(&b[i]))),
         },
-        T::from_f64(seed_err, p),
+        seed_err,
     )
 }
+
+/// Above this working precision the ladder's stage below it is the same solve at about half
+/// the precision ([`ShapeSolver::via_mid`]); at and below, the double-double root's chord
+/// steps reach the working precision in at most four evaluations (1024 bits).
+const MID_ABOVE_BITS: u32 = 1024;
+
+/// Bits of the half-precision stage beyond half the working precision: its root and F′
+/// (~2^-m each) leave a chord step's error ~2^-2m, 64 times that ≤ 2^-p with ~40 bits to spare.
+const MID_GUARD_BITS: u32 = 32;
 
 #[cfg(test)]
 mod tests {

@@ -198,6 +198,13 @@ pub trait Real: Field {
     fn from_wide(w: &Self::Wide, p: Self::Prec) -> Self;
     /// Significand bits of the precision `p` (53 for `f64`, 106 for [`Dd`], the MPFR precision).
     fn bits(p: Self::Prec) -> u32;
+    /// A precision of this type with `bits` bits, for a stage below `p` (the ellipse solve's
+    /// precision ladder): `None` for the fixed-precision types and where `bits` is not below
+    /// `p`'s.
+    fn lower_prec(p: Self::Prec, bits: u32) -> Option<Self::Prec> {
+        let _ = (p, bits);
+        None
+    }
     /// Machine epsilon `2^(1 - bits)` at precision `p`: the unit every tolerance is built from.
     fn epsilon(p: Self::Prec) -> Self {
         Self::one(p).mul_pow2(1 - Self::bits(p) as i32)

@@ -212,6 +212,9 @@ impl Real for Mp {
     fn bits(p: MpPrec) -> u32 {
         p.0
     }
+    fn lower_prec(p: MpPrec, bits: u32) -> Option<MpPrec> {
+        (bits < p.0).then(|| MpPrec::clamped(bits))
+    }
     fn min_positive(p: MpPrec) -> Mp {
         let mut one = Float::with_val(p.0, 1);
         one >>= 1_000_000u32;
