@@ -1266,9 +1266,10 @@ impl<T: Real> ShapeSolver<T> {
     /// F′'s accuracy), evaluations without k-derivatives — instead of Newton's steps with them
     /// from the double-double root (six at 4096 bits). The stage's root error is bounded by its
     /// own estimate and by 2^(11−m), its F′'s by 2^(16−m): the double-double stage's margins
-    /// ([`DD_SEED`], [`DD_SLOPE`]). `None` (the ladder goes on from `f64`) at or below
-    /// [`MID_ABOVE_BITS`], for the fixed-precision types, and when that stage fails or hands
-    /// on no derivatives.
+    /// ([`DD_SEED`], [`DD_SLOPE`]). A stage that ended on a chord step is given its
+    /// derivatives by one more evaluation at its own precision ([`slope_at`]). `None` (the
+    /// ladder goes on from `f64`) at or below [`MID_ABOVE_BITS`], for the fixed-precision
+    /// types, and when that stage fails.
     fn via_mid(
         &self,
         ratio: &T,
