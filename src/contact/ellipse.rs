@@ -448,6 +448,9 @@ fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Cho
     c
 }
 
+/// A stage's result: the shape and the derivatives it hands on to the stage above.
+type Handed<T> = Result<(Shape<T>, Option<Chord<T>>)>;
+
 /// F′ and the integrals' k-derivatives at the root `k` (one evaluation with derivatives), for
 /// a stage whose last step was a chord step; `None` if that evaluation fails.
 fn slope_at<S: Real>(ev: &Evaluator<S>, ratio: &S, k: &S) -> Option<Chord<S>> {
@@ -1202,13 +1205,7 @@ impl<T: Real> ShapeSolver<T> {
     /// The ladder of [`ShapeSolver::ladder`], returning the working precision's last
     /// derivatives too; `allow_chord`: whether its last evaluation may skip the k-derivatives
     /// (false for a stage that hands them on, [`ShapeSolver::via_mid`]).
-    fn climb(
-        &self,
-        ratio: &T,
-        tol: Option<T>,
-        guess: Option<f64>,
-        allow_chord: bool,
-    ) -> Result<(Shape<T>, Option<Chord<T>>)> {
+    fn climb(&self, ratio: &T, tol: Option<T>, guess: Option<f64>, allow_chord: bool) -> Handed<T> {
         let p = ratio.prec();
         if T::bits(p) <= 53 {
             return lowest_stage(&self.top, ratio, allow_chord, tol, guess);
@@ -1276,7 +1273,7 @@ impl<T: Real> ShapeSolver<T> {
         tol: &Option<T>,
         guess: Option<f64>,
         allow_chord: bool,
-    ) -> Option<Result<(Shape<T>, Option<Chord<T>>)>> {
+    ) -> Option<Handed<T>> {
         let p = ratio.prec();
         let bits = T::bits(p);
         if bits <= MID_ABOVE_BITS {
@@ -1324,7 +1321,7 @@ impl<T: Real> ShapeSolver<T> {
         k64: f64,
         slope64: Option<&Chord<f64>>,
         allow_chord: bool,
-    ) -> Option<Result<(Shape<T>, Option<Chord<T>>)>> {
+    ) -> Option<Handed<T>> {
         let p = ratio.prec();
         let seed_dd = Dd::from_f64(k64, ());
         let stage = Stage {
