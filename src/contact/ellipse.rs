@@ -441,9 +441,8 @@ const PARTNER_STEP: f64 = 9.5367431640625e-7; // 2^-20
 fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Chord<S> {
     let p = ratio.prec();
     let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, p);
-    let newton = Newton::new(ev, ratio, None, false, None, 1);
-    if let Ok((_, df, ci)) = newton.eval(&lam, None, false) {
-        c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
+    if let Some(b) = slope_at(ev, ratio, lam) {
+        c.before = Some([b.lam, b.df, b.di1, b.di2]);
     }
     c
 }
@@ -451,10 +450,10 @@ fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Cho
 /// A stage's result: the shape and the derivatives it hands on to the stage above.
 type Handed<T> = Result<(Shape<T>, Option<Chord<T>>)>;
 
-/// F′ and the integrals' k-derivatives at the root `k` (one evaluation with derivatives), for
-/// a stage whose last step was a chord step; `None` if that evaluation fails.
-fn slope_at<S: Real>(ev: &Evaluator<S>, ratio: &S, k: &S) -> Option<Chord<S>> {
-    let lam = k.clone().ln();
+/// F′ and the integrals' k-derivatives at λ = ln k (one evaluation with derivatives): a
+/// secant's partner, or the hand-off of a stage whose last step was a chord step; `None` if
+/// that evaluation fails.
+fn slope_at<S: Real>(ev: &Evaluator<S>, ratio: &S, lam: S) -> Option<Chord<S>> {
     let newton = Newton::new(ev, ratio, None, false, None, 1);
     let (_, df, ci) = newton.eval(&lam, None, false).ok()?;
     Some(Chord {
@@ -1293,7 +1292,7 @@ impl<T: Real> ShapeSolver<T> {
         let (s, c) = mid.climb(&ratio_m, None, guess, false).ok()?;
         // A stage that ended on a chord step hands on no derivatives: one evaluation with them
         // at its root (at its precision).
-        let c = c.or_else(|| slope_at(&mid.top, &ratio_m, &s.k))?;
+        let c = c.or_else(|| slope_at(&mid.top, &ratio_m, s.k.clone().ln()))?;
         let m = T::bits(pm) as i32;
         let one = T::one(p);
         let seed_err = s
