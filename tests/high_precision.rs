@@ -1,13 +1,14 @@
 //! Error bounds that work at any precision (issue 16): at 2048, 4096 and 8192 bits the bounds
 //! of I1, I2 and of the ellipse's k are finite, non-zero (an `f64` would underflow them) and
 //! bound the true error, measured against the same computation 256 bits higher; and the precision
-//! ladder's half-precision stages over a grid at 1536 bits. The 8192-bit
+//! ladder's half-precision stages over a grid at 1536 bits; and the same bits from node loops on
+//! every core as on one thread (512 and 2048 bits). The 8192-bit
 //! case takes under half a minute on two cores and runs on request:
 //! `cargo test --release --test high_precision -- --ignored` (its output is quoted in
 //! docs/precision.md).
 
 use moving_hertz::prelude::*;
-use moving_hertz::{integrals, solve_ellipse, ExactInputs};
+use moving_hertz::{integrals, solve_ellipse, ExactInputs, Integrals};
 use rug::Float;
 
 /// |got − want|/|want| as a bound, computed at `bits`.
@@ -128,5 +129,55 @@ fn half_precision_stage_over_a_grid() {
             "{nu} {mr} {a}: {} evaluations",
             s.iterations
         );
+    }
+}
+
+/// Above 448 bits the fixed-rule routes' node loops run on every core, except on a thread of a
+/// `rayon` pool (module `numerics::shares`): the same solves and integrals from the test's own
+/// thread (loops on the cores) and inside a one-thread pool (every loop on that thread) give
+/// the same bits — k, e, their bounds, and I1, I2 with their k-derivatives on both routes (the
+/// fast route for k < 1, the graded one for k ≥ 1).
+#[test]
+fn node_loops_on_threads_give_the_same_bits() {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .unwrap();
+    let opts = IntegralOptions {
+        derivatives: true,
+        ..IntegralOptions::default()
+    };
+    for bits in [512u32, 2048] {
+        let p = MpPrec::new(bits as u64).unwrap();
+        let (sp, _) = ExactInputs::parse("0.3", "0.99", "1")
+            .unwrap()
+            .at::<Mp>(p)
+            .unwrap();
+        let show = |v: &Mp| v.to_float(bits).to_string_radix(16, None);
+        for ratio in [0.01, 2.0, 300.0] {
+            let ratio = Mp::from_f64(ratio, p);
+            let solve = || solve_ellipse(&sp, &ratio, &Options::default()).unwrap();
+            let (cores, one) = (solve(), pool.install(solve));
+            assert_eq!(show(&cores.k.value), show(&one.k.value), "{bits} bits");
+            assert_eq!(show(&cores.e.value), show(&one.e.value), "{bits} bits");
+            assert_eq!(cores.k.error.to_string(), one.k.error.to_string());
+            assert_eq!(cores.iterations, one.iterations);
+        }
+        for k in [0.05, 0.5, 3.0] {
+            let k = Mp::from_f64(k, p);
+            let run = || integrals(&sp, &k, &opts).unwrap();
+            let (cores, one) = (run(), pool.install(run));
+            let all = |i: &Integrals<Mp>| {
+                let d = |v: &Option<Estimated<Mp>>| show(&v.as_ref().expect("asked for").value);
+                [
+                    show(&i.i1.value),
+                    show(&i.i2.value),
+                    d(&i.di1_dk),
+                    d(&i.di2_dk),
+                ]
+            };
+            assert_eq!(all(&cores), all(&one), "{bits} bits, k = {k:?}");
+            assert_eq!(cores.i1.error.to_string(), one.i1.error.to_string());
+        }
     }
 }

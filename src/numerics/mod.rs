@@ -8,5 +8,6 @@ pub mod gauss_legendre;
 pub mod quadrature;
 pub mod roots;
 pub mod series;
+pub(crate) mod shares;
 mod sum;
 pub mod vquad;

@@ -62,6 +62,7 @@ use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::gauss_legendre::map_on_threads;
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
+use crate::numerics::shares::{for_shares, shares};
 use crate::physics::Speed;
 use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
@@ -508,7 +509,7 @@ impl<T: Real> GradedSetup<T> {
             let (lf, rest) = rest.split_at_mut(nl);
             let (lsf, lssf) = rest.split_at_mut(nl);
             layout.fill(&sc.two_over_m1, ls, lf)?;
-            node_map(ls, lf, |s, w| {
+            node_map(p, ls, lf, |s, w| {
                 let pp = one.clone() + s;
                 let (e1, dd, qq) =
                     sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2));
@@ -516,9 +517,9 @@ impl<T: Real> GradedSetup<T> {
                 w.clone() * dd * e1.sqrt_div(&(qq * h))
             });
             lsf.clone_from_slice(lf);
-            node_map(ls, lsf, |s, f| s.clone() * f);
+            node_map(p, ls, lsf, |s, f| s.clone() * f);
             lssf.clone_from_slice(lsf);
-            node_map(ls, lssf, |s, f| s.clone() * f);
+            node_map(p, ls, lssf, |s, f| s.clone() * f);
         }
         // Right: σ, f, σ·f.
         let (right_s, right_w) = rules.right()?;
@@ -530,7 +531,7 @@ impl<T: Real> GradedSetup<T> {
         {
             let (rs, rest) = right.split_at_mut(nr);
             let (rf, rsf) = rest.split_at_mut(nr);
-            node_map(rs, rf, |sg, w| {
+            node_map(p, rs, rf, |sg, w| {
                 let pp = one.clone() + sg;
                 let (f1, dd, e) = sc.right_node(
                     sg,
@@ -542,7 +543,7 @@ impl<T: Real> GradedSetup<T> {
                 w.clone() * &sc.two_over_m1 * dd * f1.sqrt_div(&e)
             });
             // σ·f in place of σ's copy.
-            node_map(rf, rsf, |f, sg| sg.clone() * f);
+            node_map(p, rf, rsf, |f, sg| sg.clone() * f);
         }
         Ok(GradedSetup { k_max, left, right })
     }
@@ -606,13 +607,21 @@ impl<T: Real> GradedSetup<T> {
     }
 }
 
-/// `out[i] = g(x[i], out[i])` for every node: no dependence between nodes, so that at `f64` the
-/// compiler packs two nodes into one SSE2 square root and division.
+/// `out[i] = g(x[i], out[i])` for every node, on the cores above
+/// [`crate::numerics::shares::PARALLEL_ABOVE_BITS`]: no dependence between nodes, so that at
+/// `f64` the compiler packs two nodes into one SSE2 square root and division.
 #[inline(always)]
-fn node_map<T: Real>(xs: &[T], out: &mut [T], g: impl Fn(&T, &T) -> T) {
-    for (o, x) in out.iter_mut().zip(xs) {
-        *o = g(x, o);
-    }
+fn node_map<T: Real>(p: T::Prec, xs: &[T], out: &mut [T], g: impl Fn(&T, &T) -> T + Sync) {
+    for_shares(
+        shares(T::bits(p), xs.len()),
+        out,
+        &mut [] as &mut [T],
+        &|start, os, _| {
+            for (o, x) in os.iter_mut().zip(&xs[start..]) {
+                *o = g(x, o);
+            }
+        },
+    );
 }
 
 /// Nodes a chunk in the node loops of [`power_sums`] (a stack buffer).
@@ -620,31 +629,31 @@ const CHUNK: usize = 32;
 
 /// Σ a x^{−3/2}, Σ b x^{−3/2} and, with `dk`, Σ c x^{−5/2}, Σ d x^{−5/2} over the nodes, with
 /// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node),
-/// summed in chunks of [`CHUNK`] nodes (each chunk's sum added to the total).
+/// summed in chunks of [`CHUNK`] nodes, each chunk's sum added to the total in chunk order
+/// (above [`crate::numerics::shares::PARALLEL_ABOVE_BITS`] the chunks' sums are formed on the
+/// cores first: the same bits).
 #[inline(always)]
 pub(super) fn power_sums<T: Real>(
     nodes: &[T],
     factors: [&[T]; 4],
     dk: bool,
     p: T::Prec,
-    shift: impl Fn(&T) -> T,
+    shift: impl Fn(&T) -> T + Sync,
 ) -> [T; 4] {
     let zero = || [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-    let mut acc = zero();
-    let mut t3 = [(); CHUNK].map(|_| T::zero(p));
-    let mut t5 = [(); CHUNK].map(|_| T::zero(p));
-    let mut i0 = 0;
-    while i0 < nodes.len() {
+    let buffer = || [(); CHUNK].map(|_| T::zero(p));
+    // The sums of the chunk starting at node i0, with t3, t5 as scratch.
+    let chunk_sums = |i0: usize, t3: &mut [T; CHUNK], t5: &mut [T; CHUNK]| {
         let m = CHUNK.min(nodes.len() - i0);
         let xs = &nodes[i0..i0 + m];
         // Node values first, sums after: the node loop carries no dependence, so that at f64
         // the compiler packs two nodes into one SSE2 square root and division.
         if dk {
-            for ((x, v3), v5) in xs.iter().zip(&mut t3).zip(&mut t5) {
+            for ((x, v3), v5) in xs.iter().zip(t3.iter_mut()).zip(t5.iter_mut()) {
                 (*v3, *v5) = shift(x).pow_m3_2_m5_2();
             }
         } else {
-            for (x, v3) in xs.iter().zip(&mut t3) {
+            for (x, v3) in xs.iter().zip(t3.iter_mut()) {
                 *v3 = shift(x).pow_m3_2();
             }
         }
@@ -658,10 +667,33 @@ pub(super) fn power_sums<T: Real>(
                 part[3] += &(d[j].clone() * &t5[j]);
             }
         }
+        part
+    };
+    let add = |acc: &mut [T; 4], part: [T; 4]| {
         for (s, q) in acc.iter_mut().zip(part) {
             *s += &q;
         }
-        i0 += m;
+    };
+    let mut acc = zero();
+    let count = shares(T::bits(p), nodes.len());
+    if count == 1 {
+        let (mut t3, mut t5) = (buffer(), buffer());
+        let mut i0 = 0;
+        while i0 < nodes.len() {
+            add(&mut acc, chunk_sums(i0, &mut t3, &mut t5));
+            i0 += CHUNK;
+        }
+        return acc;
+    }
+    let mut parts: Vec<[T; 4]> = (0..nodes.len().div_ceil(CHUNK)).map(|_| zero()).collect();
+    for_shares(count, &mut parts, &mut [] as &mut [T], &|start, ps, _| {
+        let (mut t3, mut t5) = (buffer(), buffer());
+        for (c, part) in (start..).zip(ps) {
+            *part = chunk_sums(c * CHUNK, &mut t3, &mut t5);
+        }
+    });
+    for part in parts {
+        add(&mut acc, part);
     }
     acc
 }

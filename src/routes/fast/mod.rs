@@ -133,6 +133,7 @@ use super::graded;
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
+use crate::numerics::shares::{for_shares, shares};
 use crate::physics::Speed;
 use crate::scalar::FieldOps;
 use crate::scalar::{short, Mp, MpPrec, Real};
@@ -673,12 +674,20 @@ impl<T: Real> FastSetup<T> {
             taylor,
             ..
         } = &mut *setup;
-        let left_out = left_lq.iter_mut().zip(left_ih.iter_mut());
-        for ((s, pp, two_p, four_p), (lq, ih)) in rule.left.nodes().zip(left_out) {
-            let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
-            *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
-            *ih = (s.clone() + &sc.eps2).recip();
-        }
+        let (rule, sc) = (&*rule, &*sc);
+        for_shares(
+            shares(T::bits(p), n),
+            left_lq,
+            left_ih,
+            &|start, lqs, ihs| {
+                let nodes = rule.left.nodes_in(start..start + lqs.len());
+                for ((s, pp, two_p, four_p), (lq, ih)) in nodes.zip(lqs.iter_mut().zip(ihs)) {
+                    let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
+                    *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
+                    *ih = (s.clone() + &sc.eps2).recip();
+                }
+            },
+        );
         if let TaylorCell::Built(t) = taylor {
             if let Some(Err(e)) = t.as_mut().ok().map(|tr| tr.fill(rule, sc)) {
                 *t = Err(e);
@@ -717,25 +726,37 @@ impl<T: Real> FastSetup<T> {
         let nl = rule.left.len();
         let mut left = Buf::<T, N>::zeros(nl, p);
         let mut left_dk = Buf::<T, N>::zeros(if dk { nl } else { 0 }, p);
-        let ls = &rule.left.s[..nl];
-        let lnodes = ls.iter().zip(&self.left_lq[..nl]).zip(&self.left_ih[..nl]);
-        if dk {
-            for (((s, lq), ih), (r, dr)) in lnodes.zip(left.iter_mut().zip(left_dk.iter_mut())) {
-                // a = (L/Q') u^{−3/2}; a/u = (L/Q') u^{−5/2}.
-                let u = one.clone() + kc.k2.clone() * s;
-                let (v3, v5) = u.pow_m3_2_m5_2();
-                let a = lq.clone() * v3;
-                let au = lq.clone() * v5;
-                *r = (a - &kc.a0) * ih;
-                *dr = (s.clone() * au + &kc.e0) * ih;
-            }
-        } else {
-            for (((s, lq), ih), r) in lnodes.zip(left.iter_mut()) {
-                let u = one.clone() + kc.k2.clone() * s;
-                let a = lq.clone() * u.pow_m3_2();
-                *r = (a - &kc.a0) * ih;
-            }
-        }
+        // R (and R′ with `dk`, else `left_dk` is empty) node by node.
+        for_shares(
+            shares(T::bits(p), nl),
+            &mut left,
+            &mut left_dk,
+            &|start, rs, drs| {
+                let range = start..start + rs.len();
+                let ls = &rule.left.s[range.clone()];
+                let lnodes = ls
+                    .iter()
+                    .zip(&self.left_lq[range.clone()])
+                    .zip(&self.left_ih[range]);
+                if dk {
+                    for (((s, lq), ih), (r, dr)) in lnodes.zip(rs.iter_mut().zip(drs)) {
+                        // a = (L/Q') u^{−3/2}; a/u = (L/Q') u^{−5/2}.
+                        let u = one.clone() + kc.k2.clone() * s;
+                        let (v3, v5) = u.pow_m3_2_m5_2();
+                        let a = lq.clone() * v3;
+                        let au = lq.clone() * v5;
+                        *r = (a - &kc.a0) * ih;
+                        *dr = (s.clone() * au + &kc.e0) * ih;
+                    }
+                } else {
+                    for (((s, lq), ih), r) in lnodes.zip(rs) {
+                        let u = one.clone() + kc.k2.clone() * s;
+                        let a = lq.clone() * u.pow_m3_2();
+                        *r = (a - &kc.a0) * ih;
+                    }
+                }
+            },
+        );
         let lp = left_parts(&rule.left, &self.sc, &kc, &left, &left_dk, dk);
         if let Some(j) = sinh_octave(rule, &axes.k) {
             let rs = self.sinh[j]

@@ -153,12 +153,20 @@ impl<T: Real> Half<T> {
     /// The node quantities (s, p, 2p, 4p), node by node.
     #[inline(always)]
     pub(crate) fn nodes(&self) -> impl Iterator<Item = (&T, &T, &T, &T)> {
-        let n = self.len();
-        self.s[..n]
+        self.nodes_in(0..self.len())
+    }
+
+    /// [`Half::nodes`] for the nodes of `range` only.
+    #[inline(always)]
+    pub(crate) fn nodes_in(
+        &self,
+        range: std::ops::Range<usize>,
+    ) -> impl Iterator<Item = (&T, &T, &T, &T)> {
+        self.s[range.clone()]
             .iter()
-            .zip(&self.p[..n])
-            .zip(&self.two_p[..n])
-            .zip(&self.four_p[..n])
+            .zip(&self.p[range.clone()])
+            .zip(&self.two_p[range.clone()])
+            .zip(&self.four_p[range])
             .map(|(((s, p), two_p), four_p)| (s, p, two_p, four_p))
     }
 }
