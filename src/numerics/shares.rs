@@ -8,8 +8,8 @@
 //! the number of threads; `tests/high_precision.rs` (`node_loops_on_threads_give_the_same_bits`)
 //! compares a solve on the cores with one on a single thread, bit for bit.
 //!
-//! **When.** Above [`PARALLEL_ABOVE_BITS`] only (a node costs microseconds or more, a thread
-//! tens of microseconds to start), never on a thread of a `rayon` pool (a sweep already runs its
+//! **When.** Above [`PARALLEL_ABOVE_BITS`] only (below it starting the threads costs more than
+//! they take over: docs/calibration.md), never on a thread of a `rayon` pool (a sweep already runs its
 //! blocks on every core: a solve inside it keeps its loops on its own thread), and only with at
 //! least [`MIN_NODES_A_SHARE`] nodes a share. The shares run on scoped threads of their own, as
 //! the rules' construction does (`numerics::gauss_legendre`); a share whose thread cannot be
