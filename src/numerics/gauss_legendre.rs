@@ -29,9 +29,8 @@
 //! `O(n·p/80)` products at falling precision, against `O(n²)` p-bit products (about
 //! log₂(p/53) + 1 passes of the recurrence a node) for Newton on the recurrence at the target
 //! precision (`reference_build`); `benches/precision_scaling.rs` measures both. The nodes are
-//! independent of one another and are built on scoped threads of their own (not on `rayon`'s
-//! pool: a rule is often built inside a `OnceLock` initializer, and a pool worker waiting there
-//! for its node jobs could steal a job that waits on the same `OnceLock`). Rules are built
+//! independent of one another and are built on every core (`numerics::shares::map_on_threads`,
+//! scoped threads: a rule is often built inside a `OnceLock` initializer). Rules are built
 //! once per (n, precision) and kept (`raw_rule`); a rule built at a higher precision is
 //! rounded down for a lower one.
 //!
@@ -45,6 +44,7 @@
 //! recurrence).
 
 use crate::error::{Error, Result};
+use crate::numerics::shares::map_on_threads;
 use crate::scalar::FieldOps;
 use crate::scalar::{short, Dd, Field, Mp, MpPrec, Real};
 use rug::{Assign, Float, Integer};
@@ -526,9 +526,8 @@ fn node_dd(n: usize, x: f64) -> Dd {
 }
 
 /// The rule's nonnegative nodes (decreasing) and weights at `raw` bits, by the three stages of
-/// the module docs. The nodes are independent of one another: above [`PARALLEL_NODES`] they are
-/// built on scoped threads, in interleaved shares (the same values whatever the number of
-/// threads).
+/// the module docs. The nodes are independent of one another: they are built on every core
+/// ([`map_on_threads`], interleaved shares; the same values whatever the number of threads).
 pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
     let m = n.div_ceil(2);
     let refine = Refine::new(n, raw);
@@ -539,72 +538,6 @@ pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
         nodes,
         weights,
     })
-}
-
-/// The error of a share whose thread stopped without a result (it cannot: nothing in a node's
-/// construction panics).
-fn stopped() -> Error {
-    Error::NoConvergence {
-        what: "Gauss-Legendre nodes (a construction thread stopped)",
-        iterations: 0,
-        reached: "none".into(),
-    }
-}
-
-/// Rules with at least this many nonnegative nodes a thread are built in parallel (below, a
-/// node costs less than starting a thread).
-const PARALLEL_NODES: usize = 16;
-
-/// `f(0) … f(m − 1)` in order: on scoped threads when there are at least
-/// [`PARALLEL_NODES`] items a core ([`on_threads`]), else on the calling thread. Used for the
-/// nodes of a rule and for per-node tables built from them (`routes::graded`).
-pub(crate) fn map_on_threads<R: Send>(
-    m: usize,
-    f: &(impl Fn(usize) -> Result<R> + Sync),
-) -> Result<Vec<R>> {
-    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
-    let threads = cores.min(m / PARALLEL_NODES).max(1);
-    if threads > 1 {
-        on_threads(m, threads, &|k: usize| f(k - 1))
-    } else {
-        (0..m).map(f).collect()
-    }
-}
-
-/// `one(1..=m)` in order, on `threads` scoped threads, thread t taking k ≡ t + 1 (mod
-/// `threads`): interleaved shares, so that each thread gets nodes from every part of [0, 1]
-/// (their costs differ between the ends and the middle). A share whose thread cannot be
-/// started runs on the calling thread.
-fn on_threads<R: Send>(
-    m: usize,
-    threads: usize,
-    one: &(impl Fn(usize) -> Result<R> + Sync),
-) -> Result<Vec<R>> {
-    let run = move |t: usize| {
-        (t + 1..=m)
-            .step_by(threads)
-            .map(one)
-            .collect::<Result<Vec<R>>>()
-    };
-    let shares = std::thread::scope(|s| {
-        let spawned: Vec<_> = (1..threads)
-            .map(|t| {
-                std::thread::Builder::new()
-                    .spawn_scoped(s, move || run(t))
-                    .map_err(|_| t)
-            })
-            .collect();
-        let mut shares = vec![run(0)?];
-        for h in spawned {
-            shares.push(match h {
-                Ok(h) => h.join().unwrap_or_else(|_| Err(stopped()))?,
-                Err(t) => run(t)?,
-            });
-        }
-        Ok::<_, Error>(shares)
-    })?;
-    let mut iters: Vec<_> = shares.into_iter().map(Vec::into_iter).collect();
-    Ok((0..m).filter_map(|k| iters[k % threads].next()).collect())
 }
 
 /// The k-th nonnegative node (k = 1 the largest) of the n-point rule and its weight at `raw`

@@ -1,41 +1,112 @@
-//! Node loops on every core above [`PARALLEL_ABOVE_BITS`]: the per-node work of the fixed-rule
-//! routes (the k-independent set-up, the integrand values of an evaluation, their chunk sums)
-//! cut into contiguous shares, one a thread.
+//! Work on every core, in two forms, both on scoped threads of `std` (not on `rayon`'s pool: a
+//! rule or a layout is often built inside a `OnceLock` initializer, and a pool worker waiting
+//! there for its jobs could steal a job that waits on the same `OnceLock`):
 //!
-//! **Same bits on any number of threads.** Each node's value is computed by the same operations
-//! whatever share it falls in, and the sums are formed afterwards in node order (the chunk sums
-//! of `routes::graded::power_sums` added in chunk order), so that a result does not depend on
-//! the number of threads; `tests/high_precision.rs` (`node_loops_on_threads_give_the_same_bits`)
-//! compares a solve on the cores with one on a single thread, bit for bit.
+//! * [`map_on_threads`]: `f(0) … f(m − 1)` in interleaved shares, for the one-time work of a
+//!   precision — the nodes of a Gauss–Legendre rule (`numerics::gauss_legendre`) and the
+//!   e^{±x} tables of the sinh-mapped panels (`routes::graded`) — whenever there are at least
+//!   [`MIN_ITEMS_A_SHARE`] items a core.
+//! * [`for_shares`] with [`shares`]: the node loops of the fixed-rule and graded routes (the
+//!   k-independent set-up, the integrand values of an evaluation, their chunk sums) cut into
+//!   contiguous shares, above [`PARALLEL_ABOVE_BITS`] only (below it starting the threads costs
+//!   more than they take over: docs/calibration.md), and never on a thread of a `rayon` pool (a
+//!   sweep already runs its blocks on every core: a solve inside it keeps its loops on its own
+//!   thread).
 //!
-//! **When.** Above [`PARALLEL_ABOVE_BITS`] only (below it starting the threads costs more than
-//! they take over: docs/calibration.md), never on a thread of a `rayon` pool (a sweep already runs its
-//! blocks on every core: a solve inside it keeps its loops on its own thread), and only with at
-//! least [`MIN_NODES_A_SHARE`] nodes a share. The shares run on scoped threads of their own, as
-//! the rules' construction does (`numerics::gauss_legendre`); a share whose thread cannot be
-//! started runs on the calling thread.
+//! **Same bits on any number of threads.** Each item is computed by the same operations whatever
+//! share it falls in, and sums are formed afterwards in item order (the chunk sums of
+//! `routes::graded::power_sums` added in chunk order), so that a result does not depend on the
+//! number of threads; `tests/high_precision.rs` (`node_loops_on_threads_give_the_same_bits`)
+//! compares solves on the cores with solves on a single thread, bit for bit. A share whose thread
+//! cannot be started runs on the calling thread.
 //!
 //! No item of this module implements a formula of the paper.
 
+use crate::error::{Error, Result};
 use std::sync::{Mutex, PoisonError};
 
 /// Precisions (bits) above which the fixed-rule routes' node loops run on every core; at and
 /// below it every loop stays on the calling thread (docs/calibration.md has the evidence).
 pub const PARALLEL_ABOVE_BITS: u32 = 448;
 
-/// The fewest nodes a share (a share's work must outweigh starting its thread).
-const MIN_NODES_A_SHARE: usize = 16;
+/// The fewest items a share (below, an item costs less than starting a thread).
+const MIN_ITEMS_A_SHARE: usize = 16;
+
+/// The number of cores (1 when it cannot be known).
+fn cores() -> usize {
+    std::thread::available_parallelism().map_or(1, |c| c.get())
+}
+
+/// The error of a share whose thread stopped without a result (it cannot: nothing in the work
+/// given to [`map_on_threads`] panics).
+fn stopped() -> Error {
+    Error::NoConvergence {
+        what: "work on every core (a thread stopped)",
+        iterations: 0,
+        reached: "none".into(),
+    }
+}
+
+/// `f(0) … f(m − 1)` in order: on scoped threads when there are at least
+/// [`MIN_ITEMS_A_SHARE`] items a core ([`interleaved`]), else on the calling thread. Used for
+/// the nodes of a rule and for per-node tables built from them (`routes::graded`).
+pub(crate) fn map_on_threads<R: Send>(
+    m: usize,
+    f: &(impl Fn(usize) -> Result<R> + Sync),
+) -> Result<Vec<R>> {
+    let threads = cores().min(m / MIN_ITEMS_A_SHARE).max(1);
+    if threads > 1 {
+        interleaved(m, threads, &|k: usize| f(k - 1))
+    } else {
+        (0..m).map(f).collect()
+    }
+}
+
+/// `one(1..=m)` in order, on `threads` scoped threads, thread t taking k ≡ t + 1 (mod
+/// `threads`): interleaved shares, so that each thread gets nodes from every part of [0, 1]
+/// (their costs differ between the ends and the middle). A share whose thread cannot be
+/// started runs on the calling thread.
+fn interleaved<R: Send>(
+    m: usize,
+    threads: usize,
+    one: &(impl Fn(usize) -> Result<R> + Sync),
+) -> Result<Vec<R>> {
+    let run = move |t: usize| {
+        (t + 1..=m)
+            .step_by(threads)
+            .map(one)
+            .collect::<Result<Vec<R>>>()
+    };
+    let shares = std::thread::scope(|s| {
+        let spawned: Vec<_> = (1..threads)
+            .map(|t| {
+                std::thread::Builder::new()
+                    .spawn_scoped(s, move || run(t))
+                    .map_err(|_| t)
+            })
+            .collect();
+        let mut shares = vec![run(0)?];
+        for h in spawned {
+            shares.push(match h {
+                Ok(h) => h.join().unwrap_or_else(|_| Err(stopped()))?,
+                Err(t) => run(t)?,
+            });
+        }
+        Ok::<_, Error>(shares)
+    })?;
+    let mut iters: Vec<_> = shares.into_iter().map(Vec::into_iter).collect();
+    Ok((0..m).filter_map(|k| iters[k % threads].next()).collect())
+}
 
 /// The number of shares for a loop over `n` nodes at `bits` bits: 1 at or below
 /// [`PARALLEL_ABOVE_BITS`], on a `rayon` pool's thread, or for short loops; else the number of
-/// cores, at most one share per [`MIN_NODES_A_SHARE`] nodes.
+/// cores, at most one share per [`MIN_ITEMS_A_SHARE`] nodes.
 #[inline(always)]
 pub(crate) fn shares(bits: u32, n: usize) -> usize {
     if bits <= PARALLEL_ABOVE_BITS || rayon::current_thread_index().is_some() {
         return 1;
     }
-    let cores = std::thread::available_parallelism().map_or(1, |c| c.get());
-    cores.min(n / MIN_NODES_A_SHARE).max(1)
+    cores().min(n / MIN_ITEMS_A_SHARE).max(1)
 }
 
 /// Runs `share(start, &mut a[start..end], &mut b[start..end])` over `count` contiguous shares
