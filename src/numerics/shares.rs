@@ -23,7 +23,7 @@
 //! No item of this module implements a formula of the paper.
 
 use crate::error::{Error, Result};
-use std::sync::{Mutex, PoisonError};
+use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// Precisions (bits) above which the fixed-rule routes' node loops run on every core; at and
 /// below it every loop stays on the calling thread (docs/calibration.md has the evidence).
@@ -32,9 +32,11 @@ pub const PARALLEL_ABOVE_BITS: u32 = 448;
 /// The fewest items a share (below, an item costs less than starting a thread).
 const MIN_ITEMS_A_SHARE: usize = 16;
 
-/// The number of cores (1 when it cannot be known).
+/// The number of cores (1 when it cannot be known), asked once a process (on Linux the question
+/// reads the cgroup limits: not something to repeat for every loop).
 fn cores() -> usize {
-    std::thread::available_parallelism().map_or(1, |c| c.get())
+    static CORES: OnceLock<usize> = OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |c| c.get()))
 }
 
 /// The error of a share whose thread stopped without a result (it cannot: nothing in the work
