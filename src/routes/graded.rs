@@ -610,7 +610,12 @@ impl<T: Real> GradedSetup<T> {
 /// [`crate::numerics::shares::PARALLEL_ABOVE_BITS`]: no dependence between nodes, so that at
 /// `f64` the compiler packs two nodes into one SSE2 square root and division.
 #[inline(always)]
-fn node_map<T: Real>(p: T::Prec, xs: &[T], out: &mut [T], g: impl Fn(&T, &T) -> T + Sync) {
+pub(super) fn node_map<T: Real>(
+    p: T::Prec,
+    xs: &[T],
+    out: &mut [T],
+    g: impl Fn(&T, &T) -> T + Sync,
+) {
     for_shares(
         shares(T::bits(p), xs.len()),
         out,

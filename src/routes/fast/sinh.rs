@@ -62,19 +62,12 @@ impl<T: Real> RightSinh<T> {
             // b(σ) = (2/m1) √f1 D′/E; the factor 2/m1 goes into the weights.
             layout.fill(&sc.two_over_m1, &mut s, &mut f)?;
             let one = T::one(p);
-            for_shares(
-                shares(T::bits(p), n),
-                &mut f,
-                &mut [] as &mut [T],
-                &|start, fs, _| {
-                    for (sg, fi) in s[start..start + fs.len()].iter().zip(fs) {
-                        let pp = one.clone() + sg;
-                        let (two_p, four_p) = (pp.clone().mul_i64(2), pp.clone().mul_i64(4));
-                        let (f1, dd, e) = sc.right_node(sg, &pp, &two_p, &four_p, &one);
-                        *fi = fi.clone() * dd * f1.sqrt_div(&e);
-                    }
-                },
-            );
+            graded::node_map(p, &s, &mut f, |sg, fi| {
+                let pp = one.clone() + sg;
+                let (two_p, four_p) = (pp.clone().mul_i64(2), pp.clone().mul_i64(4));
+                let (f1, dd, e) = sc.right_node(sg, &pp, &two_p, &four_p, &one);
+                fi.clone() * dd * f1.sqrt_div(&e)
+            });
             let sf = s.iter().zip(&f).map(|(a, b)| a.clone() * b).collect();
             Ok(RightSinh { s, f, sf })
         })
