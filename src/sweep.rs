@@ -5,8 +5,10 @@
 //!
 //! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points; the
 //! blocks run in parallel (with `rayon`, each block a job of its own, on its global pool or the
-//! pool the caller installs), the points of a block one after another. A call from a thread
-//! outside the pool hands the work to the pool's threads and waits; the cost of that hand-off,
+//! pool the caller installs), the points of a block one after another; a sweep of one block
+//! runs on the calling thread (above 448 bits its solves then run their node loops on every
+//! core, as [`crate::solve_ellipse`] does; in a block on a pool thread they stay on that
+//! thread). A call from a thread outside the pool hands the work to the pool's threads and waits; the cost of that hand-off,
 //! once per call, is the `sweep` bench's `sweep_1_thread_from_outside` (docs/performance.md).
 //! Within a block, consecutive points at the same speed share the fixed rules' set-up (the
 //! Green's function at every node, at each stage of the precision ladder), and each root starts
@@ -168,12 +170,18 @@ where
 /// share of the output (no copy of the results after the solves). Each block is a job of its
 /// own (`with_max_len(1)`): blocks differ in cost (near the Rayleigh speed, at large k), and
 /// rayon's default split hands each thread a few large pieces, so that one thread can sit idle
-/// while the other finishes its last piece.
+/// while the other finishes its last piece. A single block runs on the calling thread: there
+/// its solves may put their node loops on every core (above 448 bits, `numerics::shares`),
+/// which they never do on a thread of the pool.
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
     solve_block: impl Fn(&[I], &mut [Result<R>]) + Sync + Send,
 ) -> Vec<Result<R>> {
     let mut out: Vec<Result<R>> = (0..items.len()).map(|_| Err(unsolved())).collect();
+    if items.len() <= BLOCK {
+        solve_block(items, &mut out);
+        return out;
+    }
     out.par_chunks_mut(BLOCK)
         .zip(items.par_chunks(BLOCK))
         .with_max_len(1)

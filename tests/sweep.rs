@@ -134,6 +134,19 @@ fn same_bits_on_one_and_four_threads() {
     check_reproducible(&grid::<Mp>(p, 20, 2.0)[..3 * BLOCK]);
 }
 
+/// A sweep of one block runs on the caller's thread, where above 448 bits its solves put their
+/// node loops on every core: the same bits as the same sweep on a pool thread (loops serial).
+#[test]
+fn one_block_on_the_callers_thread_same_bits() {
+    let p = MpPrec::new(512).unwrap();
+    let pts = &grid::<Mp>(p, 4, 2.0)[..6];
+    let opts = Options::default();
+    let here = bits(&sweep::ellipses(pts, &opts));
+    let pooled = bits(&on_threads(1, || sweep::ellipses(pts, &opts)));
+    assert_eq!(here, pooled);
+    assert_eq!(here.len(), 6);
+}
+
 /// ν = 0.7, a ratio of 0 and a NaN ratio in the middle of a curve: those points' own typed
 /// errors; every other point Ok and within its bounds of the sweep of the valid curve.
 #[test]

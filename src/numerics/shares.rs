@@ -10,8 +10,8 @@
 //!   k-independent set-up, the integrand values of an evaluation, their chunk sums) cut into
 //!   contiguous shares, above [`PARALLEL_ABOVE_BITS`] only (below it starting the threads costs
 //!   more than they take over: docs/calibration.md), and never on a thread of a `rayon` pool (a
-//!   sweep already runs its blocks on every core: a solve inside it keeps its loops on its own
-//!   thread).
+//!   sweep of several blocks already runs them on every core: a solve inside it keeps its loops
+//!   on its own thread; a sweep of one block runs it on the caller's thread).
 //!
 //! **Same bits on any number of threads.** Each item is computed by the same operations whatever
 //! share it falls in, and sums are formed afterwards in item order (the chunk sums of
