@@ -11,7 +11,13 @@
 //!   construction the routes use and by Newton on the three-term recurrence at the guard
 //!   precision (`numerics::gauss_legendre::reference_rule`), n the rule of a 2-unit sinh-mapped
 //!   panel (`routes::graded::left_nodes(bits, 2)`: 914 nodes at 4096 bits), the largest rule a
-//!   first solve at k < 1 builds above 512 bits.
+//!   first solve at k < 1 builds above 512 bits;
+//! * `node_loops/{cores,one_thread}/<bits>`: the warm `solve_ellipse` called from the bench's
+//!   thread, whose node loops run on every core above
+//!   `numerics::shares::PARALLEL_ABOVE_BITS` (448), and inside a one-thread `rayon` pool, where
+//!   they stay on that thread (the same bits). Each timed call alternates with an untimed call
+//!   of the other kind, so that both see the same machine: their ratio is the evidence for the
+//!   threshold (docs/calibration.md).
 //!
 //! "Cold" forgets the shared rule cache and the Gauss–Legendre store
 //! (`numerics::quadrature::clear_rule_caches`); the rules of `f64` and double-double stay in
@@ -115,6 +121,42 @@ fn gl_rules(c: &mut Criterion) {
     g.finish();
 }
 
+fn node_loops(c: &mut Criterion) {
+    let one = rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build()
+        .expect("thread pool");
+    for kind in ["cores", "one_thread"] {
+        let mut g = c.benchmark_group(format!("node_loops/{kind}"));
+        g.sample_size(10);
+        for bits in [384u64, 448, 512, 768, 1024] {
+            let p = MpPrec::new(bits).expect("precision");
+            let x = |v: &str| Mp::parse(v, p).expect("input");
+            let sp = Material::new(x("0.25"))
+                .and_then(|m| m.speed(x("0.9990234375")))
+                .expect("speed");
+            let (ratio, opts) = (x("2"), Options::default());
+            let solve = || {
+                let t = Instant::now();
+                black_box(solve_ellipse(&sp, black_box(&ratio), &opts).expect("ellipse"));
+                t.elapsed()
+            };
+            let serial = || one.install(solve);
+            g.bench_function(BenchmarkId::from_parameter(bits), |b| {
+                b.iter_custom(|iters| {
+                    let mut total = Duration::ZERO;
+                    for _ in 0..iters {
+                        let (on_cores, alone) = (solve(), serial());
+                        total += if kind == "cores" { on_cores } else { alone };
+                    }
+                    total
+                })
+            });
+        }
+        g.finish();
+    }
+}
+
 fn bench(c: &mut Criterion) {
     for prec in precisions() {
         match prec {
@@ -124,6 +166,7 @@ fn bench(c: &mut Criterion) {
         }
     }
     gl_rules(c);
+    node_loops(c);
 }
 
 criterion_group!(benches, bench);

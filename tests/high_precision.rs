@@ -2,8 +2,8 @@
 //! of I1, I2 and of the ellipse's k are finite, non-zero (an `f64` would underflow them) and
 //! bound the true error, measured against the same computation 256 bits higher; and the precision
 //! ladder's half-precision stages over a grid at 1536 bits; and the same bits from node loops on
-//! every core as on one thread (512 and 2048 bits). The 8192-bit
-//! case takes under half a minute on two cores and runs on request:
+//! every core as on one thread (512 and 2048 bits), also when first calls meet on several
+//! threads. The 8192-bit case takes under half a minute on two cores and runs on request:
 //! `cargo test --release --test high_precision -- --ignored` (its output is quoted in
 //! docs/precision.md).
 
@@ -179,5 +179,45 @@ fn node_loops_on_threads_give_the_same_bits() {
             assert_eq!(all(&cores), all(&one), "{bits} bits, k = {k:?}");
             assert_eq!(cores.i1.error.to_string(), one.i1.error.to_string());
         }
+    }
+}
+
+/// Callers on several threads at once, at a precision no other test uses (so that they meet
+/// while its rules and tables are still being built inside their `OnceLock`s): three solves
+/// from threads of their own (node loops shared with the helper threads) and a sweep of three
+/// blocks on `rayon`'s pool (its rule work on scoped threads) all finish, and all give the
+/// same bits as one solve alone afterwards. A deadlock between the waiting callers would hang
+/// the test run.
+#[test]
+fn concurrent_first_calls_finish_with_the_same_bits() {
+    use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven};
+    let bits = 736u32;
+    let p = MpPrec::new(bits as u64).unwrap();
+    let x = |v: f64| Mp::from_f64(v, p);
+    let show = |v: &Mp| v.to_float(bits).to_string_radix(16, None);
+    let solve = || {
+        let sp = Material::new(x(0.25)).unwrap().speed(x(0.99)).unwrap();
+        show(
+            &solve_ellipse(&sp, &x(3.0), &Options::default())
+                .unwrap()
+                .k
+                .value,
+        )
+    };
+    let points = EllipsePoint::grid(
+        &[x(0.25)],
+        &[SpeedGiven::Mr(x(0.99))],
+        &vec![x(3.0); 2 * sweep::BLOCK + 1],
+    );
+    let (alone, swept) = std::thread::scope(|s| {
+        let solvers: Vec<_> = (0..3).map(|_| s.spawn(solve)).collect();
+        let swept = s.spawn(|| sweep::ellipses(&points, &Options::default()));
+        let ks: Vec<String> = solvers.into_iter().map(|h| h.join().unwrap()).collect();
+        (ks, swept.join().unwrap())
+    });
+    let want = solve();
+    assert!(alone.iter().all(|k| *k == want), "{alone:?} against {want}");
+    for r in &swept {
+        assert_eq!(show(&r.as_ref().unwrap().k.value), want);
     }
 }

@@ -29,8 +29,9 @@
 //! `O(n·p/80)` products at falling precision, against `O(n²)` p-bit products (about
 //! log₂(p/53) + 1 passes of the recurrence a node) for Newton on the recurrence at the target
 //! precision (`reference_build`); `benches/precision_scaling.rs` measures both. The nodes are
-//! independent of one another and are built on every core (`numerics::shares::map_on_threads`,
-//! scoped threads: a rule is often built inside a `OnceLock` initializer). Rules are built
+//! independent of one another and are built on every core (`numerics::shares::map_on_threads`:
+//! a rule is often built inside a `OnceLock` initializer, where the threads must not take other
+//! jobs while they wait). Rules are built
 //! once per (n, precision) and kept (`raw_rule`); a rule built at a higher precision is
 //! rounded down for a lower one.
 //!

@@ -1,6 +1,7 @@
-//! Work on every core, in two forms, both on scoped threads of `std` (not on `rayon`'s pool: a
-//! rule or a layout is often built inside a `OnceLock` initializer, and a pool worker waiting
-//! there for its jobs could steal a job that waits on the same `OnceLock`):
+//! Work on every core, in two forms, run by the calling thread together with the threads of a
+//! pool of this module's own ([`helpers`]: one thread fewer than the cores, started on first
+//! use and kept for the process, since starting threads for each loop costs about as much as a
+//! loop's share at 512 bits):
 //!
 //! * [`map_on_threads`]: `f(0) … f(m − 1)` in interleaved shares, for the one-time work of a
 //!   precision — the nodes of a Gauss–Legendre rule (`numerics::gauss_legendre`) and the
@@ -8,28 +9,37 @@
 //!   [`MIN_ITEMS_A_SHARE`] items a core.
 //! * [`for_shares`] with [`shares`]: the node loops of the fixed-rule and graded routes (the
 //!   k-independent set-up, the integrand values of an evaluation, their chunk sums) cut into
-//!   contiguous shares, above [`PARALLEL_ABOVE_BITS`] only (below it starting the threads costs
-//!   more than they take over: docs/calibration.md), and never on a thread of a `rayon` pool (a
-//!   sweep of several blocks already runs them on every core: a solve inside it keeps its loops
-//!   on its own thread; a sweep of one block runs it on the caller's thread).
+//!   contiguous shares, above [`PARALLEL_ABOVE_BITS`] only (below it handing shares to another
+//!   thread costs about what it saves: docs/calibration.md), and never on a thread of a `rayon`
+//!   pool (a sweep of several blocks already runs them on every core: a solve inside it keeps
+//!   its loops on its own thread; a sweep of one block runs it on the caller's thread).
+//!
+//! The helpers are not `rayon`'s global pool, and the calling thread never takes other work
+//! while it waits for them: a rule or a layout is often built inside a `OnceLock` initializer,
+//! and a thread that took another job there could meet the same `OnceLock`. The work given to
+//! the helpers never waits for other work, so they cannot deadlock; on a thread of any `rayon` pool
+//! (where `rayon` would make a waiting thread take its own pool's jobs) the one-time work runs
+//! on scoped threads started for it instead.
 //!
 //! **Same bits on any number of threads.** Each item is computed by the same operations whatever
 //! share it falls in, and sums are formed afterwards in item order (the chunk sums of
 //! `routes::graded::power_sums` added in chunk order), so that a result does not depend on the
 //! number of threads; `tests/high_precision.rs` (`node_loops_on_threads_give_the_same_bits`)
-//! compares solves on the cores with solves on a single thread, bit for bit. A share whose thread
-//! cannot be started runs on the calling thread.
+//! compares solves on the cores with solves on a single thread, bit for bit. The threads take the
+//! shares from a common list, so that a share whose thread cannot be started (or starts late)
+//! is taken by another.
 //!
 //! No item of this module implements a formula of the paper.
 
 use crate::error::{Error, Result};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// Precisions (bits) above which the fixed-rule routes' node loops run on every core; at and
 /// below it every loop stays on the calling thread (docs/calibration.md has the evidence).
 pub const PARALLEL_ABOVE_BITS: u32 = 448;
 
-/// The fewest items a share (below, an item costs less than starting a thread).
+/// The fewest items a share (below, the items cost less than handing them to another thread).
 const MIN_ITEMS_A_SHARE: usize = 16;
 
 /// The number of cores (1 when it cannot be known), asked once a process (on Linux the question
@@ -39,19 +49,20 @@ fn cores() -> usize {
     *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |c| c.get()))
 }
 
-/// The error of a share whose thread stopped without a result (it cannot: nothing in the work
-/// given to [`map_on_threads`] panics).
+/// The error of a share left without a result (it cannot be: the calling thread's copy of the
+/// job takes shares until none is left, and nothing in the work given to [`map_on_threads`]
+/// panics).
 fn stopped() -> Error {
     Error::NoConvergence {
-        what: "work on every core (a thread stopped)",
+        what: "work on every core (a share without a result)",
         iterations: 0,
         reached: "none".into(),
     }
 }
 
-/// `f(0) … f(m − 1)` in order: on scoped threads when there are at least
-/// [`MIN_ITEMS_A_SHARE`] items a core ([`interleaved`]), else on the calling thread. Used for
-/// the nodes of a rule and for per-node tables built from them (`routes::graded`).
+/// `f(0) … f(m − 1)` in order: on every core when there are at least [`MIN_ITEMS_A_SHARE`]
+/// items a core ([`interleaved`]), else on the calling thread. Used for the nodes of a rule and
+/// for per-node tables built from them (`routes::graded`).
 pub(crate) fn map_on_threads<R: Send>(
     m: usize,
     f: &(impl Fn(usize) -> Result<R> + Sync),
@@ -64,39 +75,30 @@ pub(crate) fn map_on_threads<R: Send>(
     }
 }
 
-/// `one(1..=m)` in order, on `threads` scoped threads, thread t taking k ≡ t + 1 (mod
-/// `threads`): interleaved shares, so that each thread gets nodes from every part of [0, 1]
-/// (their costs differ between the ends and the middle). A share whose thread cannot be
-/// started runs on the calling thread.
+/// `one(1..=m)` in order, in `threads` interleaved shares, share t taking k ≡ t + 1 (mod
+/// `threads`), so that each share gets nodes from every part of [0, 1] (their costs differ
+/// between the ends and the middle). The shares are taken from a common counter by the threads
+/// of [`on_count`], so that every share is computed whichever threads run.
 fn interleaved<R: Send>(
     m: usize,
     threads: usize,
     one: &(impl Fn(usize) -> Result<R> + Sync),
 ) -> Result<Vec<R>> {
-    let run = move |t: usize| {
-        (t + 1..=m)
-            .step_by(threads)
-            .map(one)
-            .collect::<Result<Vec<R>>>()
+    let slots: Vec<Mutex<Option<Result<Vec<R>>>>> =
+        (0..threads).map(|_| Mutex::new(None)).collect();
+    let next = AtomicUsize::new(0);
+    let job = || loop {
+        let t = next.fetch_add(1, Ordering::Relaxed);
+        let Some(slot) = slots.get(t) else { break };
+        let share = (t + 1..=m).step_by(threads).map(one).collect();
+        *slot.lock().unwrap_or_else(PoisonError::into_inner) = Some(share);
     };
-    let shares = std::thread::scope(|s| {
-        let spawned: Vec<_> = (1..threads)
-            .map(|t| {
-                std::thread::Builder::new()
-                    .spawn_scoped(s, move || run(t))
-                    .map_err(|_| t)
-            })
-            .collect();
-        let mut shares = vec![run(0)?];
-        for h in spawned {
-            shares.push(match h {
-                Ok(h) => h.join().unwrap_or_else(|_| Err(stopped()))?,
-                Err(t) => run(t)?,
-            });
-        }
-        Ok::<_, Error>(shares)
-    })?;
-    let mut iters: Vec<_> = shares.into_iter().map(Vec::into_iter).collect();
+    on_count(threads, &job);
+    let mut iters = Vec::with_capacity(threads);
+    for slot in slots {
+        let share = slot.into_inner().unwrap_or_else(PoisonError::into_inner);
+        iters.push(share.unwrap_or_else(|| Err(stopped()))?.into_iter());
+    }
     Ok((0..m).filter_map(|k| iters[k % threads].next()).collect())
 }
 
@@ -158,11 +160,47 @@ fn on_threads<A: Send, B: Send>(
             None => break,
         }
     };
+    on_count(count, &work);
+}
+
+/// The threads that run the shares beside the calling thread (module docs); `None` when they
+/// cannot be started.
+fn helpers() -> Option<&'static rayon::ThreadPool> {
+    static POOL: OnceLock<Option<rayon::ThreadPool>> = OnceLock::new();
+    POOL.get_or_init(|| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(cores().saturating_sub(1).max(1))
+            .thread_name(|i| format!("moving-hertz-shares-{i}"))
+            .build()
+            .ok()
+    })
+    .as_ref()
+}
+
+/// Runs `job` on the calling thread and on up to `count` − 1 more at once, and returns when
+/// every copy has returned. The jobs take their work from a common list, so the copies that run
+/// do all of it. The other copies go to the [`helpers`]; the calling thread waits for them
+/// without taking other work (it is not a thread of that pool). On a thread of a `rayon` pool
+/// (waiting on another pool there would make it take its own pool's jobs meanwhile, which may
+/// wait on the `OnceLock` this thread is filling) and when the helpers cannot be started, the
+/// copies run on scoped threads started for the call (a copy whose thread cannot be started
+/// is left out).
+fn on_count(count: usize, job: &(dyn Fn() + Sync)) {
+    if rayon::current_thread_index().is_none() {
+        if let Some(pool) = helpers() {
+            pool.in_place_scope(|scope| {
+                for _ in 1..count {
+                    scope.spawn(|_| job());
+                }
+                job();
+            });
+            return;
+        }
+    }
     std::thread::scope(|scope| {
         for _ in 1..count {
-            // A thread that cannot be started leaves its share in the list.
-            let _ = std::thread::Builder::new().spawn_scoped(scope, work);
+            let _ = std::thread::Builder::new().spawn_scoped(scope, job);
         }
-        work();
+        job();
     });
 }

@@ -314,7 +314,7 @@ fn exp_guard<T: Real>(p: T::Prec) -> u32 {
 
 /// e^{x₊} and e^{−x₊} at each node t of a panel's rule, x₊ = (1 + t)·ℓ ln 2/2, formed at the
 /// guarded precision and rounded once (so within an ulp or so of the working precision). The
-/// exponentials are independent and are formed on scoped threads above a few dozen nodes.
+/// exponentials are independent and are formed on every core above a few dozen nodes.
 struct PanelExps<'a, T> {
     nodes: &'a [T],
     l: usize,
