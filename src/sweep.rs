@@ -8,8 +8,9 @@
 //! pool the caller installs), the points of a block one after another; a sweep of one block
 //! runs on the calling thread (above 448 bits its solves then run their node loops on every
 //! core, as [`crate::solve_ellipse`] does; in a block on a pool thread they stay on that
-//! thread). A call from a thread outside the pool hands the work to the pool's threads and waits; the cost of that hand-off,
-//! once per call, is the `sweep` bench's `sweep_1_thread_from_outside` (docs/performance.md).
+//! thread). A sweep of several blocks called from a thread outside the pool hands the work to
+//! the pool's threads and waits; the cost of that hand-off, once per call, is the `sweep`
+//! bench's `sweep_1_thread_from_outside` (docs/performance.md).
 //! Within a block, consecutive points at the same speed share the fixed rules' set-up (the
 //! Green's function at every node, at each stage of the precision ladder), and each root starts
 //! from its neighbours' (continuation): the lowest stage of the ladder starts from the
