@@ -17,9 +17,9 @@
 //! The helpers are not `rayon`'s global pool, and the calling thread never takes other work
 //! while it waits for them: a rule or a layout is often built inside a `OnceLock` initializer,
 //! and a thread that took another job there could meet the same `OnceLock`. The work given to
-//! the helpers never waits for other work, so they cannot deadlock; on a thread of any `rayon` pool
-//! (where `rayon` would make a waiting thread take its own pool's jobs) the one-time work runs
-//! on scoped threads started for it instead.
+//! the helpers never waits for other work, so they cannot deadlock; on a thread of any `rayon`
+//! pool (where `rayon` would make a waiting thread take its own pool's jobs) the one-time work
+//! runs on scoped threads started for it instead.
 //!
 //! **Same bits on any number of threads.** Each item is computed by the same operations whatever
 //! share it falls in, and sums are formed afterwards in item order (the chunk sums of
