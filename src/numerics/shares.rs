@@ -129,9 +129,9 @@ pub(crate) fn for_shares<A: Send, B: Send>(
     }
 }
 
-/// [`for_shares`] with `count` > 1 shares: the calling thread and the started ones take shares
-/// from a common list until it is empty, so that a thread that cannot be started leaves its
-/// share to the others.
+/// [`for_shares`] with `count` > 1 shares: the calling thread and the threads of [`on_count`]
+/// take shares from a common list until it is empty, so that a thread that starts late or not
+/// at all leaves its share to the others.
 fn on_threads<A: Send, B: Send>(
     count: usize,
     a: &mut [A],
