@@ -272,6 +272,29 @@ fn term_cap() {
         integrals(&speed_mp, &axis_mp, &SeriesOptions::default()),
         Err(Error::TermCap { .. })
     ));
+    // Above about 1000 bits ε is below the f64 range: the count grows on linearly in the bits
+    // (n(p) − n(512) = (p − 512)·ln 2 / (−ln M_R²)) instead of saturating at u64::MAX.
+    let needed = |bits: u64| {
+        let p = MpPrec::new(bits).unwrap();
+        let x = |s: &str| Mp::parse(s, p).unwrap();
+        let speed = Material::new(x("0.25")).unwrap().speed(x("0.999")).unwrap();
+        let axis = AxisRatio::new(x("0.5")).unwrap();
+        match integrals(&speed, &axis, &SeriesOptions::default()) {
+            Err(Error::TermCap {
+                needed: Some(n), ..
+            }) => n as f64,
+            other => panic!("{bits} bits: expected TermCap, got {other:?}"),
+        }
+    };
+    let per_bit = std::f64::consts::LN_2 / -(0.999f64 * 0.999).ln();
+    for bits in [2048, 4096, 16384] {
+        let grown = needed(bits) - needed(512);
+        let want = (bits - 512) as f64 * per_bit;
+        assert!(
+            (grown - want).abs() <= 4.0,
+            "{bits} bits: {grown} vs {want}"
+        );
+    }
     assert!(t0.elapsed().as_secs_f64() < 1.0, "the refusal must be fast");
 
     let speed = mat.speed(0.9).unwrap();

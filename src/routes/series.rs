@@ -32,6 +32,7 @@ use super::guard::{run_guarded, GuardedJob};
 use super::moments::{plan, table_at, MAX_INDEX};
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
+use crate::estimate::RelError;
 use crate::numerics::series::sum_series_with_tail;
 use crate::physics::Speed;
 use crate::scalar::{short, Real};
@@ -62,10 +63,16 @@ impl<T> Default for SeriesOptions<T> {
 /// assumes D_n, L_{n+1} do not decrease and h_n = h_0). 1 at q = 0.
 /// Terms of (37); an over-estimate, not a bound on accuracy.
 pub fn terms_estimate(q: f64, tol: f64) -> u64 {
+    terms_for_ln_tol(q, tol.ln())
+}
+
+/// [`terms_estimate`] from ln(tol), so that a tolerance below the `f64` range (a working
+/// precision above about 1000 bits) gives its true count instead of overflowing.
+fn terms_for_ln_tol(q: f64, ln_tol: f64) -> u64 {
     if q <= 0.0 {
         return 1;
     }
-    let n = (2.0 * tol * (1.0 - q) / q).ln() / q.ln();
+    let n = (ln_tol + (2.0 * (1.0 - q) / q).ln()) / q.ln();
     if n.is_finite() && n > 0.0 {
         (n.ceil() as u64).saturating_add(2)
     } else if n.is_finite() {
@@ -115,8 +122,7 @@ pub fn integrals<T: Real>(
         });
     }
     let q = speed.mr2().to_f64();
-    let tol_f = tol.to_f64();
-    let est = terms_estimate(q, tol_f);
+    let est = terms_for_ln_tol(q, RelError::of(&tol).log2() * std::f64::consts::LN_2);
     let cap = opts.max_terms;
     if est > (cap as u64).saturating_mul(3) / 2 {
         return Err(Error::TermCap {
