@@ -185,6 +185,45 @@ fn domain_and_extremes() {
     }
 }
 
+/// Gaps below the `f64` range (MPFR only): the layout reads ε² and δ² by their exponents, so the
+/// route agrees within its bound with the adaptive one 64 bits higher at the gaps 10⁻³³⁰ and
+/// 10⁻⁵⁰⁰⁰ (I2 grows like the gap^(−1/2)); beyond the longest layout a typed error names the gap.
+#[test]
+fn gaps_below_the_f64_range() {
+    let (p, r) = (mp(256), mp(320));
+    let at = |p, gap: &str, k: &str| {
+        let x = |s: &str| Mp::parse(s, p).unwrap();
+        let sp = Material::new(x("0.25"))
+            .unwrap()
+            .speed_from_gap(x(gap))
+            .unwrap();
+        (sp, AxisRatio::new(x(k)).unwrap())
+    };
+    for (gap, k) in [("1e-330", "1.5"), ("1e-330", "2"), ("1e-5000", "2")] {
+        let (s2, a2) = at(r, gap, k);
+        let q = direct::quadrature(&s2, &a2, &Mp::zero(r)).unwrap();
+        let (sp, ax) = at(p, gap, k);
+        let g = graded::integrals(&sp, &ax).unwrap();
+        let e = rel_eps(&g.i1, &q.i1.to_float(320)).max(rel_eps(&g.i2, &q.i2.to_float(320)));
+        let bound = g.error_estimate.to_f64() / Mp::epsilon(p).to_f64();
+        assert!(
+            e <= bound,
+            "gap {gap}, k {k}: {e:.1} eps, bound {bound:.1} eps"
+        );
+    }
+    let x = |s: &str| Mp::parse(s, p).unwrap();
+    let sp = Material::new(x("0.25"))
+        .unwrap()
+        .speed_from_gap(x("1e-20000"))
+        .unwrap();
+    match graded::integrals(&sp, &AxisRatio::new(x("2")).unwrap()) {
+        Err(e @ moving_hertz::Error::Domain { .. }) => {
+            assert!(e.to_string().contains("1e-20000"), "{e}")
+        }
+        other => panic!("gap 1e-20000: {other:?}"),
+    }
+}
+
 /// The automatic choice answers k > 1 by the graded panels when their bound meets the tolerance.
 #[test]
 fn choose_runs_the_graded_route_for_k_above_one() {

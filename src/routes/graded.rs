@@ -60,6 +60,7 @@ use super::fast::SpeedConsts;
 use super::guard::{run_guarded, GuardedJob};
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
+use crate::estimate::RelError;
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
 use crate::numerics::shares::{for_shares, map_on_threads, shares};
 use crate::physics::Speed;
@@ -370,10 +371,24 @@ pub(super) struct SinhLayout<'r, T: Real> {
 
 /// The units of ln 2 that a scale of at most `a_max` needs: ⌈asinh(1/a_max)/ln 2⌉, at least 1.
 fn units_for(a_max: f64) -> usize {
-    ((1.0 / a_max).asinh() / std::f64::consts::LN_2)
-        .ceil()
-        .max(1.0) as usize
+    units_for_log2(-a_max.log2())
 }
+
+/// [`units_for`] from l = log₂(1/a_max), so that a scale below the `f64` range still counts:
+/// asinh(2^l)/ln 2 < l + 1, which is used for l ≥ 60 (where the two differ by < 2^-120).
+/// Finite l only; at most [`MAX_LAYOUT_UNITS`] is asked for ([`GradedSetup::new`] checks).
+fn units_for_log2(l: f64) -> usize {
+    let u = if l < 60.0 {
+        l.exp2().asinh() / std::f64::consts::LN_2
+    } else {
+        l + 1.0
+    };
+    u.ceil().max(1.0) as usize
+}
+
+/// The longest x-range of a sinh layout, in units of ln 2: a scale a ≥ 2^-32767, i.e. a gap
+/// 1 − M_R above about 10⁻¹⁹⁷⁰⁰ for the graded route (some 10⁵ nodes at the bound).
+const MAX_LAYOUT_UNITS: usize = 1 << 15;
 
 /// The number of nodes of the sinh layout for a scale of at most `a_max` at `bits` bits (from
 /// the plan alone: no table is built).
@@ -386,7 +401,10 @@ pub(super) fn sinh_node_count(bits: u32, a_max: f64) -> usize {
 
 impl<'r, T: Real> SinhLayout<'r, T> {
     fn new(rules: &'r Rules<T>, a_max: f64) -> Self {
-        let units = units_for(a_max);
+        Self::for_units(rules, units_for(a_max))
+    }
+
+    fn for_units(rules: &'r Rules<T>, units: usize) -> Self {
         let far = (units >= rules.plans.len()).then(|| left_plan(T::bits(rules.prec), units));
         SinhLayout { rules, far, units }
     }
@@ -492,13 +510,18 @@ impl<T: Real> GradedSetup<T> {
         // The scale a of w = a sinh x: at most the lowest singularity height for every
         // k ≤ (5/4) k_ref (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points
         // ±iδ), made 1/sinh(C ln 2) for the plan's whole number C of units ln 2.
+        // log₂(1/a) from the exponents: ε² and δ² can lie below the f64 range at MPFR.
         let k_max = k_ref.clone() * &T::from_ratio(5, 4, p);
-        let a_max = k_max
-            .to_f64()
-            .recip()
-            .min(sc.eps2.to_f64().sqrt())
-            .min(sc.d2.to_f64().sqrt());
-        let layout = SinhLayout::new(&rules, a_max);
+        let lg = |x: &T| RelError::of(x).log2();
+        let inv_a = lg(&k_max).max(-lg(&sc.eps2) / 2.0).max(-lg(&sc.d2) / 2.0);
+        if inv_a.is_nan() || inv_a >= (MAX_LAYOUT_UNITS - 1) as f64 {
+            return Err(Error::Domain {
+                name: "gap 1 − M_R for the graded route (k ≥ 1)",
+                value: short(speed.gap()),
+                bound: "> 2^-65535 (the graded panels' longest layout)",
+            });
+        }
+        let layout = SinhLayout::for_units(&rules, units_for_log2(inv_a));
         let nl = layout.nodes()?;
         // Left: s and the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 at each node, with G's constant
         // factor 2/m1 folded in, then f in place of the weight, then s·f and s²·f.
