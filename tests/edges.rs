@@ -160,3 +160,31 @@ fn tiny_k_and_tiny_speed_hold_their_bounds() {
         }
     }
 }
+
+/// Above the rules' limit (32,768 bits) the ellipse solve, a sweep and a contact solve refuse
+/// before any work, naming the precision and the bound (the ladder's lower stages would
+/// otherwise run for a minute first).
+#[test]
+fn precision_above_the_rules_limit_is_refused_first() {
+    let p = MpPrec::new(32769).unwrap();
+    let x = |s: &str| Mp::parse(s, p).unwrap();
+    let speed = Material::new(x("0.25")).unwrap().speed(x("0.5")).unwrap();
+    let t = std::time::Instant::now();
+    let refused = |r: std::result::Result<(), Error>| match r {
+        Err(e @ Error::Precision { bits: 32769, .. }) => assert!(e.to_string().contains("32768")),
+        other => panic!("expected a precision error, got {other:?}"),
+    };
+    refused(solve_ellipse(&speed, &x("2"), &Options::default()).map(drop));
+    let points = moving_hertz::sweep::EllipsePoint::grid(
+        &[x("0.25")],
+        &[moving_hertz::sweep::SpeedGiven::Mr(x("0.5"))],
+        &[x("2")],
+    );
+    let swept = moving_hertz::sweep::ellipses(&points, &Options::default());
+    refused(swept.into_iter().next().unwrap().map(drop));
+    assert!(
+        t.elapsed().as_secs_f64() < 1.0,
+        "refused after {:?}",
+        t.elapsed()
+    );
+}

@@ -259,8 +259,9 @@ fn static_seed_wide(ratio: f64) -> f64 {
 /// [`crate::physics::Material::speed_from_gap`] carries to within ε.
 ///
 /// Errors: [`Error::Domain`] for a ratio that is not positive and finite, for the series or the
-/// adaptive subtracted method (no k-derivatives); [`Error::Unreachable`] for a tolerance below
-/// 4ε; [`Error::NoConvergence`] if Newton's method fails (not observed).
+/// adaptive subtracted method (no k-derivatives); [`Error::Precision`] above 32,768 bits (the
+/// rules' limit), before any work; [`Error::Unreachable`] for a tolerance below 4ε;
+/// [`Error::NoConvergence`] if Newton's method fails (not observed).
 pub fn solve_ellipse<T: Real>(
     speed: &Speed<T>,
     ratio: &T,
@@ -273,10 +274,13 @@ pub fn solve_ellipse<T: Real>(
         .publish()
 }
 
-/// The checks of [`solve_ellipse`] that the options decide, before any work: a method that
-/// gives k-derivatives, a tolerance not below 4ε. Returns the tolerance at the working
-/// precision `p` (`None`: its floor).
+/// The checks of [`solve_ellipse`] that the options and the precision decide, before any work:
+/// a precision the quadrature rules are built for (at most
+/// [`crate::numerics::quadrature::MAX_RULE_BITS`]), a method that gives k-derivatives, a
+/// tolerance not below 4ε. Returns the tolerance at the working precision `p` (`None`: its
+/// floor).
 pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<Option<T>> {
+    crate::numerics::quadrature::check_rule_bits(T::bits(p))?;
     if matches!(opts.method, Method::Series | Method::AdaptiveSubtracted) {
         return Err(Error::Domain {
             name: "method for the ellipse solve",
