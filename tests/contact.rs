@@ -10,7 +10,7 @@ use common::rel_eps;
 use moving_hertz::numerics::elliptic::{ellipb_mc, ellipd_mc, ellipke_mc};
 use moving_hertz::numerics::roots::brent;
 use moving_hertz::prelude::*;
-use moving_hertz::{solve_ellipse, ContactSolution, Ellipse, MajorAxis, Route};
+use moving_hertz::{integrals, solve_ellipse, ContactSolution, Ellipse, MajorAxis, Route};
 
 /// The contact solution for `sp` with radii R1 (along), R2 (across), a loading and μ.
 fn contact<T: Real>(
@@ -493,3 +493,78 @@ fn the_eccentricity_bound_is_absolute_and_labelled() {
         assert_eq!(q.kind, BoundKind::Relative);
     }
 }
+
+/// Every bound the ellipse solve returns holds at any tolerance and any supported curvature
+/// ratio: at `f64`, k within its bound of the double-double solve, and I1, I2 within theirs of
+/// the double-double integrals at the returned k — at the default tolerance, at 10⁻¹² … 10⁻⁶,
+/// and at tolerances looser than the solve works to (0.5 and ∞, met as 2⁻²⁰, so k's bound is
+/// at most 2⁻²⁰). The solve carries I1, I2 from its last evaluation to the root; the carry's
+/// error belongs in their bounds (without it, A1/B1 = 10⁻⁹⁵ … 10⁻⁷⁰ broke I1's bound by up to
+/// 15× at the default tolerance, and a tolerance of ∞ returned I1 of the wrong sign).
+#[test]
+fn every_bound_holds_at_any_tolerance() {
+    let rel = |got: f64, want: &Dd| ((Dd::from_f64(got, ()) - want) / want).abs().to_f64();
+    let tolerances = [
+        None,
+        Some(RelError::from_f64(1e-12)),
+        Some(RelError::from_f64(1e-8)),
+        Some(RelError::from_f64(1e-6)),
+        Some(RelError::from_f64(0.5)),
+        Some(RelError::INFINITE),
+    ];
+    let mut ratios: Vec<f64> = (0..=20)
+        .map(|j| format!("1e{}", 10 * j - 100).parse().unwrap())
+        .collect();
+    ratios.extend([1e-95, 1e-75, 1e-35]);
+    let mut worst = 0.0f64;
+    for nu in [-0.9, 0.25] {
+        for gap in [1.0, 1e-6] {
+            let sp = Material::new(nu).unwrap().speed_from_gap(gap).unwrap();
+            let spd = Material::new(Dd::from_f64(nu, ()))
+                .unwrap()
+                .speed_from_gap(Dd::from_f64(gap, ()))
+                .unwrap();
+            for &ratio in &ratios {
+                let want = ellipse(&spd, &Dd::from_f64(ratio, ()));
+                for tol in &tolerances {
+                    let at = format!("nu={nu} gap={gap} A1/B1={ratio:e} tolerance {tol:?}");
+                    let opts = Options {
+                        tolerance: *tol,
+                        ..Default::default()
+                    };
+                    let s = solve_ellipse(&sp, &ratio, &opts).unwrap();
+                    let ints =
+                        integrals(&spd, &Dd::from_f64(s.k.value, ()), &Default::default()).unwrap();
+                    for (name, err, bound) in [
+                        ("k", rel(s.k.value, &want.k.value), s.k.error),
+                        (
+                            "I1",
+                            rel(s.integrals.i1.value, &ints.i1.value),
+                            s.integrals.i1.error,
+                        ),
+                        (
+                            "I2",
+                            rel(s.integrals.i2.value, &ints.i2.value),
+                            s.integrals.i2.error,
+                        ),
+                    ] {
+                        assert!(
+                            err <= bound.to_f64(),
+                            "{at}: {name} off by {err:.3e}, bound {bound}"
+                        );
+                        worst = worst.max(err / bound.to_f64());
+                    }
+                    if let Some(t) = tol {
+                        assert!(
+                            s.k.error <= t.min(RelError::pow2(-20)),
+                            "{at}: k's bound {} misses the tolerance",
+                            s.k.error
+                        );
+                    }
+                }
+            }
+        }
+    }
+    println!("worst true error / bound over k, I1, I2: {worst:.3}");
+}
+

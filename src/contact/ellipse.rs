@@ -92,7 +92,9 @@ pub struct Options<T> {
     pub seed: Option<T>,
     /// The relative accuracy wanted for k; `None` (the default) asks for the working
     /// precision's floor (a few ε). A tolerance below 4ε is refused before any work
-    /// ([`Error::Unreachable`]).
+    /// ([`Error::Unreachable`]); one above 2⁻²⁰ ≈ 10⁻⁶ is met as 2⁻²⁰ (the loosest the
+    /// stopping rules' error model covers). Either way every bound returned holds: k's, and
+    /// I1's and I2's, which include their carry from the last evaluation to the root.
     pub tolerance: Option<RelError>,
 }
 
@@ -252,10 +254,11 @@ fn static_seed_wide(ratio: f64) -> f64 {
 /// working precision, no search.
 ///
 /// Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit quadrature solve,
-/// `tests/contact.rs`), I1, I2 at k to a few ε, with error bounds. The bound on k is for the
-/// inputs as represented at the working precision: near the Rayleigh speed k is ill-conditioned
-/// in M_R (condition number ~M_R/(4(1 − M_R))) but well conditioned in the gap 1 − M_R, which a
-/// speed made by [`crate::physics::Material::parse_speed`] or
+/// `tests/contact.rs`), I1, I2 at k to a few ε, with error bounds that include their carry
+/// from the last evaluation to the root (`every_bound_holds_at_any_tolerance`). The bound on k
+/// is for the inputs as represented at the working precision: near the Rayleigh speed k is
+/// ill-conditioned in M_R (condition number ~M_R/(4(1 − M_R))) but well conditioned in the gap
+/// 1 − M_R, which a speed made by [`crate::physics::Material::parse_speed`] or
 /// [`crate::physics::Material::speed_from_gap`] carries to within ε.
 ///
 /// Errors: [`Error::Domain`] for a ratio that is not positive and finite, for the series or the
@@ -298,8 +301,18 @@ pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<
             });
         }
     }
-    Ok(opts.tolerance.map(|t| t.to_real::<T>(p)))
+    Ok(opts.tolerance.map(|t| {
+        t.min(RelError::pow2(LOOSEST_TOLERANCE_LOG2))
+            .to_real::<T>(p)
+    }))
 }
+
+/// The loosest tolerance on k the solve works to, 2⁻²⁰ ≈ 10⁻⁶: a looser one is met as this
+/// one. The stopping rules' error model (an error ~δ² after a Newton step δ) and the
+/// integrals' carry from the last iterate to the root ([`carry_error`], Hermite's
+/// [`hermite_root`]) hold for the steps they allow here; at `f64` a solve to 2⁻²⁰ costs about
+/// two evaluations fewer than one to the working precision's floor.
+const LOOSEST_TOLERANCE_LOG2: i64 = -20;
 
 /// The ellipse solve for one speed and method: the evaluators of the precision ladder's
 /// stages, each built on first use and kept, so that the fixed rules' set-ups serve every
@@ -859,7 +872,8 @@ impl<'a, T: Real> Newton<'a, T> {
     /// are those at `lam_old`, carried to the new iterate by [`finish`]): the step is at
     /// rounding level, or stopped shrinking near it; or, once Newton is converging (from a
     /// seed, or after two steps), a step δ leaves an error ~δ² — δ·age for a chord step whose
-    /// derivative is `age` behind — and 64 δ·max(δ, age) ≤ ε·scale², counted in the estimate.
+    /// derivative is `age` behind — and 64 δ·max(δ, age) ≤ ε·scale², counted in the estimate,
+    /// while the integrals' carry over δ ([`carry_error`]) stays below ε.
     #[inline]
     fn converged(
         &self,
@@ -887,7 +901,10 @@ impl<'a, T: Real> Newton<'a, T> {
         }
         let projected = step.clone() * &step.clone().max_of(age.clone()).mul_i64(64);
         let quadratic = self.seeded || self.spent >= 3;
-        if was_newton && quadratic && projected <= eps.clone() * &scale.square() {
+        // The integrals' carry over the step (|dk/k| ≈ step; the derivatives' relative error
+        // ≲ 8·age) is also held to ε.
+        let carry = carry_error(step, &age.clone().mul_i64(8));
+        if was_newton && quadratic && projected <= eps.clone() * &scale.square() && carry <= *eps {
             let err = projected / scale;
             return Some(finish(self.lam.clone(), lam_old, ci, err, self.spent));
         }
@@ -996,8 +1013,11 @@ fn carry_cubic<T: Real>(y: &T, dy: &T, c2: &T, c3: &T, h: &T) -> (T, T) {
 /// k-derivatives) carried to it by the cubics through their values and k-derivatives. Taken when
 /// |h| ≤ |D|/8 (D = λ_a − λ_b) and 8(1 + |c3|)D²h²/F′ ≤ ε·scale, the interpolation error
 /// (F⁗/24)D²h²/F′ with |F⁗| ≤ 24(1 + |c3|) assumed, c3 the cubic's F‴/6 (measured F″, F‴ of
-/// order 0.01–1 in λ); the carry's relative error is (k⁴|I⁗|/24I)·D²h² ≤ 16D²h² (I1 ∝ ln k/k³
-/// gives 15 for k ≫ 1), also required ≤ ε and added to the integrals' error estimate.
+/// order 0.01–1 in λ). The integrals are interpolated in k: at the root x, the remainder
+/// I⁗(ξ)/24·(x − k_a)²(x − k_b)² relative to I(x) is at most
+/// 16·((x − k_a)/x)²((x − k_b)/x)²·(x/k_min)⁷ for I ∝ k^-s ln k with s ≤ 3 (k⁴|I⁗|/24I ≤ 16:
+/// 15 for I1 ∝ ln k/k³ at k ≫ 1, 5 for I1 ∝ k⁻² at k ≪ 1; ξ ≥ k_min, the least of the three
+/// k); also required ≤ ε and added to the integrals' error estimate.
 /// Returns λ, the error bound in λ, and the carried integrals.
 fn hermite_root<T: Real>(
     a: &Point<T>,
@@ -1018,17 +1038,19 @@ fn hermite_root<T: Real>(
     }
     let (hf, df_, c3f) = (h.to_f64().abs(), d.to_f64().abs(), c3.to_f64().abs());
     let err = 8.0 * (1.0 + c3f) * df_ * df_ * hf * hf / b.df.to_f64();
-    // The integrals' carry: relative error (k⁴|I⁗|/24I)·D²h² with k⁴|I⁗|/24I ≤ 16 (I1 ∝ ln k/k³
-    // for k ≫ 1 gives 15; `docs/calibration.md`).
-    let carry_err = 16.0 * df_ * df_ * hf * hf;
-    let epsf = eps.to_f64();
-    if !(hf * 8.0 <= df_ && err <= epsf * scale.to_f64() && carry_err <= epsf && err.is_finite()) {
-        return None;
-    }
     // The integrals, in k: Hermite cubics from the two iterates' values and k-derivatives.
     let (ka, kb) = (a.lam.clone().exp(), b.lam.clone().exp());
-    let dk = ka - &kb;
-    let hk = (b.lam.clone() + &h).exp() - &kb;
+    let x = (b.lam.clone() + &h).exp();
+    let least = ka.clone().min_of(kb.clone()).min_of(x.clone());
+    let dk = ka.clone() - &kb;
+    let hk = x.clone() - &kb;
+    let rel = |y: T| (y / &x).to_f64();
+    let carry_err = 16.0 * (rel(x.clone() - &ka) * rel(hk.clone())).powi(2) * rel(least).powi(-7);
+    let epsf = eps.to_f64();
+    let fine = err <= epsf * scale.to_f64() && carry_err <= epsf;
+    if !(hf * 8.0 <= df_ && fine && err.is_finite() && carry_err.is_finite()) {
+        return None;
+    }
     let carry = |ya: &T, yb: &T, dya: &T, dyb: &T| {
         let (c2, c3) = hermite_coefficients(&dk, ya, yb, dya, dyb);
         carry_cubic(yb, dyb, &c2, &c3, &hk)
@@ -1145,6 +1167,15 @@ fn halley_from_f64<T: Real>(
     Some((lam.clone() + h, T::from_f64(err, p), ints))
 }
 
+/// The relative error of carrying I1, I2 a relative distance `moved` = |dk/k| to first order
+/// with k-derivatives of relative error `r`: the Taylor remainder ½|k²I″/I|·moved² with
+/// ½|k²I″/I| ≤ 8 (6 for I1 ∝ ln k/k³ at k ≫ 1, with room for I″ between the two k), plus the
+/// derivatives' error through |kI′/I| ≤ 4: 16·moved² + 4r·moved (valid for moved ≤ 1/8, which
+/// the stopping rules keep: [`Newton::converged`]).
+fn carry_error<T: Real>(moved: &T, r: &T) -> T {
+    (moved.clone().mul_i64(16) + &r.clone().mul_i64(4)) * moved
+}
+
 /// The derivatives kept for chord steps: at λ = `lam`, dI1/dk, dI2/dk and F′, with F′'s
 /// relative error when it comes from a lower precision (0 otherwise).
 #[derive(Clone)]
@@ -1160,8 +1191,8 @@ struct Chord<T> {
 }
 
 /// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`:
-/// I1, I2 are carried to the new k to first order, I(k) ≈ I(k_old) + I′(k_old)(k − k_old)
-/// (error O((k − k_old)²), below the rounding level whenever the iteration stops).
+/// I1, I2 are carried to the new k to first order, I(k) ≈ I(k_old) + I′(k_old)(k − k_old),
+/// and their error estimate grows by the carry's error ([`carry_error`]).
 fn finish<T: Real>(
     lam: T,
     lam_old: &T,
@@ -1174,12 +1205,15 @@ fn finish<T: Real>(
     let dk = k.clone() - lam_old.clone().exp();
     ci.i1 += &(ci.di1_dk() * &dk);
     ci.i2 += &(ci.di2_dk() * &dk);
+    let moved = (dk.clone() / &k).abs();
+    let carried = carry_error(&moved, &ci.extra_error);
     // The derivatives stay those of the previous iterate: relative error ≲ |k I″/I′|·|dk/k|,
     // with |k I″/I′| ≤ 8 (5 for I1 ∝ ln k/k³).
-    ci.extra_error += &(dk.clone() / &k).abs().mul_i64(8);
+    ci.extra_error += &moved.mul_i64(8);
     // δk/k ≈ (δI2/I2 + δI1/I1)/F′ + last step; F′ ≥ ~1 here, keep it simple and safe.
     let df = k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1);
     let prop = ci.error_estimate.clone().mul_i64(2) / df.abs().max_of(T::from_ratio(1, 4, p));
+    ci.error_estimate += &carried;
     // k = e^λ inherits λ's rounding, half an ulp of λ, as a relative error up to |λ|ε/2
     // (docs/calibration.md): |λ|ε covers it with exp's own, 4ε the rest.
     let rounding = T::epsilon(p) * &(lam.abs() + &T::from_i64(4, p));
