@@ -37,7 +37,7 @@ pub fn main() -> Result<()> {
     let (x, y) = (0.2 * lo.a.value, 0.1 * lo.b.value);
     println!(
         "pressure at ({x:.3e}, {y:.3e}) = {} Pa",
-        lo.pressure(&x, &y)
+        lo.pressure(&x, &y)?
     );
     Ok(())
 }

@@ -139,7 +139,7 @@ fn convolution_reproduces_the_punch_and_signorini_holds() {
             (0.7 * a, 0.7 * b),
         ];
         for (x, y) in inside {
-            assert!(sol.inside(&x, &y) && sol.pressure(&x, &y).value > 0.0);
+            assert!(sol.inside(&x, &y) && sol.pressure(&x, &y).unwrap().value > 0.0);
             let u = sol.convolution(&x, &y, &tol(1e-13)).unwrap().value;
             let poly = sol.displacement(&x, &y, &tol(1e-13)).unwrap().value;
             let rel = ((u - poly) / sol.d0.value).abs();
@@ -158,7 +158,7 @@ fn convolution_reproduces_the_punch_and_signorini_holds() {
             (3.0 * a, -b),
         ];
         for (x, y) in outside {
-            assert!(!sol.inside(&x, &y) && sol.pressure(&x, &y).value == 0.0);
+            assert!(!sol.inside(&x, &y) && sol.pressure(&x, &y).unwrap().value == 0.0);
             let u = sol.displacement(&x, &y, &tol(1e-12)).unwrap().value;
             let punch = sol.d0.value - sol.a1() * x * x - sol.b1() * y * y;
             assert!(
@@ -568,3 +568,162 @@ fn every_bound_holds_at_any_tolerance() {
     println!("worst true error / bound over k, I1, I2: {worst:.3}");
 }
 
+/// The pressure field (9) at any finite point: within its bound (relative to p0) of the 256-bit
+/// solution's pressure on a grid across the edge, exactly 0 far outside (|x| up to 10³⁰⁰,
+/// where x² overflows `f64` and double-double: the bound was ∞ or NaN), and a typed error for a
+/// coordinate that is not finite — from the pressure, the displacement and the convolution.
+#[test]
+fn the_pressure_field_is_finite_everywhere() {
+    let problem = |p| ContactProblem {
+        speed: Material::new(Mp::from_f64(0.25, p))
+            .unwrap()
+            .speed(Mp::from_f64(0.9, p))
+            .unwrap(),
+        radius_along: Mp::from_f64(2.0, p),
+        radius_across: Mp::from_f64(1.0, p),
+        loading: Loading::Load(Mp::from_f64(2.0, p)),
+        shear_modulus: Mp::from_f64(1.5, p),
+    };
+    let hi = problem(MpPrec::new(256).unwrap())
+        .solve(&Options::default())
+        .unwrap();
+    let sp = Material::new(0.25).unwrap().speed(0.9).unwrap();
+    let lo = contact(&sp, &2.0, &1.0, Loading::Load(2.0), &1.5).unwrap();
+    let (a, b, p0) = (lo.a.value, lo.b.value, lo.p0.value);
+    let mut worst = 0.0f64;
+    for s in [
+        0.0,
+        0.3,
+        0.9,
+        0.999,
+        1.0 - 1e-12,
+        1.0,
+        1.0 + 1e-12,
+        1.001,
+        2.0,
+    ] {
+        for (cx, cy) in [(1.0, 0.0), (0.0, 1.0), (0.6, 0.8)] {
+            let (x, y) = (s * cx * a, s * cy * b);
+            let got = lo.pressure(&x, &y).unwrap();
+            let up = |v: f64| Mp::from_f64(v, MpPrec::new(256).unwrap());
+            let want = hi.pressure(&up(x), &up(y)).unwrap().value.to_f64();
+            let err = (got.value - want).abs() / p0;
+            assert!(
+                err <= got.error.to_f64(),
+                "at ({x:e}, {y:e}): off by {err:e} p0, bound {}",
+                got.error
+            );
+            worst = worst.max(err / got.error.to_f64().max(f64::MIN_POSITIVE));
+        }
+    }
+    for x in [1e10, 1e155, 1e200, -1e300, f64::MAX] {
+        let got = lo.pressure(&x, &0.5).unwrap();
+        assert!(
+            got.value == 0.0 && got.error.is_finite(),
+            "at x = {x:e}: {got:?}"
+        );
+        let dd = Dd::from_f64(x, ());
+        let got = lo_dd().pressure(&dd, &dd).unwrap();
+        assert!(
+            got.value.is_zero() && got.error.is_finite(),
+            "dd at {x:e}: {got:?}"
+        );
+    }
+    let far = Mp::parse("1e1000", MpPrec::new(256).unwrap()).unwrap();
+    let got = hi.pressure(&far, &far).unwrap();
+    assert!(got.value.is_zero() && got.error.is_finite());
+    let tol = RelError::from_f64(1e-10);
+    for (x, y) in [
+        (f64::NAN, 0.0),
+        (0.0, f64::INFINITY),
+        (f64::NEG_INFINITY, f64::NAN),
+    ] {
+        for r in [
+            lo.pressure(&x, &y),
+            lo.displacement(&x, &y, &tol),
+            lo.convolution(&x, &y, &tol),
+        ] {
+            assert!(
+                matches!(r, Err(moving_hertz::Error::NotFinite { .. })),
+                "({x}, {y}): {r:?}"
+            );
+        }
+    }
+    println!("pressure: worst error / bound {worst:.3}");
+}
+
+/// The f64 problem of `the_pressure_field_is_finite_everywhere` at double-double.
+fn lo_dd() -> ContactSolution<Dd> {
+    let d = |v: f64| Dd::from_f64(v, ());
+    let sp = Material::new(d(0.25)).unwrap().speed(d(0.9)).unwrap();
+    contact(&sp, &d(2.0), &d(1.0), Loading::Load(d(2.0)), &d(1.5)).unwrap()
+}
+
+/// Inputs at the ends of the format whose results fit: solved within every bound of the same
+/// problem at 256 bits (a load of 1e308 with μ = 1e100 failed with "a = inf", its cube formed
+/// from 3P, at double-double with NaN; an approach of 1e300 with R2 = 1e10 overflowed a² at
+/// `f64`, and one of 1e-250 with R2 = 1e-200 underflowed it at double-double). A radius whose curvature 1/(2R) is not a normal number is
+/// refused naming the radius as given; a result beyond the format names the result.
+#[test]
+fn extreme_scales_solve_or_name_the_input() {
+    fn problem<T: Real>(p: T::Prec, r: [f64; 3], load: Loading<f64>) -> ContactProblem<T> {
+        let x = |v: f64| T::from_f64(v, p);
+        ContactProblem {
+            speed: Material::new(x(0.25)).unwrap().speed(x(0.5)).unwrap(),
+            radius_along: x(r[0]),
+            radius_across: x(r[1]),
+            loading: match load {
+                Loading::Load(v) => Loading::Load(x(v)),
+                Loading::Approach(v) => Loading::Approach(x(v)),
+            },
+            shear_modulus: x(r[2]),
+        }
+    }
+    fn check<T: Real>(p: T::Prec, r: [f64; 3], load: Loading<f64>) {
+        let got = problem::<T>(p, r, load.clone())
+            .solve(&Options::default())
+            .unwrap();
+        let hi = MpPrec::new(256).unwrap();
+        let want = problem::<Mp>(hi, r, load)
+            .solve(&Options::default())
+            .unwrap();
+        for (name, g, w) in [
+            ("a", &got.a, &want.a),
+            ("b", &got.b, &want.b),
+            ("p0", &got.p0, &want.p0),
+            ("d0", &got.d0, &want.d0),
+            ("load", &got.load, &want.load),
+        ] {
+            let e = rel_eps(&g.value, &w.value.to_float(256)) * T::epsilon(p).to_f64();
+            assert!(
+                e <= g.error.to_f64(),
+                "{r:?}: {name} off by {e:e}, bound {}",
+                g.error
+            );
+        }
+    }
+    check::<f64>((), [2.0, 1.0, 1e100], Loading::Load(1e308));
+    check::<Dd>((), [2.0, 1.0, 1e100], Loading::Load(1e308));
+    check::<f64>((), [2.0, 1.0, 1e-300], Loading::Load(1e-10));
+    check::<f64>((), [2e10, 1e10, 1e-200], Loading::Approach(1e300));
+    check::<Dd>((), [1e-200, 1e-200, 1e200], Loading::Approach(1e-250));
+    let refused = |r: Result<ContactSolution<f64>>, name: &str, value: &str| match r {
+        Err(e @ moving_hertz::Error::Domain { .. }) => {
+            let text = e.to_string();
+            assert!(text.contains(name) && text.contains(value), "{text}");
+        }
+        other => panic!("expected a domain error naming {name}, got {other:?}"),
+    };
+    let solve = |r: [f64; 3], l| problem::<f64>((), r, l).solve(&Options::default());
+    refused(
+        solve([1.797e308, 1.0, 1.0], Loading::Load(1.0)),
+        "R1",
+        "1.797e308",
+    );
+    refused(solve([1.0, 5e307, 1.0], Loading::Load(1.0)), "R2", "5e307");
+    refused(solve([2.0, 1.0, 1e-300], Loading::Load(1e308)), "d0", "inf");
+    match problem::<Dd>((), [1e300, 1.0, 1.0], Loading::Load(1.0)).solve(&Options::default()) {
+        Err(e @ moving_hertz::Error::Domain { .. }) => assert!(e.to_string().contains("R1")),
+        other => panic!("double-double R1 = 1e300: {other:?}"),
+    }
+}

@@ -122,8 +122,10 @@ impl<T: Real> ContactProblem<T> {
     /// Accuracy: every quantity to a few ε of the working precision (measured against Johnson's
     /// static solution and a 320-bit solve in `tests/contact.rs`), each with a bound.
     /// Errors: [`Error::Domain`] / [`Error::NotFinite`] for a radius, load, approach or modulus
-    /// that is not positive and finite, and for a result that overflows or underflows the
-    /// working type; the ellipse solve's errors.
+    /// that is not positive and finite, and for a radius whose curvature 1/(2R) is not a normal
+    /// number of the working type, each naming the input before any work; [`Error::Domain`]
+    /// for a result that overflows or underflows the working type (intermediates are grouped
+    /// so that only a result out of range does); the ellipse solve's errors.
     pub fn solve(&self, opts: &Options<T>) -> Result<ContactSolution<T>> {
         self.solve_by(|speed, ratio| solve_ellipse(speed, ratio, opts))
     }
@@ -142,16 +144,17 @@ impl<T: Real> ContactProblem<T> {
             Loading::Approach(d) => positive("approach d0", d)?,
         }
         let p = self.shear_modulus.prec();
-        let a1 = self.radius_along.clone().mul_pow2(1).recip();
-        let b1 = self.radius_across.clone().mul_pow2(1).recip();
-        for (name, v) in [
-            ("curvature A1 = 1/(2 R1)", &a1),
-            ("curvature B1 = 1/(2 R2)", &b1),
+        let a1 = self.radius_along.clone().recip().mul_pow2(-1);
+        let b1 = self.radius_across.clone().recip().mul_pow2(-1);
+        for (name, r, v) in [
+            ("radius along the motion R1", &self.radius_along, &a1),
+            ("radius across the motion R2", &self.radius_across, &b1),
         ] {
-            if !v.is_finite() || !v.is_positive() {
-                return Err(Error::NotFinite {
+            if !v.is_finite() || *v < T::min_positive(p) {
+                return Err(Error::Domain {
                     name,
-                    value: short(v),
+                    value: short(r),
+                    bound: "(0, inf) with the curvature 1/(2R) a normal number of the working type (R up to about 2.2e307 at f64, 2.5e291 at double-double)",
                 });
             }
         }
@@ -166,11 +169,11 @@ impl<T: Real> ContactProblem<T> {
         .checked("J0")?;
         let sizes = Sizes::new(self, &ellipse, &j0, &a1, &b1);
         Ok(ContactSolution {
-            a: sizes.a.checked("semi-axis a")?,
-            b: sizes.b.checked("semi-axis b")?,
-            p0: sizes.p0.checked("central pressure p0")?,
-            d0: sizes.d0.checked("approach d0")?,
-            load: sizes.load.checked("load P")?,
+            a: fits("semi-axis a", sizes.a)?,
+            b: fits("semi-axis b", sizes.b)?,
+            p0: fits("central pressure p0", sizes.p0)?,
+            d0: fits("approach d0", sizes.d0)?,
+            load: fits("load P", sizes.load)?,
             ellipse,
             j0,
             problem: self.clone(),
@@ -179,6 +182,19 @@ impl<T: Real> ContactProblem<T> {
         })
         .and_then(ContactSolution::check_range)
     }
+}
+
+/// A result of valid inputs that overflows the working type: [`Error::Domain`] naming it and
+/// asking for rescaled inputs (underflow is [`ContactSolution::check_range`]'s).
+fn fits<T: Real>(name: &'static str, x: Estimated<T>) -> Result<Estimated<T>> {
+    if !x.value.is_finite() {
+        return Err(Error::Domain {
+            name,
+            value: short(&x.value),
+            bound: RESCALE,
+        });
+    }
+    x.checked(name)
 }
 
 /// a, b, p0, d0 and the load with their relative error bounds (module docs).
@@ -211,27 +227,35 @@ impl<T: Real> Sizes<T> {
         let mu = &pb.shear_modulus;
         let four_mu = mu.clone().mul_i64(4);
         let est = Estimated::new;
+        // Grouped so that no intermediate leaves the working type's range unless a result
+        // does: P, μ and d0 enter through their own roots, apart from the factors of order one
+        // (a load of 1e308 with μ = 1e100 gives a = 1e69, whose cube, formed from 3P,
+        // overflowed).
         match &pb.loading {
             Loading::Load(pl) => {
-                // a³ = 3 P I1 / (8 π μ B1).
-                let a3 = pl.clone().mul_i64(3) * i1 / (pi.clone().mul_i64(8) * mu * b1);
-                let a = est(a3.cbrt(), e_i1.add(eps(8)).scale(1.0 / 3.0).add(eps(2)));
+                // a³ = 3 P I1 / (8 π μ B1): a = (∛P/∛μ)·∛(3 I1/(8π B1)).
+                let shape = i1.clone().mul_i64(3) / (pi.clone().mul_i64(8) * b1);
+                let av = pl.clone().cbrt() / &mu.clone().cbrt() * shape.cbrt();
+                let a = est(av, e_i1.add(eps(8)).scale(1.0 / 3.0).add(eps(4)));
                 let b = est(k.clone() * &a.value, a.error.add(dk).add(eps(1)));
-                let p0v = pl.clone().mul_i64(3) / (pi.mul_i64(2) * &a.value * &b.value);
-                let p0 = est(p0v, a.error.add(b.error).add(eps(4)));
-                let d0v = p0.value.clone() * &b.value * &j0.value / &four_mu;
+                // p0 = 3P/(2π a b), d0 = p0 b J0/(4μ).
+                let p0v = (pl.clone() / &a.value / &b.value).mul_i64(3) / pi.mul_i64(2);
+                let p0 = est(p0v, a.error.add(b.error).add(eps(5)));
+                let d0v = (p0.value.clone() / &four_mu) * &b.value * &j0.value;
                 let d0 = est(d0v, p0.error.add(b.error).add(e_j0).add(eps(4)));
                 let load = est(pl.clone(), RelError::ZERO);
                 Sizes { a, b, p0, d0, load }
             }
             Loading::Approach(d0v) => {
-                // a² = d0 I1/(B1 J0), p0 = 4μ a B1/(k I1), P = (2/3)π p0 a b.
-                let a2 = d0v.clone() * i1 / (b1.clone() * &j0.value);
-                let a = est(a2.sqrt(), e_i1.add(e_j0).add(eps(4)).scale(0.5).add(eps(1)));
+                // a² = d0 I1/(B1 J0): a = √d0·√(I1/(B1 J0)); p0 = 4μ a B1/(k I1),
+                // P = (2/3)π p0 a b.
+                let shape = i1.clone() / (b1.clone() * &j0.value);
+                let av = d0v.clone().sqrt() * shape.sqrt();
+                let a = est(av, e_i1.add(e_j0).add(eps(4)).scale(0.5).add(eps(3)));
                 let b = est(k.clone() * &a.value, a.error.add(dk).add(eps(1)));
-                let p0v = four_mu * &a.value * b1 / (k.clone() * i1);
+                let p0v = four_mu * &(a.value.clone() * b1 / (k.clone() * i1));
                 let p0 = est(p0v, a.error.add(dk).add(e_i1).add(eps(4)));
-                let lv = pi.mul_i64(2).div_i64(3) * &p0.value * &a.value * &b.value;
+                let lv = (p0.value.clone() * &a.value * &b.value) * pi.mul_i64(2).div_i64(3);
                 let load = est(lv, p0.error.add(a.error).add(b.error).add(eps(5)));
                 let d0 = est(d0v.clone(), RelError::ZERO);
                 Sizes { a, b, p0, d0, load }
@@ -303,9 +327,26 @@ impl<T: Real> ContactSolution<T> {
     /// The contact pressure p(x, y) = p0 (1 − x²/a² − y²/b²)^{1/2} of (9) (m = 1), zero
     /// outside. Its bound is relative to p0 (the pressure vanishes on the edge, where a relative
     /// bound would be unbounded): |p̃ − p| ≤ error·p0, from p0's bound and the shift of the edge
-    /// by a's and b's.
-    pub fn pressure(&self, x: &T, y: &T) -> Estimated<T> {
+    /// by a's and b's; 0 where the point lies outside every ellipse those bounds allow.
+    ///
+    /// Errors: [`Error::NotFinite`] for a coordinate that is not finite.
+    pub fn pressure(&self, x: &T, y: &T) -> Result<Estimated<T>> {
+        check_point(x, y)?;
         let p = x.prec();
+        // Outside the ellipse with both axes at their upper bounds: exactly zero (and no
+        // squares formed that could overflow far away).
+        let beyond = |c: &T, axis: &Estimated<T>| {
+            let reach = T::one(p)
+                + &axis
+                    .error
+                    .scale(2.0)
+                    .add(RelError::eps::<T>(8, p))
+                    .to_real(p);
+            c.clone().abs() > axis.value.clone() * &reach
+        };
+        if beyond(x, &self.a) || beyond(y, &self.b) {
+            return Ok(Estimated::new(T::zero(p), RelError::from_f64(0.0)));
+        }
         let q = self.q(x, y);
         let (xa, yb) = (
             (x.clone() / &self.a.value).square().to_f64(),
@@ -335,7 +376,7 @@ impl<T: Real> ContactSolution<T> {
             .scale(qf.sqrt())
             .add(droot)
             .add(RelError::eps::<T>(2, p));
-        Estimated::new(value, err)
+        Ok(Estimated::new(value, err))
     }
 
     /// The surface displacement u_z(x, y): inside the contact the punch's surface
@@ -343,7 +384,10 @@ impl<T: Real> ContactSolution<T> {
     /// moving-load Green's function (4), by adaptive quadrature to relative tolerance `tol`
     /// ([`ContactSolution::convolution`]; `tol` is unused inside). Its bound is relative to d0
     /// (the displacement decays to zero far away).
+    ///
+    /// Errors: [`Error::NotFinite`] for a coordinate that is not finite; the convolution's.
     pub fn displacement(&self, x: &T, y: &T, tol: &RelError) -> Result<Estimated<T>> {
+        check_point(x, y)?;
         let p = x.prec();
         let eps = RelError::eps::<T>(4, p);
         if self.inside(x, y) {
@@ -360,7 +404,11 @@ impl<T: Real> ContactSolution<T> {
     /// quadrature to relative tolerance `tol`: the physics' own check of the solution (inside,
     /// it reproduces the punch's surface (27); outside, it stays above it: the Signorini
     /// conditions (1)). Its bound is relative to d0.
+    ///
+    /// Errors: [`Error::NotFinite`] for a coordinate that is not finite; the quadrature's
+    /// when it cannot reach `tol`.
     pub fn convolution(&self, x: &T, y: &T, tol: &RelError) -> Result<Estimated<T>> {
+        check_point(x, y)?;
         let p = x.prec();
         let t = tol.max(RelError::eps::<T>(4, p)).to_real::<T>(p);
         let q = convolution::displacement(self, x, y, &t)?;
@@ -370,4 +418,11 @@ impl<T: Real> ContactSolution<T> {
             .add(self.a.error.add(self.b.error).scale(2.0));
         Estimated::new(q.value, err).checked("displacement u_z")
     }
+}
+
+/// A point (x, y) of the surface: both coordinates finite ([`Error::NotFinite`] naming the one
+/// that is not).
+fn check_point<T: Real>(x: &T, y: &T) -> Result<()> {
+    check_finite("x (along the motion)", x)?;
+    check_finite("y (across the motion)", y)
 }
