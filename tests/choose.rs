@@ -151,6 +151,20 @@ fn bad_requests_are_typed_errors() {
         }
         other => panic!("1e-10000: {other:?}"),
     }
+    // Far beyond it (2^20 bits, MPFR's limit): refused before the inputs are rounded to that
+    // precision, which alone took half a minute, by every method that builds rules.
+    let t = std::time::Instant::now();
+    for method in [Method::AdaptiveSubtracted, Method::Adaptive, Method::Fixed] {
+        match integrals_to_tolerance(&i, RelError::pow2(-1_040_000), method) {
+            Err(e @ Error::Unreachable { .. }) => assert!(e.to_string().contains("32768")),
+            other => panic!("2^-1040000 by {method:?}: {other:?}"),
+        }
+    }
+    assert!(
+        t.elapsed().as_secs_f64() < 5.0,
+        "refused after {:?}",
+        t.elapsed()
+    );
     for t in ["1", "2"] {
         assert!(matches!(
             integrals_to_tolerance(&i, tol(t), Method::Auto),

@@ -26,6 +26,7 @@ use super::evaluate::{IntegralOptions, FLOOR_EPS};
 use super::{fast, AxisRatio, Integrals, Method};
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
+use crate::numerics::quadrature::check_rule_bits;
 use crate::physics::material::round_rational;
 use crate::physics::{Material, Speed};
 use crate::scalar::{decimal_to_rational, Mp, MpPrec, Precision, Real};
@@ -199,6 +200,11 @@ fn next_precision(p: Precision) -> Result<Precision> {
 /// [`Integrals::precision`] the precision that ran; each bound is relative to the exact
 /// integrals of the exact inputs.
 ///
+/// Errors: [`Error::Domain`] for a tolerance outside (0, 1); [`Error::Unreachable`], before
+/// any work, for a tolerance that needs more than the rules' 32,768 bits
+/// ([`crate::numerics::quadrature::MAX_RULE_BITS`]) by any method but the series, and for one
+/// the routes do not meet within three steps up in precision.
+///
 /// ```
 /// use moving_hertz::{integrals_to_tolerance, ExactInputs, Method, RelError};
 /// let inputs = ExactInputs::parse("0.25", "0.999", "0.5")?;
@@ -219,6 +225,11 @@ pub fn integrals_to_tolerance(
         });
     }
     let mut prec = choose_precision(tol)?;
+    // Every route but the series builds quadrature rules: a precision beyond theirs is refused
+    // here, before the inputs are rounded to it (at 2^20 bits that alone takes half a minute).
+    if method != Method::Series {
+        check_rule_bits(prec.bits()).map_err(|e| unreachable(tol, e.to_string()))?;
+    }
     let mut last = String::new();
     for _ in 0..4 {
         let attempt = crate::with_precision!(prec, T, p => run_at::<T>(inputs, p, method, tol));
