@@ -451,6 +451,39 @@ fn indices_out_of_range_are_typed_errors() {
     assert!(green_coefficients(moving_hertz::symbolic::MAX_COEFFICIENT_INDEX).is_ok());
 }
 
+/// A value that does not fit the working type is a typed error naming x, not ±∞ or 0: F_2 at
+/// ν = ±10³⁰⁰ overflows `f64` (and was returned as ±∞), 1/x³ at 10³⁰⁰ underflows it; at 256
+/// bits both fit and equal the exact value correctly rounded; an exact zero stays a value.
+#[test]
+fn values_beyond_the_working_type_are_typed_errors() {
+    let cube = RatFunc::from_polys(
+        Poly::constant(Rational::from(1)),
+        Poly::new([0, 0, 0, 1].map(Rational::from).to_vec()),
+    );
+    for (f, x) in [
+        (printed_f2(), 1e300),
+        (printed_f2(), -1e300),
+        (cube.clone(), 1e300),
+    ] {
+        match eval_real(&f, &x) {
+            Err(e @ Error::Domain { .. }) => assert!(e.to_string().contains("1e300"), "{e}"),
+            other => panic!("x = {x:e}: expected a domain error, got {other:?}"),
+        }
+    }
+    let p = common::mp(256);
+    for (f, x) in [(printed_f2(), "1e300"), (cube, "1e300")] {
+        let xm = Mp::parse(x, p).unwrap();
+        let got = eval_real(&f, &xm).unwrap();
+        let want = f.eval(&xm.to_float(256).to_rational().unwrap()).unwrap();
+        assert_eq!(got.to_float(256), Float::with_val(256, &want), "{x}");
+    }
+    let root = RatFunc::from_polys(
+        Poly::new([-2, 1].map(Rational::from).to_vec()),
+        Poly::constant(Rational::from(1)),
+    );
+    assert_eq!(eval_real(&root, &2.0).unwrap(), 0.0);
+}
+
 /// The condition number of the K, E basis from the closed forms equals the one the floating
 /// KeForm gives (`ke_condition_bits`), and grows as predicted: for e² < 1/2 about
 /// n·log₂(k²/e²) bits.

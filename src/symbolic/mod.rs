@@ -103,7 +103,7 @@ pub fn printed_f2() -> RatFunc {
 /// once to the precision of `x` (correctly rounded for [`crate::scalar::Mp`]).
 ///
 /// Errors: [`Error::NotFinite`] for a non-finite `x`, [`Error::Domain`] where the denominator
-/// vanishes.
+/// vanishes or where f(x) overflows or underflows the working type (`f64` beyond about 10³⁰⁸).
 /// Evaluates the exact forms of (36) and (40); correctly rounded for MPFR, within an ulp otherwise.
 pub fn eval_real<T: Real>(f: &RatFunc, x: &T) -> Result<T> {
     crate::scalar::check_finite("x (symbolic evaluation)", x)?;
@@ -121,7 +121,15 @@ pub fn eval_real<T: Real>(f: &RatFunc, x: &T) -> Result<T> {
         bound: "denominator != 0",
     })?;
     let bits = T::bits(p) + 64;
-    Ok(T::from_float(&Float::with_val(bits, &v), p))
+    let y = T::from_float(&Float::with_val(bits, &v), p);
+    if !y.is_finite() || (y.is_zero() && v != 0) {
+        return Err(Error::Domain {
+            name: "x (symbolic evaluation: f(x) does not fit the working type)",
+            value: crate::scalar::short(x),
+            bound: "f(x) zero or within the working type's exponent range",
+        });
+    }
+    Ok(y)
 }
 
 /// The condition numbers of the K, E basis at e² from the closed forms: for k = 0 … n,
