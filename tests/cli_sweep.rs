@@ -245,3 +245,38 @@ fn domains_refused_before_any_work() {
         "points",
     );
 }
+
+/// A value the working precision cannot hold as a normal number is refused naming the option
+/// and the text as typed — a range by its whole text and the point — where a range's end of
+/// 1e-4000 was solved as a gap of 0 (each such row failing "gap = 0") or refused quoting
+/// '0.0000000000000000e0'.
+#[test]
+fn values_beyond_the_precision_name_the_text_as_typed() {
+    let sweep = |nu: &'static str, speed: [&'static str; 2], ratio: &'static str| {
+        vec!["sweep", "--nu", nu, speed[0], speed[1], "--ratio", ratio]
+    };
+    for (args, option, text) in [
+        (
+            sweep("0.2", ["--gap", "log:1e-4000:1:3"], "2"),
+            "--gap",
+            "'log:1e-4000:1:3'",
+        ),
+        (sweep("0.2", ["--gap", "1e-320"], "2"), "--gap", "'1e-320'"),
+        (
+            sweep("0.2", ["--speed", "0.5"], "log:1e-4000:1e4000:3"),
+            "--ratio",
+            "'log:1e-4000:1e4000:3'",
+        ),
+        (
+            sweep("0.2", ["--speed", "0.5"], "lin:1e-4000:1:2"),
+            "--ratio",
+            "point 1 of 2",
+        ),
+        (sweep("1e-400", ["--speed", "0.5"], "2"), "--nu", "'1e-400'"),
+    ] {
+        refused(&args, option, text);
+    }
+    // Zero itself is a value, at any precision.
+    let out = run(&sweep("lin:0:0.5:2", ["--speed", "lin:0:0.5:2"], "2"));
+    assert_eq!(out.status.code(), Some(0));
+}

@@ -162,6 +162,79 @@ impl Axis {
     }
 }
 
+impl Axis {
+    /// Refuses, naming the option and its text as typed, a value that the working precision
+    /// does not hold as a normal number: one that overflows, or a nonzero one that rounds to a
+    /// subnormal or to 0 (a range's end of 1e-4000 at `f64`, which would have been solved as 0).
+    fn check_representable<T: Real>(
+        &self,
+        option: &str,
+        what: &str,
+        values: &[(String, T)],
+        precision: &Precision,
+    ) -> Result<(), CliError> {
+        let p = match values.first() {
+            Some((_, x)) => x.prec(),
+            None => return Ok(()),
+        };
+        for (j, (_, x)) in values.iter().enumerate() {
+            let normal = x.is_finite() && x.clone().abs() >= T::min_positive(p);
+            if normal || (x.is_zero() && self.point(j).1) {
+                continue;
+            }
+            let shown = self.point(j).0.to_string_radix(10, Some(6));
+            let (text, why) = match self {
+                Axis::List(v) => (v[j].text.clone(), format!("{what} = {} is", v[j].text)),
+                Axis::Range {
+                    log,
+                    start,
+                    stop,
+                    n,
+                } => (
+                    format!(
+                        "{}:{}:{}:{n}",
+                        if *log { "log" } else { "lin" },
+                        start.text,
+                        stop.text
+                    ),
+                    format!("{what}: its point {} of {n}, {shown}, is", j + 1),
+                ),
+            };
+            let why = format!(
+                "{why} not a normal number of {precision} (rescale, or use a wider precision)"
+            );
+            return Err(CliError::value(option, &text, why));
+        }
+        Ok(())
+    }
+
+    /// Point `j` at 64 bits (MPFR's exponent range holds any typed value) and whether it is
+    /// exactly 0.
+    fn point(&self, j: usize) -> (Float, bool) {
+        let q = match self {
+            Axis::List(v) => v[j].exact.clone(),
+            Axis::Range {
+                log: true,
+                start,
+                stop,
+                n,
+            } => {
+                let (a, b) = (
+                    Float::with_val(64, &start.exact),
+                    Float::with_val(64, &stop.exact),
+                );
+                let t = Float::with_val(64, j) / (*n - 1) as u32;
+                return ((a.clone().ln() + (b.ln() - a.ln()) * t).exp(), false);
+            }
+            Axis::Range { start, stop, n, .. } => {
+                let t = Rational::from((j as u64, *n as u64 - 1));
+                start.exact.clone() + (stop.exact.clone() - &start.exact) * t
+            }
+        };
+        (Float::with_val(64, &q), q == 0)
+    }
+}
+
 /// An exact value rounded once to precision `p`.
 fn exact<T: Real>(q: &Rational, p: T::Prec) -> T {
     T::from_float(&Float::with_val(T::bits(p) + 64, q), p)
@@ -268,17 +341,18 @@ fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
         (None, None) => (false, Vec::new()),
     };
     let ratios = a.ratio.values::<T>(p);
-    if let Some((text, _)) = ratios
-        .iter()
-        .find(|(_, r)| !(r.is_finite() && *r >= T::min_positive(p)))
-    {
-        let why = format!(
-            "curvature ratio A1/B1 = {text} is not a normal number of {} (rescale, or use a \
-             wider precision)",
-            a.precision
-        );
-        return Err(CliError::value("--ratio", text, why));
+    let speed_axis = a.speed.speed.as_ref().or(a.speed.gap.as_ref());
+    let (speed_option, speed_what) = match by_gap {
+        true => ("--gap", "gap 1 - M_R"),
+        false => ("--speed", "speed M_R"),
+    };
+    a.nu.check_representable("--nu", "nu (Poisson's ratio)", &nus, &a.precision)?;
+    if let Some(axis) = speed_axis {
+        axis.check_representable(speed_option, speed_what, &speeds, &a.precision)?;
     }
+    let what = "curvature ratio A1/B1";
+    a.ratio
+        .check_representable("--ratio", what, &ratios, &a.precision)?;
     let (mut pts, mut texts) = (Vec::new(), Vec::new());
     for (nt, nu) in &nus {
         for (st, sp) in &speeds {
