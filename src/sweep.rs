@@ -44,6 +44,7 @@ use crate::contact::{
     check_ratio, checked_options, ContactProblem, ContactSolution, Ellipse, Options, ShapeSolver,
 };
 use crate::error::{Error, Result};
+use crate::estimate::RelError;
 use crate::physics::{Material, Speed};
 use crate::routes::{Evaluator, IntegralOptions, Integrals};
 use crate::scalar::Real;
@@ -247,7 +248,8 @@ impl<'o, T: Real> Run<'o, T> {
             empty => empty.insert((
                 ShapeSolver::new(speed, self.opts.method)?,
                 speed.material().nu().to_f64(),
-                speed.gap().to_f64().ln(),
+                // From the exponent: a gap below the f64 range (at MPFR) keeps its own value.
+                RelError::of(speed.gap()).log2() * std::f64::consts::LN_2,
             )),
         };
         let at = Place {
