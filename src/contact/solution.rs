@@ -180,17 +180,18 @@ impl<T: Real> ContactProblem<T> {
             a1,
             b1,
         })
-        .and_then(ContactSolution::check_range)
     }
 }
 
-/// A result of valid inputs that overflows the working type: [`Error::Domain`] naming it and
-/// asking for rescaled inputs (underflow is [`ContactSolution::check_range`]'s).
+/// A result of valid inputs at the edge of the format that overflows or underflows the working
+/// type (not finite, or below its least normal number): [`Error::Domain`] naming it and asking
+/// for rescaled inputs, rather than ∞ or 0 returned.
 fn fits<T: Real>(name: &'static str, x: Estimated<T>) -> Result<Estimated<T>> {
-    if !x.value.is_finite() {
+    let v = &x.value;
+    if !(v.is_finite() && *v >= T::min_positive(v.prec())) {
         return Err(Error::Domain {
             name,
-            value: short(&x.value),
+            value: short(v),
             bound: RESCALE,
         });
     }
@@ -265,27 +266,6 @@ impl<T: Real> Sizes<T> {
 }
 
 impl<T: Real> ContactSolution<T> {
-    /// Inputs at the edge of the format can overflow or underflow the scaling although each is
-    /// valid: reported rather than returned as ∞ or 0.
-    fn check_range(self) -> Result<Self> {
-        for (name, v) in [
-            ("semi-axis a", &self.a),
-            ("semi-axis b", &self.b),
-            ("central pressure p0", &self.p0),
-            ("approach d0", &self.d0),
-            ("load P", &self.load),
-        ] {
-            if !v.value.is_positive() || v.value < T::min_positive(v.value.prec()) {
-                return Err(Error::Domain {
-                    name,
-                    value: short(&v.value),
-                    bound: RESCALE,
-                });
-            }
-        }
-        Ok(self)
-    }
-
     /// The problem this solves.
     /// The inputs of (26)–(33) as given; no rounding.
     pub fn problem(&self) -> &ContactProblem<T> {
