@@ -133,28 +133,9 @@ impl Axis {
                 .iter()
                 .map(|d| (d.text.clone(), exact::<T>(&d.exact, p)))
                 .collect(),
-            Axis::Range {
-                log,
-                start,
-                stop,
-                n,
-            } => (0..*n)
+            Axis::Range { n, .. } => (0..*n)
                 .map(|j| {
-                    let bits = T::bits(p) + 64;
-                    let t = Rational::from((j as u64, *n as u64 - 1));
-                    let x = if *log {
-                        let (a, b) = (
-                            Float::with_val(bits, &start.exact),
-                            Float::with_val(bits, &stop.exact),
-                        );
-                        let ln = a.clone().ln() + (b.ln() - a.ln()) * Float::with_val(bits, &t);
-                        T::from_float(&ln.exp(), p)
-                    } else {
-                        exact::<T>(
-                            &(start.exact.clone() + (stop.exact.clone() - &start.exact) * t),
-                            p,
-                        )
-                    };
+                    let x = T::from_float(&self.point(j, T::bits(p) + 64).0, p);
                     (x.to_decimal(), x)
                 })
                 .collect(),
@@ -179,10 +160,10 @@ impl Axis {
         };
         for (j, (_, x)) in values.iter().enumerate() {
             let normal = x.is_finite() && x.clone().abs() >= T::min_positive(p);
-            if normal || (x.is_zero() && self.point(j).1) {
+            if normal || (x.is_zero() && self.point(j, 64).1) {
                 continue;
             }
-            let shown = self.point(j).0.to_string_radix(10, Some(6));
+            let shown = self.point(j, 64).0.to_string_radix(10, Some(6));
             let (text, why) = match self {
                 Axis::List(v) => (v[j].text.clone(), format!("{what} = {} is", v[j].text)),
                 Axis::Range {
@@ -208,9 +189,9 @@ impl Axis {
         Ok(())
     }
 
-    /// Point `j` at 64 bits (MPFR's exponent range holds any typed value) and whether it is
-    /// exactly 0.
-    fn point(&self, j: usize) -> (Float, bool) {
+    /// Point `j` at `bits` (MPFR's exponent range holds any typed value; a linear range's
+    /// point is exact before this one rounding) and whether it is exactly 0.
+    fn point(&self, j: usize, bits: u32) -> (Float, bool) {
         let q = match self {
             Axis::List(v) => v[j].exact.clone(),
             Axis::Range {
@@ -220,10 +201,10 @@ impl Axis {
                 n,
             } => {
                 let (a, b) = (
-                    Float::with_val(64, &start.exact),
-                    Float::with_val(64, &stop.exact),
+                    Float::with_val(bits, &start.exact),
+                    Float::with_val(bits, &stop.exact),
                 );
-                let t = Float::with_val(64, j) / (*n - 1) as u32;
+                let t = Float::with_val(bits, Rational::from((j as u64, *n as u64 - 1)));
                 return ((a.clone().ln() + (b.ln() - a.ln()) * t).exp(), false);
             }
             Axis::Range { start, stop, n, .. } => {
@@ -231,7 +212,7 @@ impl Axis {
                 start.exact.clone() + (stop.exact.clone() - &start.exact) * t
             }
         };
-        (Float::with_val(64, &q), q == 0)
+        (Float::with_val(bits, &q), q == 0)
     }
 }
 
