@@ -727,3 +727,100 @@ fn extreme_scales_solve_or_name_the_input() {
         other => panic!("double-double R1 = 1e300: {other:?}"),
     }
 }
+
+/// The problem of [`displacement_holds_its_bound_near_and_far`] at the working type's rounding of
+/// the f64 inputs (so that every precision solves the same problem).
+fn far_problem<T: Real>(p: T::Prec, mr: f64) -> ContactSolution<T> {
+    let v = |x: f64| T::from_f64(x, p);
+    let sp = Material::new(v(0.25)).unwrap().speed(v(mr)).unwrap();
+    contact(&sp, &v(2.0), &v(1.0), Loading::Load(v(2.0)), &v(1.5)).unwrap()
+}
+
+/// The surface displacement outside the contact, near it (points within max(a, b) of the centre
+/// of a contact 10³ times longer than wide) and far from it (10 to 2⁶⁰ semi-axes), at speeds up
+/// to M_R = 1 − 10⁻¹²: at `f64` and double-double within its bound of the same problem solved
+/// at 320 bits, and 2⁶⁰ semi-axes away within a few ε of the point load's displacement
+/// P·g/(2πμr) by the Green's function (4) alone (relative to u, the neglected terms are
+/// (a/r)²/(1 − M_R²) and below). Beyond
+/// 2^(bits + 20)·max(a, b) the point is refused, named as given.
+#[test]
+fn displacement_holds_its_bound_near_and_far() {
+    use moving_hertz::physics::GreenFunction;
+    let q = MpPrec::new(320).unwrap();
+    let tol = RelError::from_f64(1e-12);
+    let mut worst: f64 = 0.0;
+    for mr in [0.0, 0.9, 1.0 - 1e-7, 1.0 - 1e-12] {
+        let lo: ContactSolution<f64> = far_problem((), mr);
+        let dd: ContactSolution<Dd> = far_problem((), mr);
+        let hi: ContactSolution<Mp> = far_problem(q, mr);
+        let (a, b) = (lo.a.value, lo.b.value);
+        let mut pts = vec![
+            (0.3 * a, 1.5 * b),
+            (0.99 * a, 0.2 * b),
+            (-0.7 * a, -0.75 * b),
+            (0.0, 3.0 * b),
+            (1.0001 * a, 0.0),
+            (-2.0 * a, 1e-3 * b),
+            (1.5 * a, 1.5 * b),
+        ];
+        for e in [1, 4, 12, 30, 60] {
+            let r = 2f64.powi(e) * a;
+            pts.extend([(r, 0.0), (0.0, -r), (0.6 * r, 0.8 * r), (-r, 1e-3 * r)]);
+        }
+        for (x, y) in pts {
+            let truth = hi
+                .displacement(
+                    &Mp::from_f64(x, q),
+                    &Mp::from_f64(y, q),
+                    &RelError::from_f64(1e-40),
+                )
+                .unwrap();
+            let d0 = lo.d0.value;
+            let got = lo.displacement(&x, &y, &tol).unwrap();
+            let err = (got.value - truth.value.to_f64()).abs() / d0;
+            let r = err / got.error.to_f64();
+            worst = worst.max(r);
+            assert!(
+                r <= 1.0,
+                "M_R={mr} f64 at ({x:e},{y:e}): {got:?} off by {err:e}"
+            );
+            let (xd, yd) = (Dd::from_f64(x, ()), Dd::from_f64(y, ()));
+            let got = dd
+                .displacement(&xd, &yd, &RelError::from_f64(1e-24))
+                .unwrap();
+            let diff = Mp::from_float(&got.value.to_float(320), q) - truth.value.clone();
+            let err = diff.abs().to_f64() / d0;
+            assert!(
+                err <= got.error.to_f64(),
+                "M_R={mr} dd at ({x:e},{y:e}): off by {err:e}, bound {}",
+                got.error
+            );
+            let rr = (x * x + y * y).sqrt();
+            if rr >= 1e15 * a {
+                // The point load at the centre: u = P g(V|sin θ|)/(2πμr), up to terms of order
+                // (a/(r·√(1 − M_R²)))² (g peaks with width √(1 − M_R²) in angle).
+                let s = y / rr;
+                let t = lo.problem().speed.mr2() * s * s;
+                let omt = lo.problem().speed.one_minus_mr2()
+                    + lo.problem().speed.mr2() * (x / rr).powi(2);
+                let g = GreenFunction::new(lo.problem().speed.material()).g_normalised(&t, &omt);
+                let point = 2.0 * g / (2.0 * std::f64::consts::PI * 1.5 * rr);
+                let got = lo.displacement(&x, &y, &tol).unwrap().value;
+                assert!(
+                    ((got - point) / point).abs() <= 1e-14,
+                    "M_R={mr} at ({x:e},{y:e}): {got:e} against the point load's {point:e}"
+                );
+            }
+        }
+        let m = a.max(b);
+        for (x, y) in [(2f64.powi(75) * m, 0.0), (1e300, -1e300)] {
+            let r = lo.displacement(&x, &y, &tol);
+            assert!(
+                matches!(&r, Err(Error::Domain { value, .. })
+                    if *value == format!("({}, {})", x.to_decimal(), y.to_decimal())),
+                "({x:e}, {y:e}): {r:?}"
+            );
+        }
+    }
+    println!("displacement: worst f64 error / bound {worst:.3}");
+}

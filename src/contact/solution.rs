@@ -365,7 +365,8 @@ impl<T: Real> ContactSolution<T> {
     /// ([`ContactSolution::convolution`]; `tol` is unused inside). Its bound is relative to d0
     /// (the displacement decays to zero far away).
     ///
-    /// Errors: [`Error::NotFinite`] for a coordinate that is not finite; the convolution's.
+    /// Errors: [`Error::NotFinite`] for a coordinate that is not finite; the convolution's
+    /// (outside the contact).
     pub fn displacement(&self, x: &T, y: &T, tol: &RelError) -> Result<Estimated<T>> {
         check_point(x, y)?;
         let p = x.prec();
@@ -383,10 +384,16 @@ impl<T: Real> ContactSolution<T> {
     /// the moving-load Green's function (4), inside or outside the contact, by adaptive
     /// quadrature to relative tolerance `tol`: the physics' own check of the solution (inside,
     /// it reproduces the punch's surface (27); outside, it stays above it: the Signorini
-    /// conditions (1)). Its bound is relative to d0.
+    /// conditions (1)). Its bound is relative to d0. Accuracy: within its bound of the same
+    /// problem at 320 bits at `f64` and double-double, from the contact out to 2⁶⁰ semi-axes
+    /// and for M_R up to 1 − 10⁻¹² (`tests/contact.rs`,
+    /// `displacement_holds_its_bound_near_and_far`; the worst `f64` error is 0.2 of its bound).
     ///
-    /// Errors: [`Error::NotFinite`] for a coordinate that is not finite; the quadrature's
-    /// when it cannot reach `tol`.
+    /// Errors: [`Error::NotFinite`] for a coordinate that is not finite; [`Error::Domain`]
+    /// naming the point for one farther than 2^(bits + 20)·max(a, b) from the centre, where
+    /// u_z is below 2^−bits·d0; [`Error::NoConvergence`] from the quadrature when it cannot
+    /// reach `tol` (near M_R = 1 the angular peak of g amplifies rounding of the angle by
+    /// about 1/√(1 − M_R²), which bounds the reachable tolerance).
     pub fn convolution(&self, x: &T, y: &T, tol: &RelError) -> Result<Estimated<T>> {
         check_point(x, y)?;
         let p = x.prec();
