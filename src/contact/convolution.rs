@@ -112,19 +112,21 @@ pub fn displacement<T: Real>(
     let p = x.prec();
     let sc = Scaled::new(sol, x, y);
     let limit = T::one(p).mul_pow2(T::bits(p) as i32 + FAR_LIMIT_LOG2);
-    let far_refused = || Error::Domain {
+    let refuse = |bound| Error::Domain {
         name: "field point (x, y)",
         value: format!("({}, {})", x.to_decimal(), y.to_decimal()),
-        bound: "distance from the centre at most 2^(bits + 20)·max(a, b)",
+        bound,
     };
+    let too_far = "distance from the centre at most 2^(bits + 20)·max(a, b)";
     if sc.x.clone().abs() > limit || sc.y.clone().abs() > limit {
-        return Err(far_refused());
+        return Err(refuse(too_far));
     }
     let rho = sc.x.clone().hypot(&sc.y);
     let q = if rho > limit {
-        return Err(far_refused());
+        return Err(refuse(too_far));
     } else if rho > T::one(p) {
-        far(sol, &sc, &rho, tol).ok_or_else(far_refused)??
+        let unresolved = "tangent rays whose angles are normal numbers of the working type";
+        far(sol, &sc, &rho, tol).ok_or_else(|| refuse(unresolved))??
     } else {
         near(sol, &sc, x, y, tol)?
     };
