@@ -730,10 +730,10 @@ fn extreme_scales_solve_or_name_the_input() {
 
 /// The problem of [`displacement_holds_its_bound_near_and_far`] at the working type's rounding of
 /// the f64 inputs (so that every precision solves the same problem).
-fn far_problem<T: Real>(p: T::Prec, mr: f64) -> ContactSolution<T> {
+fn far_problem<T: Real>(p: T::Prec, nu: f64, mr: f64, r1: f64) -> ContactSolution<T> {
     let v = |x: f64| T::from_f64(x, p);
-    let sp = Material::new(v(0.25)).unwrap().speed(v(mr)).unwrap();
-    contact(&sp, &v(2.0), &v(1.0), Loading::Load(v(2.0)), &v(1.5)).unwrap()
+    let sp = Material::new(v(nu)).unwrap().speed(v(mr)).unwrap();
+    contact(&sp, &v(r1), &v(1.0), Loading::Load(v(2.0)), &v(1.5)).unwrap()
 }
 
 /// The surface displacement outside the contact, near it (points within max(a, b) of the centre
@@ -749,10 +749,16 @@ fn displacement_holds_its_bound_near_and_far() {
     let q = MpPrec::new(320).unwrap();
     let tol = RelError::from_f64(1e-12);
     let mut worst: f64 = 0.0;
-    for mr in [0.0, 0.9, 1.0 - 1e-7, 1.0 - 1e-12] {
-        let lo: ContactSolution<f64> = far_problem((), mr);
-        let dd: ContactSolution<Dd> = far_problem((), mr);
-        let hi: ContactSolution<Mp> = far_problem(q, mr);
+    for (nu, mr, r1) in [
+        (0.25, 0.0, 2.0),
+        (0.25, 0.9, 2.0),
+        (0.25, 1.0 - 1e-7, 2.0),
+        (0.5, 1.0 - 1e-9, 1.0),
+        (0.25, 1.0 - 1e-12, 2.0),
+    ] {
+        let lo: ContactSolution<f64> = far_problem((), nu, mr, r1);
+        let dd: ContactSolution<Dd> = far_problem((), nu, mr, r1);
+        let hi: ContactSolution<Mp> = far_problem(q, nu, mr, r1);
         let (a, b) = (lo.a.value, lo.b.value);
         let mut pts = vec![
             (0.3 * a, 1.5 * b),
@@ -762,6 +768,9 @@ fn displacement_holds_its_bound_near_and_far() {
             (1.0001 * a, 0.0),
             (-2.0 * a, 1e-3 * b),
             (1.5 * a, 1.5 * b),
+            (0.0, 0.3 * a),
+            (0.1 * a, 0.2 * a),
+            (-0.6 * a, 1.2 * a),
         ];
         for e in [1, 4, 12, 30, 60] {
             let r = 2f64.powi(e) * a;
