@@ -833,3 +833,44 @@ fn displacement_holds_its_bound_near_and_far() {
     }
     println!("displacement: worst f64 error / bound {worst:.3}");
 }
+
+/// A seed for k that is not a positive finite number is refused before any work, named, at
+/// every precision (it was ignored: the solve started from the static ellipse).
+#[test]
+fn a_seed_must_be_a_positive_number() {
+    fn check<T: Real>(p: T::Prec) {
+        let sp = Material::new(T::from_f64(0.25, p))
+            .unwrap()
+            .speed(T::from_f64(0.5, p))
+            .unwrap();
+        let ratio = T::from_f64(2.0, p);
+        for (seed, finite) in [
+            (f64::NAN, false),
+            (f64::INFINITY, false),
+            (0.0, true),
+            (-1.0, true),
+        ] {
+            let o = Options {
+                seed: Some(T::from_f64(seed, p)),
+                ..Default::default()
+            };
+            let r = solve_ellipse(&sp, &ratio, &o);
+            let named = match &r {
+                Err(Error::NotFinite { name, .. }) => !finite && name.contains("seed"),
+                Err(Error::Domain { name, bound, .. }) => {
+                    finite && name.contains("seed") && *bound == "(0, inf)"
+                }
+                _ => false,
+            };
+            assert!(named, "seed {seed}: {r:?}");
+        }
+        let o = Options {
+            seed: Some(T::from_f64(0.3, p)),
+            ..Default::default()
+        };
+        assert!(solve_ellipse(&sp, &ratio, &o).is_ok());
+    }
+    check::<f64>(());
+    check::<Dd>(());
+    check::<Mp>(MpPrec::new(256).unwrap());
+}

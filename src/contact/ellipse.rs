@@ -83,9 +83,11 @@ pub struct Options<T> {
     /// fixed rules only; an iterate above k = 2¹⁸⁰ is an error) or [`Method::Adaptive`].
     /// The series and the adaptive subtracted routes give no k-derivatives and are refused.
     pub method: Method,
-    /// A starting value for k. Without one (the default) the solve starts from the static
-    /// ellipse; with one, from the seed (rounded to `f64`), falling back to the static ellipse
-    /// when Newton's method does not converge from it within a few evaluations. Either way,
+    /// A starting value for k, positive and finite (else [`Error::NotFinite`] or
+    /// [`Error::Domain`] before any work). Without one (the default) the solve starts from the
+    /// static ellipse; with one, from the seed (rounded to `f64`), falling back to the static
+    /// ellipse when Newton's method does not converge from it within a few evaluations (or when
+    /// the seed rounds to 0 or ∞ in `f64`). Either way,
     /// above `f64` the solve climbs the precision ladder (`f64`, then double-double, above 1024
     /// bits stages at about half the precision of the next, then the working precision: a few
     /// high-precision evaluations, no search).
@@ -280,10 +282,20 @@ pub fn solve_ellipse<T: Real>(
 /// The checks of [`solve_ellipse`] that the options and the precision decide, before any work:
 /// a precision the quadrature rules are built for (at most
 /// [`crate::numerics::quadrature::MAX_RULE_BITS`]), a method that gives k-derivatives, a
-/// tolerance not below 4ε. Returns the tolerance at the working precision `p` (`None`: its
-/// floor).
+/// tolerance not below 4ε, a seed that is a positive finite number. Returns the tolerance at
+/// the working precision `p` (`None`: its floor).
 pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<Option<T>> {
     crate::numerics::quadrature::check_rule_bits(T::bits(p))?;
+    if let Some(seed) = &opts.seed {
+        check_finite("seed for the axis ratio k", seed)?;
+        if !seed.is_positive() {
+            return Err(Error::Domain {
+                name: "seed for the axis ratio k",
+                value: short(seed),
+                bound: "(0, inf)",
+            });
+        }
+    }
     if matches!(opts.method, Method::Series | Method::AdaptiveSubtracted) {
         return Err(Error::Domain {
             name: "method for the ellipse solve",
