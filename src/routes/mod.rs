@@ -138,7 +138,10 @@ pub enum Method {
     Auto,
     /// [`Route::Series`] (I1, I2 only: no k-derivatives, no J0).
     Series,
-    /// [`Route::Adaptive`] (every k; with k-derivatives and J0).
+    /// [`Route::Adaptive`] (every k; with k-derivatives and J0). A reference and the fallback
+    /// where the fixed rules do not apply: its work grows with |ln k| and with the sharpness of
+    /// G's peak as M_R → 1, so that at MPFR precisions and the ends of the supported ranges an
+    /// ellipse solve by it alone can take minutes where [`Method::Auto`] takes milliseconds.
     Adaptive,
     /// [`Route::AdaptiveSubtracted`] (k ≤ 1; I1, I2 only).
     AdaptiveSubtracted,
