@@ -117,14 +117,14 @@ pub fn displacement<T: Real>(
         value: format!("({}, {})", x.to_decimal(), y.to_decimal()),
         bound,
     };
-    let too_far = "distance from the centre at most 2^(bits + 20)·max(a, b)";
-    if sc.x.clone().abs() > limit || sc.y.clone().abs() > limit {
-        return Err(refuse(too_far));
-    }
+    // hypot does not overflow before its result does (then ∞, refused as too far).
     let rho = sc.x.clone().hypot(&sc.y);
-    let q = if rho > limit {
-        return Err(refuse(too_far));
-    } else if rho > T::one(p) {
+    if rho > limit {
+        return Err(refuse(
+            "distance from the centre at most 2^(bits + 20)·max(a, b)",
+        ));
+    }
+    let q = if rho > T::one(p) {
         let unresolved = "tangent rays whose angles are normal numbers of the working type";
         far(sol, &sc, &rho, tol).ok_or_else(|| refuse(unresolved))??
     } else {
