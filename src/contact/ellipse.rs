@@ -50,7 +50,7 @@ use crate::estimate::{Estimated, RelError};
 use crate::physics::Speed;
 use crate::routes::evaluate::{Evaluator, IntegralOptions};
 use crate::routes::{fast, AxisRatio, Evaluation, Integrals, Method};
-use crate::scalar::{check_finite, short, Dd, Real};
+use crate::scalar::{check_finite, check_positive, short, Dd, Real};
 use std::cell::OnceCell;
 
 /// Which axis of the contact ellipse is the longer one.
@@ -287,14 +287,7 @@ pub fn solve_ellipse<T: Real>(
 pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<Option<T>> {
     crate::numerics::quadrature::check_rule_bits(T::bits(p))?;
     if let Some(seed) = &opts.seed {
-        check_finite("seed for the axis ratio k", seed)?;
-        if !seed.is_positive() {
-            return Err(Error::Domain {
-                name: "seed for the axis ratio k",
-                value: short(seed),
-                bound: "(0, inf)",
-            });
-        }
+        check_positive("seed for the axis ratio k", seed)?;
     }
     if matches!(opts.method, Method::Series | Method::AdaptiveSubtracted) {
         return Err(Error::Domain {

@@ -31,7 +31,7 @@ use crate::estimate::{Estimated, RelError};
 use crate::physics::Speed;
 use crate::routes::direct::contact_integrals;
 use crate::routes::AxisRatio;
-use crate::scalar::{check_finite, short, Real};
+use crate::scalar::{check_finite, check_positive, short, Real};
 
 /// What fixes the size of the contact: the load P or the approach d0 (both positive).
 #[derive(Clone, Debug)]
@@ -98,18 +98,6 @@ pub struct ContactSolution<T: Real> {
     b1: T,
 }
 
-fn positive<T: Real>(name: &'static str, x: &T) -> Result<()> {
-    check_finite(name, x)?;
-    if !x.is_positive() {
-        return Err(Error::Domain {
-            name,
-            value: short(x),
-            bound: "(0, inf)",
-        });
-    }
-    Ok(())
-}
-
 /// The inputs' names and the message for a quantity that overflows or underflows the working
 /// type although every input is valid (a radius of 1e-320, a load of 1e300).
 const RESCALE: &str = "(overflow or underflow: rescale the inputs)";
@@ -136,12 +124,12 @@ impl<T: Real> ContactProblem<T> {
         &self,
         ellipse: impl FnOnce(&Speed<T>, &T) -> Result<Ellipse<T>>,
     ) -> Result<ContactSolution<T>> {
-        positive("radius along the motion R1", &self.radius_along)?;
-        positive("radius across the motion R2", &self.radius_across)?;
-        positive("shear modulus mu", &self.shear_modulus)?;
+        check_positive("radius along the motion R1", &self.radius_along)?;
+        check_positive("radius across the motion R2", &self.radius_across)?;
+        check_positive("shear modulus mu", &self.shear_modulus)?;
         match &self.loading {
-            Loading::Load(pl) => positive("load P", pl)?,
-            Loading::Approach(d) => positive("approach d0", d)?,
+            Loading::Load(pl) => check_positive("load P", pl)?,
+            Loading::Approach(d) => check_positive("approach d0", d)?,
         }
         let p = self.shear_modulus.prec();
         let a1 = self.radius_along.clone().recip().mul_pow2(-1);

@@ -40,7 +40,7 @@ pub use evaluate::{integrals, Evaluator, IntegralOptions};
 
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
-use crate::scalar::{check_finite, short, Precision, Real};
+use crate::scalar::{check_positive, short, Precision, Real};
 
 /// The contact ellipse's axis ratio k = b/a (b across the motion, a along it), with k² and
 /// e² = 1 − k² = (1 − k)(1 + k) formed without cancellation. e² < 0 when k > 1 (the contact is
@@ -62,14 +62,7 @@ impl<T: Real> AxisRatio<T> {
     /// The k of (33)–(34), kept as given; k² and e² = (1 − k)(1 + k) of (41) each within an ulp
     /// or two.
     pub fn new(k: T) -> Result<Self> {
-        check_finite("axis ratio k = b/a", &k)?;
-        if !k.is_positive() {
-            return Err(Error::Domain {
-                name: "axis ratio k = b/a",
-                value: short(&k),
-                bound: "(0, inf)",
-            });
-        }
+        check_positive("axis ratio k = b/a", &k)?;
         let p = k.prec();
         let one = T::one(p);
         let k2 = k.square();

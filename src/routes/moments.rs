@@ -77,7 +77,7 @@ use super::guard::{ceil_log2, run_guarded, zeros, GuardedJob};
 use crate::error::{Error, Result};
 use crate::numerics::elliptic::{ellipbd_mc, ellipke_mc};
 use crate::numerics::series::sum_series_with_tail;
-use crate::scalar::{check_finite, short, FieldOps, Real};
+use crate::scalar::{check_positive, short, FieldOps, Real};
 use rug::float::Constant;
 use rug::{Float, Integer};
 
@@ -236,14 +236,7 @@ impl<T> Moments<T> {
 }
 
 fn check_inputs<T: Real>(mc: &T, n_max: usize) -> Result<()> {
-    check_finite("k^2 (moments)", mc)?;
-    if !mc.is_positive() {
-        return Err(Error::Domain {
-            name: "k^2 (moments)",
-            value: short(mc),
-            bound: "(0, inf)",
-        });
-    }
+    check_positive("k^2 (moments)", mc)?;
     if n_max > MAX_INDEX {
         return Err(Error::Domain {
             name: "n_max (moments)",

@@ -468,6 +468,21 @@ macro_rules! with_precision {
     }};
 }
 
+/// Checks that a value is a positive finite number, naming it in the error otherwise
+/// ([`Error::NotFinite`], or [`Error::Domain`] with the bound (0, inf)).
+pub fn check_positive<T: Real>(name: &'static str, x: &T) -> Result<()> {
+    check_finite(name, x)?;
+    if x.is_positive() {
+        Ok(())
+    } else {
+        Err(Error::Domain {
+            name,
+            value: short(x),
+            bound: "(0, inf)",
+        })
+    }
+}
+
 /// Checks that a value is finite, naming it in the error otherwise.
 pub fn check_finite<T: Real>(name: &'static str, x: &T) -> Result<()> {
     if x.is_finite() {
