@@ -30,16 +30,35 @@
 //! 86 at 256 bits; the evidence for these counts is in docs/calibration.md). The integrands are
 //! positive: no cancellation, rounding error a few ε.
 //!
+//! **The Rayleigh pole, when it lies below the k-peak.** When kε ≤ 1/4 for every k a layout
+//! serves, the pole ±iε is taken out in closed form as in [`crate::routes::fast`] (a = a(s) the
+//! left integrand without 1/h, h = s + ε², a0 = a(−ε²) = 2π G(1) M_R (1 − k²ε²)^{−3/2}):
+//!
+//! ```text
+//! I2_L = a0 · atan(1/ε)/ε + ∫_0^1 (a(s) − a0)/h dw,      I1_L = ∫_0^1 a(s) dw − ε² I2_L
+//! ```
+//!
+//! (s/h = 1 − ε²/h), and the panels stop at a ≤ min(4/(5k), δ): the pole left is removable, and
+//! the work no longer grows with log(1/ε) — at 4096 bits a gap of 10⁻⁵⁰⁰⁰ costs what 10⁻¹⁰ does,
+//! where the panels reaching ε would need 3.8·10⁶ nodes. I1_L is not formed as the fast route
+//! does (a0 (1 − ε atan(1/ε)) + ∫ s (a − a0)/h dw), which cancels like k when k is large. The
+//! bound kε ≤ 1/4 keeps both forms' cancellation small: ∫(a − a0)/h dw ≈ −a0 k against the pole
+//! term a0 π/(2ε) (≤ 1/(2π) of it), and ε² I2_L ≈ a0 πε/2 against ∫ a dw ≈ a0/k (≤ 0.4 of it).
+//! The k-derivatives take ∂a0/∂k = 3k ε² a0/(1 − k²ε²) out of ∂a/∂k = −3k s a/u the same way.
+//! Above kε = 1/4 the pole lies among the k-peak's scales and the panels reach down to ε
+//! (at most two units of ln 2 beyond 4/(5k)).
+//!
 //! **Cost.** The plan's left nodes + [`panel_nodes`] evaluations of G (two square roots and
-//! one division each): at `f64` 31 at M_R = 0, k = 1; 35 at M_R = 0.9, k = 3; 57 at
-//! M_R = 0.9999, k = 3; 78 at k = 10³; 127 at k = 10⁶; at double-double 62, 69, 110, 150, 240.
-//! [`GradedSetup`] keeps the
-//! layout for every k up to 5/4 of the k it was laid out for, so that a further k costs one
+//! one division each) at ν = 0.25: at `f64` 32 at M_R = 0, k = 1; 39 at M_R = 0.9, k = 3 and at
+//! M_R = 0.9999, k = 3; 78 at k = 10³; 127 at k = 10⁶; at double-double 70, 77, 77, 150, 240
+//! (`moving-hertz integrals --nu 0.25 --speed M_R --k K --precision P`). [`GradedSetup`] keeps
+//! the layout for every k up to 5/4 of the k it was laid out for, so that a further k costs one
 //! square root and one division a node (the ellipse solve's Newton iterates; timings in
 //! docs/performance.md). The Gauss–Legendre rules come from the shared cache.
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^180 ([`K_MAX_LOG2`]), else
-//! [`Error::Domain`]. The left half's x-range, and with it the work, grows like log₂ k: at
+//! [`Error::Domain`]. The left half's x-range, and with it the work, grows like log₂ k (and like
+//! log₂(1/ε) only while kε > 1/4, i.e. by at most two units): at
 //! k = 10⁵¹ (the largest k of an ellipse solve, A1/B1 = 10¹⁰⁰) 872 nodes at `f64`, 1619 at
 //! double-double and 3731 at 256 bits, against 35, 69 and 163 at k = 2 (M_R = 0.5, ν = 0.2:
 //! `moving-hertz integrals --nu 0.2 --speed 0.5 --k 1e51 --precision P`; what a solve then costs:
@@ -376,7 +395,7 @@ fn units_for(a_max: f64) -> usize {
 
 /// [`units_for`] from l = log₂(1/a_max), so that a scale below the `f64` range still counts:
 /// asinh(2^l)/ln 2 < l + 1, which is used for l ≥ 60 (where the two differ by < 2^-120).
-/// Finite l only; at most [`MAX_LAYOUT_UNITS`] is asked for ([`GradedSetup::new`] checks).
+/// Finite l only: at most about 183 is asked for (k ≤ 2^180, and ε enters only while kε > 1/4).
 fn units_for_log2(l: f64) -> usize {
     let u = if l < 60.0 {
         l.exp2().asinh() / std::f64::consts::LN_2
@@ -385,10 +404,6 @@ fn units_for_log2(l: f64) -> usize {
     };
     u.ceil().max(1.0) as usize
 }
-
-/// The longest x-range of a sinh layout, in units of ln 2: a scale a ≥ 2^-32767, i.e. a gap
-/// 1 − M_R above about 10⁻¹⁹⁷⁰⁰ for the graded route (some 10⁵ nodes at the bound).
-const MAX_LAYOUT_UNITS: usize = 1 << 15;
 
 /// The number of nodes of the sinh layout for a scale of at most `a_max` at `bits` bits (from
 /// the plan alone: no table is built).
@@ -484,22 +499,96 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 /// division a node per k.
 ///
 /// Stored per node, weights included: on the left (w = a sinh x, s = w²) f = (2/m1) D′ √e1/(Q′ h)
-/// times dw/dx with a/h = f·u^{−3/2}, u = 1 + k²s, h = s + ε², and s·f, s²·f; on the right
+/// times dw/dx with a/h = f·u^{−3/2}, u = 1 + k²s, h = s + ε², and s·f, s²·f (or, with the pole
+/// subtracted, a·u^{3/2}, 1/h and the weight apart: module docs); on the right
 /// (σ = v²) f = (2/m1) √f1 D′/E with b W3 = f·(σ + k²)^{−3/2}, and σ·f. An evaluation forms
 /// u^{−3/2} (and u^{−5/2} for the derivatives) at the nodes, then weighted sums panel by panel.
 #[derive(Clone, Debug)]
 pub struct GradedSetup<T: Real> {
     k_max: T,
-    /// The left nodes' s, f, s·f, s²·f, one after the other (4 × the node count).
-    left: Vec<T>,
+    left: LeftHalf<T>,
     /// The right nodes' σ, f, σ·f (3 × the node count).
     right: Vec<T>,
+}
+
+/// The left half's node values: with the Rayleigh pole resolved by the panels, or subtracted.
+#[derive(Clone, Debug)]
+enum LeftHalf<T: Real> {
+    /// s, f, s·f, s²·f, one after the other (4 × the node count): the panels reach down to ε.
+    Resolved(Vec<T>),
+    /// s, F = (2/m1) D′ √e1/Q′ (so that a = F·u^{−3/2}), 1/h and the weight, one after the
+    /// other (4 × the node count), with the pole's closed-form constants: the panels stop at
+    /// min(4/(5 k_max), δ), below which only the subtracted pole lies (module docs).
+    Subtracted {
+        nodes: Vec<T>,
+        /// ε², 2π G(1) M_R (= a0 (1 − k²ε²)^{3/2}) and atan(1/ε)/ε.
+        eps2: T,
+        g0: T,
+        pole_t: T,
+    },
+}
+
+/// The left half with the pole resolved by the panels: s, f, s·f, s²·f (f = weight·a/h·u^{3/2}).
+fn resolved_left<T: Real>(
+    layout: &SinhLayout<'_, T>,
+    sc: &SpeedConsts<T>,
+    nl: usize,
+    p: T::Prec,
+) -> Result<LeftHalf<T>> {
+    let one = T::one(p);
+    // s and the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 at each node, with G's constant factor 2/m1
+    // folded in, then f in place of the weight, then s·f and s²·f.
+    let mut left = vec![T::zero(p); 4 * nl];
+    let (ls, rest) = left.split_at_mut(nl);
+    let (lf, rest) = rest.split_at_mut(nl);
+    let (lsf, lssf) = rest.split_at_mut(nl);
+    layout.fill(&sc.two_over_m1, ls, lf)?;
+    node_map(p, ls, lf, |s, w| {
+        let pp = one.clone() + s;
+        let (e1, dd, qq) = sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2));
+        let h = s.clone() + &sc.eps2;
+        w.clone() * dd * e1.sqrt_div(&(qq * h))
+    });
+    lsf.clone_from_slice(lf);
+    node_map(p, ls, lsf, |s, f| s.clone() * f);
+    lssf.clone_from_slice(lsf);
+    node_map(p, ls, lssf, |s, f| s.clone() * f);
+    Ok(LeftHalf::Resolved(left))
+}
+
+/// The left half with the pole subtracted: s, F (with G's constant factor 2/m1), 1/h and the
+/// weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2.
+fn subtracted_left<T: Real>(
+    layout: &SinhLayout<'_, T>,
+    sc: &SpeedConsts<T>,
+    nl: usize,
+    p: T::Prec,
+) -> Result<LeftHalf<T>> {
+    let one = T::one(p);
+    let mut nodes = vec![T::zero(p); 4 * nl];
+    let (ls, rest) = nodes.split_at_mut(nl);
+    let (lf, rest) = rest.split_at_mut(nl);
+    let (lih, lw) = rest.split_at_mut(nl);
+    layout.fill(&one, ls, lw)?;
+    node_map(p, ls, lf, |s, _| {
+        let pp = one.clone() + s;
+        let (e1, dd, qq) = sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2));
+        sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq)
+    });
+    node_map(p, ls, lih, |s, _| (s.clone() + &sc.eps2).recip());
+    Ok(LeftHalf::Subtracted {
+        nodes,
+        eps2: sc.eps2.clone(),
+        g0: sc.g0.clone(),
+        pole_t: sc.pole_t.clone(),
+    })
 }
 
 impl<T: Real> GradedSetup<T> {
     /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^180, else [`Error::Domain`]) and evaluates
     /// G at their nodes: the [`left_plan`] for C = ⌈asinh(1/min(4/(5 k_ref), ε, δ))/ln 2⌉
-    /// units of ln 2 on the left, and [`panel_nodes`] on the right.
+    /// units of ln 2 on the left (without ε when the pole is subtracted, (5/4) k_ref ε ≤ 1/4:
+    /// module docs), and [`panel_nodes`] on the right.
     /// The k-independent part of (46)–(47), G of (45) to a few ε at each node.
     pub fn new(speed: &Speed<T>, k_ref: &T) -> Result<Self> {
         check_k(k_ref)?;
@@ -512,37 +601,18 @@ impl<T: Real> GradedSetup<T> {
         // ±iδ), made 1/sinh(C ln 2) for the plan's whole number C of units ln 2.
         // log₂(1/a) from the exponents: ε² and δ² can lie below the f64 range at MPFR.
         let k_max = k_ref.clone() * &T::from_ratio(5, 4, p);
+        // The pole at ±iε is subtracted when k ε ≤ 1/4 for every k served (module docs).
+        let subtract = (k_max.square() * &sc.eps2).mul_pow2(4) <= one;
         let lg = |x: &T| RelError::of(x).log2();
-        let inv_a = lg(&k_max).max(-lg(&sc.eps2) / 2.0).max(-lg(&sc.d2) / 2.0);
-        if inv_a.is_nan() || inv_a >= (MAX_LAYOUT_UNITS - 1) as f64 {
-            return Err(Error::Domain {
-                name: "gap 1 − M_R for the graded route (k ≥ 1)",
-                value: short(speed.gap()),
-                bound: "> 2^-65535 (the graded panels' longest layout)",
-            });
-        }
+        let pole_scale = if subtract { 0.0 } else { -lg(&sc.eps2) / 2.0 };
+        let inv_a = lg(&k_max).max(pole_scale).max(-lg(&sc.d2) / 2.0);
         let layout = SinhLayout::for_units(&rules, units_for_log2(inv_a));
         let nl = layout.nodes()?;
-        // Left: s and the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 at each node, with G's constant
-        // factor 2/m1 folded in, then f in place of the weight, then s·f and s²·f.
-        let mut left = vec![T::zero(p); 4 * nl];
-        {
-            let (ls, rest) = left.split_at_mut(nl);
-            let (lf, rest) = rest.split_at_mut(nl);
-            let (lsf, lssf) = rest.split_at_mut(nl);
-            layout.fill(&sc.two_over_m1, ls, lf)?;
-            node_map(p, ls, lf, |s, w| {
-                let pp = one.clone() + s;
-                let (e1, dd, qq) =
-                    sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2));
-                let h = s.clone() + &sc.eps2;
-                w.clone() * dd * e1.sqrt_div(&(qq * h))
-            });
-            lsf.clone_from_slice(lf);
-            node_map(p, ls, lsf, |s, f| s.clone() * f);
-            lssf.clone_from_slice(lsf);
-            node_map(p, ls, lssf, |s, f| s.clone() * f);
-        }
+        let left = if subtract {
+            subtracted_left(&layout, &sc, nl, p)?
+        } else {
+            resolved_left(&layout, &sc, nl, p)?
+        };
         // Right: σ, f, σ·f.
         let (right_s, right_w) = rules.right()?;
         let nr = right_s.len();
@@ -598,14 +668,7 @@ impl<T: Real> GradedSetup<T> {
             });
         }
         let p = axes.k.prec();
-        let one = T::one(p);
-        // Left, panel by panel: Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2},
-        // Σ s² f u^{−5/2}, u = 1 + k²s.
-        let nl = self.left.len() / 4;
-        let [ls, lf, lsf, lssf] = [0, 1, 2, 3].map(|i| &self.left[i * nl..(i + 1) * nl]);
-        let left = power_sums(ls, [lf, lsf, lsf, lssf], dk, p, |s| {
-            one.clone() + axes.k2.clone() * s
-        });
+        let (left, nl) = (self.left.sums(axes, dk, p), self.left.nodes());
         // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
         let nr = self.right.len() / 3;
         let [rs, rf, rsf] = [0, 1, 2].map(|i| &self.right[i * nr..(i + 1) * nr]);
@@ -626,6 +689,74 @@ impl<T: Real> GradedSetup<T> {
             Route::GradedRule,
             nl + nr,
         )
+    }
+}
+
+impl<T: Real> LeftHalf<T> {
+    fn nodes(&self) -> usize {
+        match self {
+            LeftHalf::Resolved(v) | LeftHalf::Subtracted { nodes: v, .. } => v.len() / 4,
+        }
+    }
+
+    /// I2_L, I1_L and, with `dk`, d2, d1 with dI_L/dk = −3k·d (zero without), u = 1 + k²s.
+    fn sums(&self, axes: &AxisRatio<T>, dk: bool, p: T::Prec) -> [T; 4] {
+        let one = T::one(p);
+        let nl = self.nodes();
+        match self {
+            // Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2}, Σ s² f u^{−5/2}.
+            LeftHalf::Resolved(v) => {
+                let [ls, lf, lsf, lssf] = [0, 1, 2, 3].map(|i| &v[i * nl..(i + 1) * nl]);
+                power_sums(ls, [lf, lsf, lsf, lssf], dk, p, |s| {
+                    one.clone() + axes.k2.clone() * s
+                })
+            }
+            LeftHalf::Subtracted {
+                nodes,
+                eps2,
+                g0,
+                pole_t,
+            } => {
+                let [ls, lf, lih, lw] = [0, 1, 2, 3].map(|i| &nodes[i * nl..(i + 1) * nl]);
+                // a0 = g0 u0^{−3/2} and e0 = ε² a0/u0, u0 = 1 − k²ε² ≥ 15/16 here.
+                let u0 = one.clone() - axes.k2.clone() * eps2;
+                let a0 = g0.clone() / (u0.clone() * &u0.clone().sqrt());
+                let e0 = eps2.clone() * &a0 / &u0;
+                // Σω (a − a0)/h, Σω a and, with dk, Σω (s F u^{−5/2} + e0)/h, Σω s F u^{−5/2}.
+                let [sr, sa, srd, sb] = chunked_sums(nl, p, |i0, t3, t5| {
+                    let m = CHUNK.min(nl - i0);
+                    let xs = &ls[i0..i0 + m];
+                    if dk {
+                        for ((s, v3), v5) in xs.iter().zip(t3.iter_mut()).zip(t5.iter_mut()) {
+                            (*v3, *v5) = (one.clone() + axes.k2.clone() * s).pow_m3_2_m5_2();
+                        }
+                    } else {
+                        for (s, v3) in xs.iter().zip(t3.iter_mut()) {
+                            *v3 = (one.clone() + axes.k2.clone() * s).pow_m3_2();
+                        }
+                    }
+                    let mut part = [(); 4].map(|_| T::zero(p));
+                    for j in 0..m {
+                        let (f, ih, w) = (&lf[i0 + j], &lih[i0 + j], &lw[i0 + j]);
+                        let a = f.clone() * &t3[j];
+                        part[0] += &((a.clone() - &a0) * ih * w);
+                        part[1] += &(a * w);
+                        if dk {
+                            let b = xs[j].clone() * f * &t5[j];
+                            part[2] += &((b.clone() + &e0) * ih * w);
+                            part[3] += &(b * w);
+                        }
+                    }
+                    part
+                });
+                // I2_L = a0 atan(1/ε)/ε + Σω (a − a0)/h; I1_L = ∫ a dw − ε² I2_L.
+                let i2l = a0 * pole_t + &sr;
+                let i1l = sa - eps2.clone() * &i2l;
+                let d2l = srd - e0 * pole_t;
+                let d1l = sb - eps2.clone() * &d2l;
+                [i2l, i1l, d2l, d1l]
+            }
+        }
     }
 }
 
@@ -656,9 +787,7 @@ const CHUNK: usize = 32;
 
 /// Σ a x^{−3/2}, Σ b x^{−3/2} and, with `dk`, Σ c x^{−5/2}, Σ d x^{−5/2} over the nodes, with
 /// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node),
-/// summed in chunks of [`CHUNK`] nodes, each chunk's sum added to the total in chunk order
-/// (above [`crate::numerics::shares::PARALLEL_ABOVE_BITS`] the chunks' sums are formed on the
-/// cores first: the same bits).
+/// summed by [`chunked_sums`].
 #[inline(always)]
 pub(super) fn power_sums<T: Real>(
     nodes: &[T],
@@ -667,10 +796,7 @@ pub(super) fn power_sums<T: Real>(
     p: T::Prec,
     shift: impl Fn(&T) -> T + Sync,
 ) -> [T; 4] {
-    let zero = || [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-    let buffer = || [(); CHUNK].map(|_| T::zero(p));
-    // The sums of the chunk starting at node i0, with t3, t5 as scratch.
-    let chunk_sums = |i0: usize, t3: &mut [T; CHUNK], t5: &mut [T; CHUNK]| {
+    chunked_sums(nodes.len(), p, |i0, t3, t5| {
         let m = CHUNK.min(nodes.len() - i0);
         let xs = &nodes[i0..i0 + m];
         // Node values first, sums after: the node loop carries no dependence, so that at f64
@@ -685,7 +811,7 @@ pub(super) fn power_sums<T: Real>(
             }
         }
         let [a, b, c, d] = factors.map(|f| &f[i0..i0 + m]);
-        let mut part = zero();
+        let mut part = [(); 4].map(|_| T::zero(p));
         for j in 0..m {
             part[0] += &(a[j].clone() * &t3[j]);
             part[1] += &(b[j].clone() * &t3[j]);
@@ -695,28 +821,42 @@ pub(super) fn power_sums<T: Real>(
             }
         }
         part
-    };
+    })
+}
+
+/// Four sums over `n` nodes from `chunk(i0, t3, t5)`, the sums of the [`CHUNK`] nodes from i0
+/// (t3, t5 scratch buffers), each chunk's sums added to the total in chunk order (above
+/// [`crate::numerics::shares::PARALLEL_ABOVE_BITS`] the chunks' sums are formed on the cores
+/// first: the same bits).
+#[inline(always)]
+fn chunked_sums<T: Real>(
+    n: usize,
+    p: T::Prec,
+    chunk: impl Fn(usize, &mut [T; CHUNK], &mut [T; CHUNK]) -> [T; 4] + Sync,
+) -> [T; 4] {
+    let zero = || [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
+    let buffer = || [(); CHUNK].map(|_| T::zero(p));
     let add = |acc: &mut [T; 4], part: [T; 4]| {
         for (s, q) in acc.iter_mut().zip(part) {
             *s += &q;
         }
     };
     let mut acc = zero();
-    let count = shares(T::bits(p), nodes.len());
+    let count = shares(T::bits(p), n);
     if count == 1 {
         let (mut t3, mut t5) = (buffer(), buffer());
         let mut i0 = 0;
-        while i0 < nodes.len() {
-            add(&mut acc, chunk_sums(i0, &mut t3, &mut t5));
+        while i0 < n {
+            add(&mut acc, chunk(i0, &mut t3, &mut t5));
             i0 += CHUNK;
         }
         return acc;
     }
-    let mut parts: Vec<[T; 4]> = (0..nodes.len().div_ceil(CHUNK)).map(|_| zero()).collect();
+    let mut parts: Vec<[T; 4]> = (0..n.div_ceil(CHUNK)).map(|_| zero()).collect();
     for_shares(count, &mut parts, &mut [] as &mut [T], &|start, ps, _| {
         let (mut t3, mut t5) = (buffer(), buffer());
         for (c, part) in (start..).zip(ps) {
-            *part = chunk_sums(c * CHUNK, &mut t3, &mut t5);
+            *part = chunk(c * CHUNK, &mut t3, &mut t5);
         }
     });
     for part in parts {
