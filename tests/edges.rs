@@ -188,3 +188,49 @@ fn precision_above_the_rules_limit_is_refused_first() {
         t.elapsed()
     );
 }
+
+/// Near the Rayleigh speed the root falls far below the static seed, k ~ (1 − M_R)^{1/4} (I2 ~
+/// (1 − M_R)^{−1/2}, I1 ~ k^{−2}): λ = ln k ≈ −576 at 1 − M_R = 10⁻¹⁰⁰⁰. Unbracketed Newton steps
+/// were cut to a factor e² in k, so that Newton did not converge in its 200 evaluations below
+/// 1 − M_R ≈ 10⁻⁶⁵⁰; the cut now doubles after each cut step, and the solve takes a few dozen
+/// evaluations at any gap. The roots are checked against the law k·(1 − M_R)^{−1/4} =
+/// constant, whose corrections are O((1 − M_R)^{1/2}) relative: at 256 bits the solves at
+/// 10⁻¹⁰⁰⁰ … 10⁻¹⁰⁰⁰⁰⁰ must agree with the one at 10⁻³⁰⁰ within their two bounds. At `f64`
+/// (1 − M_R = 10⁻²⁵⁰, k ~ 10⁻⁶³ and at A1/B1 = 10⁵⁰) the bound holds against 256 bits.
+#[test]
+fn roots_far_below_the_seed_near_the_rayleigh_speed() {
+    let p = MpPrec::new(256).unwrap();
+    let scaled = |gap: &str| {
+        let sp = speed::<Mp>("0.25", gap, p);
+        let s = solve_ellipse(&sp, &Mp::from_i64(2, p), &Options::default()).unwrap();
+        assert!(
+            s.iterations <= 40,
+            "gap {gap}: {} evaluations",
+            s.iterations
+        );
+        let g = Mp::parse(gap, p).unwrap();
+        let c = s.k.value.clone() / g.sqrt().sqrt();
+        (c.to_float(256), s.k.error.to_f64())
+    };
+    let (c0, e0) = scaled("1e-300");
+    for gap in ["1e-1000", "1e-5000", "1e-100000"] {
+        let (c, e) = scaled(gap);
+        let d = rug::Float::with_val(256, (c - &c0) / &c0).abs().to_f64();
+        assert!(
+            d <= e + e0,
+            "gap {gap}: k/gap^(1/4) moved by {d:e} (bounds {e:e} + {e0:e})"
+        );
+    }
+    for ratio in ["2", "1e50"] {
+        let sp = speed::<f64>("0.25", "1e-250", ());
+        let r = ratio.parse::<f64>().unwrap();
+        let s = solve_ellipse(&sp, &r, &Options::default()).unwrap();
+        assert!(
+            s.iterations <= 20,
+            "f64 A1/B1 = {ratio}: {} evaluations",
+            s.iterations
+        );
+        let up = |x: &f64| x.to_float(256);
+        check_against_256(&s.k, [up(sp.material().nu()), up(sp.gap()), up(&r)], "f64");
+    }
+}

@@ -581,6 +581,12 @@ struct Newton<'a, T: Real + 'static> {
     spent: usize,
     /// The evaluations it may spend.
     budget: usize,
+    /// The longest unbracketed step in λ: 2 (a factor e² in k), doubled after each step cut
+    /// to it ([`Newton::next_iterate`]).
+    reach: T,
+    /// The λ range a step longer than 2 may reach: the fixed rules' k ≤ 2^180, and k⁴ ≥ 2⁸
+    /// times the smallest normal number (the range [`AxisRatio`] admits, with a margin).
+    lam_range: (f64, f64),
 }
 
 impl<'a, T: Real> Newton<'a, T> {
@@ -613,6 +619,11 @@ impl<'a, T: Real> Newton<'a, T> {
             prev: None,
             spent: 0,
             budget,
+            reach: T::from_i64(2, p),
+            lam_range: (
+                (RelError::of(&T::min_positive(p)).log2() + 8.0) / 4.0 * std::f64::consts::LN_2,
+                crate::routes::graded::K_MAX_LOG2 as f64 * std::f64::consts::LN_2,
+            ),
         }
     }
 
@@ -734,7 +745,10 @@ impl<'a, T: Real> Newton<'a, T> {
             } else {
                 self.hi = Some(lam.clone());
             }
-            let (next, was_newton) = self.next_iterate(&f, &df);
+            let (next, was_newton, cut) = self.next_iterate(&f, &df);
+            if cut {
+                self.reach = self.reach.clone().mul_pow2(1);
+            }
             let step = (next.clone() - &lam).abs();
             let scale = lam.clone().abs().max_of(T::one(p));
             // How far the derivative used for this step lies behind (0 for a Newton step).
@@ -772,11 +786,15 @@ impl<'a, T: Real> Newton<'a, T> {
 
     /// The next iterate from F, F′ at λ: the Newton (or chord) step — or the asymptotic step for
     /// k ≫ 1 ([`log_model_step`], where it lands at k·ε_R ≥ [`MODEL_MIN_K_EPS`]) — when it stays
-    /// inside the bracket; bisection when it does not; unbracketed, the step clamped to a factor
-    /// e² in k and never past a known end. Returns the iterate and whether it is a full Newton
-    /// step (which the stopping rules assume).
+    /// inside the bracket; bisection when it does not; unbracketed, the step cut to the reach
+    /// and never past a known end. The reach starts at 2 (a factor e² in k) and doubles after
+    /// each cut step, as long as the longer step stays inside `lam_range` (else 2): far from the
+    /// root F grows like 2|λ| (I1 ~ k^{−2} as k → 0, I2 ~ 1/k as k → ∞), so that a root at
+    /// |λ| = L takes about log₂ L cut steps instead of L/2 — near the Rayleigh speed the root
+    /// falls to k ~ (1 − M_R)^{1/4}, λ ≈ −576 at 1 − M_R = 10⁻¹⁰⁰⁰. Returns the iterate, whether
+    /// it is a full Newton step (which the stopping rules assume) and whether it was cut.
     #[inline]
-    fn next_iterate(&self, f: &T, df: &T) -> (T, bool) {
+    fn next_iterate(&self, f: &T, df: &T) -> (T, bool, bool) {
         let p = self.prec();
         let lam = &self.lam;
         let newton = (df.is_positive() && df.is_finite()).then(|| {
@@ -790,23 +808,27 @@ impl<'a, T: Real> Newton<'a, T> {
         let half_way = |end: &T| (lam.clone() + end).mul_pow2(-1);
         match (&self.lo, &self.hi, newton) {
             // Inside the closed bracket (a converged step may land on its end).
-            (Some(l), Some(h), Some(n)) if n >= *l && n <= *h => (n, true),
-            (Some(l), Some(h), _) => ((l.clone() + h).mul_pow2(-1), false),
+            (Some(l), Some(h), Some(n)) if n >= *l && n <= *h => (n, true, false),
+            (Some(l), Some(h), _) => ((l.clone() + h).mul_pow2(-1), false, false),
             (lo, hi, Some(n)) => {
-                let two = T::from_i64(2, p);
-                let step = (n.clone() - lam).min_of(two.clone()).max_of(-two);
-                let next = lam.clone() + step;
+                let cut =
+                    |r: &T| lam.clone() + (n.clone() - lam).min_of(r.clone()).max_of(-r.clone());
+                let mut next = cut(&self.reach);
+                let x = next.to_f64();
+                if !(x >= self.lam_range.0 && x <= self.lam_range.1) {
+                    next = cut(&T::from_i64(2, p));
+                }
                 match (lo, hi) {
-                    (Some(l), _) if next <= *l => (half_way(l), false),
-                    (_, Some(h)) if next >= *h => (half_way(h), false),
+                    (Some(l), _) if next <= *l => (half_way(l), false, false),
+                    (_, Some(h)) if next >= *h => (half_way(h), false, false),
                     _ => {
                         let full = next == n;
-                        (next, full)
+                        (next, full, !full)
                     }
                 }
             }
-            (Some(_), None, None) => (lam.clone() + T::one(p), false),
-            (None, _, None) => (lam.clone() - T::one(p), false),
+            (Some(_), None, None) => (lam.clone() + T::one(p), false, false),
+            (None, _, None) => (lam.clone() - T::one(p), false, false),
         }
     }
 
