@@ -234,3 +234,41 @@ fn roots_far_below_the_seed_near_the_rayleigh_speed() {
         check_against_256(&s.k, [up(sp.material().nu()), up(sp.gap()), up(&r)], "f64");
     }
 }
+
+/// The full contact solution at 1 − M_R = 10⁻⁷⁰⁰ (k ≈ 10⁻¹⁷⁵, I1 ≈ 10³⁵⁰): a, b, p0 and d0 within
+/// their bounds of the same problem at 320 bits. The sensitivity of I1 to k's error,
+/// k·I1′/I1 ≈ −2, was formed from k, I1′ and I1 converted to `f64` one by one, which overflowed
+/// and made a's bound infinite (a `NoConvergence` error for a solvable problem).
+#[test]
+fn contact_far_below_the_f64_range_near_the_rayleigh_speed() {
+    fn solve(bits: u32) -> moving_hertz::ContactSolution<Mp> {
+        let p = MpPrec::new(bits.into()).unwrap();
+        let x = |s: &str| Mp::parse(s, p).unwrap();
+        ContactProblem {
+            speed: speed::<Mp>("0.3", "1e-700", p),
+            radius_along: x("0.05"),
+            radius_across: x("0.02"),
+            loading: Loading::Load(x("1000")),
+            shear_modulus: x("80e9"),
+        }
+        .solve(&Options::default())
+        .unwrap()
+    }
+    let (lo, hi) = (solve(256), solve(320));
+    for (name, got, want) in [
+        ("a", &lo.a, &hi.a),
+        ("b", &lo.b, &hi.b),
+        ("p0", &lo.p0, &hi.p0),
+        ("d0", &lo.d0, &hi.d0),
+    ] {
+        let w = want.value.to_float(320);
+        let err = rug::Float::with_val(320, (got.value.to_float(320) - &w) / &w)
+            .abs()
+            .to_f64();
+        let bound = got.error.to_f64();
+        assert!(
+            bound < 1e-70 && err <= bound,
+            "{name}: error {err:e}, bound {bound:e}"
+        );
+    }
+}

@@ -206,9 +206,11 @@ impl<T: Real> Sizes<T> {
         // (|k I1′/I1| from the computed derivative, |k J0′/J0| ≤ 1), plus the ratio's
         // rounding (|d ln k/d ln(A1/B1)| ≤ 1).
         let dk = el.k.error.add(eps(2));
+        // Formed at the working precision: k, I1′ and I1 may each lie outside the f64 range
+        // (near the Rayleigh speed, k ~ 1e-250 and I1 ~ 1e500 at 1 − M_R = 1e-1000).
         let sens = |d: &Option<Estimated<T>>| {
             d.as_ref()
-                .map_or(4.0, |d| (k.to_f64() * d.value.to_f64() / i1.to_f64()).abs())
+                .map_or(4.0, |d| (k.clone() * &d.value / i1).to_f64().abs())
         };
         let e_i1 = ints.i1.error.add(dk.scale(sens(&ints.di1_dk)));
         let e_j0 = j0.error.add(dk);
