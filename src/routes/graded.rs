@@ -528,6 +528,13 @@ enum LeftHalf<T: Real> {
     },
 }
 
+/// e1, D′ and Q′ at a left node s (p = 1 + s), the parts of G of (45) in the forms of
+/// [`crate::routes::fast`].
+fn left_parts<T: Real>(sc: &SpeedConsts<T>, s: &T, one: &T) -> (T, T, T) {
+    let pp = one.clone() + s;
+    sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2))
+}
+
 /// The left half with the pole resolved by the panels: s, f, s·f, s²·f (f = weight·a/h·u^{3/2}).
 fn resolved_left<T: Real>(
     layout: &SinhLayout<'_, T>,
@@ -544,8 +551,7 @@ fn resolved_left<T: Real>(
     let (lsf, lssf) = rest.split_at_mut(nl);
     layout.fill(&sc.two_over_m1, ls, lf)?;
     node_map(p, ls, lf, |s, w| {
-        let pp = one.clone() + s;
-        let (e1, dd, qq) = sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2));
+        let (e1, dd, qq) = left_parts(sc, s, &one);
         let h = s.clone() + &sc.eps2;
         w.clone() * dd * e1.sqrt_div(&(qq * h))
     });
@@ -571,8 +577,7 @@ fn subtracted_left<T: Real>(
     let (lih, lw) = rest.split_at_mut(nl);
     layout.fill(&one, ls, lw)?;
     node_map(p, ls, lf, |s, _| {
-        let pp = one.clone() + s;
-        let (e1, dd, qq) = sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2));
+        let (e1, dd, qq) = left_parts(sc, s, &one);
         sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq)
     });
     node_map(p, ls, lih, |s, _| (s.clone() + &sc.eps2).recip());
