@@ -521,10 +521,8 @@ enum LeftHalf<T: Real> {
     /// min(4/(5 k_max), δ), below which only the subtracted pole lies (module docs).
     Subtracted {
         nodes: Vec<T>,
-        /// ε², 2π G(1) M_R (= a0 (1 − k²ε²)^{3/2}) and atan(1/ε)/ε.
-        eps2: T,
-        g0: T,
-        pole_t: T,
+        /// The speed's constants: ε², the pole's strength and atan(1/ε)/ε among them.
+        sc: Box<SpeedConsts<T>>,
     },
 }
 
@@ -583,9 +581,7 @@ fn subtracted_left<T: Real>(
     node_map(p, ls, lih, |s, _| (s.clone() + &sc.eps2).recip());
     Ok(LeftHalf::Subtracted {
         nodes,
-        eps2: sc.eps2.clone(),
-        g0: sc.g0.clone(),
-        pole_t: sc.pole_t.clone(),
+        sc: Box::new(sc.clone()),
     })
 }
 
@@ -716,17 +712,11 @@ impl<T: Real> LeftHalf<T> {
                     one.clone() + axes.k2.clone() * s
                 })
             }
-            LeftHalf::Subtracted {
-                nodes,
-                eps2,
-                g0,
-                pole_t,
-            } => {
+            LeftHalf::Subtracted { nodes, sc } => {
                 let [ls, lf, lih, lw] = [0, 1, 2, 3].map(|i| &nodes[i * nl..(i + 1) * nl]);
-                // a0 = g0 u0^{−3/2} and e0 = ε² a0/u0, u0 = 1 − k²ε² ≥ 15/16 here.
-                let u0 = one.clone() - axes.k2.clone() * eps2;
-                let a0 = g0.clone() / (u0.clone() * &u0.clone().sqrt());
-                let e0 = eps2.clone() * &a0 / &u0;
+                // u0 = 1 − k²ε² ≥ 15/16 here.
+                let (a0, e0) = sc.pole_values(&axes.k2);
+                let (eps2, pole_t) = (&sc.eps2, &sc.pole_t);
                 // Σω (a − a0)/h, Σω a and, with dk, Σω (s F u^{−5/2} + e0)/h, Σω s F u^{−5/2}.
                 let [sr, sa, srd, sb] = chunked_sums(nl, p, |i0, t3, t5| {
                     let m = CHUNK.min(nl - i0);

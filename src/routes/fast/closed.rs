@@ -73,6 +73,21 @@ impl<T: Real> SpeedConsts<T> {
 }
 
 impl<T: Real> SpeedConsts<T> {
+    /// The Rayleigh pole's strength at the axis ratio with k² = `k2` (k²ε² < 1): a0 = a(−ε²) =
+    /// g0 (1 − k²ε²)^{−3/2}, and e0 = ε² a0/(1 − k²ε²), the pole value of the left integrand's
+    /// k-derivative divided by 3k (module docs). Zero for both at M_R = 0. A few ε.
+    pub(crate) fn pole_values(&self, k2: &T) -> (T, T) {
+        if self.g0.is_zero() {
+            let p = k2.prec();
+            return (T::zero(p), T::zero(p));
+        }
+        let u0 = T::one(k2.prec()) - k2.clone() * &self.eps2;
+        let su0 = u0.clone().sqrt();
+        let a0 = self.g0.clone() / (u0.clone() * &su0);
+        let e0 = self.eps2.clone() * &a0 / &u0;
+        (a0, e0)
+    }
+
     /// G's cleared form at a left node s = w² (p = 1 + s; `two_p`, `four_p` = 2p, 4p): returns
     /// e1 = s + 1 − γc, D' = (2p − c)² + 4p√((s + 1 − γc)(s + δ²)) and
     /// Q' = c² − (m2 + m3)c p + m2m3 p², so that 2πG√(1 + s) = (2/m1)√e1·D'/Q' (module docs).

@@ -266,17 +266,8 @@ fn check_axes<T: Real>(axes: &AxisRatio<T>) -> Result<()> {
 
 impl<T: Real> KConsts<T> {
     fn new(sc: &SpeedConsts<T>, axes: &AxisRatio<T>) -> Self {
-        let p = axes.k.prec();
-        let (a0, e0) = if sc.g0.is_zero() {
-            (T::zero(p), T::zero(p))
-        } else {
-            // u0 = 1 − k²ε² ≥ 3/4 here (k ≤ 1, ε² ≤ 1/4).
-            let u0 = T::one(p) - axes.k2.clone() * &sc.eps2;
-            let su0 = u0.clone().sqrt();
-            let a0 = sc.g0.clone() / (u0.clone() * &su0);
-            let e0 = sc.eps2.clone() * &a0 / &u0;
-            (a0, e0)
-        };
+        // u0 = 1 − k²ε² ≥ 3/4 here (k ≤ 1, ε² ≤ 1/4).
+        let (a0, e0) = sc.pole_values(&axes.k2);
         KConsts {
             k: axes.k.clone(),
             k2: axes.k2.clone(),
