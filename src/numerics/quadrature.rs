@@ -477,8 +477,24 @@ fn midpoint<T: Real>(a: &T, b: &T) -> Option<T> {
 /// [`Error::NoConvergence`] (with evaluations spent and the relative estimate reached) when the
 /// evaluation cap is hit or a panel with a non-negligible estimate is too narrow to split.
 pub fn integrate<T: Real, F: FnMut(&T) -> T>(
+    f: F,
+    points: &[T],
+    tol: &T,
+    limits: Limits,
+) -> Result<Quadrature<T>> {
+    integrate_plus(f, points, &T::zero(tol.prec()), tol, limits)
+}
+
+/// `c + ∫f` by [`integrate`], the tolerance judged against the sum: the total estimate at most
+/// `max(tol·|c + I|, 4ε·(|c| + Σ|I_panel|)) + min_positive`. For a remainder integrand after a
+/// part `c` has been taken out in closed form, whose own integral may be small or cancel: its
+/// accuracy matters relative to the whole, and its rounding (a few ε of the terms it was formed
+/// from) need not reach a few ε of itself. The returned error is that of the quadrature
+/// (`c`'s rounding is the caller's). Accuracy and errors as [`integrate`].
+pub fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
     mut f: F,
     points: &[T],
+    offset: &T,
     tol: &T,
     limits: Limits,
 ) -> Result<Quadrature<T>> {
@@ -510,8 +526,11 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
         }
     }
     let totals = |heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)]| panel_totals(heap, frozen, p);
+    let signed = |v: &T| if reversed { -v.clone() } else { v.clone() };
+    let off_abs = offset.clone().abs();
     let threshold = |v: &T, l1: &T| {
-        (tol.clone() * &v.clone().abs()).max_of(l1.clone().mul_i64(4) * &eps) + &tiny
+        let whole = (offset.clone() + &signed(v)).abs();
+        (tol.clone() * &whole).max_of((l1.clone() + &off_abs).mul_i64(4) * &eps) + &tiny
     };
     let (mut value, mut err, mut l1) = totals(&heap, &frozen);
     let mut frozen_err = T::zero(p);
@@ -526,7 +545,7 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
                 // Rounding allowance: the panel discrepancies do not see the rounding common
                 // to both rules (about ε per panel value), nor that of the final sum.
                 let error = err + &(l1 * &eps);
-                let value = if reversed { -value } else { value };
+                let value = offset.clone() + &signed(&value);
                 return Ok(Quadrature {
                     value,
                     error,
@@ -546,7 +565,7 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
                     "adaptive Gauss-Legendre quadrature"
                 },
                 iterations: evals,
-                reached: relative(&err, &value),
+                reached: relative(&err, &(offset.clone() + &signed(&value))),
             });
         };
         let m = (q.a.clone() + &q.b).mul_pow2(-1);

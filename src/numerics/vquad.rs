@@ -74,8 +74,23 @@ fn rule_on<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
 /// Integrates the `N` components of `f` over the breakpoints `points` (increasing) to relative
 /// tolerance `tol` each (0: the precision's floor). See the module docs.
 pub fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
+    f: F,
+    points: &[T],
+    tol: &T,
+    limits: Limits,
+) -> Result<VecQuadrature<T, N>> {
+    let zero = std::array::from_fn(|_| T::zero(tol.prec()));
+    integrate_vec_plus(f, points, &zero, tol, limits)
+}
+
+/// `c_c + ∫f_c` for each component, by [`integrate_vec`] with each threshold judged against the
+/// sum, `max(tol·|c_c + I_c|, 4ε·(|c_c| + Σ|I_c,panel|))` (as
+/// [`crate::numerics::quadrature::integrate_plus`]: for remainders after parts taken out in
+/// closed form). The returned values include the `c_c`, the errors are the quadrature's.
+pub fn integrate_vec_plus<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
     mut f: F,
     points: &[T],
+    offsets: &[T; N],
     tol: &T,
     limits: Limits,
 ) -> Result<VecQuadrature<T, N>> {
@@ -118,9 +133,9 @@ pub fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
     }
     loop {
         // Totals per component.
-        let mut val: [T; N] = std::array::from_fn(|_| T::zero(p));
+        let mut val: [T; N] = offsets.clone();
         let mut err: [T; N] = std::array::from_fn(|_| T::zero(p));
-        let mut l1: [T; N] = std::array::from_fn(|_| T::zero(p));
+        let mut l1: [T; N] = std::array::from_fn(|c| offsets[c].clone().abs());
         for q in &panels {
             for c in 0..N {
                 let v = q.left[c].clone() + &q.right[c];
@@ -134,7 +149,9 @@ pub fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
                 + &T::min_positive(p)
         });
         if (0..N).all(|c| err[c] <= thr[c]) {
-            let errors = std::array::from_fn(|c| err[c].clone() + &(l1[c].clone() * &eps));
+            let errors = std::array::from_fn(|c| {
+                err[c].clone() + &((l1[c].clone() - &offsets[c].clone().abs()) * &eps)
+            });
             return Ok(VecQuadrature {
                 values: val,
                 errors,
