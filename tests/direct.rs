@@ -192,3 +192,161 @@ fn closed_form_52_and_the_quoted_derivative_rules() {
         }
     }
 }
+
+/// J0 of (32) against mpmath's quadrature in φ (tests/data/j0_mpmath.csv, tools/gen_integrals.py
+/// --j0, 40 digits): `approach_integral` (both peaks taken out in closed form where they are
+/// near) and the J0 of `contact_integrals` (the pole taken out, the k-peak graded), on cases on
+/// both sides of each threshold (ε ≤ 1/2 and kε ≤ 1/2; k ≤ 1/2; k² against ε of the working
+/// precision), 1 − M_R from 1 to 2⁻¹²⁰ and k from 2⁻²⁰⁰ to 1000: within 16ε and within the
+/// reported bounds.
+fn j0_against_mpmath<T: Real>(p: T::Prec, label: &str) {
+    let (mut wa, mut wc) = (0.0f64, 0.0f64);
+    for r in read_csv("j0_mpmath.csv") {
+        let mat = Material::new(T::parse(&r[0], p).unwrap()).unwrap();
+        let sp = mat.parse_gap(&r[1]).unwrap();
+        let ax = AxisRatio::new(T::parse(&r[2], p).unwrap()).unwrap();
+        let want = reference(&r[3]);
+        let zero = T::zero(p);
+        let a = direct::approach_integral(&sp, &ax, &zero).expect("approach_integral");
+        let c = direct::contact_integrals(&sp, &ax, &zero).expect("contact_integrals");
+        let est_c = (c.error_estimate.clone() / T::epsilon(p)).to_f64();
+        let cj = c.j0.expect("J0");
+        for (route, got, est, worst) in [
+            (
+                "approach_integral",
+                &a.value,
+                a.error.to_f64() / T::epsilon(p).to_f64(),
+                &mut wa,
+            ),
+            ("contact_integrals", &cj, est_c, &mut wc),
+        ] {
+            let e = rel_eps(got, &want);
+            let at = format!("{label} {route} nu={} gap={} k={}", r[0], r[1], r[2]);
+            assert!(e <= 16.0, "{at}: J0 off by {e:.2} eps");
+            assert!(
+                e <= est + 1.0,
+                "{at}: J0 off by {e:.2} eps, estimate {est:.2} eps"
+            );
+            *worst = worst.max(e);
+        }
+    }
+    println!(
+        "{label}: J0 worst error approach_integral {wa:.2} eps, contact_integrals {wc:.2} eps"
+    );
+}
+
+#[test]
+fn j0_matches_mpmath() {
+    at_all_precisions!(j0_against_mpmath, [128]);
+}
+
+/// Far below the f64 range (1 − M_R down to 10⁻¹⁰⁰⁰⁰⁰) and at small k: `approach_integral` at 256
+/// bits against the J0 of `contact_integrals` at 320 bits, whose right half is not subtracted but
+/// graded about k (an independent treatment of the k-peak), within the reported bound; and the
+/// M_R → 1 law J0·ε → constant, to O(ε) (so equal to 256 bits from 10⁻¹⁰⁰⁰ on).
+#[test]
+fn j0_far_below_the_f64_range() {
+    let (lo, hi) = (common::mp(256), common::mp(320));
+    let at = |p, nu: &str, gap: &str, k: &str| {
+        let mat = Material::new(Mp::parse(nu, p).unwrap()).unwrap();
+        (
+            mat.parse_gap(gap).unwrap(),
+            AxisRatio::new(Mp::parse(k, p).unwrap()).unwrap(),
+        )
+    };
+    for (nu, k) in [
+        ("0.25", "0.5"),
+        ("-0.5", "1e-3"),
+        ("0.5", "1e-40"),
+        ("0.3", "1e-100"),
+        ("0", "7"),
+    ] {
+        let mut scaled: Vec<rug::Float> = vec![];
+        for gap in ["1e-30", "1e-1000", "1e-100000"] {
+            let (sp, ax) = at(lo, nu, gap, k);
+            let got = direct::approach_integral(&sp, &ax, &Mp::zero(lo)).unwrap();
+            let (sp2, ax2) = at(hi, nu, gap, k);
+            let want = direct::contact_integrals(&sp2, &ax2, &Mp::zero(hi))
+                .unwrap()
+                .j0
+                .unwrap();
+            let w = want.to_float(320);
+            let err = rug::Float::with_val(320, (got.value.to_float(320) - &w) / &w)
+                .abs()
+                .to_f64();
+            let bound = got.error.to_f64();
+            assert!(
+                bound < 1e-74 && err <= bound,
+                "nu={nu} k={k} gap={gap}: J0 error {err:e}, bound {bound:e}"
+            );
+            let eps = sp.one_minus_mr2().clone().sqrt();
+            scaled.push((got.value * eps).to_float(320));
+        }
+        // J0·ε at 10⁻¹⁰⁰⁰ and 10⁻¹⁰⁰⁰⁰⁰ agree to 256 bits; at 10⁻³⁰ J0·ε differs from its limit
+        // by O(ε(1 + |ln k|)) (the right half, ~ asinh(1/k), against the pole's π/(2ε)).
+        let d = |a: &rug::Float, b: &rug::Float| {
+            rug::Float::with_val(320, (a.clone() - b) / b)
+                .abs()
+                .to_f64()
+        };
+        let (far, near) = (d(&scaled[1], &scaled[2]), d(&scaled[0], &scaled[2]));
+        let eps30 = (2e-30f64).sqrt();
+        let allowed = 4.0 * eps30 * (1.0 + k.parse::<f64>().unwrap().ln().abs());
+        assert!(
+            far < 1e-75,
+            "nu={nu} k={k}: J0·ε at 1e-1000 and 1e-100000 differ by {far:e}"
+        );
+        assert!(
+            near < allowed,
+            "nu={nu} k={k}: J0·ε at 1e-30 off its limit by {near:e}"
+        );
+    }
+}
+
+/// `IntegralOptions::j0` with every method: J0 (by `approach_integral` after the route) within
+/// 16ε of mpmath and of its bound, and I1, I2 exactly those of the same call without J0, at
+/// `f64` and double-double.
+fn j0_by_every_method<T: Real>(p: T::Prec, label: &str) {
+    use moving_hertz::{integrals, IntegralOptions, Method};
+    for r in read_csv("j0_mpmath.csv") {
+        let mat = Material::new(T::parse(&r[0], p).unwrap()).unwrap();
+        let sp = mat.parse_gap(&r[1]).unwrap();
+        let k = T::parse(&r[2], p).unwrap();
+        let want = reference(&r[3]);
+        let gap: f64 = r[1].parse().unwrap();
+        let mut methods = vec![Method::Auto, Method::Adaptive, Method::Fixed];
+        if k <= T::one(p) {
+            methods.push(Method::AdaptiveSubtracted);
+        }
+        if gap > 1e-3 {
+            methods.push(Method::Series);
+        }
+        for method in methods {
+            let at = format!("{label} {method:?} nu={} gap={} k={}", r[0], r[1], r[2]);
+            let plain = IntegralOptions {
+                method,
+                ..Default::default()
+            };
+            let with = IntegralOptions { j0: true, ..plain };
+            let a = integrals(&sp, &k, &with).unwrap_or_else(|e| panic!("{at}: {e}"));
+            let b = integrals(&sp, &k, &plain).unwrap();
+            assert!(
+                a.i1.value == b.i1.value && a.i2.value == b.i2.value,
+                "{at}: I1, I2 changed"
+            );
+            let j = a.j0.unwrap_or_else(|| panic!("{at}: no J0"));
+            let e = rel_eps(&j.value, &want);
+            let est = j.error.to_f64() / T::epsilon(p).to_f64();
+            assert!(
+                e <= 16.0 && e <= est + 1.0,
+                "{at}: J0 off by {e:.2} eps, bound {est:.2} eps"
+            );
+        }
+    }
+}
+
+#[test]
+fn j0_with_every_method() {
+    j0_by_every_method::<f64>((), "f64");
+    j0_by_every_method::<moving_hertz::scalar::Dd>((), "dd");
+}

@@ -235,17 +235,25 @@ fn roots_far_below_the_seed_near_the_rayleigh_speed() {
     }
 }
 
-/// The full contact solution at 1 − M_R = 10⁻⁷⁰⁰ (k ≈ 10⁻¹⁷⁵, I1 ≈ 10³⁵⁰): a, b, p0 and d0 within
-/// their bounds of the same problem at 320 bits. The sensitivity of I1 to k's error,
-/// k·I1′/I1 ≈ −2, was formed from k, I1′ and I1 converted to `f64` one by one, which overflowed
-/// and made a's bound infinite (a `NoConvergence` error for a solvable problem).
+/// The full contact solution at 1 − M_R = 10⁻⁷⁰⁰ (k ≈ 10⁻¹⁷⁵, I1 ≈ 10³⁵⁰) and 10⁻¹⁰⁰⁰⁰
+/// (k ≈ 10⁻²⁵⁰⁰): a, b, p0 and d0 within their bounds of the same problem at 320 bits.
+/// The sensitivity of I1 to k's error, k·I1′/I1 ≈ −2, was formed from k, I1′ and I1 converted to
+/// `f64` one by one, which overflowed and made a's bound infinite (a `NoConvergence` error for
+/// a solvable problem); and J0 of (32) was computed by panels graded down to ε and to k, whose
+/// number grew with log(1/ε) and |log k| until the evaluation cap refused the problem.
 #[test]
 fn contact_far_below_the_f64_range_near_the_rayleigh_speed() {
-    fn solve(bits: u32) -> moving_hertz::ContactSolution<Mp> {
+    for gap in ["1e-700", "1e-10000"] {
+        contact_at_gap(gap);
+    }
+}
+
+fn contact_at_gap(gap: &str) {
+    let solve = |bits: u32| {
         let p = MpPrec::new(bits.into()).unwrap();
         let x = |s: &str| Mp::parse(s, p).unwrap();
         ContactProblem {
-            speed: speed::<Mp>("0.3", "1e-700", p),
+            speed: speed::<Mp>("0.3", gap, p),
             radius_along: x("0.05"),
             radius_across: x("0.02"),
             loading: Loading::Load(x("1000")),
@@ -253,7 +261,7 @@ fn contact_far_below_the_f64_range_near_the_rayleigh_speed() {
         }
         .solve(&Options::default())
         .unwrap()
-    }
+    };
     let (lo, hi) = (solve(256), solve(320));
     for (name, got, want) in [
         ("a", &lo.a, &hi.a),
@@ -268,7 +276,7 @@ fn contact_far_below_the_f64_range_near_the_rayleigh_speed() {
         let bound = got.error.to_f64();
         assert!(
             bound < 1e-70 && err <= bound,
-            "{name}: error {err:e}, bound {bound:e}"
+            "gap {gap}, {name}: error {err:e}, bound {bound:e}"
         );
     }
 }

@@ -37,8 +37,8 @@ pub struct IntegralsArgs {
     /// --tol is given).
     #[arg(long)]
     pub derivatives: bool,
-    /// Also J0 of (32), the approach integral (adaptive route only; needs --precision when
-    /// --tol is given).
+    /// Also J0 of (32), the approach integral (with any method; needs --precision when --tol
+    /// is given).
     #[arg(long)]
     pub j0: bool,
     #[command(flatten)]

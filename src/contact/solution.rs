@@ -29,7 +29,7 @@ use super::ellipse::{solve_ellipse, Ellipse, Options};
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
 use crate::physics::Speed;
-use crate::routes::direct::contact_integrals;
+use crate::routes::direct::approach_integral;
 use crate::routes::AxisRatio;
 use crate::scalar::{check_finite, check_positive, short, Real};
 
@@ -104,8 +104,9 @@ const RESCALE: &str = "(overflow or underflow: rescale the inputs)";
 
 impl<T: Real> ContactProblem<T> {
     /// Solves the problem: the ellipse (33) by [`solve_ellipse`] with `opts`, J0 of (32) at the
-    /// solved k by adaptive quadrature, then a, b, p0, d0 and the load in closed form (module
-    /// docs).
+    /// solved k by adaptive quadrature with its Rayleigh pole and its k-peak in closed form
+    /// ([`crate::routes::direct::approach_integral`]: the work depends on neither 1 − M_R nor k
+    /// once they are small), then a, b, p0, d0 and the load in closed form (module docs).
     ///
     /// Accuracy: every quantity to a few ε of the working precision (measured against Johnson's
     /// static solution and a 320-bit solve in `tests/contact.rs`), each with a bound.
@@ -149,12 +150,8 @@ impl<T: Real> ContactProblem<T> {
         let ratio = self.radius_across.clone() / &self.radius_along;
         let ellipse = ellipse(&self.speed, &ratio)?;
         let k = ellipse.k.value.clone();
-        let j0 = contact_integrals(&self.speed, &AxisRatio::new(k.clone())?, &T::zero(p))?;
-        let j0 = Estimated::new(
-            j0.j0.unwrap_or_else(|| T::zero(p)),
-            RelError::of(&j0.extra_error),
-        )
-        .checked("J0")?;
+        let j0 = approach_integral(&self.speed, &AxisRatio::new(k.clone())?, &T::zero(p))?
+            .checked("J0")?;
         let sizes = Sizes::new(self, &ellipse, &j0, &a1, &b1);
         Ok(ContactSolution {
             a: fits("semi-axis a", sizes.a)?,

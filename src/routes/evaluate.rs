@@ -5,11 +5,13 @@
 //! **Which route runs.** [`Method::Auto`] takes, at k ≤ 1, the fixed rule ([`Route::FixedRule`],
 //! a-priori bound 16ε) and at k > 1 the graded rule ([`Route::GradedRule`], 32ε), when the
 //! tolerance allows their bound and k ≤ 2¹⁸⁰; otherwise the adaptive quadratures
-//! (the subtracted form (48) at k ≤ 1 when neither derivatives nor J0 are asked for). J0 only
-//! comes from [`Route::Adaptive`] (one evaluation of G serves all five integrals). A named
-//! method runs that route, and a request it cannot serve is refused before any work: the series
-//! and the adaptive subtracted route give no derivatives or J0, the subtracted one and the
-//! fixed rules have a range of k, and no route goes below [`FLOOR_EPS`]·ε of the working precision.
+//! (the subtracted form (48) at k ≤ 1 when no derivatives are asked for). J0 comes with the
+//! derivatives from [`Route::Adaptive`] (one evaluation of G serves all five integrals), and
+//! otherwise from [`direct::approach_integral`] after the route, so that I1 and I2 do not depend
+//! on whether J0 is asked for. A named method runs that route, and a
+//! request it cannot serve is refused before any work: the series and the adaptive subtracted
+//! route give no derivatives, the subtracted one and the fixed rules have a range of k, and no
+//! route goes below [`FLOOR_EPS`]·ε of the working precision.
 
 use super::fast::{self, FastSetup};
 use super::graded::{self, GradedSetup};
@@ -32,7 +34,8 @@ pub struct IntegralOptions {
     pub tolerance: Option<RelError>,
     /// Also ∂I1/∂k and ∂I2/∂k (differentiated under the integral sign on the same nodes).
     pub derivatives: bool,
-    /// Also J0 of (32) (the approach integral).
+    /// Also J0 of (32) (the approach integral): with the derivatives by the adaptive route,
+    /// otherwise by [`direct::approach_integral`] after the route.
     pub j0: bool,
 }
 
@@ -125,7 +128,25 @@ impl<T: Real> Evaluator<T> {
         let route = self.route_for(&axes)?;
         let r = self.run(route, &axes)?;
         self.check_tolerance(&r)?;
-        r.publish()
+        self.with_j0(r, &axes)?.publish()
+    }
+
+    /// J0 of (32) added to a route's result that lacks it, when asked for: by
+    /// [`direct::approach_integral`] (both its peaks in closed form) to the same tolerance; its
+    /// bound joins the k-derivatives' (`extra_error`, the larger of the two).
+    fn with_j0(&self, mut r: Evaluation<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
+        if !self.opts.j0 || r.j0.is_some() {
+            return Ok(r);
+        }
+        let p = axes.k.prec();
+        let tol = self
+            .tol
+            .clone()
+            .map_or_else(|| T::zero(p), |t| t.mul_pow2(-1));
+        let j = direct::approach_integral(&self.speed, axes, &tol)?;
+        r.extra_error = r.extra_error.max_of(j.error.to_real::<T>(p));
+        r.j0 = Some(j.value);
+        Ok(r)
     }
 
     /// The route for `axes`, checked against the method's domain before any work.
@@ -134,20 +155,18 @@ impl<T: Real> Evaluator<T> {
         let one = T::one(p);
         let below = axes.k <= one;
         let fixed_range = in_fixed_range(&axes.k);
-        let (dk, j0) = (self.opts.derivatives, self.opts.j0);
+        let dk = self.opts.derivatives;
         let bound_ok = |eps: i64| {
             self.tol
                 .as_ref()
                 .is_none_or(|t| T::epsilon(p).mul_i64(eps) <= *t)
         };
         Ok(match self.opts.method {
-            Method::Auto if !j0 && fixed_range && below && bound_ok(fast::BOUND_EPS) => {
-                Route::FixedRule
-            }
-            Method::Auto if !j0 && fixed_range && !below && bound_ok(graded::BOUND_EPS) => {
+            Method::Auto if fixed_range && below && bound_ok(fast::BOUND_EPS) => Route::FixedRule,
+            Method::Auto if fixed_range && !below && bound_ok(graded::BOUND_EPS) => {
                 Route::GradedRule
             }
-            Method::Auto if below && !dk && !j0 => Route::AdaptiveSubtracted,
+            Method::Auto if below && !dk => Route::AdaptiveSubtracted,
             Method::Auto | Method::Adaptive => Route::Adaptive,
             Method::Series => Route::Series,
             Method::AdaptiveSubtracted if below => Route::AdaptiveSubtracted,
@@ -191,7 +210,7 @@ impl<T: Real> Evaluator<T> {
         match route {
             Route::FixedRule => self.fixed(axes, dk, false),
             Route::GradedRule => self.graded(axes, dk),
-            Route::Adaptive if dk || self.opts.j0 => direct::contact_integrals(sp, axes, &tol),
+            Route::Adaptive if dk => direct::contact_integrals(sp, axes, &tol),
             Route::Adaptive => direct::quadrature(sp, axes, &tol),
             Route::AdaptiveSubtracted => direct::subtracted(sp, axes, &tol),
             Route::Series => {
@@ -312,8 +331,8 @@ fn domain<T: Real>(axes: &AxisRatio<T>, bound: &'static str) -> Error {
     }
 }
 
-/// What each method can give: the series and the adaptive subtracted route neither
-/// derivatives nor J0, the fixed rules no J0.
+/// What each method can give: the series and the adaptive subtracted route no derivatives
+/// (every method gives J0: [`Evaluator::with_j0`]).
 fn check_method(opts: &IntegralOptions) -> Result<()> {
     let refuse = |bound| {
         Err(Error::Domain {
@@ -323,10 +342,9 @@ fn check_method(opts: &IntegralOptions) -> Result<()> {
         })
     };
     match opts.method {
-        Method::Series | Method::AdaptiveSubtracted if opts.derivatives || opts.j0 => {
-            refuse("auto, adaptive or fixed (this route gives neither k-derivatives nor J0)")
+        Method::Series | Method::AdaptiveSubtracted if opts.derivatives => {
+            refuse("auto, adaptive or fixed (this route gives no k-derivatives)")
         }
-        Method::Fixed if opts.j0 => refuse("auto or adaptive (only the adaptive route gives J0)"),
         _ => Ok(()),
     }
 }
