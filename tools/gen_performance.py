@@ -3,7 +3,7 @@
 
 Usage (from the repository root, after the benches have run):
 
-    for b in dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded sweep; do
+    for b in dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded sweep contact; do
         cargo bench --bench $b -- --warm-up-time 1 --measurement-time 3
     done
     cargo build --release && python3 tools/baseline_solve.py > target/baseline_solve.md   # optional
@@ -34,7 +34,7 @@ CRIT = os.path.join(ROOT, "target", "criterion")
 OUT = os.path.join(ROOT, "docs", "performance.md")
 BASELINE = os.path.join(ROOT, "target", "baseline_solve.md")
 PAIRED = os.path.join(CRIT, "sweep_paired.json")
-BENCHES = "dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded sweep"
+BENCHES = "dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded sweep contact"
 
 
 def bench_const(bench, name, default):
@@ -74,6 +74,11 @@ FAMILIES = [
      "The default solve at A1/B1 = 10⁻¹⁰⁰ (k ≈ 10⁻⁵³, fixed rule) and 10¹⁰⁰ (k ≈ 10⁵¹, graded rule) "
      "beside A1/B1 = 0.5, at 1 − M_R = 0.5 and 10⁻¹⁰, ν = 0.2: the cost of an extreme input "
      "against a normal one at the same precision."),
+    ("contact", "The contact solution (`benches/contact.rs`)",
+     "`ContactProblem::solve` (the ellipse, J0 of (32), then a, b, p0, d0) for ν = 0.3, R2/R1 = 2 "
+     "under a load at 1 − M_R = 0.5, 10⁻⁴, 10⁻¹² (and 10⁻¹⁰⁰⁰ at 256 bits); and J0 alone at the "
+     "10⁻⁴ case's k by `approach_integral` (what the solve uses) and by `contact_integrals` (the "
+     "adaptive route's five integrals)."),
     ("graded", "The graded route for k ≥ 1 (`benches/graded.rs`)",
      "I1, I2 and their k-derivatives in one call (layout and evaluation), ν = 0.2."),
     ("fast", "The fixed rule for k ≤ 1 (`benches/fast_integrals.rs`, group `fast`)",

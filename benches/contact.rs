@@ -1,0 +1,69 @@
+//! The full contact solution (`ContactProblem::solve`: the ellipse (33), J0 of (32), then a, b,
+//! p0, d0 in closed form) per precision, ν = 0.3, R2/R1 = 2 (A1/B1 = 2, k < 1), under a load, at
+//! 1 − M_R = 0.5, 10⁻⁴ and 10⁻¹²; and J0 alone at the k of the 10⁻⁴ case by
+//! `routes::direct::approach_integral` (both peaks in closed form, what the solve uses) and by
+//! `routes::direct::contact_integrals` (with I1, I2 and their k-derivatives, the adaptive route).
+//! At MPFR 256 bits also the solve at 1 − M_R = 10⁻¹⁰⁰⁰ (k ≈ 10⁻²⁵⁰).
+//!
+//! Run: `cargo bench --bench contact -- --warm-up-time 1 --measurement-time 3`
+
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use moving_hertz::routes::{direct, AxisRatio};
+use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
+use moving_hertz::{ContactProblem, Loading, Material, Options};
+
+fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, gaps: &[&str]) {
+    let mut g = c.benchmark_group(format!("contact/{label}"));
+    if T::bits(p) > 200 {
+        g.sample_size(10);
+    }
+    let x = |s: &str| T::parse(s, p).expect("number");
+    let mat = Material::new(x("0.3")).expect("material");
+    for gap in gaps {
+        let problem = ContactProblem {
+            speed: mat.parse_gap(gap).expect("speed"),
+            radius_along: x("0.05"),
+            radius_across: x("0.1"),
+            loading: Loading::Load(x("1000")),
+            shear_modulus: x("80e9"),
+        };
+        let opts = Options::default();
+        g.bench_function(format!("solve_gap={gap}"), |b| {
+            b.iter(|| black_box(&problem).solve(&opts))
+        });
+    }
+    let speed = mat.parse_gap("1e-4").expect("speed");
+    let problem = ContactProblem {
+        speed: speed.clone(),
+        radius_along: x("0.05"),
+        radius_across: x("0.1"),
+        loading: Loading::Load(x("1000")),
+        shear_modulus: x("80e9"),
+    };
+    let k = problem
+        .solve(&Options::default())
+        .expect("solve")
+        .ellipse
+        .k
+        .value;
+    let axes = AxisRatio::new(k).expect("k");
+    let zero = T::zero(p);
+    g.bench_function("j0_gap=1e-4/approach_integral", |b| {
+        b.iter(|| direct::approach_integral(black_box(&speed), black_box(&axes), &zero))
+    });
+    g.bench_function("j0_gap=1e-4/contact_integrals", |b| {
+        b.iter(|| direct::contact_integrals(black_box(&speed), black_box(&axes), &zero))
+    });
+    g.finish();
+}
+
+fn bench(c: &mut Criterion) {
+    let gaps = ["0.5", "1e-4", "1e-12"];
+    run::<f64>(c, "f64", (), &gaps);
+    run::<Dd>(c, "dd", (), &gaps);
+    let p = MpPrec::new(256).expect("precision");
+    run::<Mp>(c, "mpfr256", p, &["0.5", "1e-4", "1e-12", "1e-1000"]);
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
