@@ -92,8 +92,8 @@ S_CASES = [("0.5", "0.6"), ("0.875", "0.3125"), ("0.9999847412109375", "0.0625")
 
 J0_CASES = [
     # nu, gap = 1 - M_R, k (exact binary fractions), chosen on both sides of the crate's
-    # thresholds: eps <= 1/2 and k eps <= 1/2 (the pole at phi = pi/2 taken out), k <= 1/2 (the
-    # peak at phi = 0 taken out), k^2 against the working epsilon (the kink graded about)
+    # thresholds: eps <= 1/2 and k eps <= 1/2 (the pole at phi = pi/2 taken out), k^2 against
+    # the working epsilon at f64, double-double and 128 bits (the peak at phi = 0 taken out)
     ("0.25", "0.5", "0.5"),
     ("0.25", "1", "0.25"),
     ("0.25", "0.125", "0.625"),
