@@ -196,7 +196,7 @@ fn closed_form_52_and_the_quoted_derivative_rules() {
 /// J0 of (32) against mpmath's quadrature in φ (tests/data/j0_mpmath.csv, tools/gen_integrals.py
 /// --j0, 40 digits): `approach_integral` (both peaks taken out in closed form where they are
 /// near) and the J0 of `contact_integrals` (the pole taken out, the k-peak graded), on cases on
-/// both sides of each threshold (ε ≤ 1/2 and kε ≤ 1/2; k ≤ 1/2; k² against ε of the working
+/// both sides of each threshold (ε ≤ 1/2 and kε ≤ 1/2; k² against ε of the working
 /// precision), 1 − M_R from 1 to 2⁻¹²⁰ and k from 2⁻²⁰⁰ to 1000: within 16ε and within the
 /// reported bounds.
 fn j0_against_mpmath<T: Real>(p: T::Prec, label: &str) {
@@ -304,8 +304,9 @@ fn j0_far_below_the_f64_range() {
 }
 
 /// `IntegralOptions::j0` with every method: J0 (by `approach_integral` after the route) within
-/// 16ε of mpmath and of its bound, and I1, I2 exactly those of the same call without J0, at
-/// `f64` and double-double.
+/// 16ε of mpmath and of its bound, and I1, I2 exactly those of the same call without J0 (which
+/// returns no J0, nor does the adaptive route with derivatives alone), at `f64` and
+/// double-double.
 fn j0_by_every_method<T: Real>(p: T::Prec, label: &str) {
     use moving_hertz::{integrals, IntegralOptions, Method};
     for r in read_csv("j0_mpmath.csv") {
@@ -314,6 +315,16 @@ fn j0_by_every_method<T: Real>(p: T::Prec, label: &str) {
         let k = T::parse(&r[2], p).unwrap();
         let want = reference(&r[3]);
         let gap: f64 = r[1].parse().unwrap();
+        let dk_only = IntegralOptions {
+            method: Method::Adaptive,
+            derivatives: true,
+            ..Default::default()
+        };
+        let d = integrals(&sp, &k, &dk_only).unwrap();
+        assert!(
+            d.di1_dk.is_some() && d.j0.is_none(),
+            "{label}: J0 returned unasked"
+        );
         let mut methods = vec![Method::Auto, Method::Adaptive, Method::Fixed];
         if k <= T::one(p) {
             methods.push(Method::AdaptiveSubtracted);
@@ -335,6 +346,7 @@ fn j0_by_every_method<T: Real>(p: T::Prec, label: &str) {
                 "{at}: I1, I2 changed"
             );
             let j = a.j0.unwrap_or_else(|| panic!("{at}: no J0"));
+            assert!(b.j0.is_none(), "{at}: J0 returned unasked");
             let e = rel_eps(&j.value, &want);
             let est = j.error.to_f64() / T::epsilon(p).to_f64();
             assert!(

@@ -133,9 +133,14 @@ impl<T: Real> Evaluator<T> {
 
     /// J0 of (32) added to a route's result that lacks it, when asked for: by
     /// [`direct::approach_integral`] (both its peaks in closed form) to the same tolerance; its
-    /// bound joins the k-derivatives' (`extra_error`, the larger of the two).
+    /// bound joins the k-derivatives' (`extra_error`, the larger of the two). Dropped when not
+    /// asked for (the adaptive route computes it with the derivatives).
     fn with_j0(&self, mut r: Evaluation<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-        if !self.opts.j0 || r.j0.is_some() {
+        if !self.opts.j0 {
+            r.j0 = None;
+            return Ok(r);
+        }
+        if r.j0.is_some() {
             return Ok(r);
         }
         let p = axes.k.prec();
