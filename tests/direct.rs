@@ -362,3 +362,42 @@ fn j0_with_every_method() {
     j0_by_every_method::<f64>((), "f64");
     j0_by_every_method::<moving_hertz::scalar::Dd>((), "dd");
 }
+
+/// The plain adaptive route (`quadrature`) far below the f64 range: with the left half's pole
+/// in closed form its work does not depend on 1 − M_R (the same evaluations at 10⁻¹⁰⁰⁰ and
+/// 10⁻¹⁰⁰⁰⁰⁰; graded about ε it needed some 10⁶ at 10⁻³⁰⁰⁰), and I1, I2 agree with the fixed
+/// rules (an independent route) within the two bounds, at 256 bits.
+#[test]
+fn plain_quadrature_far_below_the_f64_range() {
+    use moving_hertz::{integrals, IntegralOptions, Method};
+    let p = common::mp(256);
+    let eps = Mp::epsilon(p).to_f64();
+    let fixed = IntegralOptions {
+        method: Method::Fixed,
+        ..Default::default()
+    };
+    for (nu, k) in [("0.25", "0.5"), ("-0.5", "1e-3"), ("0", "7")] {
+        let mut work = vec![];
+        for gap in ["1e-1000", "1e-100000"] {
+            let mat = Material::new(Mp::parse(nu, p).unwrap()).unwrap();
+            let sp = mat.parse_gap(gap).unwrap();
+            let kk = Mp::parse(k, p).unwrap();
+            let ax = AxisRatio::new(kk.clone()).unwrap();
+            let q = direct::quadrature(&sp, &ax, &Mp::zero(p)).unwrap();
+            let f = integrals(&sp, &kk, &fixed).unwrap();
+            for (name, a, b, eb) in [
+                ("I1", &q.i1, &f.i1.value, f.i1.error.to_f64()),
+                ("I2", &q.i2, &f.i2.value, f.i2.error.to_f64()),
+            ] {
+                let d = ((a.clone() - b) / b).abs().to_f64();
+                let allowed = q.error_estimate.to_f64() + eb;
+                assert!(
+                    allowed < 100.0 * eps && d <= allowed,
+                    "nu={nu} k={k} gap={gap} {name}: {d:e} > {allowed:e}"
+                );
+            }
+            work.push(q.work);
+        }
+        assert_eq!(work[0], work[1], "nu={nu} k={k}: work depends on the gap");
+    }
+}
