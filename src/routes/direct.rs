@@ -216,9 +216,9 @@ impl<T: Real> DirectSetup<T> {
             m3k.clone() * &s0 * &s0 * &phi5,
             m3k * &s0 * phi5,
         ];
-        let values = kernels.map(|c| c * &b0);
-        // ∫_0^1 dw/(w² + ε²) = atan(1/ε)/ε.
+        // n_c(s0)·∫_0^1 dw/(w² + ε²), the integral being atan(1/ε)/ε.
         let pole_integral = one.clone().atan2(&self.eps) / &self.eps;
+        let parts = kernels.map(|c| c * &b0 * &pole_integral);
         Some(LeftPole {
             s0,
             u0,
@@ -226,8 +226,7 @@ impl<T: Real> DirectSetup<T> {
             b0,
             g1,
             one,
-            values,
-            pole_integral,
+            parts,
         })
     }
 
@@ -360,7 +359,7 @@ struct RightPeak<T: Real> {
 }
 
 /// The left half's pole at w = iε (s0 = −ε², where t = 1): the constants of
-/// [`DirectSetup::left_divided`], the numerators n_c(s0) and ∫_0^1 dw/(w² + ε²).
+/// [`DirectSetup::left_divided`], and the closed-form parts n_c(s0)·∫_0^1 dw/(w² + ε²).
 struct LeftPole<T: Real> {
     s0: T,
     /// u0 = 1 − k²ε² and its square root.
@@ -371,8 +370,7 @@ struct LeftPole<T: Real> {
     /// G(1).
     g1: T,
     one: T,
-    values: [T; 5],
-    pole_integral: T,
+    parts: [T; 5],
 }
 
 /// Work limits for the direct route: the Gauss–Legendre rule size follows the accuracy asked
@@ -490,7 +488,7 @@ fn left_pair_without_pole<T: Real>(
         let [d0, d1, ..] = s.left_divided(pole, w);
         [d0, d1]
     };
-    let parts = [0, 1].map(|c| pole.values[c].clone() * &pole.pole_integral);
+    let parts = [pole.parts[0].clone(), pole.parts[1].clone()];
     let pts = s.breakpoints(&s.left_scales(true));
     let v = integrate_vec_plus(f, &pts, &parts, tol, lim)?;
     let ([v0, v1], [e0, e1]) = (v.values, v.errors);
@@ -623,9 +621,8 @@ pub fn contact_integrals<T: Real>(
     let l = match s.left_pole() {
         Some(pole) => {
             let div = |w: &T| s.left_divided(&pole, w);
-            let parts = pole.values.clone().map(|n0| n0 * &pole.pole_integral);
             let pts = s.breakpoints(&s.left_scales(true));
-            integrate_vec_plus(div, &pts, &parts, &t4, lim)?
+            integrate_vec_plus(div, &pts, &pole.parts, &t4, lim)?
         }
         None => integrate_vec(left, &s.breakpoints(&s.left_scales(false)), &t4, lim)?,
     };
@@ -694,9 +691,8 @@ pub fn approach_integral<T: Real>(
                 let (_, db, phi, dphi) = s.left_pole_parts(&pole, w);
                 db * &phi[0] + pole.b0.clone() * &dphi[0]
             };
-            let part = pole.values[2].clone() * &pole.pole_integral;
             let pts = s.breakpoints(&s.left_scales(true));
-            integrate_plus(f, &pts, &part, &half, lim)?
+            integrate_plus(f, &pts, &pole.parts[2], &half, lim)?
         }
         None => {
             let f = |w: &T| {
