@@ -666,7 +666,7 @@ pub fn contact_integrals<T: Real>(
 /// ```
 ///
 /// n = B u^{−1/2}. Both remainders are formed without cancellation
-/// ([`DirectSetup::left_pole_parts`], [`DirectSetup::right_divided`]). The left one is
+/// (`DirectSetup::left_pole_parts`, `DirectSetup::right_divided`). The left one is
 /// analytic in |Im w| < min(1/k, δ), δ ≥ 0.3 the distance of G's branch points; the right one
 /// keeps a kink √(v² + k²) whose effect, about k² ln(1/k), is below the working ε. Where
 /// k² ≥ ε the right half is the plain integrand on panels graded about k.
