@@ -6,21 +6,25 @@
 //!
 //! Each timed call runs on a thread of a pool of that many threads (the independent solves on
 //! the one-thread pool); the hand-off from the bench's thread to the pool is outside the timing
-//! (but for `two_sweeps_at_once`, which hands one sweep to each of two one-thread pools).
+//! (but for `two_sweeps_at_once`, which hands one sweep to each of two one-thread pools). The
+//! pools' threads are bound to CPUs (`sweep::bind_to_cpu`: the one-thread pool's to the first,
+//! the two-thread pool's to the first two, `two_sweeps_at_once`'s second pool's to the second),
+//! as the `moving-hertz` binary binds them; `sweep_2_threads_unbound` runs the two-thread sweep
+//! on a pool left to the operating system's placement.
 //! What that hand-off adds to a sweep called from outside the pool, once per call, is
 //! `sweep_1_thread_from_outside` (`install` around each call).
 //!
 //! **Paired ratios.** This machine's speed drifts by tens of per cent within seconds, so that a
-//! ratio of two medians measured seconds apart is unreliable. `independent`, `sweep_2_threads`
-//! and `two_sweeps_at_once` therefore alternate each timed call with a call of the one-thread
-//! sweep (not counted in their time), and each sample records the ratio of the two totals:
-//! `sweep_1_thread / independent`, `sweep_2_threads / sweep_1_thread` and
-//! `two_sweeps_at_once / (2 × sweep_1_thread)`. `two_sweeps_at_once` runs two one-thread sweeps
-//! at the same time, each on a thread of its own: its ratio is the best a two-thread sweep can
-//! reach on this machine (0.5 when the two cores are independent; more when they share a
-//! physical core or the host is busy). The bench writes the samples' ratios to
-//! `target/criterion/sweep_paired.json`, which tools/gen_performance.py reads (the median of
-//! each list).
+//! ratio of two medians measured seconds apart is unreliable. `independent`, `sweep_2_threads`,
+//! `sweep_2_threads_unbound` and `two_sweeps_at_once` therefore alternate each timed call with
+//! a call of the one-thread sweep (not counted in their time), and each sample records the
+//! ratio of the two totals: `sweep_1_thread / independent`, `sweep_2_threads / sweep_1_thread`
+//! (the same for `sweep_2_threads_unbound`) and `two_sweeps_at_once / (2 × sweep_1_thread)`.
+//! `two_sweeps_at_once` runs two one-thread sweeps at the same time, each on a thread of its
+//! own: its ratio is the best a two-thread sweep can reach on this machine (0.5 when the two
+//! cores are independent; more when they share a physical core or the host is busy). The bench
+//! writes the samples' ratios to `target/criterion/sweep_paired.json`, which
+//! tools/gen_performance.py reads (the median of each list).
 //!
 //! Run: `cargo bench --bench sweep -- --warm-up-time 1 --measurement-time 3`
 
@@ -61,13 +65,20 @@ fn run<T: Real + Send + Sync>(c: &mut Criterion, label: &str, p: T::Prec) {
         .and_then(|m| m.speed(x(0.9)))
         .expect("speed");
     let opts = Options::default();
-    let pool = |threads| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .expect("thread pool")
+    // Pools whose thread i is bound to CPU `first + i` (of those the bench may run on), or
+    // unbound.
+    let pool = |threads, first: Option<usize>| {
+        let b = rayon::ThreadPoolBuilder::new().num_threads(threads);
+        let b = match first {
+            Some(first) => b.start_handler(move |i| {
+                sweep::bind_to_cpu(first + i);
+            }),
+            None => b,
+        };
+        b.build().expect("thread pool")
     };
-    let (one, two, other_one) = (pool(1), pool(2), pool(1));
+    let (one, two, other_one) = (pool(1, Some(0)), pool(2, Some(0)), pool(1, Some(1)));
+    let two_unbound = pool(2, None);
     let sweep = || {
         black_box(sweep::ellipses(black_box(&points), &opts));
     };
@@ -81,6 +92,7 @@ fn run<T: Real + Send + Sync>(c: &mut Criterion, label: &str, p: T::Prec) {
         })
     };
     let two_threads = || on(&two, sweep);
+    let two_threads_unbound = || on(&two_unbound, sweep);
     let at_once = || {
         let t = Instant::now();
         other_one.in_place_scope(|s| {
@@ -90,9 +102,10 @@ fn run<T: Real + Send + Sync>(c: &mut Criterion, label: &str, p: T::Prec) {
         t.elapsed()
     };
     // (bench, its timed call, the divisor of its paired ratio's one-thread total)
-    let paired: [(&'static str, &dyn Fn() -> Duration, f64); 3] = [
+    let paired: [(&'static str, &dyn Fn() -> Duration, f64); 4] = [
         ("independent", &independent, 1.0),
         ("sweep_2_threads", &two_threads, 1.0),
+        ("sweep_2_threads_unbound", &two_threads_unbound, 1.0),
         ("two_sweeps_at_once", &at_once, 2.0),
     ];
     for (name, timed, twice) in paired {

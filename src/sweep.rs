@@ -4,13 +4,13 @@
 //! fails the others).
 //!
 //! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points; the
-//! blocks run in parallel (with `rayon`, each block a job of its own, on its global pool or the
-//! pool the caller installs), the points of a block one after another; a sweep of one block
-//! runs on the calling thread (above 448 bits its solves then run their node loops on every
-//! core, as [`crate::solve_ellipse`] does; in a block on a pool thread they stay on that
-//! thread). A sweep of several blocks called from a thread outside the pool hands the work to
-//! the pool's threads and waits; the cost of that hand-off, once per call, is the `sweep`
-//! bench's `sweep_1_thread_from_outside` (docs/performance.md).
+//! blocks run in parallel (with `rayon`, on its global pool or the pool the caller installs:
+//! every thread of the pool takes the next unsolved block until none is left), the points of a
+//! block one after another; a sweep of one block runs on the calling thread (above 448 bits its
+//! solves then run their node loops on every core, as [`crate::solve_ellipse`] does; in a block
+//! on a pool thread they stay on that thread). A sweep of several blocks called from a thread
+//! outside the pool hands the work to the pool's threads and waits; the cost of that hand-off,
+//! once per call, is the `sweep` bench's `sweep_1_thread_from_outside` (docs/performance.md).
 //! Within a block, consecutive points at the same speed share the fixed rules' set-up (the
 //! Green's function at every node, at each stage of the precision ladder), and each root starts
 //! from its neighbours' (continuation): the lowest stage of the ladder starts from the
@@ -18,6 +18,13 @@
 //! one A1/B1), of up to four earlier roots of the block, and from the static ellipse when that
 //! does not converge within a few evaluations. The higher stages run as in
 //! [`crate::solve_ellipse`], so that the ladder's accuracy is unchanged.
+//!
+//! **Threads bound to CPUs.** The operating system may run two threads of a pool on one CPU
+//! for milliseconds while another CPU idles, so that a sweep of a few milliseconds gains
+//! nothing from the second thread. A pool whose threads are bound to distinct CPUs
+//! ([`bind_to_cpu`]; the `moving-hertz` binary builds its pool so) does not depend on that
+//! placement. The `sweep` bench measures both (docs/performance.md: `sweep_2_threads` and
+//! `sweep_2_threads_unbound`).
 //!
 //! **Reproducibility.** A point's result depends only on its block (never on the number of
 //! threads): a sweep gives the same bits on one thread and on many, and a sweep split at
@@ -48,7 +55,7 @@ use crate::estimate::RelError;
 use crate::physics::{Material, Speed};
 use crate::routes::{Evaluator, IntegralOptions, Integrals};
 use crate::scalar::Real;
-use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// The points of one block: solved one after another, sharing set-ups and continuation (module
 /// docs); blocks run in parallel.
@@ -168,27 +175,88 @@ where
     })
 }
 
-/// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
-/// share of the output (no copy of the results after the solves). Each block is a job of its
-/// own (`with_max_len(1)`): blocks differ in cost (near the Rayleigh speed, at large k), and
-/// rayon's default split hands each thread a few large pieces, so that one thread can sit idle
-/// while the other finishes its last piece. A single block runs on the calling thread: there
-/// its solves may put their node loops on every core (above 448 bits, `numerics::shares`),
-/// which they never do on a thread of the pool.
+/// Runs `solve_block` on the blocks of `items` in parallel and returns the results in input
+/// order. Every thread of the pool runs a copy of the loop (`rayon::broadcast`: the caller
+/// wakes them all at once), and each copy takes the next unsolved block from a shared counter
+/// until none is left, so that the threads finish within one block of each other whatever the
+/// blocks cost (they differ near the Rayleigh speed and at large k) and a thread that starts
+/// late only takes fewer blocks. A single block runs on the calling thread: there its solves
+/// may put their node loops on every core (above 448 bits, `numerics::shares`), which they
+/// never do on a thread of the pool.
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
     solve_block: impl Fn(&[I], &mut [Result<R>]) + Sync + Send,
 ) -> Vec<Result<R>> {
-    let mut out: Vec<Result<R>> = (0..items.len()).map(|_| Err(unsolved())).collect();
+    let fresh = |n: usize| -> Vec<Result<R>> { (0..n).map(|_| Err(unsolved())).collect() };
     if items.len() <= BLOCK {
+        let mut out = fresh(items.len());
         solve_block(items, &mut out);
         return out;
     }
-    out.par_chunks_mut(BLOCK)
-        .zip(items.par_chunks(BLOCK))
-        .with_max_len(1)
-        .for_each(|(slots, block)| solve_block(block, slots));
-    out
+    let blocks: Vec<&[I]> = items.chunks(BLOCK).collect();
+    let next = AtomicUsize::new(0);
+    let per_thread = rayon::broadcast(|_| {
+        let mut mine = Vec::new();
+        loop {
+            let b = next.fetch_add(1, Ordering::Relaxed);
+            let Some(&block) = blocks.get(b) else {
+                return mine;
+            };
+            let mut out = fresh(block.len());
+            solve_block(block, &mut out);
+            mine.push((b, out));
+        }
+    });
+    let mut solved: Vec<_> = per_thread.into_iter().flatten().collect();
+    solved.sort_by_key(|&(b, _)| b);
+    solved.into_iter().flat_map(|(_, out)| out).collect()
+}
+
+/// Binds the calling thread to the `index`-th (from 0) of the CPUs it may run on now, and
+/// returns whether it did: `false` when there is no such CPU, when the operating system refuses,
+/// and on systems other than Linux. Meant for a pool's start handler, so that each thread of a
+/// pool of at most as many threads as CPUs runs on a CPU of its own (module docs):
+///
+/// ```
+/// let pool = rayon::ThreadPoolBuilder::new()
+///     .num_threads(2)
+///     .start_handler(|i| {
+///         moving_hertz::sweep::bind_to_cpu(i);
+///     })
+///     .build()
+///     .expect("a pool of two threads");
+/// # let _ = pool;
+/// ```
+///
+/// A thread keeps its binding for life, and threads it starts inherit it; a pool with more
+/// threads than CPUs should not bind (its extra threads would find no CPU of their own).
+/// Implements no equation of the paper.
+pub fn bind_to_cpu(index: usize) -> bool {
+    #[cfg(target_os = "linux")]
+    {
+        // SAFETY: `cpu_set_t` is a plain bit array, valid when zeroed; both calls read or write
+        // exactly `size_of::<cpu_set_t>()` bytes of the set they are given, and pid 0 names the
+        // calling thread.
+        unsafe {
+            let size = std::mem::size_of::<libc::cpu_set_t>();
+            let mut allowed: libc::cpu_set_t = std::mem::zeroed();
+            if libc::sched_getaffinity(0, size, &mut allowed) != 0 {
+                return false;
+            }
+            let cpus = 0..libc::CPU_SETSIZE as usize;
+            let Some(cpu) = cpus.filter(|&c| libc::CPU_ISSET(c, &allowed)).nth(index) else {
+                return false;
+            };
+            let mut one: libc::cpu_set_t = std::mem::zeroed();
+            libc::CPU_SET(cpu, &mut one);
+            libc::sched_setaffinity(0, size, &one) == 0
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        let _ = index;
+        false
+    }
 }
 
 /// The placeholder of a result before its block writes it (every block writes each of its

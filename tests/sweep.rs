@@ -114,12 +114,21 @@ fn on_threads<R: Send>(n: usize, f: impl FnOnce() -> R + Send) -> R {
         .install(f)
 }
 
-/// The same results on 1 and 4 threads, and from a sweep split at a multiple of [`BLOCK`].
+/// The same results on 1 and 4 threads, on 2 threads bound to CPUs, and from a sweep split at
+/// a multiple of [`BLOCK`].
 fn check_reproducible<T: Real + Send + Sync>(pts: &[EllipsePoint<T>]) {
     let opts = Options::default();
     let one = bits(&on_threads(1, || sweep::ellipses(pts, &opts)));
     let four = bits(&on_threads(4, || sweep::ellipses(pts, &opts)));
     assert_eq!(one, four);
+    let bound = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .start_handler(|i| {
+            sweep::bind_to_cpu(i);
+        })
+        .build()
+        .unwrap();
+    assert_eq!(one, bits(&bound.install(|| sweep::ellipses(pts, &opts))));
     let cut = 2 * BLOCK;
     let mut split = bits(&sweep::ellipses(&pts[..cut], &opts));
     split.extend(bits(&sweep::ellipses(&pts[cut..], &opts)));
@@ -132,6 +141,27 @@ fn same_bits_on_one_and_four_threads() {
     check_reproducible(&grid::<Dd>((), 12, 5.0));
     let p = MpPrec::new(256).unwrap();
     check_reproducible(&grid::<Mp>(p, 20, 2.0)[..3 * BLOCK]);
+}
+
+/// `bind_to_cpu` leaves a thread on one CPU (the standard library's count of the CPUs a thread
+/// may run on reads the same affinity mask), and refuses an index past the CPUs.
+#[test]
+fn bind_to_cpu_leaves_one_cpu() {
+    let (bound, after, past) = std::thread::spawn(|| {
+        let past = sweep::bind_to_cpu(usize::MAX);
+        let bound = sweep::bind_to_cpu(0);
+        let after = std::thread::available_parallelism().map_or(0, |n| n.get());
+        (bound, after, past)
+    })
+    .join()
+    .unwrap();
+    assert!(!past);
+    if cfg!(target_os = "linux") {
+        assert!(bound);
+        assert_eq!(after, 1);
+    } else {
+        assert!(!bound);
+    }
 }
 
 /// A sweep of one block runs on the caller's thread, where above 448 bits its solves put their

@@ -97,12 +97,14 @@ FAMILIES = [
     ("sweep", "Sweeps (`benches/sweep.rs`)",
      "A 1,000-point A1/B1 curve (10⁻³ … 10³, log-spaced) at ν = 0.25, M_R = 0.9: one "
      "`solve_ellipse` a point (`independent`), `sweep::ellipses` on one and on two threads; each "
-     "timed call runs on a thread of a pool of that size. `sweep_1_thread_from_outside` calls the "
+     "timed call runs on a thread of a pool of that size, its threads bound to CPUs "
+     "(`sweep::bind_to_cpu`, as the binary binds them); `sweep_2_threads_unbound` runs the "
+     "two-thread sweep on threads the operating system places. `sweep_1_thread_from_outside` calls the "
      "one-thread sweep from the bench's own thread (`install` around each call): the difference "
      "from `sweep_1_thread` is the hand-off to the pool, once per call. `two_sweeps_at_once` runs "
      "two one-thread sweeps at the same time on two threads (the wall time of both). The targets "
-     "above use ratios paired call by call: `independent`, `sweep_2_threads` and "
-     "`two_sweeps_at_once` alternate each timed call with a one-thread sweep, and each sample "
+     "above use ratios paired call by call: `independent`, `sweep_2_threads`, "
+     "`sweep_2_threads_unbound` and `two_sweeps_at_once` alternate each timed call with a one-thread sweep, and each sample "
      "gives the ratio of the two (the median over samples is quoted); two one-thread sweeps at "
      "once, over twice one alone, is the best ratio two threads can reach on the machine of the "
      "run (0.5 on two independent cores)."),
@@ -302,6 +304,9 @@ def sweep_targets(cells):
             r, h = measured(prec, "sweep_2_threads", lambda: two[prec] / one[prec])
             best = pair.get(prec, {}).get("two_sweeps_at_once")
             ceiling = f"; two one-thread sweeps at once: {best:.2f}" if best is not None else ""
+            free = pair.get(prec, {}).get("sweep_2_threads_unbound")
+            if free is not None:
+                ceiling = f" (threads bound to CPUs; unbound: {free:.2f}){ceiling}"
             rows.append((f"the same curve at {prec} on two threads: ≤ {T_SWEEP_THREADS} × one thread",
                          f"{r:.2f}{h}{ceiling}", "yes" if r <= T_SWEEP_THREADS else "**no**"))
     return rows

@@ -165,7 +165,30 @@ pub fn main() -> i32 {
     }
 }
 
+/// Builds `rayon`'s global pool, which runs the sweeps' blocks, with one thread per CPU the
+/// process may run on, each bound to its own (`moving_hertz::sweep::bind_to_cpu`; see
+/// `moving_hertz::sweep` for why). When `RAYON_NUM_THREADS` sets the pool's size, rayon builds
+/// it as usual, unbound.
+fn bind_global_pool() {
+    if std::env::var_os("RAYON_NUM_THREADS").is_some() {
+        return;
+    }
+    // An error means the pool exists already, or that its threads cannot be started (rayon
+    // then tries again, unbound, on first use).
+    let _ = rayon::ThreadPoolBuilder::new()
+        .start_handler(|i| {
+            moving_hertz::sweep::bind_to_cpu(i);
+        })
+        .build_global();
+}
+
 fn run(command: Command) -> Result<(), CliError> {
+    if matches!(
+        command,
+        Command::Fig2(_) | Command::Study(_) | Command::Sweep(_)
+    ) {
+        bind_global_pool();
+    }
     match command {
         Command::Fig2(a) => fig2::run(&a),
         Command::Rayleigh(a) => rayleigh::run(&a),
