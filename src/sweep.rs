@@ -56,6 +56,7 @@ use crate::physics::{Material, Speed};
 use crate::routes::{Evaluator, IntegralOptions, Integrals};
 use crate::scalar::Real;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
 /// The points of one block: solved one after another, sharing set-ups and continuation (module
 /// docs); blocks run in parallel.
@@ -175,41 +176,37 @@ where
     })
 }
 
-/// Runs `solve_block` on the blocks of `items` in parallel and returns the results in input
-/// order. Every thread of the pool runs a copy of the loop (`rayon::broadcast`: the caller
-/// wakes them all at once), and each copy takes the next unsolved block from a shared counter
-/// until none is left, so that the threads finish within one block of each other whatever the
-/// blocks cost (they differ near the Rayleigh speed and at large k) and a thread that starts
-/// late only takes fewer blocks. A single block runs on the calling thread: there its solves
-/// may put their node loops on every core (above 448 bits, `numerics::shares`), which they
-/// never do on a thread of the pool.
+/// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
+/// share of the output (no copy of the results after the solves). Every thread of the pool
+/// runs a copy of the loop (`rayon::broadcast`: the caller wakes them all at once), and each
+/// copy takes the next unsolved block from a shared counter until none is left, so that the
+/// threads finish within one block of each other whatever the blocks cost (they differ near the
+/// Rayleigh speed and at large k) and a thread that starts late only takes fewer blocks. A
+/// single block runs on the calling thread: there its solves may put their node loops on every
+/// core (above 448 bits, `numerics::shares`), which they never do on a thread of the pool.
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
     solve_block: impl Fn(&[I], &mut [Result<R>]) + Sync + Send,
 ) -> Vec<Result<R>> {
-    let fresh = |n: usize| -> Vec<Result<R>> { (0..n).map(|_| Err(unsolved())).collect() };
+    let mut out: Vec<Result<R>> = (0..items.len()).map(|_| Err(unsolved())).collect();
     if items.len() <= BLOCK {
-        let mut out = fresh(items.len());
         solve_block(items, &mut out);
         return out;
     }
-    let blocks: Vec<&[I]> = items.chunks(BLOCK).collect();
+    // Each share is taken by one thread only (the counter hands each index out once), so that
+    // its lock is never contended: it only lets the threads hold disjoint `&mut` shares.
+    let shares: Vec<_> = out.chunks_mut(BLOCK).map(Mutex::new).collect();
     let next = AtomicUsize::new(0);
-    let per_thread = rayon::broadcast(|_| {
-        let mut mine = Vec::new();
-        loop {
-            let b = next.fetch_add(1, Ordering::Relaxed);
-            let Some(&block) = blocks.get(b) else {
-                return mine;
-            };
-            let mut out = fresh(block.len());
-            solve_block(block, &mut out);
-            mine.push((b, out));
-        }
+    rayon::broadcast(|_| loop {
+        let b = next.fetch_add(1, Ordering::Relaxed);
+        let Some(share) = shares.get(b) else {
+            break;
+        };
+        let block = &items[b * BLOCK..(b * BLOCK + BLOCK).min(items.len())];
+        solve_block(block, &mut share.lock().unwrap_or_else(|e| e.into_inner()));
     });
-    let mut solved: Vec<_> = per_thread.into_iter().flatten().collect();
-    solved.sort_by_key(|&(b, _)| b);
-    solved.into_iter().flat_map(|(_, out)| out).collect()
+    drop(shares);
+    out
 }
 
 /// Binds the calling thread to the `index`-th (from 0) of the CPUs it may run on now, and
