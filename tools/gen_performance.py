@@ -305,8 +305,8 @@ def sweep_targets(cells):
             best = pair.get(prec, {}).get("two_sweeps_at_once")
             ceiling = f"; two one-thread sweeps at once: {best:.2f}" if best is not None else ""
             free = pair.get(prec, {}).get("sweep_2_threads_unbound")
-            if free is not None:
-                ceiling = f" (threads bound to CPUs; unbound: {free:.2f}){ceiling}"
+            if free is not None and h:
+                h = f" (paired, threads bound to CPUs; unbound: {free:.2f})"
             rows.append((f"the same curve at {prec} on two threads: ≤ {T_SWEEP_THREADS} × one thread",
                          f"{r:.2f}{h}{ceiling}", "yes" if r <= T_SWEEP_THREADS else "**no**"))
     return rows
