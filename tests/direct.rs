@@ -401,3 +401,62 @@ fn plain_quadrature_far_below_the_f64_range() {
         assert_eq!(work[0], work[1], "nu={nu} k={k}: work depends on the gap");
     }
 }
+
+/// k far beyond the fixed rules (2^180) at 256 bits: the adaptive route's panels about 1/k grow
+/// like log k, and beyond about |log2 k| = 4.4·10⁵/(bits/4 + 8) (about 6150 at 256 bits) their first
+/// pass alone would take a third of the evaluation cap — refused as a domain error naming k
+/// before any evaluation, for I1, I2 (every method that takes k > 2^180) on both sides of k = 1
+/// and for J0 at k > 1 (at k < 1 its k-peak is in closed form). Below it the route succeeds, and I2 follows its limit I2 ~ −2Γ(V)/k (the
+/// peak at φ = π/2 alone; the rest is O(ln k/k³)): k·I2 agrees at k = 2^1000 and 2^5900.
+#[test]
+fn huge_k_beyond_the_adaptive_cap_is_refused_before_any_work() {
+    use moving_hertz::{integrals, Error, IntegralOptions, Method};
+    let p = MpPrec::new(256).unwrap();
+    let sp = Material::new(Mp::parse("0.25", p).unwrap())
+        .unwrap()
+        .speed(Mp::parse("0.5", p).unwrap())
+        .unwrap();
+    let one = Mp::one(p);
+    let opts = |method| IntegralOptions {
+        method,
+        ..Default::default()
+    };
+    let refused = |r: moving_hertz::Result<_>| {
+        matches!(
+            r,
+            Err(Error::Domain {
+                name: "axis ratio k for the adaptive route",
+                ..
+            })
+        )
+    };
+    for l in [6300, -6300] {
+        let k = one.clone().mul_pow2(l);
+        assert!(refused(
+            integrals(&sp, &k, &opts(Method::Adaptive)).map(|_| ())
+        ));
+        let axes = AxisRatio::new(k.clone()).unwrap();
+        let tol = Mp::epsilon(p);
+        let j0 = direct::approach_integral(&sp, &axes, &tol);
+        if l > 0 {
+            assert!(refused(j0.map(|_| ())));
+            assert!(refused(integrals(&sp, &k, &opts(Method::Auto)).map(|_| ())));
+        } else {
+            // J0's k-peak is taken out in closed form at k² < ε: no panels about k.
+            assert!(j0.is_ok_and(|j| j.error.to_f64() < 1e-70));
+        }
+    }
+    let k_i2 = |l: i32| {
+        let k = one.clone().mul_pow2(l);
+        let r = integrals(&sp, &k, &opts(Method::Adaptive)).unwrap();
+        assert!(
+            r.i2.error.to_f64() < 1e-70,
+            "2^{l}: I2 bound {}",
+            r.i2.error
+        );
+        r.i2.value * &k
+    };
+    let (a, b) = (k_i2(1000), k_i2(5900));
+    let rel = ((a.clone() - &b) / &a).abs().to_f64();
+    assert!(rel < 1e-70, "k·I2 at 2^1000 and 2^5900 differ by {rel:e}");
+}

@@ -307,10 +307,32 @@ impl<T: Real> DirectSetup<T> {
     }
 
     /// Breakpoints on [0, 1] graded geometrically (ratio 4) about each scale in `scales` that
-    /// lies inside (0, 1).
-    fn breakpoints(&self, scales: &[T]) -> Vec<T> {
+    /// lies inside (0, 1): about log₄(16/scale) panels a scale, each of which the quadrature
+    /// evaluates 3n times before it refines any (n = `lim`'s Gauss order). Where that first pass
+    /// would take more than a third of `lim`'s evaluation cap (the rest for refining), as for
+    /// k or 1/k beyond about 2^(4.4·10⁵/n), [`Error::Domain`] naming k, before any evaluation.
+    fn breakpoints(&self, scales: &[T], lim: Limits) -> Result<Vec<T>> {
         let p = self.k.prec();
         let one = T::one(p);
+        // The panels from the scales' binary exponents, before any is made: at most
+        // (log₂(1/s) + 4)/2 + 1 about each scale s, one more for [0, 1] itself.
+        let panels: f64 = 1.0
+            + scales
+                .iter()
+                .filter(|s| s.is_positive() && **s < one)
+                .map(|s| (4.0 - RelError::of(s).log2()) / 2.0 + 1.0)
+                .sum::<f64>();
+        // The first pass within a third of the cap, the rest left for refining (at 256 bits
+        // the pieces about 1/k took up to 2.1 times their first pass: k = 10²⁷⁰⁰ ran out).
+        let first_pass = panels * (3 * lim.gauss_order(T::bits(p))) as f64;
+        if first_pass > lim.max_evals as f64 / 3.0 {
+            return Err(Error::Domain {
+                name: "axis ratio k for the adaptive route",
+                value: short(&self.k),
+                bound: "|log2 k| < about 4.4e5/(bits/4 + 8) at the working precision (the \
+                        evaluation cap; the fixed rules cover 0 < k <= 2^180)",
+            });
+        }
         let mut pts = vec![T::zero(p), one.clone()];
         for s in scales {
             if !(s.is_positive() && *s < one) {
@@ -325,7 +347,7 @@ impl<T: Real> DirectSetup<T> {
         }
         pts.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
         pts.dedup_by(|a, b| *a == *b);
-        pts
+        Ok(pts)
     }
 
     /// The scales of the left half (w = tan α): ε (unless the pole at iε has been taken out,
@@ -399,7 +421,11 @@ fn limits<T: Real>(tol: &T) -> Limits {
 /// −1 < ν ≤ 1/2; the reported error estimate bounds the true error in the tests. The left half's
 /// Rayleigh pole is taken out in closed form where ε ≤ 1/2 and kε ≤ 1/2 (module docs; else its
 /// panels are graded about ε), so that the work grows like |log k| panels, not with
-/// log(1/(1 − M_R)) (`tests/direct.rs`, to 1 − M_R = 10⁻¹⁰⁰⁰⁰⁰).
+/// log(1/(1 − M_R)) (`tests/direct.rs`, to 1 − M_R = 10⁻¹⁰⁰⁰⁰⁰). Where the panels about k or
+/// 1/k alone would take a third of the evaluation cap (|log₂ k| beyond about
+/// 4.4·10⁵/(bits/4 + 8): about 6150 at 256 bits, 1670 at 1024 bits), [`Error::Domain`] naming k before
+/// any evaluation (the same for [`contact_integrals`], [`approach_integral`] and the subtracted
+/// route).
 pub fn quadrature<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
@@ -419,11 +445,11 @@ fn integrate_halves<T: Real>(
     extra_i2: Option<T>,
 ) -> Result<Evaluation<T>> {
     let p = tol.prec();
-    let lp = s.breakpoints(&s.left_scales(false));
-    let rp = s.breakpoints(&s.right_scales());
+    let lim = limits(tol);
+    let lp = s.breakpoints(&s.left_scales(false), lim)?;
+    let rp = s.breakpoints(&s.right_scales(), lim)?;
     // Each of the four pieces to tol/4 relative to itself; pieces are positive except the
     // subtracted one, whose accuracy is judged against the whole I2 below.
-    let lim = limits(tol);
     let q = |f: &dyn Fn(&T) -> T, pts: &[T]| integrate(f, pts, &tol.clone().div_i64(4), lim);
     let i1r = q(&|v: &T| s.right(v), &rp)?;
     let (i1l, i2l, i2r) = match (subtract, s.left_pole()) {
@@ -489,7 +515,7 @@ fn left_pair_without_pole<T: Real>(
         [d0, d1]
     };
     let parts = [pole.parts[0].clone(), pole.parts[1].clone()];
-    let pts = s.breakpoints(&s.left_scales(true));
+    let pts = s.breakpoints(&s.left_scales(true), lim)?;
     let v = integrate_vec_plus(f, &pts, &parts, tol, lim)?;
     let ([v0, v1], [e0, e1]) = (v.values, v.errors);
     Ok([
@@ -621,12 +647,12 @@ pub fn contact_integrals<T: Real>(
     let l = match s.left_pole() {
         Some(pole) => {
             let div = |w: &T| s.left_divided(&pole, w);
-            let pts = s.breakpoints(&s.left_scales(true));
+            let pts = s.breakpoints(&s.left_scales(true), lim)?;
             integrate_vec_plus(div, &pts, &pole.parts, &t4, lim)?
         }
-        None => integrate_vec(left, &s.breakpoints(&s.left_scales(false)), &t4, lim)?,
+        None => integrate_vec(left, &s.breakpoints(&s.left_scales(false), lim)?, &t4, lim)?,
     };
-    let r = integrate_vec(right, &s.breakpoints(&s.right_scales()), &t4, lim)?;
+    let r = integrate_vec(right, &s.breakpoints(&s.right_scales(), lim)?, &t4, lim)?;
     let v: [T; 5] = std::array::from_fn(|c| l.values[c].clone() + &r.values[c]);
     let mut est = T::zero(p);
     for ((le, re), vc) in l.errors.iter().zip(&r.errors).zip(&v) {
@@ -691,7 +717,7 @@ pub fn approach_integral<T: Real>(
                 let (_, db, phi, dphi) = s.left_pole_parts(&pole, w);
                 db * &phi[0] + pole.b0.clone() * &dphi[0]
             };
-            let pts = s.breakpoints(&s.left_scales(true));
+            let pts = s.breakpoints(&s.left_scales(true), lim)?;
             integrate_plus(f, &pts, &pole.parts[2], &half, lim)?
         }
         None => {
@@ -699,20 +725,20 @@ pub fn approach_integral<T: Real>(
                 let n = s.left_node(w);
                 s.left_factor(&n) / &n[3].clone().sqrt()
             };
-            integrate(f, &s.breakpoints(&s.left_scales(false)), &half, lim)?
+            integrate(f, &s.breakpoints(&s.left_scales(false), lim)?, &half, lim)?
         }
     };
     let right = match s.right_peak() {
         Some(peak) => {
             let f = |v: &T| s.right_divided(&peak, v);
-            integrate_plus(f, &s.breakpoints(&[]), &peak.value, &half, lim)?
+            integrate_plus(f, &s.breakpoints(&[], lim)?, &peak.value, &half, lim)?
         }
         None => {
             let f = |v: &T| {
                 let n = s.right_node(v);
                 s.right_factor(&n) / &n[3].clone().sqrt()
             };
-            integrate(f, &s.breakpoints(&s.right_scales()), &half, lim)?
+            integrate(f, &s.breakpoints(&s.right_scales(), lim)?, &half, lim)?
         }
     };
     let j0 = left.value + &right.value;

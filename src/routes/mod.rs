@@ -135,6 +135,8 @@ pub enum Method {
     /// where the fixed rules do not apply: its work grows with |ln k| and with the sharpness of
     /// G's peak as M_R → 1, so that at MPFR precisions and the ends of the supported ranges an
     /// ellipse solve by it alone can take minutes where [`Method::Auto`] takes milliseconds.
+    /// At MPFR precisions k is bounded by its evaluation cap: |log₂ k| below about
+    /// 4.4·10⁵/(bits/4 + 8) (else [`crate::Error::Domain`] at once; `routes::direct::quadrature`).
     Adaptive,
     /// [`Route::AdaptiveSubtracted`] (k ≤ 1; I1, I2 only).
     AdaptiveSubtracted,
