@@ -226,7 +226,7 @@ impl<T: Real> Material<T> {
             return Err(Error::Domain {
                 name: GAP_NAME,
                 value: format!(
-                    "{} (for the speed {}; below the smallest normal number at {})",
+                    "{} (from the input {}; below the smallest normal number at {})",
                     rug::Float::with_val(64, &gap_exact).to_string_radix(10, Some(6)),
                     text.trim(),
                     Precision::of::<T>(p)
