@@ -226,12 +226,12 @@ impl<T: Real> Material<T> {
             return Err(Error::Domain {
                 name: GAP_NAME,
                 value: format!(
-                    "{} (from the input {}; below the smallest normal number at {})",
+                    "{} (from the input {}, at {})",
                     rug::Float::with_val(64, &gap_exact).to_string_radix(10, Some(6)),
                     text.trim(),
                     Precision::of::<T>(p)
                 ),
-                bound: GAP_BOUND,
+                bound: GAP_NORMAL_BOUND,
             });
         }
         Speed::new(self, m, gap)
@@ -298,6 +298,8 @@ const MR_NAME: &str = "speed M_R = V/c_R";
 const MR_BOUND: &str = "[0, 1) (sub-Rayleigh)";
 const GAP_NAME: &str = "speed gap 1 - M_R";
 const GAP_BOUND: &str = "(0, 1]";
+/// The gap's domain once rounded: it must be a normal number of the working precision.
+const GAP_NORMAL_BOUND: &str = "[the smallest normal number of the working precision, 1]";
 
 /// The rational `r` rounded once to precision `p` (through MPFR with 64 guard bits).
 pub(crate) fn round_rational<T: Real>(r: &Rational, p: T::Prec) -> T {
