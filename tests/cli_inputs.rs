@@ -152,6 +152,17 @@ fn refusals_name_the_option_and_quote_the_value_as_typed() {
         2,
         &["'--gap'", "'0'", "(0, 1]"],
     );
+    // A gap inside (0, 1] that rounds below the working precision's normal numbers: that bound,
+    // not (0, 1].
+    refused(
+        &["integrals", "--nu", "0.2", "--gap", "1e-400", "--k", "0.5"],
+        2,
+        &[
+            "'--gap'",
+            "'1e-400'",
+            "[the smallest normal number of the working precision, 1]",
+        ],
+    );
     // A method the ellipse solve cannot use: the library's refusal, against --method.
     refused(
         &e(&["--nu", "0.2", "--method", "series"]),
