@@ -406,7 +406,8 @@ fn plain_quadrature_far_below_the_f64_range() {
 /// like log k, and beyond about |log2 k| = 4.4·10⁵/(bits/4 + 8) (about 6150 at 256 bits) their first
 /// pass alone would take a third of the evaluation cap — refused as a domain error naming k
 /// before any evaluation, for I1, I2 (every method that takes k > 2^180) on both sides of k = 1
-/// and for J0 at k > 1 (at k < 1 its k-peak is in closed form). Below it the route succeeds, and I2 follows its limit I2 ~ −2Γ(V)/k (the
+/// and for J0 at k > 1 (at k < 1 its k-peak is in closed form); the subtracted route's panels
+/// about ε = √(1 − M_R²) likewise name 1 − M_R². Below the bound the route succeeds, and I2 follows its limit I2 ~ −2Γ(V)/k (the
 /// peak at φ = π/2 alone; the rest is O(ln k/k³)): k·I2 agrees at k = 2^1000 and 2^5900.
 #[test]
 fn huge_k_beyond_the_adaptive_cap_is_refused_before_any_work() {
@@ -456,6 +457,20 @@ fn huge_k_beyond_the_adaptive_cap_is_refused_before_any_work() {
         );
         r.i2.value * &k
     };
+    // The subtracted route (48) grades I1's left half about ε = √(1 − M_R²): where those panels
+    // exhaust the cap, the refusal names 1 − M_R².
+    let near = Material::new(Mp::parse("0.25", p).unwrap())
+        .unwrap()
+        .parse_gap("1e-5000")
+        .unwrap();
+    let half = Mp::parse("0.5", p).unwrap();
+    assert!(matches!(
+        integrals(&near, &half, &opts(Method::AdaptiveSubtracted)),
+        Err(Error::Domain {
+            name: "1 - M_R^2 for the adaptive route's panels about its square root",
+            ..
+        })
+    ));
     let (a, b) = (k_i2(1000), k_i2(5900));
     let rel = ((a.clone() - &b) / &a).abs().to_f64();
     assert!(rel < 1e-70, "k·I2 at 2^1000 and 2^5900 differ by {rel:e}");

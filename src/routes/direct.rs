@@ -310,27 +310,39 @@ impl<T: Real> DirectSetup<T> {
     /// lies inside (0, 1): about log₄(16/scale) panels a scale, each of which the quadrature
     /// evaluates 3n times before it refines any (n = `lim`'s Gauss order). Where that first pass
     /// would take more than a third of `lim`'s evaluation cap (the rest for refining), as for
-    /// k or 1/k beyond about 2^(4.4·10⁵/n), [`Error::Domain`] naming k, before any evaluation.
+    /// k or 1/k beyond about 2^(4.4·10⁵/n), [`Error::Domain`] before any evaluation, naming the
+    /// input whose scale has the most panels: k, or 1 − M_R² (ε = √(1 − M_R²) is a scale where
+    /// the Rayleigh pole is not taken out in closed form).
     fn breakpoints(&self, scales: &[T], lim: Limits) -> Result<Vec<T>> {
         let p = self.k.prec();
         let one = T::one(p);
+        let inside = |s: &&T| s.is_positive() && **s < one;
         // The panels from the scales' binary exponents, before any is made: at most
         // (log₂(1/s) + 4)/2 + 1 about each scale s, one more for [0, 1] itself.
-        let panels: f64 = 1.0
-            + scales
-                .iter()
-                .filter(|s| s.is_positive() && **s < one)
-                .map(|s| (4.0 - RelError::of(s).log2()) / 2.0 + 1.0)
-                .sum::<f64>();
+        let count = |s: &T| (4.0 - RelError::of(s).log2()) / 2.0 + 1.0;
+        let panels: f64 = 1.0 + scales.iter().filter(inside).map(count).sum::<f64>();
         // The first pass within a third of the cap, the rest left for refining (at 256 bits
         // the pieces about 1/k took up to 2.1 times their first pass: k = 10²⁷⁰⁰ ran out).
         let first_pass = panels * (3 * lim.gauss_order(T::bits(p))) as f64;
         if first_pass > lim.max_evals as f64 / 3.0 {
-            return Err(Error::Domain {
-                name: "axis ratio k for the adaptive route",
-                value: short(&self.k),
-                bound: "|log2 k| < about 4.4e5/(bits/4 + 8) at the working precision (the \
-                        evaluation cap; the fixed rules cover 0 < k <= 2^180)",
+            let widest = scales
+                .iter()
+                .filter(inside)
+                .max_by(|a, b| count(a).total_cmp(&count(b)));
+            return Err(if widest == Some(&self.eps) {
+                Error::Domain {
+                    name: "1 - M_R^2 for the adaptive route's panels about its square root",
+                    value: short(&self.eps2),
+                    bound: "log2(1/(1 - M_R^2)) < about 8.8e5/(bits/4 + 8) at the working \
+                            precision (the evaluation cap)",
+                }
+            } else {
+                Error::Domain {
+                    name: "axis ratio k for the adaptive route",
+                    value: short(&self.k),
+                    bound: "|log2 k| < about 4.4e5/(bits/4 + 8) at the working precision (the \
+                            evaluation cap; the fixed rules cover 0 < k <= 2^180)",
+                }
             });
         }
         let mut pts = vec![T::zero(p), one.clone()];
@@ -446,27 +458,34 @@ fn integrate_halves<T: Real>(
 ) -> Result<Evaluation<T>> {
     let p = tol.prec();
     let lim = limits(tol);
-    let lp = s.breakpoints(&s.left_scales(false), lim)?;
+    // The left half's panels about ε only where the pole stays in the integrand.
+    let lp = || s.breakpoints(&s.left_scales(false), lim);
     let rp = s.breakpoints(&s.right_scales(), lim)?;
     // Each of the four pieces to tol/4 relative to itself; pieces are positive except the
     // subtracted one, whose accuracy is judged against the whole I2 below.
     let q = |f: &dyn Fn(&T) -> T, pts: &[T]| integrate(f, pts, &tol.clone().div_i64(4), lim);
     let i1r = q(&|v: &T| s.right(v), &rp)?;
     let (i1l, i2l, i2r) = match (subtract, s.left_pole()) {
-        (true, _) => (
-            q(&|w: &T| s.left(w) * w.square(), &lp)?,
-            q(&|w: &T| s.left_subtracted(w), &lp)?,
-            q(&|v: &T| s.right_subtracted(v), &rp)?,
-        ),
+        (true, _) => {
+            let lp = lp()?;
+            (
+                q(&|w: &T| s.left(w) * w.square(), &lp)?,
+                q(&|w: &T| s.left_subtracted(w), &lp)?,
+                q(&|v: &T| s.right_subtracted(v), &rp)?,
+            )
+        }
         (false, Some(pole)) => {
             let [i1l, i2l] = left_pair_without_pole(s, &pole, &tol.clone().div_i64(4), lim)?;
             (i1l, i2l, q(&|v: &T| v.square() * s.right(v), &rp)?)
         }
-        (false, None) => (
-            q(&|w: &T| s.left(w) * w.square(), &lp)?,
-            q(&|w: &T| s.left(w), &lp)?,
-            q(&|v: &T| v.square() * s.right(v), &rp)?,
-        ),
+        (false, None) => {
+            let lp = lp()?;
+            (
+                q(&|w: &T| s.left(w) * w.square(), &lp)?,
+                q(&|w: &T| s.left(w), &lp)?,
+                q(&|v: &T| v.square() * s.right(v), &rp)?,
+            )
+        }
     };
     let i1 = i1l.value.clone() + &i1r.value;
     let mut i2 = i2l.value.clone() + &i2r.value;
