@@ -188,6 +188,20 @@ fn domains_refused_before_any_work() {
         "--nu",
         "0.5000000000000000001",
     );
+    // Inside (-1, 1/2] exactly, but -1 at f64: refused with the text and what it rounds to
+    // (double-double holds it, and solves it).
+    refused(
+        &with(&["--nu", "-0.99999999999999999,0.2"]),
+        "--nu",
+        "-0.99999999999999999 (rounds to -1 at f64)",
+    );
+    let dd = run(&with(&[
+        "--nu",
+        "-0.99999999999999999",
+        "--precision",
+        "dd",
+    ]));
+    assert_eq!(dd.status.code(), Some(0));
     refused(
         &["sweep", "--nu", "0.2", "--speed", "1", "--ratio", "1"],
         "--speed",

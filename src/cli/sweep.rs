@@ -328,6 +328,16 @@ fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
         false => ("--speed", "speed M_R"),
     };
     a.nu.check_representable("--nu", "nu (Poisson's ratio)", &nus, &a.precision)?;
+    // ν > −1 exactly (checked before) may round onto −1 at the working precision, where the
+    // material is not defined: refused here as the single commands refuse it, with the text.
+    if let Some((text, nu)) = nus.iter().find(|(_, nu)| *nu <= -T::one(p)) {
+        let why = format!(
+            "nu (Poisson's ratio) = {text} (rounds to {} at {}) is outside its domain (-1, 1/2]",
+            moving_hertz::scalar::short(nu),
+            a.precision
+        );
+        return Err(CliError::value("--nu", text, why));
+    }
     if let Some(axis) = speed_axis {
         axis.check_representable(speed_option, speed_what, &speeds, &a.precision)?;
     }
