@@ -177,11 +177,12 @@ where
 }
 
 /// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
-/// share of the output (no copy of the results after the solves). Every thread of the pool
-/// runs a copy of the loop (`rayon::broadcast`: the caller wakes them all at once), and each
-/// copy takes the next unsolved block from a shared counter until none is left, so that the
-/// threads finish within one block of each other whatever the blocks cost (they differ near the
-/// Rayleigh speed and at large k) and a thread that starts late only takes fewer blocks. A
+/// share of the output (no copy of the results after the solves). As many copies of the loop
+/// as the pool has threads are spawned at once (a thread busy with other work never has to
+/// take one: copies taken late find no block left), and each copy takes the next unsolved block
+/// from a shared counter until none is left, so that the threads finish within one block of
+/// each other whatever the blocks cost (they differ near the Rayleigh speed and at large k) and
+/// a thread that starts late only takes fewer blocks. A
 /// single block runs on the calling thread: there its solves may put their node loops on every
 /// core (above 448 bits, `numerics::shares`), which they never do on a thread of the pool.
 fn in_blocks<I: Sync, R: Send>(
@@ -197,13 +198,19 @@ fn in_blocks<I: Sync, R: Send>(
     // its lock is never contended: it only lets the threads hold disjoint `&mut` shares.
     let shares: Vec<_> = out.chunks_mut(BLOCK).map(Mutex::new).collect();
     let next = AtomicUsize::new(0);
-    rayon::broadcast(|_| loop {
+    let take_blocks = || loop {
         let b = next.fetch_add(1, Ordering::Relaxed);
         let Some(share) = shares.get(b) else {
             break;
         };
         let block = &items[b * BLOCK..(b * BLOCK + BLOCK).min(items.len())];
         solve_block(block, &mut share.lock().unwrap_or_else(|e| e.into_inner()));
+    };
+    let copies = rayon::current_num_threads().min(shares.len());
+    rayon::scope(|scope| {
+        for _ in 0..copies {
+            scope.spawn(|_| take_blocks());
+        }
     });
     drop(shares);
     out

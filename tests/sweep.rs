@@ -143,6 +143,37 @@ fn same_bits_on_one_and_four_threads() {
     check_reproducible(&grid::<Mp>(p, 20, 2.0)[..3 * BLOCK]);
 }
 
+/// A sweep called while another thread of its pool is busy with unrelated work finishes on
+/// the free thread (its blocks are spawned jobs that a busy thread never has to take), with the
+/// same bits as on one thread: the busy thread here waits for the sweep's own end, which a
+/// sweep that needed every thread of the pool would never reach.
+#[test]
+fn a_busy_pool_thread_does_not_hold_up_a_sweep() {
+    let pts = grid::<f64>((), 40, 5.0);
+    let opts = Options::default();
+    let alone = bits(&on_threads(1, || sweep::ellipses(&pts, &opts)));
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .unwrap();
+    let (release, wait) = std::sync::mpsc::channel::<()>();
+    let (started, is_busy) = std::sync::mpsc::channel::<()>();
+    pool.spawn(move || {
+        started.send(()).unwrap();
+        let _ = wait.recv();
+    });
+    is_busy.recv().unwrap();
+    let (done, result) = std::sync::mpsc::channel();
+    let (pts2, opts2) = (pts.clone(), opts.clone());
+    std::thread::spawn(move || {
+        let r = pool.install(|| sweep::ellipses(&pts2, &opts2));
+        let _ = done.send(bits(&r));
+    });
+    let got = result.recv_timeout(std::time::Duration::from_secs(30));
+    let _ = release.send(());
+    assert_eq!(got.expect("the sweep waited for the busy thread"), alone);
+}
+
 /// `bind_to_cpu` leaves a thread on one CPU (the standard library's count of the CPUs a thread
 /// may run on reads the same affinity mask), and refuses an index past the CPUs.
 #[test]
