@@ -42,9 +42,11 @@ pub enum Error {
     NoConvergence {
         /// What was being computed.
         what: &'static str,
-        /// Iterations (or function evaluations) spent.
+        /// Iterations (or function evaluations) spent; 0 for a refusal before any (then not
+        /// printed).
         iterations: usize,
-        /// The best error estimate reached, relative, printed in short form.
+        /// The best error estimate reached, relative, printed in short form (empty: none, not
+        /// printed).
         reached: String,
     },
     /// A series would need more terms than its cap.
@@ -91,10 +93,18 @@ impl fmt::Display for Error {
                 what,
                 iterations,
                 reached,
-            } => write!(
-                f,
-                "{what} did not converge after {iterations} iterations (error estimate {reached})"
-            ),
+            } => {
+                // A check that refuses before iterating has no count, and a placeholder no
+                // estimate: neither is printed then.
+                write!(f, "{what} did not converge")?;
+                if *iterations > 0 {
+                    write!(f, " after {iterations} iterations")?;
+                }
+                if !reached.is_empty() {
+                    write!(f, " (error estimate {reached})")?;
+                }
+                Ok(())
+            }
             Error::TermCap {
                 what,
                 cap,
@@ -121,3 +131,30 @@ impl fmt::Display for Error {
 }
 
 impl std::error::Error for Error {}
+
+#[cfg(test)]
+mod tests {
+    use super::Error;
+
+    /// The iteration count and the estimate are printed only when there are some.
+    #[test]
+    fn no_convergence_prints_what_it_has() {
+        let e = |iterations, reached: &str| {
+            Error::NoConvergence {
+                what: "x",
+                iterations,
+                reached: reached.into(),
+            }
+            .to_string()
+        };
+        assert_eq!(
+            e(7, "1e-3"),
+            "x did not converge after 7 iterations (error estimate 1e-3)"
+        );
+        assert_eq!(
+            e(0, "unbounded"),
+            "x did not converge (error estimate unbounded)"
+        );
+        assert_eq!(e(0, ""), "x did not converge");
+    }
+}

@@ -354,7 +354,7 @@ impl<T: Real> Estimated<T> {
             return Err(Error::NoConvergence {
                 what,
                 iterations: 0,
-                reached: "an unbounded error estimate".into(),
+                reached: "unbounded".into(),
             });
         }
         Ok(self)
