@@ -6,9 +6,9 @@ use super::args::{self, Decimal};
 use super::output::emit;
 use super::progress::Progress;
 use super::CliError;
-use moving_hertz::scalar::{Precision, Real};
+use moving_hertz::scalar::{short, Precision, Real};
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
-use moving_hertz::{with_precision, Ellipse, Method, Options};
+use moving_hertz::{with_precision, Ellipse, Material, Method, Options};
 use rug::{Float, Rational};
 
 /// The most points one sweep solves (checked before any work).
@@ -329,12 +329,11 @@ fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
     };
     a.nu.check_representable("--nu", "nu (Poisson's ratio)", &nus, &a.precision)?;
     // ν > −1 exactly (checked before) may round onto −1 at the working precision, where the
-    // material is not defined: refused here as the single commands refuse it, with the text.
+    // material is not defined: refused here by the single commands' own check, with the text.
     if let Some((text, nu)) = nus.iter().find(|(_, nu)| *nu <= -T::one(p)) {
-        let why = format!(
-            "nu (Poisson's ratio) = {text} (rounds to {} at {}) is outside its domain (-1, 1/2]",
-            moving_hertz::scalar::short(nu),
-            a.precision
+        let why = Material::<T>::parse(text, p).err().map_or_else(
+            || format!("nu (Poisson's ratio) = {text} rounds to {}", short(nu)),
+            |e| e.to_string(),
         );
         return Err(CliError::value("--nu", text, why));
     }
