@@ -61,13 +61,18 @@ fn stopped() -> Error {
 }
 
 /// `f(0) … f(m − 1)` in order: on every core when there are at least [`MIN_ITEMS_A_SHARE`]
-/// items a core ([`interleaved`]), else on the calling thread. Used for the nodes of a rule and
-/// for per-node tables built from them (`routes::graded`).
+/// items a core ([`interleaved`]), else on the calling thread (the number of cores is not even
+/// asked for fewer than two shares' items). Used for the nodes of a rule and for per-node
+/// tables built from them (`routes::graded`).
 pub(crate) fn map_on_threads<R: Send>(
     m: usize,
     f: &(impl Fn(usize) -> Result<R> + Sync),
 ) -> Result<Vec<R>> {
-    let threads = cores().min(m / MIN_ITEMS_A_SHARE).max(1);
+    let threads = if m < 2 * MIN_ITEMS_A_SHARE {
+        1
+    } else {
+        cores().min(m / MIN_ITEMS_A_SHARE)
+    };
     if threads > 1 {
         interleaved(m, threads, &|k: usize| f(k - 1))
     } else {

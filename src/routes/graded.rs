@@ -81,7 +81,7 @@ use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
-use crate::numerics::shares::{for_shares, map_on_threads, shares};
+use crate::numerics::shares::{for_shares, map_on_threads, shares, PARALLEL_ABOVE_BITS};
 use crate::physics::Speed;
 use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
@@ -354,11 +354,18 @@ impl<T: Real> GuardedJob<T> for PanelExps<'_, T> {
             .iter()
             .map(|t| (W::one(pw) + &up(t)) * &half)
             .collect();
-        let exps = map_on_threads(x.len(), &|i: usize| {
+        let exp_pair = |i: usize| {
             let e = x[i].clone().exp();
             let r = e.clone().recip();
             Ok((e, r))
-        })?;
+        };
+        // On every core above the node loops' threshold; at and below it an exponential costs
+        // less than starting a thread.
+        let exps = if W::bits(pw) > PARALLEL_ABOVE_BITS {
+            map_on_threads(x.len(), &exp_pair)?
+        } else {
+            (0..x.len()).map(exp_pair).collect::<Result<Vec<_>>>()?
+        };
         Ok(exps.iter().map(|(e, r)| (down(e), down(r))).collect())
     }
 }
