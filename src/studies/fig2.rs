@@ -49,8 +49,9 @@ pub fn speed_grid() -> Vec<f64> {
 }
 
 /// Solves the ellipse at every (M_R, A1/B1) of `pairs` at precision `p`, for ν given as text,
-/// by the library's sweep (in batches, every core); `tick` is called after each point (for a
-/// progress bar). The first point that fails fails the whole.
+/// by the library's sweep, one block of [`BLOCK`] points a task on every core (the results are
+/// those of one sweep over all the points); `tick` is called after each point, a batch of
+/// blocks at a time (for a progress bar). The first point that fails fails the whole.
 /// Solves (33) at each point, each k and e within its own bound (as [`crate::solve_ellipse`]).
 pub fn solve_all<T: Real + Send + Sync>(
     nu: &str,
@@ -68,25 +69,33 @@ pub fn solve_all<T: Real + Send + Sync>(
         })
         .collect();
     let mut out = Vec::with_capacity(pairs.len());
+    let opts = Options::default();
     for (batch, pairs) in points.chunks(16 * BLOCK).zip(pairs.chunks(16 * BLOCK)) {
-        // The decimal strings are formed on every core too (they cost as much as the solves).
-        let solved: Vec<moving_hertz::Result<Point>> = sweep::ellipses(batch, &Options::default())
-            .into_par_iter()
-            .zip(pairs)
-            .map(|(s, &(mr, ratio))| {
-                let s = s?;
-                Ok(Point {
-                    mr,
-                    ratio,
-                    k: s.k.value.to_decimal(),
-                    e: s.e.value.to_decimal(),
-                    e_f64: s.e.value.to_f64(),
-                    k_f64: s.k.value.to_f64(),
-                    error_estimate: s.k.error.to_f64(),
-                })
+        // Block by block, each block's decimal strings formed where it was solved (a sweep of
+        // one block gives the same bits as that block of a longer sweep).
+        let solved: Vec<Vec<moving_hertz::Result<Point>>> = batch
+            .par_chunks(BLOCK)
+            .zip(pairs.par_chunks(BLOCK))
+            .map(|(block, pairs)| {
+                sweep::ellipses(block, &opts)
+                    .into_iter()
+                    .zip(pairs)
+                    .map(|(s, &(mr, ratio))| {
+                        let s = s?;
+                        Ok(Point {
+                            mr,
+                            ratio,
+                            k: s.k.value.to_decimal(),
+                            e: s.e.value.to_decimal(),
+                            e_f64: s.e.value.to_f64(),
+                            k_f64: s.k.value.to_f64(),
+                            error_estimate: s.k.error.to_f64(),
+                        })
+                    })
+                    .collect()
             })
             .collect();
-        for q in solved {
+        for q in solved.into_iter().flatten() {
             out.push(q?);
             tick();
         }
