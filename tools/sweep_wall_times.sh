@@ -9,6 +9,9 @@
 # (the two builds share one target directory: the first compiles GMP and MPFR, about five
 # minutes; then about two minutes of runs). ROUNDS=N sets the number of rounds (default 20).
 set -euo pipefail
+export LC_ALL=C
+# EPOCHREALTIME needs bash 5.
+[ -n "${EPOCHREALTIME:-}" ] || { echo "bash 5 or later needed (EPOCHREALTIME)" >&2; exit 1; }
 BASE=73027fb
 ROUNDS=${ROUNDS:-20}
 WORK=${TMPDIR:-/tmp}/moving-hertz-sweep-times
@@ -28,12 +31,14 @@ for round in $(seq "$ROUNDS"); do
     for t in base head; do
       out="$WORK/out/$t.$i"
       rm -rf "$out"
-      # Nanosecond clock around the process (GNU time's %e has 10 ms steps, as long as fig2).
-      t0=$(date +%s%N)
+      # Bash's microsecond clock around the process, as /usr/bin/time measures it from the
+      # fork to the exit (its %e has 10 ms steps, as long as fig2; a `date` process on each
+      # side would add its own start, about 1 ms here, to every time).
+      t0=$EPOCHREALTIME
       # shellcheck disable=SC2086
       "$WORK/$t.bin" ${CMDS[$i]} --out "$out" > /dev/null
-      t1=$(date +%s%N)
-      echo "$(( (t1 - t0) / 1000 ))" | awk '{ printf "%.4f\n", $1 / 1e6 }' >> "$WORK/times/$t.$i"
+      t1=$EPOCHREALTIME
+      awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.5f\n", b - a }' >> "$WORK/times/$t.$i"
     done
   done
 done
