@@ -135,7 +135,9 @@ impl Real for f64 {
         // 17 significant digits identify every f64; 24 characters hold the longest
         // ("-1.2345678901234567e-308"), so the string is allocated once.
         let mut s = String::with_capacity(24);
-        let _ = std::fmt::Write::write_fmt(&mut s, format_args!("{:.16e}", self));
+        if !push_17_digits(*self, &mut s) {
+            let _ = std::fmt::Write::write_fmt(&mut s, format_args!("{:.16e}", self));
+        }
         s
     }
     fn to_float(&self, bits: u32) -> rug::Float {
@@ -268,5 +270,139 @@ impl Real for f64 {
     #[inline(always)]
     fn with_prec(&self, _: ()) -> f64 {
         *self
+    }
+}
+
+/// Appends `x` to 17 significant digits, correctly rounded (ties to even), exactly as
+/// `format!("{:.16e}", x)` writes it, and returns `true`, for 10⁻⁶ ≤ |x| < 2⁵³ (from the
+/// double above 10⁻⁶). There x·10^(16−E) = m·10^(16−E)/2^j (x = m·2^−j, m < 2⁵³, E the
+/// decimal exponent) fits in 128 bits, so one product, one shift and its remainder give the
+/// digits, without std's general algorithm (the sweeps write two decimals a point). Returns
+/// `false`, having written nothing, elsewhere; std's formatter then writes them.
+fn push_17_digits(x: f64, out: &mut String) -> bool {
+    const LOW: f64 = 1e-6;
+    const HIGH: f64 = 9_007_199_254_740_992.0; // 2^53
+    let a = x.abs();
+    if !(LOW..HIGH).contains(&a) {
+        return false;
+    }
+    let bits = a.to_bits();
+    let m = u128::from((bits & ((1 << 52) - 1)) | (1 << 52));
+    // a = m / 2^j with 0 ≤ j ≤ 72 (a is normal, below 2^53 and at least 10^-6 > 2^-20).
+    let j = 1075 - ((bits >> 52) as i32);
+    // log10(a) from the binary exponent: E is this or one less.
+    let mut e10 = ((52 - j) as f64 * std::f64::consts::LOG10_2).floor() as i32 + 1;
+    // At most two passes: a wrong decade moves E toward the right one and never back.
+    let digits = loop {
+        // 0 ≤ 16 − E ≤ 22: m·10^(16−E) < 2^53·10^22 < 2^127 (the double nearest 10^-6 lies
+        // below it, E = −7: there the product may not fit, and std writes the digits).
+        let Some(scaled) = u32::try_from(16 - e10)
+            .ok()
+            .and_then(|s| 10u128.checked_pow(s))
+            .and_then(|p| p.checked_mul(m))
+        else {
+            return false;
+        };
+        let (q, r) = (scaled >> j, scaled & ((1u128 << j) - 1));
+        // The decade from the exact floor: 10^16 ≤ ⌊x·10^(16−E)⌋ < 10^17 exactly when
+        // 10^E ≤ x < 10^(E+1).
+        if q < 10_000_000_000_000_000 {
+            e10 -= 1;
+            continue;
+        }
+        if q >= 100_000_000_000_000_000 {
+            e10 += 1;
+            continue;
+        }
+        // Ties to even, as std.
+        let up = j > 0 && {
+            let half = 1u128 << (j - 1);
+            r > half || (r == half && q % 2 == 1)
+        };
+        match q + u128::from(up) {
+            // Rounded up to the next power of ten: one digit, one decade up.
+            100_000_000_000_000_000 => {
+                e10 += 1;
+                break 10_000_000_000_000_000u64;
+            }
+            q => break q as u64,
+        }
+    };
+    let mut text = [0u8; 17];
+    let mut d = digits;
+    for slot in text.iter_mut().rev() {
+        *slot = b'0' + (d % 10) as u8;
+        d /= 10;
+    }
+    if x < 0.0 {
+        out.push('-');
+    }
+    out.push(char::from(text[0]));
+    out.push('.');
+    // ASCII digits: valid UTF-8.
+    out.push_str(std::str::from_utf8(&text[1..]).unwrap_or_default());
+    let _ = std::fmt::Write::write_fmt(out, format_args!("e{e10}"));
+    true
+}
+
+#[cfg(test)]
+mod decimal_tests {
+    use super::push_17_digits;
+
+    fn check(x: f64) {
+        let mut s = String::new();
+        if push_17_digits(x, &mut s) {
+            assert_eq!(s, format!("{x:.16e}"), "{:e} (bits {:#x})", x, x.to_bits());
+        } else {
+            assert!(s.is_empty());
+            let a = x.abs();
+            assert!(a <= 1e-6 || a >= 9_007_199_254_740_992.0, "{x:e} refused");
+        }
+    }
+
+    /// Against std's exact formatter: random bit patterns over the whole range of the fast
+    /// path (and beyond, where it must decline), ties, the ends of the range, the powers of
+    /// ten and their neighbours, values that round up to the next power of ten.
+    #[test]
+    fn seventeen_digits_agree_with_std() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        for _ in 0..300_000 {
+            // Exponents from 2^-24 to 2^55: across both ends of the range.
+            let exp = 1023 - 24 + next() % 80;
+            let x = f64::from_bits((exp << 52) | (next() & ((1 << 52) - 1)));
+            check(x);
+            check(-x);
+        }
+        // Ties: two fractional bits at 2^50..2^51 put a 5 in the 18th digit.
+        for i in 0..20_000u64 {
+            let x = (1u64 << 50) as f64 + (i * 7_919) as f64 + 0.25 * (i % 4) as f64;
+            check(x);
+        }
+        for e in -7..=16 {
+            let p = 10f64.powi(e);
+            for x in [p, p.next_up(), p.next_down(), 9.999_999_999_999_999_5 * p] {
+                check(x);
+                check(x.next_up());
+                check(x.next_down());
+            }
+        }
+        for x in [
+            1e-6,
+            9_007_199_254_740_991.0,
+            9_007_199_254_740_992.0,
+            0.5,
+            1.0,
+            0.1,
+        ] {
+            check(x);
+            check(x.next_down());
+            check(x.next_up());
+        }
     }
 }
