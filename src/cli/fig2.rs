@@ -71,10 +71,11 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
     bar.finish();
     let io = |e: std::io::Error| CliError::Failed(format!("writing fig2 output: {e}"));
     // The grids' few hundred distinct M_R and A1/B1 written once, not once a row.
-    let mut text: HashMap<u64, String> = HashMap::new();
-    for v in a_pts.iter().chain(&b_pts).flat_map(|q| [q.mr, q.ratio]) {
-        text.entry(v.to_bits()).or_insert_with(|| format!("{v}"));
-    }
+    let grids = [fig2::ratio_grid(), fig2::speed_grid()];
+    let text: HashMap<u64, String> = (grids.iter().flatten())
+        .chain(fig2::SPEEDS.iter().chain(&fig2::RATIOS))
+        .map(|&v| (v.to_bits(), format!("{v}")))
+        .collect();
     let csv = |pts: &[fig2::Point]| csv_text(pts, &text);
     let suffix = suffix(nu, prec);
     let d1 = out.join(format!("data/fig2_e_vs_ratio{suffix}.csv"));
