@@ -22,13 +22,14 @@ impl Progress {
         }
     }
 
+    /// One more item done: the bar is redrawn at each percent (the clock is read only then).
     pub fn tick(&mut self) {
         self.done += 1;
-        let elapsed = self.start.elapsed().as_secs_f64();
-        if elapsed < 1.0 && !self.shown {
+        if !self.done.is_multiple_of((self.total / 100).max(1)) && self.done != self.total {
             return;
         }
-        if !self.done.is_multiple_of((self.total / 100).max(1)) && self.done != self.total {
+        let elapsed = self.start.elapsed().as_secs_f64();
+        if elapsed < 1.0 && !self.shown {
             return;
         }
         self.shown = true;
