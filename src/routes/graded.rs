@@ -81,7 +81,7 @@ use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::numerics::quadrature::{cached, check_rule_bits, fixed_slot, slotted, GaussLegendre};
-use crate::numerics::shares::{for_shares, map_on_threads, shares, PARALLEL_ABOVE_BITS};
+use crate::numerics::shares::{for_shares, map_on_threads, shares};
 use crate::physics::Speed;
 use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
@@ -334,11 +334,15 @@ fn exp_guard<T: Real>(p: T::Prec) -> u32 {
 
 /// e^{x₊} and e^{−x₊} at each node t of a panel's rule, x₊ = (1 + t)·ℓ ln 2/2, formed at the
 /// guarded precision and rounded once (so within an ulp or so of the working precision). The
-/// exponentials are independent and are formed on every core above a few dozen nodes.
+/// exponentials are independent: at MPFR precisions they are formed on every core above a few
+/// dozen nodes.
 struct PanelExps<'a, T> {
     nodes: &'a [T],
     l: usize,
 }
+
+/// Double-double's bits: the panel exponentials above it are MPFR's.
+const MPFR_ABOVE_BITS: u32 = 106;
 
 impl<T: Real> GuardedJob<T> for PanelExps<'_, T> {
     type Output = Vec<(T, T)>;
@@ -359,9 +363,9 @@ impl<T: Real> GuardedJob<T> for PanelExps<'_, T> {
             let r = e.clone().recip();
             Ok((e, r))
         };
-        // On every core above the node loops' threshold; at and below it an exponential costs
-        // less than starting a thread.
-        let exps = if W::bits(pw) > PARALLEL_ABOVE_BITS {
+        // On every core at MPFR precisions, where an exponential costs microseconds; in `f64`
+        // and double-double it costs less than handing work to another thread.
+        let exps = if W::bits(pw) > MPFR_ABOVE_BITS {
             map_on_threads(x.len(), &exp_pair)?
         } else {
             (0..x.len()).map(exp_pair).collect::<Result<Vec<_>>>()?
