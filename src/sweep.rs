@@ -219,19 +219,16 @@ fn in_blocks<I: Sync, R: Send>(
 /// Binds the calling thread to the `index`-th (from 0) of the CPUs it may run on now, and
 /// returns whether it did: `false` when there is no such CPU, when the operating system refuses,
 /// and on systems other than Linux. Meant for a pool's start handler, so that each thread of a
-/// pool of at most as many threads as CPUs ([`allowed_cpus`]) runs on a CPU of its own (module
-/// docs):
+/// pool of at most as many threads as CPUs runs on a CPU of its own (module docs):
 ///
 /// ```
-/// use moving_hertz::sweep;
-///
 /// let pool = rayon::ThreadPoolBuilder::new()
-///     .num_threads(sweep::allowed_cpus())
+///     .num_threads(2)
 ///     .start_handler(|i| {
-///         sweep::bind_to_cpu(i);
+///         moving_hertz::sweep::bind_to_cpu(i);
 ///     })
 ///     .build()
-///     .expect("a pool of one thread per CPU");
+///     .expect("a pool of two threads");
 /// # let _ = pool;
 /// ```
 ///
@@ -264,29 +261,6 @@ pub fn bind_to_cpu(index: usize) -> bool {
         let _ = index;
         false
     }
-}
-
-/// The number of CPUs the calling thread may run on (at least 1): on Linux the CPUs of its
-/// affinity mask, the ones [`bind_to_cpu`] counts; elsewhere
-/// [`std::thread::available_parallelism`]. Unlike `available_parallelism` on Linux it does not
-/// read the cgroup's CPU quota (a few files, about 0.1 ms, for a process that runs for a few
-/// milliseconds), so it may exceed it: a pool sized by it runs one thread per CPU even where a
-/// quota shares them out.
-/// Implements no equation of the paper.
-pub fn allowed_cpus() -> usize {
-    #[cfg(target_os = "linux")]
-    {
-        // SAFETY: as in `bind_to_cpu`: a zeroed `cpu_set_t` is valid, the call writes exactly
-        // `size_of::<cpu_set_t>()` bytes into it, and pid 0 names the calling thread.
-        unsafe {
-            let size = std::mem::size_of::<libc::cpu_set_t>();
-            let mut allowed: libc::cpu_set_t = std::mem::zeroed();
-            if libc::sched_getaffinity(0, size, &mut allowed) == 0 {
-                return (libc::CPU_COUNT(&allowed) as usize).max(1);
-            }
-        }
-    }
-    std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
 /// The placeholder of a result before its block writes it (every block writes each of its

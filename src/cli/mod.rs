@@ -166,9 +166,9 @@ pub fn main() -> i32 {
 }
 
 /// Builds `rayon`'s global pool, which runs the sweeps' blocks, with one thread per CPU the
-/// process may run on (`moving_hertz::sweep::allowed_cpus`), each bound to its own
-/// (`moving_hertz::sweep::bind_to_cpu`; see `moving_hertz::sweep` for why). When
-/// `RAYON_NUM_THREADS` sets the pool's size, rayon builds it as usual, unbound.
+/// process may run on, each bound to its own (`moving_hertz::sweep::bind_to_cpu`; see
+/// `moving_hertz::sweep` for why). When `RAYON_NUM_THREADS` sets the pool's size, rayon builds
+/// it as usual, unbound.
 fn bind_global_pool() {
     if std::env::var_os("RAYON_NUM_THREADS").is_some() {
         return;
@@ -176,7 +176,6 @@ fn bind_global_pool() {
     // An error means the pool exists already, or that its threads cannot be started (rayon
     // then tries again, unbound, on first use).
     let _ = rayon::ThreadPoolBuilder::new()
-        .num_threads(moving_hertz::sweep::allowed_cpus())
         .start_handler(|i| {
             moving_hertz::sweep::bind_to_cpu(i);
         })
