@@ -2,8 +2,9 @@
 # Wall times of the commands that run sweeps (`fig2` at f64 and double-double, `study poisson`)
 # at HEAD against the last commit before the library sweep (73027fb), both release builds of
 # the command-line tool, run alternately (base, head, base, head, …) and timed from outside the
-# process (from the fork to the exit, as /usr/bin/time), each writing into a directory of its own. Prints the minimum and the median wall time of each
-# command over the rounds and head/base.
+# process (from the fork to the exit, as /usr/bin/time), each writing into a directory of its
+# own. Prints the minimum and the median wall time of each command over the rounds and
+# head/base.
 #
 # Run from the repository root: bash tools/sweep_wall_times.sh > docs/data/sweep_wall_times.txt
 # (the two builds share one target directory: the first compiles GMP and MPFR, about five
