@@ -483,6 +483,20 @@ fn fig2_names_files_after_the_trimmed_nu() {
     );
 }
 
+/// A file of `fig2` that cannot be written (here a directory stands where the file goes) fails
+/// the command with exit code 1 and one line naming that file, for a table and for a chart.
+#[test]
+fn a_file_that_cannot_be_written_is_named() {
+    for file in ["data/fig2_e_vs_speed.csv", "figures/fig2_near_rayleigh.svg"] {
+        let tmp = TempDir::new("unwritable");
+        let blocked = tmp.0.join(file);
+        std::fs::create_dir_all(&blocked).expect("a directory where the file goes");
+        let o = tmp.0.to_str().expect("utf-8 path");
+        let b = blocked.to_str().expect("utf-8 path");
+        refused(&["fig2", "--out", o], 1, &["writing fig2 output", b]);
+    }
+}
+
 /// Issue 20 item 4: a Poisson's ratio valid at the working precision but −1 when rounded to the
 /// ladder's `f64` stage is solved, at 256 bits and at double-double, by `ellipse` and `contact`;
 /// the 256-bit k agrees with the 512-bit solve of the same typed ν within its bound.

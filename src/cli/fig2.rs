@@ -97,7 +97,7 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
             if *chart {
                 studies::write_text(path, body)
             } else {
-                std::fs::write(path, body)
+                std::fs::write(path, body).map_err(studies::naming(path))
             }
         })
         .map_err(io)?;

@@ -15,24 +15,33 @@ use std::io::Write;
 use std::path::Path;
 use std::time::Instant;
 
-/// Writes `rows` under a header line as CSV to `path`, creating parent directories.
-/// Implements no equation; writes the values as given.
+/// The error `e` met on the file `path`, with the file named first (`path: message`) and the
+/// kind kept: a write that fails says which of a study's files it was.
+pub fn naming(path: &Path) -> impl Fn(std::io::Error) -> std::io::Error + '_ {
+    move |e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
+}
+
+/// Writes `rows` under a header line as CSV to `path`, creating parent directories; an error
+/// names the file. Implements no equation; writes the values as given.
 pub fn write_csv(path: &Path, header: &[&str], rows: &[Vec<String>]) -> std::io::Result<()> {
-    if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir)?;
-    }
-    let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
-    writeln!(f, "{}", header.join(","))?;
-    for r in rows {
-        writeln!(f, "{}", r.join(","))?;
-    }
-    f.flush()
+    let write = || {
+        if let Some(dir) = path.parent() {
+            std::fs::create_dir_all(dir)?;
+        }
+        let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
+        writeln!(f, "{}", header.join(","))?;
+        for r in rows {
+            writeln!(f, "{}", r.join(","))?;
+        }
+        f.flush()
+    };
+    write().map_err(naming(path))
 }
 
 /// Writes text (an SVG chart, a Markdown table) to `path`, creating parent directories. A
 /// chart with a series that has no point to draw is refused (an error naming the file and the
-/// series): a figure never silently omits a curve its legend promises.
-/// Implements no equation; writes the text as given.
+/// series): a figure never silently omits a curve its legend promises. Every error names the
+/// file. Implements no equation; writes the text as given.
 pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
     if let Some(i) = text.find(&format!("<!-- {}: ", svg::EMPTY_SERIES)) {
         let label = text[i..].split("-->").next().unwrap_or_default();
@@ -41,10 +50,13 @@ pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
             format!("{}: {} --> refused", path.display(), &label[5..]),
         ));
     }
-    if let Some(dir) = path.parent() {
-        std::fs::create_dir_all(dir)?;
-    }
-    std::fs::write(path, text)
+    let write = || {
+        if let Some(dir) = path.parent() {
+            std::fs::create_dir_all(dir)?;
+        }
+        std::fs::write(path, text)
+    };
+    write().map_err(naming(path))
 }
 
 /// Median wall time of `f` in nanoseconds, over enough repetitions to fill about `budget_ms`
