@@ -51,6 +51,7 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
         Material::<T>::parse(nu, p).map_err(|e| CliError::value("--nu", nu, e))?;
     });
     let out = a.out.prepare()?;
+    super::bind_global_pool();
     let by_ratio_pairs: Vec<(f64, f64)> = fig2::SPEEDS
         .iter()
         .flat_map(|&mr| fig2::ratio_grid().into_iter().map(move |r| (mr, r)))

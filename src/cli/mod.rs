@@ -168,7 +168,8 @@ pub fn main() -> i32 {
 /// Builds `rayon`'s global pool, which runs the sweeps' blocks, with one thread per CPU the
 /// process may run on, each bound to its own (`moving_hertz::sweep::bind_to_cpu`; see
 /// `moving_hertz::sweep` for why). When `RAYON_NUM_THREADS` sets the pool's size, rayon builds
-/// it as usual, unbound.
+/// it as usual, unbound. Called by `fig2`, `study` and `sweep` once their inputs are checked,
+/// so that a refused command line starts no threads.
 fn bind_global_pool() {
     if std::env::var_os("RAYON_NUM_THREADS").is_some() {
         return;
@@ -183,12 +184,6 @@ fn bind_global_pool() {
 }
 
 fn run(command: Command) -> Result<(), CliError> {
-    if matches!(
-        command,
-        Command::Fig2(_) | Command::Study(_) | Command::Sweep(_)
-    ) {
-        bind_global_pool();
-    }
     match command {
         Command::Fig2(a) => fig2::run(&a),
         Command::Rayleigh(a) => rayleigh::run(&a),

@@ -46,6 +46,7 @@ pub enum Study {
 
 pub fn run(a: &StudyArgs) -> Result<(), CliError> {
     let out = a.out.prepare()?;
+    super::bind_global_pool();
     match a.name {
         Study::Rayleigh => study_rayleigh(out),
         Study::Integrals => study_integrals(out),

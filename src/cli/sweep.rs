@@ -365,6 +365,7 @@ fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
 /// point failed (its row carries the error).
 fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(), CliError> {
     let (pts, texts) = points::<T>(a, p)?;
+    super::bind_global_pool();
     let opts = Options::<T> {
         method: a.method,
         ..Default::default()
