@@ -156,9 +156,8 @@ pub(crate) mod hw {
     /// The test of `is_x86_feature_detected!("fma")` by the one CPUID leaf it needs: leaf 1
     /// reports FMA (ECX bit 12), AVX (bit 28) and OSXSAVE (bit 27), and XCR0 bits 1 and 2 say
     /// that the operating system saves the XMM and YMM state. std's detection asks every leaf
-    /// for every feature, and in a virtual machine each CPUID traps to the hypervisor: about
-    /// 25 µs for std's against 5 µs for this one, once a process (checked against std by a
-    /// unit test).
+    /// for every feature, and in a virtual machine each CPUID traps to the hypervisor, which
+    /// the first solve of a process waited for (checked against std by a unit test).
     fn fma_usable() -> bool {
         use std::arch::x86_64::{__cpuid, _xgetbv};
         // SAFETY: CPUID leaf 1 exists on every x86-64 processor; XGETBV is executed only when
