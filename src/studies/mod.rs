@@ -45,10 +45,11 @@ pub fn write_csv(path: &Path, header: &[&str], rows: &[Vec<String>]) -> std::io:
 pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
     if let Some(i) = text.find(&format!("<!-- {}: ", svg::EMPTY_SERIES)) {
         let label = text[i..].split("-->").next().unwrap_or_default();
-        return Err(std::io::Error::new(
+        let refused = std::io::Error::new(
             std::io::ErrorKind::InvalidData,
-            format!("{}: {} --> refused", path.display(), &label[5..]),
-        ));
+            format!("{} --> refused", &label[5..]),
+        );
+        return Err(naming(path)(refused));
     }
     let write = || {
         if let Some(dir) = path.parent() {
