@@ -8,7 +8,6 @@ use crate::studies::{self, fig2};
 use moving_hertz::scalar::Precision;
 use moving_hertz::{with_precision, Material};
 use rayon::prelude::*;
-use std::collections::HashMap;
 use std::fmt::Write as _;
 
 #[derive(clap::Args, Debug)]
@@ -64,47 +63,38 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
         format!("fig2 at {}", prec.label()),
         by_ratio_pairs.len() + by_speed_pairs.len(),
     );
-    let (a_pts, b_pts) = with_precision!(prec, T, p => {
-        let a = fig2::solve_all::<T>(nu, &by_ratio_pairs, p, || bar.tick()).map_err(CliError::lib)?;
-        let b = fig2::solve_all::<T>(nu, &by_speed_pairs, p, || bar.tick()).map_err(CliError::lib)?;
+    let decimals = fig2::grid_decimals();
+    let (a, b) = with_precision!(prec, T, p => {
+        let a = fig2::solve_all::<T>(nu, &by_ratio_pairs, p, &decimals, || bar.tick())
+            .map_err(CliError::lib)?;
+        let b = fig2::solve_all::<T>(nu, &by_speed_pairs, p, &decimals, || bar.tick())
+            .map_err(CliError::lib)?;
         (a, b)
     });
     bar.finish();
-    let io = |e: std::io::Error| CliError::Failed(format!("writing fig2 output: {e}"));
-    // The grids' few hundred distinct M_R and A1/B1 written once, not once a row.
-    let grids = [fig2::ratio_grid(), fig2::speed_grid()];
-    let text: HashMap<u64, String> = (grids.iter().flatten())
-        .chain(fig2::SPEEDS.iter().chain(&fig2::RATIOS))
-        .map(|&v| (v.to_bits(), format!("{v}")))
-        .collect();
-    let csv = |pts: &[fig2::Point]| csv_text(pts, &text);
+    let (a_pts, b_pts) = (&a.points, &b.points);
     let suffix = suffix(nu, prec);
     let d1 = out.join(format!("data/fig2_e_vs_ratio{suffix}.csv"));
     let d2 = out.join(format!("data/fig2_e_vs_speed{suffix}.csv"));
-    // The tables and the charts are formed on every core (as long as the solves at f64), and
-    // the five files written two at a time.
-    let ((csv_a, csv_b), charts) = rayon::join(
-        || rayon::join(|| csv(&a_pts), || csv(&b_pts)),
-        || fig2::charts(nu, &a_pts, &b_pts),
-    );
-    let mut files = vec![(d1.clone(), csv_a, false), (d2.clone(), csv_b, false)];
-    for (name, svg) in charts {
+    let mut files = vec![
+        (d1.clone(), Written::Table(&a.table)),
+        (d2.clone(), Written::Table(&b.table)),
+    ];
+    // The charts are formed on every core, and the five files written two at a time.
+    for (name, svg) in fig2::charts(nu, a_pts, b_pts) {
         let name = name.replace(".svg", &format!("{suffix}.svg"));
-        files.push((out.join("figures").join(name), svg, true));
+        files.push((out.join("figures").join(name), Written::Chart(svg)));
     }
     files
         .par_iter()
-        .try_for_each(|(path, body, chart)| {
-            if *chart {
-                studies::write_text(path, body)
-            } else {
-                std::fs::write(path, body).map_err(studies::naming(path))
-            }
+        .try_for_each(|(path, body)| match body {
+            Written::Chart(svg) => studies::write_text(path, svg),
+            Written::Table(pieces) => studies::write_pieces(path, pieces),
         })
-        .map_err(io)?;
+        .map_err(|e| CliError::Failed(format!("writing fig2 output: {e}")))?;
     let worst = a_pts
         .iter()
-        .chain(&b_pts)
+        .chain(b_pts.iter())
         .map(|q| q.error_estimate)
         .fold(0.0f64, f64::max);
     let mut s = String::new();
@@ -136,29 +126,8 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
     emit(&s)
 }
 
-/// The CSV table of `pts` (header and one row a point: M_R, A1/B1, k, e and k's relative error
-/// estimate), formed in pieces on every core; `text` holds the decimals of every M_R and A1/B1.
-fn csv_text(pts: &[fig2::Point], text: &HashMap<u64, String>) -> String {
-    let push_decimal = |t: &mut String, v: f64| match text.get(&v.to_bits()) {
-        Some(d) => t.push_str(d),
-        None => {
-            let _ = write!(t, "{v}");
-        }
-    };
-    let pieces: Vec<String> = pts
-        .par_chunks(256)
-        .map(|chunk| {
-            let mut t = String::with_capacity(96 * chunk.len());
-            for q in chunk {
-                push_decimal(&mut t, q.mr);
-                t.push(',');
-                push_decimal(&mut t, q.ratio);
-                let _ = writeln!(t, ",{},{},{:.2e}", q.k, q.e, q.error_estimate);
-            }
-            t
-        })
-        .collect();
-    let mut s = String::from("M_R,A1_over_B1,k,e,k_rel_error_estimate\n");
-    s.extend(pieces);
-    s
+/// What `fig2` writes to a file: a chart, or a table in pieces.
+enum Written<'a> {
+    Chart(String),
+    Table(&'a [String]),
 }

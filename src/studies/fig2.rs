@@ -7,25 +7,38 @@ use moving_hertz::scalar::Real;
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
 use moving_hertz::Options;
 use rayon::prelude::*;
+use std::collections::HashMap;
+use std::fmt::Write as _;
 
-/// One point: the solved ellipse at (M_R, A1/B1).
-#[derive(Clone, Debug)]
+/// One point of a curve, as the charts and the summary use it: the solved ellipse at
+/// (M_R, A1/B1), rounded to f64 (the table keeps every digit of the working precision).
+#[derive(Clone, Copy, Debug, Default)]
 pub struct Point {
     /// M_R = V/c_R.
     pub mr: f64,
     /// A1/B1 = R2/R1.
     pub ratio: f64,
-    /// k = b/a.
-    pub k: String,
-    /// Eccentricity (every digit of the working precision).
-    pub e: String,
-    /// Eccentricity as f64, for the charts.
+    /// Eccentricity.
     pub e_f64: f64,
-    /// k as f64, for the charts.
+    /// k = b/a.
     pub k_f64: f64,
     /// Estimated relative error of k.
     pub error_estimate: f64,
 }
+
+/// A solved curve: its points in input order, and its CSV table (the header [`CSV_HEADER`],
+/// then one row a point: M_R, A1/B1, k, e with every digit of the working precision, and k's
+/// relative error estimate) in pieces of one block each, to be written one after the other.
+#[derive(Debug)]
+pub struct Curve {
+    /// The points, in input order.
+    pub points: Vec<Point>,
+    /// The table's pieces: the header, then the rows of each block of [`BLOCK`] points.
+    pub table: Vec<String>,
+}
+
+/// The header line of a curve's CSV table.
+pub const CSV_HEADER: &str = "M_R,A1_over_B1,k,e,k_rel_error_estimate\n";
 
 /// The speeds of the e-against-A1/B1 chart.
 pub const SPEEDS: [f64; 8] = [0.0, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99, 0.999];
@@ -48,59 +61,98 @@ pub fn speed_grid() -> Vec<f64> {
     v
 }
 
+/// The decimal text of the grids' M_R and A1/B1 ([`SPEEDS`], [`RATIOS`], [`ratio_grid`],
+/// [`speed_grid`]) by their bits: the table's few hundred distinct inputs formed once, not
+/// once a row.
+pub fn grid_decimals() -> HashMap<u64, String> {
+    let grids = [ratio_grid(), speed_grid()];
+    (grids.iter().flatten())
+        .chain(SPEEDS.iter().chain(&RATIOS))
+        .map(|&v| (v.to_bits(), format!("{v}")))
+        .collect()
+}
+
 /// Solves the ellipse at every (M_R, A1/B1) of `pairs` at precision `p`, for ν given as text,
 /// by the library's sweep, one block of [`BLOCK`] points a task on every core (the results are
-/// those of one sweep over all the points); `tick` is called after each point, a batch of
+/// those of one sweep over all the points); each block writes its points and its rows of the
+/// table where it was solved (`decimals`, from [`grid_decimals`], holds the text of the
+/// inputs; others are written as `{}` writes them). `tick` is called once a point, a batch of
 /// blocks at a time (for a progress bar). The first point that fails fails the whole.
 /// Solves (33) at each point, each k and e within its own bound (as [`crate::solve_ellipse`]).
 pub fn solve_all<T: Real + Send + Sync>(
     nu: &str,
     pairs: &[(f64, f64)],
     p: T::Prec,
+    decimals: &HashMap<u64, String>,
     mut tick: impl FnMut(),
-) -> moving_hertz::Result<Vec<Point>> {
+) -> moving_hertz::Result<Curve> {
     let nu = T::parse(nu, p)?;
-    let points: Vec<EllipsePoint<T>> = pairs
-        .iter()
+    let mut points = vec![Point::default(); pairs.len()];
+    let mut table = vec![String::new(); 1 + pairs.len().div_ceil(BLOCK)];
+    table[0].push_str(CSV_HEADER);
+    let opts = Options::default();
+    let batch = 16 * BLOCK;
+    for ((pairs, points), rows) in (pairs.chunks(batch))
+        .zip(points.chunks_mut(batch))
+        .zip(table[1..].chunks_mut(batch / BLOCK))
+    {
+        let solved: Vec<moving_hertz::Result<()>> = (pairs.par_chunks(BLOCK))
+            .zip(points.par_chunks_mut(BLOCK).zip(rows.par_iter_mut()))
+            .map(|(pairs, (points, rows))| {
+                solve_block(&nu, p, &opts, decimals, pairs, points, rows)
+            })
+            .collect();
+        solved.into_iter().collect::<moving_hertz::Result<()>>()?;
+        pairs.iter().for_each(|_| tick());
+    }
+    Ok(Curve { points, table })
+}
+
+/// One block of [`solve_all`]: solves the ellipse at each of `pairs`, writes `points` and
+/// appends a row a point to `rows`. The block's first error, if any.
+fn solve_block<T: Real + Send + Sync>(
+    nu: &T,
+    p: T::Prec,
+    opts: &Options<T>,
+    decimals: &HashMap<u64, String>,
+    pairs: &[(f64, f64)],
+    points: &mut [Point],
+    rows: &mut String,
+) -> moving_hertz::Result<()> {
+    let block: Vec<EllipsePoint<T>> = (pairs.iter())
         .map(|&(mr, ratio)| EllipsePoint {
             nu: nu.clone(),
             speed: SpeedGiven::Mr(T::from_f64(mr, p)),
             ratio: T::from_f64(ratio, p),
         })
         .collect();
-    let mut out = Vec::with_capacity(pairs.len());
-    let opts = Options::default();
-    for (batch, pairs) in points.chunks(16 * BLOCK).zip(pairs.chunks(16 * BLOCK)) {
-        // Block by block, each block's decimal strings formed where it was solved (a sweep of
-        // one block gives the same bits as that block of a longer sweep).
-        let solved: Vec<Vec<moving_hertz::Result<Point>>> = batch
-            .par_chunks(BLOCK)
-            .zip(pairs.par_chunks(BLOCK))
-            .map(|(block, pairs)| {
-                sweep::ellipses(block, &opts)
-                    .into_iter()
-                    .zip(pairs)
-                    .map(|(s, &(mr, ratio))| {
-                        let s = s?;
-                        Ok(Point {
-                            mr,
-                            ratio,
-                            k: s.k.value.to_decimal(),
-                            e: s.e.value.to_decimal(),
-                            e_f64: s.e.value.to_f64(),
-                            k_f64: s.k.value.to_f64(),
-                            error_estimate: s.k.error.to_f64(),
-                        })
-                    })
-                    .collect()
-            })
-            .collect();
-        for q in solved.into_iter().flatten() {
-            out.push(q?);
-            tick();
+    let solved = sweep::ellipses(&block, opts);
+    for ((s, &(mr, ratio)), q) in solved.into_iter().zip(pairs).zip(points) {
+        let s = s?;
+        *q = Point {
+            mr,
+            ratio,
+            e_f64: s.e.value.to_f64(),
+            k_f64: s.k.value.to_f64(),
+            error_estimate: s.k.error.to_f64(),
+        };
+        push_decimal(rows, decimals, mr);
+        rows.push(',');
+        push_decimal(rows, decimals, ratio);
+        let (k, e) = (s.k.value.to_decimal(), s.e.value.to_decimal());
+        let _ = writeln!(rows, ",{k},{e},{:.2e}", q.error_estimate);
+    }
+    Ok(())
+}
+
+/// Appends the decimal text of `v`: from `decimals` when there, else as `{}` writes it.
+fn push_decimal(t: &mut String, decimals: &HashMap<u64, String>, v: f64) {
+    match decimals.get(&v.to_bits()) {
+        Some(d) => t.push_str(d),
+        None => {
+            let _ = write!(t, "{v}");
         }
     }
-    Ok(out)
 }
 
 /// The two charts: e against A1/B1 (one line per M_R) and e against M_R (one line per A1/B1).
