@@ -127,7 +127,7 @@ fn solve_block<T: Real + Send + Sync>(
         })
         .collect();
     let solved = sweep::ellipses(&block, opts);
-    for ((s, &(mr, ratio)), q) in solved.into_iter().zip(pairs).zip(points) {
+    for (i, ((s, &(mr, ratio)), q)) in solved.into_iter().zip(pairs).zip(points).enumerate() {
         let s = s?;
         *q = Point {
             mr,
@@ -141,6 +141,11 @@ fn solve_block<T: Real + Send + Sync>(
         push_decimal(rows, decimals, ratio);
         let (k, e) = (s.k.value.to_decimal(), s.e.value.to_decimal());
         let _ = writeln!(rows, ",{k},{e},{:.2e}", q.error_estimate);
+        if i == 0 {
+            // Room for the block's rows at once (the first row's length a row, and a margin),
+            // not doubled as they are written.
+            rows.reserve(rows.len() * pairs.len() * 9 / 8);
+        }
     }
     Ok(())
 }

@@ -140,6 +140,10 @@ impl Chart {
         let px = |x: f64| f.ml + f.pw * xa.frac(x);
         let py = |y: f64| f.mt + f.ph * (1.0 - ya.frac(y));
         let mut o = f.open(&self.title);
+        // The frame, ticks and legend take a few kilobytes, each point of a path about 16 bytes:
+        // the text is grown once, not doubled as it is written.
+        let points: usize = self.series.iter().map(|s| s.points.len()).sum();
+        o.reserve(8192 + 16 * points);
         // Grid and ticks.
         let (ml, mt, pw, ph) = (f.ml, f.mt, f.pw, f.ph);
         for (v, label) in xa.ticks() {
@@ -193,7 +197,7 @@ impl Chart {
                 let _ = write!(o, "<!-- {EMPTY_SERIES}: {} -->", esc(&s.label));
             }
             if s.style != Style::Markers {
-                let mut path = String::new();
+                let mut path = String::with_capacity(16 * s.points.len());
                 let mut pen_up = true;
                 for &(x, y) in &s.points {
                     if !self.usable(x, y) {
