@@ -22,10 +22,13 @@ impl Progress {
         }
     }
 
-    /// One more item done: the bar is redrawn at each percent (the clock is read only then).
-    pub fn tick(&mut self) {
-        self.done += 1;
-        if !self.done.is_multiple_of((self.total / 100).max(1)) && self.done != self.total {
+    /// `n` more items done: the bar is redrawn when a percent is passed (the clock is read
+    /// only then).
+    pub fn advance(&mut self, n: usize) {
+        let step = (self.total / 100).max(1);
+        let before = self.done;
+        self.done += n;
+        if before / step == self.done / step && self.done != self.total {
             return;
         }
         let elapsed = self.start.elapsed().as_secs_f64();

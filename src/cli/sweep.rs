@@ -387,7 +387,7 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         for (r, t) in sweep::ellipses(batch, &opts).iter().zip(text) {
             failed += usize::from(r.is_err());
             out.push_str(&row(a.format, speed_key, t, r));
-            bar.tick();
+            bar.advance(1);
         }
         emit(&out)?;
     }

@@ -72,40 +72,47 @@ pub fn grid_decimals() -> HashMap<u64, String> {
         .collect()
 }
 
-/// Solves the ellipse at every (M_R, A1/B1) of `pairs` at precision `p`, for ν given as text,
-/// by the library's sweep, one block of [`BLOCK`] points a task on every core (the results are
-/// those of one sweep over all the points); each block writes its points and its rows of the
-/// table where it was solved (`decimals`, from [`grid_decimals`], holds the text of the
-/// inputs; others are written as `{}` writes them). `tick` is called once a point, a batch of
-/// blocks at a time (for a progress bar). The first point that fails fails the whole.
+/// Solves the ellipse at every (M_R, A1/B1) of each curve of `curves` at precision `p`, for ν
+/// given as text, by the library's sweep: the curves' blocks of [`BLOCK`] points, one a task,
+/// in one pass on every core (each curve's results are those of one sweep over its points).
+/// Each block writes its points and its rows of the table where it was solved (`decimals`,
+/// from [`grid_decimals`], holds the text of the inputs; others are written as `{}` writes
+/// them), then calls `tick` with its number of points (for a progress bar; from any thread).
+/// The first point that fails, in input order, fails the whole.
 /// Solves (33) at each point, each k and e within its own bound (as [`crate::solve_ellipse`]).
-pub fn solve_all<T: Real + Send + Sync>(
+pub fn solve_all<T: Real + Send + Sync, const N: usize>(
     nu: &str,
-    pairs: &[(f64, f64)],
+    curves: [&[(f64, f64)]; N],
     p: T::Prec,
     decimals: &HashMap<u64, String>,
-    mut tick: impl FnMut(),
-) -> moving_hertz::Result<Curve> {
+    tick: &(dyn Fn(usize) + Sync),
+) -> moving_hertz::Result<[Curve; N]> {
     let nu = T::parse(nu, p)?;
-    let mut points = vec![Point::default(); pairs.len()];
-    let mut table = vec![String::new(); 1 + pairs.len().div_ceil(BLOCK)];
-    table[0].push_str(CSV_HEADER);
     let opts = Options::default();
-    let batch = 16 * BLOCK;
-    for ((pairs, points), rows) in (pairs.chunks(batch))
-        .zip(points.chunks_mut(batch))
-        .zip(table[1..].chunks_mut(batch / BLOCK))
-    {
-        let solved: Vec<moving_hertz::Result<()>> = (pairs.par_chunks(BLOCK))
-            .zip(points.par_chunks_mut(BLOCK).zip(rows.par_iter_mut()))
-            .map(|(pairs, (points, rows))| {
-                solve_block(&nu, p, &opts, decimals, pairs, points, rows)
-            })
-            .collect();
-        solved.into_iter().collect::<moving_hertz::Result<()>>()?;
-        pairs.iter().for_each(|_| tick());
+    let mut solved = curves.map(|pairs| Curve {
+        points: vec![Point::default(); pairs.len()],
+        table: vec![String::new(); 1 + pairs.len().div_ceil(BLOCK)],
+    });
+    let mut blocks = Vec::new();
+    for (pairs, curve) in curves.iter().zip(&mut solved) {
+        curve.table[0].push_str(CSV_HEADER);
+        let pieces = curve.table[1..].iter_mut();
+        blocks.extend(
+            pairs
+                .chunks(BLOCK)
+                .zip(curve.points.chunks_mut(BLOCK))
+                .zip(pieces),
+        );
     }
-    Ok(Curve { points, table })
+    let results: Vec<moving_hertz::Result<()>> = (blocks.into_par_iter())
+        .map(|((pairs, points), rows)| {
+            let done = solve_block(&nu, p, &opts, decimals, pairs, points, rows);
+            tick(pairs.len());
+            done
+        })
+        .collect();
+    results.into_iter().collect::<moving_hertz::Result<()>>()?;
+    Ok(solved)
 }
 
 /// One block of [`solve_all`]: solves the ellipse at each of `pairs`, writes `points` and
