@@ -21,14 +21,19 @@ pub fn naming(path: &Path) -> impl Fn(std::io::Error) -> std::io::Error + '_ {
     move |e| std::io::Error::new(e.kind(), format!("{}: {e}", path.display()))
 }
 
+/// The file `path`, created (or emptied) for writing, with its parent directories.
+fn create(path: &Path) -> std::io::Result<std::fs::File> {
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    std::fs::File::create(path)
+}
+
 /// Writes `rows` under a header line as CSV to `path`, creating parent directories; an error
 /// names the file. Implements no equation; writes the values as given.
 pub fn write_csv(path: &Path, header: &[&str], rows: &[Vec<String>]) -> std::io::Result<()> {
     let write = || {
-        if let Some(dir) = path.parent() {
-            std::fs::create_dir_all(dir)?;
-        }
-        let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
+        let mut f = std::io::BufWriter::new(create(path)?);
         writeln!(f, "{}", header.join(","))?;
         for r in rows {
             writeln!(f, "{}", r.join(","))?;
@@ -51,28 +56,20 @@ pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
         );
         return Err(naming(path)(refused));
     }
-    let write = || {
-        if let Some(dir) = path.parent() {
-            std::fs::create_dir_all(dir)?;
-        }
-        std::fs::write(path, text)
-    };
-    write().map_err(naming(path))
+    write_pieces(path, &[text])
 }
 
 /// Writes `pieces` one after the other to `path` (one `writev` call for all of them where the
 /// system takes them at once), creating parent directories; an error names the file. For a
 /// table formed in pieces on several cores: it is never joined in memory. Implements no
 /// equation; writes the text as given.
-pub fn write_pieces(path: &Path, pieces: &[String]) -> std::io::Result<()> {
+pub fn write_pieces(path: &Path, pieces: &[impl AsRef<str>]) -> std::io::Result<()> {
     let write = || {
-        if let Some(dir) = path.parent() {
-            std::fs::create_dir_all(dir)?;
-        }
-        let mut f = std::fs::File::create(path)?;
+        let mut f = create(path)?;
         let mut slices: Vec<IoSlice> = (pieces.iter())
+            .map(|p| p.as_ref().as_bytes())
             .filter(|p| !p.is_empty())
-            .map(|p| IoSlice::new(p.as_bytes()))
+            .map(IoSlice::new)
             .collect();
         let mut rest = &mut slices[..];
         while !rest.is_empty() {
