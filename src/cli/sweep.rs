@@ -9,7 +9,9 @@ use super::CliError;
 use moving_hertz::scalar::{short, Precision, Real};
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
 use moving_hertz::{with_precision, Ellipse, Material, Method, Options};
+use rayon::prelude::*;
 use rug::{Float, Rational};
+use std::borrow::Cow;
 
 /// The most points one sweep solves (checked before any work).
 pub const POINT_CAP: usize = 10_000_000;
@@ -310,10 +312,40 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     with_precision!(a.precision, T, p => solve_and_write::<T>(a, p))
 }
 
-type Grid<T> = (Vec<EllipsePoint<T>>, Vec<[String; 3]>);
+/// The grid's three axes, each value with its text, in the order ν, speed, ratio (ratio
+/// fastest): its points are formed a block at a time, so that a sweep holds one batch of points
+/// and rows, not all of them.
+struct Grid<T> {
+    nus: Vec<(String, T)>,
+    speeds: Vec<(String, SpeedGiven<T>)>,
+    ratios: Vec<(String, T)>,
+}
 
-/// The grid's points with the text of each input, in the order ν, speed, ratio (ratio fastest);
-/// a ratio that overflows or underflows the working precision is refused before any work.
+impl<T: Real> Grid<T> {
+    /// The number of points.
+    fn len(&self) -> usize {
+        self.nus.len() * self.speeds.len() * self.ratios.len()
+    }
+
+    /// The `j`-th point (ratio fastest) and the text of its ν, speed and ratio.
+    fn point(&self, j: usize) -> (EllipsePoint<T>, [&str; 3]) {
+        let (nr, ns) = (self.ratios.len(), self.speeds.len());
+        let (nu, speed, ratio) = (
+            &self.nus[j / (nr * ns)],
+            &self.speeds[(j / nr) % ns],
+            &self.ratios[j % nr],
+        );
+        let pt = EllipsePoint {
+            nu: nu.1.clone(),
+            speed: speed.1.clone(),
+            ratio: ratio.1.clone(),
+        };
+        (pt, [&nu.0, &speed.0, &ratio.0])
+    }
+}
+
+/// The grid of the three axes, each value with its text; a value that overflows or underflows
+/// the working precision is refused before any work.
 fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
     let nus = a.nu.values::<T>(p);
     let (by_gap, speeds) = match (&a.speed.speed, &a.speed.gap) {
@@ -343,28 +375,27 @@ fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
     let what = "curvature ratio A1/B1";
     a.ratio
         .check_representable("--ratio", what, &ratios, &a.precision)?;
-    let (mut pts, mut texts) = (Vec::new(), Vec::new());
-    for (nt, nu) in &nus {
-        for (st, sp) in &speeds {
-            let speed = if by_gap {
-                SpeedGiven::Gap(sp.clone())
+    let speeds = (speeds.into_iter())
+        .map(|(text, sp)| {
+            let given = if by_gap {
+                SpeedGiven::Gap(sp)
             } else {
-                SpeedGiven::Text(st.clone())
+                SpeedGiven::Text(text.clone())
             };
-            for (rt, ratio) in &ratios {
-                let (nu, speed, ratio) = (nu.clone(), speed.clone(), ratio.clone());
-                pts.push(EllipsePoint { nu, speed, ratio });
-                texts.push([nt.clone(), st.clone(), rt.clone()]);
-            }
-        }
-    }
-    Ok((pts, texts))
+            (text, given)
+        })
+        .collect();
+    Ok(Grid {
+        nus,
+        speeds,
+        ratios,
+    })
 }
 
 /// Solves the sweep in batches, writing each batch's rows as it is solved; exit code 1 when a
 /// point failed (its row carries the error).
 fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(), CliError> {
-    let (pts, texts) = points::<T>(a, p)?;
+    let grid = points::<T>(a, p)?;
     super::bind_global_pool();
     let opts = Options::<T> {
         method: a.method,
@@ -380,53 +411,76 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
             "nu,{speed_key},ratio,k,k_error,e,e_error,major_axis,route,iterations,error\n"
         ))?;
     }
-    let mut bar = Progress::new("sweep", pts.len());
+    let total = grid.len();
+    let mut bar = Progress::new("sweep", total);
     let mut failed = 0;
-    for (batch, text) in pts.chunks(BATCH).zip(texts.chunks(BATCH)) {
+    // The rows of the points `range` and their count of failed points, formed where the block
+    // is solved.
+    let solve = |range: std::ops::Range<usize>| {
+        let (block, texts): (Vec<_>, Vec<_>) = range.map(|j| grid.point(j)).unzip();
         let mut out = String::new();
-        for (r, t) in sweep::ellipses(batch, &opts).iter().zip(text) {
+        let mut failed = 0;
+        for (r, t) in sweep::ellipses(&block, &opts).iter().zip(&texts) {
             failed += usize::from(r.is_err());
-            out.push_str(&row(a.format, speed_key, t, r));
-            bar.advance(1);
+            push_row(&mut out, a.format, speed_key, t, r);
         }
-        emit(&out)?;
+        (out, failed)
+    };
+    for start in (0..total).step_by(BATCH) {
+        let end = (start + BATCH).min(total);
+        // The blocks on the pool's threads, each solved and its rows formed by one task (a
+        // block gives the same bits as in a sweep of the whole batch); a batch of one block on
+        // this thread, where its solves may share their node loops among the cores.
+        let blocks: Vec<(String, usize)> = if end - start <= BLOCK {
+            vec![solve(start..end)]
+        } else {
+            ((start..end).into_par_iter().step_by(BLOCK))
+                .map(|b| solve(b..(b + BLOCK).min(end)))
+                .collect()
+        };
+        failed += blocks.iter().map(|(_, f)| f).sum::<usize>();
+        emit(&blocks.into_iter().map(|(rows, _)| rows).collect::<String>())?;
+        bar.advance(end - start);
     }
     bar.finish();
     if failed > 0 {
         return Err(CliError::Failed(format!(
-            "{failed} of {} points failed at {}; their rows carry the error",
-            pts.len(),
+            "{failed} of {total} points failed at {}; their rows carry the error",
             a.precision
         )));
     }
     Ok(())
 }
 
-/// One point's line.
-fn row<T: Real>(
+/// Appends one point's line: its inputs' text `t`, then the result's cells or the error.
+fn push_row<T: Real>(
+    out: &mut String,
     format: Format,
     speed_key: &str,
-    t: &[String; 3],
+    t: &[&str; 3],
     r: &moving_hertz::Result<Ellipse<T>>,
-) -> String {
-    let cells: Vec<String> = match r {
-        Ok(e) => vec![
-            e.k.value.to_decimal(),
-            e.k.error.to_string(),
-            e.e.value.to_decimal(),
-            e.e.error.to_string(),
+) {
+    let cells: [Cow<str>; 8] = match r {
+        Ok(e) => [
+            e.k.value.to_decimal().into(),
+            e.k.error.to_string().into(),
+            e.e.value.to_decimal().into(),
+            e.e.error.to_string().into(),
             e.major.label().into(),
             e.integrals.route.label().into(),
-            e.iterations.to_string(),
-            String::new(),
+            e.iterations.to_string().into(),
+            "".into(),
         ],
         Err(err) => {
-            let mut v = vec![String::new(); 7];
-            v.push(err.to_string());
+            let mut v: [Cow<str>; 8] = Default::default();
+            v[7] = err.to_string().into();
             v
         }
     };
     let keys = [
+        "nu",
+        speed_key,
+        "ratio",
         "k",
         "k_error",
         "e",
@@ -436,28 +490,69 @@ fn row<T: Real>(
         "iterations",
         "error",
     ];
+    let values = t.iter().copied().chain(cells.iter().map(|c| c.as_ref()));
     match format {
         Format::Csv => {
-            let quoted = |s: &str| {
-                if s.contains([',', '"']) {
-                    format!("\"{}\"", s.replace('"', "\"\""))
-                } else {
-                    s.to_string()
+            for (i, v) in values.enumerate() {
+                if i > 0 {
+                    out.push(',');
                 }
-            };
-            let all: Vec<String> = t.iter().chain(&cells).map(|s| quoted(s)).collect();
-            all.join(",") + "\n"
+                if v.contains([',', '"']) {
+                    out.push('"');
+                    out.push_str(&v.replace('"', "\"\""));
+                    out.push('"');
+                } else {
+                    out.push_str(v);
+                }
+            }
         }
         Format::Jsonl => {
-            let json = |s: &str| serde_json::Value::from(s).to_string();
-            let pairs: Vec<String> = ["nu", speed_key, "ratio"]
-                .iter()
-                .zip(t)
-                .chain(keys.iter().zip(&cells))
-                .filter(|(_, v)| !v.is_empty())
-                .map(|(k, v)| format!("{}:{}", json(k), json(v)))
-                .collect();
-            format!("{{{}}}\n", pairs.join(","))
+            out.push('{');
+            let pairs = keys.iter().zip(values).filter(|(_, v)| !v.is_empty());
+            for (i, (k, v)) in pairs.enumerate() {
+                if i > 0 {
+                    out.push(',');
+                }
+                push_json(out, k);
+                out.push(':');
+                push_json(out, v);
+            }
+            out.push('}');
+        }
+    }
+    out.push('\n');
+}
+
+/// Appends `s` as a JSON string, escaped as `serde_json` escapes it.
+fn push_json(out: &mut String, s: &str) {
+    if s.contains(|c: char| c == '"' || c == '\\' || c < ' ') {
+        out.push_str(&serde_json::Value::from(s).to_string());
+    } else {
+        out.push('"');
+        out.push_str(s);
+        out.push('"');
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// `push_json` writes each string as `serde_json` writes it: plain text, quotes,
+    /// backslashes, control characters and text beyond ASCII.
+    #[test]
+    fn json_strings_are_escaped_as_serde_json_escapes_them() {
+        for s in [
+            "",
+            "0.25",
+            "1.4733513154946710e-2",
+            "a \"quoted\" word",
+            "back\\slash",
+            "tab\there, newline\n, bell\u{7}",
+            "ν = 0.7 is outside (−1, 1/2]",
+            "/",
+        ] {
+            let mut out = String::new();
+            super::push_json(&mut out, s);
+            assert_eq!(out, serde_json::Value::from(s).to_string(), "{s:?}");
         }
     }
 }
