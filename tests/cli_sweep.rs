@@ -1,6 +1,7 @@
 //! `moving-hertz sweep`: one row a point in input order (ratio fastest), each k within its
 //! bound of the `ellipse` command's for the same inputs, JSON lines with the same values,
-//! ranges that hold their ends, domains refused before any work naming the option and the text.
+//! ranges that hold their ends, domains refused before any work naming the option and the text,
+//! and points refused by the solver carrying their errors in their rows across batches.
 
 use std::process::{Command, Output};
 
@@ -293,4 +294,68 @@ fn values_beyond_the_precision_name_the_text_as_typed() {
     // Zero itself is a value, at any precision.
     let out = run(&sweep("lin:0:0.5:2", ["--speed", "lin:0:0.5:2"], "2"));
     assert_eq!(out.status.code(), Some(0));
+}
+
+/// A sweep of more points than one batch (1,024) and than one block (64), with points the
+/// solver refuses in the middle (ratios beyond [1e-100, 1e100]): every row in input order, each
+/// refused point's row with its error and no result, the exit code 1 with their count, and the
+/// points on either side of a block's and of the batch's end as the `ellipse` command solves them.
+#[test]
+fn failed_points_across_batches_carry_their_errors() {
+    let out = run(&[
+        "sweep",
+        "--nu",
+        "0.2",
+        "--speed",
+        "0.5,0.9",
+        "--ratio",
+        "log:3e-151:3e149:601",
+        "--format",
+        "jsonl",
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let stdout = String::from_utf8(out.stdout).expect("UTF-8");
+    let lines: Vec<serde_json::Value> = (stdout.lines())
+        .map(|l| serde_json::from_str(l).expect("JSON"))
+        .collect();
+    assert_eq!(lines.len(), 1202);
+    let mut failed = 0;
+    for (i, v) in lines.iter().enumerate() {
+        let (speed, j) = (["0.5", "0.9"][i / 601], i % 601);
+        assert_eq!(
+            (v["nu"].as_str(), v["speed"].as_str()),
+            (Some("0.2"), Some(speed))
+        );
+        let ratio: f64 = v["ratio"].as_str().expect("ratio").parse().expect("number");
+        let want = 3.0 * 10f64.powf(-151.0 + 0.5 * j as f64);
+        assert!((ratio / want - 1.0).abs() < 1e-12, "row {i}: ratio {ratio}");
+        if (1e-100..=1e100).contains(&ratio) {
+            assert!(
+                v.get("error").is_none() && v["k"].is_string(),
+                "row {i}: {v}"
+            );
+        } else {
+            failed += 1;
+            assert!(v.get("k").is_none(), "row {i}: {v}");
+            let error = v["error"].as_str().expect("an error");
+            assert!(error.contains("outside its domain"), "row {i}: {error}");
+        }
+    }
+    assert_eq!(failed, 2 * 201);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("402 of 1202 points failed"), "{stderr}");
+    for i in [127, 128, 1023, 1024] {
+        let v = &lines[i];
+        let text = |key: &str| v[key].as_str().expect(key).to_string();
+        let (k, bound): (f64, f64) = (
+            text("k").parse().expect("k"),
+            text("k_error").parse().expect("bound"),
+        );
+        let speed = text("speed");
+        let (want, want_bound) = ellipse_k("0.2", ("--speed", &speed), &text("ratio"), "f64");
+        assert!(
+            (k / want - 1.0).abs() <= bound + want_bound,
+            "row {i}: k {k} vs {want}"
+        );
+    }
 }
