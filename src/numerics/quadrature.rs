@@ -142,9 +142,10 @@ pub fn clear_rule_caches() {
 
 /// The highest working precision at which quadrature rules are built: 32768 bits. A rule of n
 /// nodes costs about n²·bits/128 word operations to build (`docs/precision.md`), and the routes'
-/// rules have n ∝ bits, so that the first call at p bits costs ∝ p³: minutes at 16384 bits,
-/// over half an hour at 32768 bits on the machine of `docs/data/precision_scaling.csv`. Above
-/// it (MPFR allows up to 2^20 bits) every rule-based route refuses with [`Error::Precision`].
+/// rules have n ∝ bits, so that the first call at p bits costs ∝ p³: at 32768 bits about 64
+/// times the first call at 8192 bits (`crate_ellipse_cold` in `docs/data/precision_scaling.csv`),
+/// a few minutes. Above it (MPFR allows up to 2^20 bits) every rule-based route refuses with
+/// [`Error::Precision`].
 pub const MAX_RULE_BITS: u32 = 32768;
 
 /// [`Error::Precision`] naming `bits` when it exceeds [`MAX_RULE_BITS`]: every route that builds
