@@ -12,6 +12,7 @@ use moving_hertz::{with_precision, Ellipse, Material, Method, Options};
 use rayon::prelude::*;
 use rug::{Float, Rational};
 use std::borrow::Cow;
+use std::sync::{Mutex, PoisonError};
 
 /// The most points one sweep solves (checked before any work).
 pub const POINT_CAP: usize = 10_000_000;
@@ -412,10 +413,10 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         ))?;
     }
     let total = grid.len();
-    let mut bar = Progress::new("sweep", total);
+    let bar = Mutex::new(Progress::new("sweep", total));
     let mut failed = 0;
     // The rows of the points `range` and their count of failed points, formed where the block
-    // is solved.
+    // is solved, which then advances the progress bar.
     let solve = |range: std::ops::Range<usize>| {
         let (block, texts): (Vec<_>, Vec<_>) = range.map(|j| grid.point(j)).unzip();
         let mut out = String::new();
@@ -424,6 +425,8 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
             failed += usize::from(r.is_err());
             push_row(&mut out, a.format, speed_key, t, r);
         }
+        let mut bar = bar.lock().unwrap_or_else(PoisonError::into_inner);
+        bar.advance(texts.len());
         (out, failed)
     };
     for start in (0..total).step_by(BATCH) {
@@ -440,9 +443,8 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         };
         failed += blocks.iter().map(|(_, f)| f).sum::<usize>();
         emit(&blocks.into_iter().map(|(rows, _)| rows).collect::<String>())?;
-        bar.advance(end - start);
     }
-    bar.finish();
+    bar.lock().unwrap_or_else(PoisonError::into_inner).finish();
     if failed > 0 {
         return Err(CliError::Failed(format!(
             "{failed} of {total} points failed at {}; their rows carry the error",
