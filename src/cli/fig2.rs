@@ -9,7 +9,6 @@ use moving_hertz::scalar::Precision;
 use moving_hertz::{with_precision, Material};
 use rayon::prelude::*;
 use std::fmt::Write as _;
-use std::sync::{Mutex, PoisonError};
 
 #[derive(clap::Args, Debug)]
 pub struct Fig2Args {
@@ -60,21 +59,17 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
         .iter()
         .flat_map(|&r| fig2::speed_grid().into_iter().map(move |mr| (mr, r)))
         .collect();
-    let bar = Mutex::new(Progress::new(
+    let bar = Progress::new(
         format!("fig2 at {}", prec.label()),
         by_ratio_pairs.len() + by_speed_pairs.len(),
-    ));
-    let tick = |n: usize| {
-        bar.lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .advance(n)
-    };
+    );
+    let tick = |n: usize| bar.advance(n);
     let decimals = fig2::grid_decimals();
     let curves = [&by_ratio_pairs[..], &by_speed_pairs[..]];
     let [a, b] = with_precision!(prec, T, p => {
         fig2::solve_all::<T, 2>(nu, curves, p, &decimals, &tick).map_err(CliError::lib)?
     });
-    bar.lock().unwrap_or_else(PoisonError::into_inner).finish();
+    bar.finish();
     let (a_pts, b_pts) = (&a.points, &b.points);
     let suffix = suffix(nu, prec);
     let d1 = out.join(format!("data/fig2_e_vs_ratio{suffix}.csv"));

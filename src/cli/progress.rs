@@ -1,14 +1,16 @@
-//! A progress bar on stderr, shown only once the work has taken more than a second.
+//! A progress bar on stderr, shown only once the work has taken more than a second; advanced
+//! from any thread (the blocks of a sweep report as they are solved).
 
 use std::io::Write;
+use std::sync::{Mutex, PoisonError};
 use std::time::Instant;
 
 pub struct Progress {
     label: String,
     total: usize,
-    done: usize,
     start: Instant,
-    shown: bool,
+    /// Items done, and whether the bar has been drawn.
+    state: Mutex<(usize, bool)>,
 }
 
 impl Progress {
@@ -16,27 +18,28 @@ impl Progress {
         Progress {
             label: label.into(),
             total: total.max(1),
-            done: 0,
             start: Instant::now(),
-            shown: false,
+            state: Mutex::new((0, false)),
         }
     }
 
     /// `n` more items done: the bar is redrawn when a percent is passed (the clock is read
     /// only then).
-    pub fn advance(&mut self, n: usize) {
+    pub fn advance(&self, n: usize) {
+        let mut state = self.state.lock().unwrap_or_else(PoisonError::into_inner);
+        let (done, shown) = &mut *state;
         let step = (self.total / 100).max(1);
-        let before = self.done;
-        self.done += n;
-        if before / step == self.done / step && self.done != self.total {
+        let before = *done;
+        *done += n;
+        if before / step == *done / step && *done != self.total {
             return;
         }
         let elapsed = self.start.elapsed().as_secs_f64();
-        if elapsed < 1.0 && !self.shown {
+        if elapsed < 1.0 && !*shown {
             return;
         }
-        self.shown = true;
-        let frac = self.done as f64 / self.total as f64;
+        *shown = true;
+        let frac = *done as f64 / self.total as f64;
         let width = 40;
         let filled = (frac * width as f64).round() as usize;
         let eta = if frac > 0.0 {
@@ -56,7 +59,7 @@ impl Progress {
     }
 
     pub fn finish(&self) {
-        if self.shown {
+        if self.state.lock().unwrap_or_else(PoisonError::into_inner).1 {
             eprintln!(
                 "\r{} done in {:.1} s{}",
                 self.label,

@@ -183,7 +183,7 @@ fn study_integrals(out: &std::path::Path) -> Result<(), CliError> {
 
 fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
     let total = poisson::nu_grid().len() * poisson::SPEEDS.len() * poisson::ratio_grid().len();
-    let mut bar = Progress::new("poisson", total);
+    let bar = Progress::new("poisson", total);
     let pts = poisson::run(|| bar.advance(1)).map_err(CliError::lib)?;
     bar.finish();
     let csv: Vec<Vec<String>> = pts
@@ -528,7 +528,7 @@ fn write_condition_maps(out: &std::path::Path) -> Result<(), CliError> {
 }
 
 fn study_stability(out: &std::path::Path) -> Result<(), CliError> {
-    let mut bar = Progress::new("stability maps", stability::cells());
+    let bar = Progress::new("stability maps", stability::cells());
     let maps = stability::run(|| bar.advance(1));
     bar.finish();
     for m in &maps {

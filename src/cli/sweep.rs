@@ -12,7 +12,6 @@ use moving_hertz::{with_precision, Ellipse, Material, Method, Options};
 use rayon::prelude::*;
 use rug::{Float, Rational};
 use std::borrow::Cow;
-use std::sync::{Mutex, PoisonError};
 
 /// The most points one sweep solves (checked before any work).
 pub const POINT_CAP: usize = 10_000_000;
@@ -413,7 +412,7 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         ))?;
     }
     let total = grid.len();
-    let bar = Mutex::new(Progress::new("sweep", total));
+    let bar = Progress::new("sweep", total);
     let mut failed = 0;
     // The rows of the points `range` and their count of failed points, formed where the block
     // is solved, which then advances the progress bar.
@@ -425,7 +424,6 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
             failed += usize::from(r.is_err());
             push_row(&mut out, a.format, speed_key, t, r);
         }
-        let mut bar = bar.lock().unwrap_or_else(PoisonError::into_inner);
         bar.advance(texts.len());
         (out, failed)
     };
@@ -444,7 +442,7 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         failed += blocks.iter().map(|(_, f)| f).sum::<usize>();
         emit(&blocks.into_iter().map(|(rows, _)| rows).collect::<String>())?;
     }
-    bar.lock().unwrap_or_else(PoisonError::into_inner).finish();
+    bar.finish();
     if failed > 0 {
         return Err(CliError::Failed(format!(
             "{failed} of {total} points failed at {}; their rows carry the error",
