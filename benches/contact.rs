@@ -1,7 +1,9 @@
-//! The full contact solution (`ContactProblem::solve`: the ellipse (33), J0 of (32), then a, b,
-//! p0, d0 in closed form) per precision, ν = 0.3, R2/R1 = 2 (A1/B1 = 2, k < 1), under a load, at
-//! 1 − M_R = 0.5, 10⁻⁴ and 10⁻¹²; and J0 alone at the k of the 10⁻⁴ case by
-//! `routes::direct::approach_integral` (both peaks in closed form, what the solve uses) and by
+//! The full contact solution (`ContactProblem::solve`: the ellipse (33), J0 of (32) as k² I1 + I2
+//! from the ellipse's I1, I2, then a, b, p0, d0 in closed form) per precision, ν = 0.3,
+//! R2/R1 = 2 (A1/B1 = 2, k < 1), under a load, at 1 − M_R = 0.5, 10⁻⁴ and 10⁻¹²; beside it the
+//! ellipse solve alone at 10⁻⁴ (`ellipse_gap=1e-4`: what the contact solution adds to it is the
+//! difference); and J0 by quadratures of its own at the k of the 10⁻⁴ case:
+//! `routes::direct::approach_integral` (both peaks in closed form, the tests' reference) and
 //! `routes::direct::contact_integrals` (with I1, I2 and their k-derivatives, the adaptive route).
 //! At MPFR 256 bits also the solve at 1 − M_R = 10⁻¹⁰⁰⁰ (k ≈ 10⁻²⁵⁰).
 //!
@@ -10,7 +12,7 @@
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use moving_hertz::routes::{direct, AxisRatio};
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
-use moving_hertz::{ContactProblem, Loading, Material, Options};
+use moving_hertz::{solve_ellipse, ContactProblem, Loading, Material, Options};
 
 fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, gaps: &[&str]) {
     let mut g = c.benchmark_group(format!("contact/{label}"));
@@ -40,6 +42,11 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, gaps: &[&str]) {
         loading: Loading::Load(x("1000")),
         shear_modulus: x("80e9"),
     };
+    let ratio = problem.radius_across.clone() / &problem.radius_along;
+    let opts = Options::default();
+    g.bench_function("ellipse_gap=1e-4", |b| {
+        b.iter(|| solve_ellipse(black_box(&speed), black_box(&ratio), &opts))
+    });
     let k = problem
         .solve(&Options::default())
         .expect("solve")

@@ -75,10 +75,11 @@ FAMILIES = [
      "beside A1/B1 = 0.5, at 1 − M_R = 0.5 and 10⁻¹⁰, ν = 0.2: the cost of an extreme input "
      "against a normal one at the same precision."),
     ("contact", "The contact solution (`benches/contact.rs`)",
-     "`ContactProblem::solve` (the ellipse, J0 of (32), then a, b, p0, d0) for ν = 0.3, R2/R1 = 2 "
-     "under a load at 1 − M_R = 0.5, 10⁻⁴, 10⁻¹² (and 10⁻¹⁰⁰⁰ at 256 bits); and J0 alone at the "
-     "10⁻⁴ case's k by `approach_integral` (what the solve uses) and by `contact_integrals` (the "
-     "adaptive route's five integrals)."),
+     "`ContactProblem::solve` (the ellipse, J0 of (32) as k² I1 + I2 from the ellipse's I1, I2, "
+     "then a, b, p0, d0) for ν = 0.3, R2/R1 = 2 under a load at 1 − M_R = 0.5, 10⁻⁴, 10⁻¹² (and "
+     "10⁻¹⁰⁰⁰ at 256 bits); the ellipse solve alone at 10⁻⁴ (`ellipse_gap=1e-4`); and J0 by "
+     "quadratures of its own at the 10⁻⁴ case's k: `approach_integral` (both peaks in closed form, "
+     "the tests' reference) and `contact_integrals` (the adaptive route's five integrals)."),
     ("graded", "The graded route for k ≥ 1 (`benches/graded.rs`)",
      "I1, I2 and their k-derivatives in one call (layout and evaluation), ν = 0.2."),
     ("fast", "The fixed rule for k ≤ 1 (`benches/fast_integrals.rs`, group `fast`)",

@@ -23,14 +23,18 @@
 //! I1 and J0 to k (|k I1′/I1| ≈ 3, |k J0′/J0| ≤ 1, taken from the computed derivatives) and the
 //! rounding of each operation (a few ε): a = (·)^{1/3} divides I1's error by 3, p0 and the load
 //! add those of a and b, and so on (see [`ContactProblem::solve`]).
+//!
+//! **J0 from I1 and I2.** The integrands of I1 and I2 weighted by k² and 1 add up to J0's, so
+//! J0 = k² I1 + I2 at the solved k, from the integrals the ellipse solve returns; its bound is the
+//! larger of theirs plus 4ε (both are positive). `tests/contact.rs` checks it against the
+//! independent quadrature `routes::direct::approach_integral`.
 
 use super::convolution;
 use super::ellipse::{solve_ellipse, Ellipse, Options};
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
 use crate::physics::Speed;
-use crate::routes::direct::approach_integral;
-use crate::routes::AxisRatio;
+use crate::routes::j0_from_pair;
 use crate::scalar::{check_finite, check_positive, short, Real};
 
 /// What fixes the size of the contact: the load P or the approach d0 (both positive).
@@ -104,9 +108,9 @@ const RESCALE: &str = "(overflow or underflow: rescale the inputs)";
 
 impl<T: Real> ContactProblem<T> {
     /// Solves the problem: the ellipse (33) by [`solve_ellipse`] with `opts`, J0 of (32) at the
-    /// solved k by adaptive quadrature with its Rayleigh pole and its k-peak in closed form
-    /// ([`crate::routes::direct::approach_integral`]: the work depends on neither 1 − M_R nor k
-    /// once they are small), then a, b, p0, d0 and the load in closed form (module docs).
+    /// solved k as k² I1 + I2 from the ellipse's own I1, I2 (no further quadrature: the
+    /// integrands add up to J0's), then a, b, p0, d0 and the load in closed form (module docs).
+    /// The work is the ellipse solve's and a few operations.
     ///
     /// Accuracy: every quantity to a few ε of the working precision (measured against Johnson's
     /// static solution and a 320-bit solve in `tests/contact.rs`), each with a bound.
@@ -149,8 +153,9 @@ impl<T: Real> ContactProblem<T> {
         }
         let ratio = self.radius_across.clone() / &self.radius_along;
         let ellipse = ellipse(&self.speed, &ratio)?;
-        let k = ellipse.k.value.clone();
-        let j0 = approach_integral(&self.speed, &AxisRatio::new(k.clone())?, &T::zero(p))?
+        let ints = &ellipse.integrals;
+        let pair_error = ints.i1.error.max(ints.i2.error);
+        let j0 = j0_from_pair(&ellipse.k.value, &ints.i1.value, &ints.i2.value, pair_error)
             .checked("J0")?;
         let sizes = Sizes::new(self, &ellipse, &j0, &a1, &b1);
         Ok(ContactSolution {

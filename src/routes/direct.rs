@@ -719,8 +719,10 @@ pub fn contact_integrals<T: Real>(
 /// the halves' estimated errors and 8ε for the closed forms. Accuracy: within 16ε of mpmath
 /// and of the returned bound, at 1 − M_R from 1 to 2⁻¹²⁰ and k from 2⁻²⁰⁰ to 1000, and within
 /// the bound of [`contact_integrals`]' J0 at 64 bits more down to 1 − M_R = 10⁻¹⁰⁰⁰⁰⁰
-/// (`tests/direct.rs`). This is the J0 the contact solution uses; [`contact_integrals`] computes
-/// J0 together with I1, I2 and their derivatives, its right half graded about k instead.
+/// (`tests/direct.rs`). The contact solution and [`crate::Evaluator`] form J0 as k² I1 + I2
+/// from I1, I2 instead (no quadrature of its own); this route is their independent reference.
+/// [`contact_integrals`] computes J0 together with I1, I2 and their derivatives, its right
+/// half graded about k instead.
 pub fn approach_integral<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,

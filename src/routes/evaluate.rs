@@ -7,8 +7,8 @@
 //! tolerance allows their bound and k ≤ 2¹⁸⁰; otherwise the adaptive quadratures
 //! (the subtracted form (48) at k ≤ 1 when no derivatives are asked for). J0 comes with the
 //! derivatives from [`Route::Adaptive`] (one evaluation of G serves all five integrals), and
-//! otherwise from [`direct::approach_integral`] after the route, so that I1 and I2 do not depend
-//! on whether J0 is asked for. A named method runs that route, and a
+//! otherwise as k² I1 + I2 from the route's I1, I2 (their integrands add up to J0's), so that
+//! I1 and I2 do not depend on whether J0 is asked for. A named method runs that route, and a
 //! request it cannot serve is refused before any work: the series and the adaptive subtracted
 //! route give no derivatives, the subtracted one and the fixed rules have a range of k, and no
 //! route goes below [`FLOOR_EPS`]·ε of the working precision.
@@ -16,7 +16,7 @@
 use super::fast::{self, FastSetup};
 use super::graded::{self, GradedSetup};
 use super::series::{self, SeriesOptions};
-use super::{direct, AxisRatio, Evaluation, Integrals, Method, Route};
+use super::{direct, j0_from_pair, AxisRatio, Evaluation, Integrals, Method, Route};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::physics::Speed;
@@ -35,7 +35,7 @@ pub struct IntegralOptions {
     /// Also ∂I1/∂k and ∂I2/∂k (differentiated under the integral sign on the same nodes).
     pub derivatives: bool,
     /// Also J0 of (32) (the approach integral): with the derivatives by the adaptive route,
-    /// otherwise by [`direct::approach_integral`] after the route.
+    /// otherwise as k² I1 + I2 from the route's I1, I2, with their bound plus 4ε.
     pub j0: bool,
 }
 
@@ -128,30 +128,27 @@ impl<T: Real> Evaluator<T> {
         let route = self.route_for(&axes)?;
         let r = self.run(route, &axes)?;
         self.check_tolerance(&r)?;
-        self.with_j0(r, &axes)?.publish()
+        self.with_j0(r, &axes).publish()
     }
 
-    /// J0 of (32) added to a route's result that lacks it, when asked for: by
-    /// [`direct::approach_integral`] (both its peaks in closed form) to the same tolerance; its
-    /// bound joins the k-derivatives' (`extra_error`, the larger of the two). Dropped when not
-    /// asked for (the adaptive route computes it with the derivatives).
-    fn with_j0(&self, mut r: Evaluation<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
+    /// J0 of (32) added to a route's result that lacks it, when asked for: k² I1 + I2 from the
+    /// route's own I1, I2 ([`j0_from_pair`]: their bound plus 4ε), which joins the
+    /// k-derivatives' bound (`extra_error`, the larger of the two). Dropped when not asked for
+    /// (the adaptive route computes it with the derivatives, on its own nodes).
+    fn with_j0(&self, mut r: Evaluation<T>, axes: &AxisRatio<T>) -> Evaluation<T> {
         if !self.opts.j0 {
             r.j0 = None;
-            return Ok(r);
+            return r;
         }
         if r.j0.is_some() {
-            return Ok(r);
+            return r;
         }
         let p = axes.k.prec();
-        let tol = self
-            .tol
-            .clone()
-            .map_or_else(|| T::zero(p), |t| t.mul_pow2(-1));
-        let j = direct::approach_integral(&self.speed, axes, &tol)?;
+        let pair_error = RelError::of(&r.error_estimate);
+        let j = j0_from_pair(&axes.k, &r.i1, &r.i2, pair_error);
         r.extra_error = r.extra_error.max_of(j.error.to_real::<T>(p));
         r.j0 = Some(j.value);
-        Ok(r)
+        r
     }
 
     /// The route for `axes`, checked against the method's domain before any work.

@@ -396,6 +396,30 @@ impl<T: Real> Evaluation<T> {
     }
 }
 
+/// J0 of (32) from I1 and I2 of (34) at the same axis ratio k (normalisation of (37)): the
+/// integrands of I1 and I2 weighted by k² and 1 add up to J0's, since
+/// (k² cos²φ + sin²φ)/(k² cos²φ + sin²φ)^{3/2} = (k² cos²φ + sin²φ)^{−1/2}, so that
+///
+/// ```text
+/// J0 = k² I1 + I2.
+/// ```
+///
+/// Formed as k·(k·I1) + I2, whose intermediates stay within the working type wherever I1, I2
+/// and 1/k do (I1 ≈ 2(1 − ν)/k² as k → 0). Below the Rayleigh speed g > 0, so I1 and I2 are
+/// positive and J0's relative error is at most the larger of theirs plus the three roundings
+/// (4ε); a pair that is not positive gets [`RelError::INFINITE`] (an error at the public
+/// boundary). Tested against the independent quadrature [`direct::approach_integral`] and
+/// mpmath (`tests/direct.rs`, `tests/contact.rs`).
+pub(crate) fn j0_from_pair<T: Real>(k: &T, i1: &T, i2: &T, pair_error: RelError) -> Estimated<T> {
+    let value = k.clone() * &(k.clone() * i1) + i2;
+    let error = if i1.is_positive() && i2.is_positive() {
+        pair_error.add(RelError::eps::<T>(4, k.prec()))
+    } else {
+        RelError::INFINITE
+    };
+    Estimated::new(value, error)
+}
+
 /// I1, I2 of (34) in the normalisation of (37) at one axis ratio k, each with a bound on its
 /// relative error, optionally with ∂I1/∂k, ∂I2/∂k and J0 (of (32)), and the route that ran.
 /// Returned by [`integrals`] and [`Evaluator::at`].
