@@ -408,8 +408,9 @@ impl<T: Real> Evaluation<T> {
 /// and 1/k do (I1 ≈ 2(1 − ν)/k² as k → 0). Below the Rayleigh speed g > 0, so I1 and I2 are
 /// positive and J0's relative error is at most the larger of theirs plus the three roundings
 /// (4ε); a pair that is not positive gets [`RelError::INFINITE`] (an error at the public
-/// boundary). Tested against the independent quadrature [`direct::approach_integral`] and
-/// mpmath (`tests/direct.rs`, `tests/contact.rs`).
+/// boundary). Tested against the independent quadrature [`direct::approach_integral`], the
+/// adaptive route's own J0 and mpmath (`tests/contact.rs`, `tests/identities.rs`,
+/// `tests/direct.rs`).
 pub(crate) fn j0_from_pair<T: Real>(k: &T, i1: &T, i2: &T, pair_error: RelError) -> Estimated<T> {
     let value = k.clone() * &(k.clone() * i1) + i2;
     let error = if i1.is_positive() && i2.is_positive() {
