@@ -303,7 +303,7 @@ fn j0_far_below_the_f64_range() {
     }
 }
 
-/// `IntegralOptions::j0` with every method: J0 (by `approach_integral` after the route) within
+/// `IntegralOptions::j0` with every method: J0 (k² I1 + I2 from the route's I1, I2) within
 /// 16ε of mpmath and of its bound, and I1, I2 exactly those of the same call without J0 (which
 /// returns no J0, nor does the adaptive route with derivatives alone), at `f64` and
 /// double-double.
