@@ -262,8 +262,8 @@ fn domains_refused_before_any_work() {
 }
 
 /// A value the working precision cannot hold as a normal number is refused naming the option
-/// and the text as typed — a range by its whole text and the point — where a range's end of
-/// 1e-4000 was solved as a gap of 0 (each such row failing "gap = 0") or refused quoting
+/// and the text as typed — a range by its whole text and the point: a range's end of 1e-4000 at
+/// `f64` is neither solved as a gap of 0 nor refused quoting its rounded value
 /// '0.0000000000000000e0'.
 #[test]
 fn values_beyond_the_precision_name_the_text_as_typed() {

@@ -631,7 +631,7 @@ fn every_bound_holds_at_any_tolerance() {
 
 /// The pressure field (9) at any finite point: within its bound (relative to p0) of the 256-bit
 /// solution's pressure on a grid across the edge, exactly 0 far outside (|x| up to 10³⁰⁰,
-/// where x² overflows `f64` and double-double: the bound was ∞ or NaN), and a typed error for a
+/// where x² overflows `f64` and double-double, with a finite bound), and a typed error for a
 /// coordinate that is not finite — from the pressure, the displacement and the convolution.
 #[test]
 fn the_pressure_field_is_finite_everywhere() {
@@ -896,7 +896,7 @@ fn displacement_holds_its_bound_near_and_far() {
 }
 
 /// A seed for k that is not a positive finite number is refused before any work, named, at
-/// every precision (it was ignored: the solve started from the static ellipse).
+/// every precision (not ignored in favour of the static ellipse).
 #[test]
 fn a_seed_must_be_a_positive_number() {
     fn check<T: Real>(p: T::Prec) {

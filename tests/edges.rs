@@ -128,11 +128,10 @@ fn an_underflowing_derivative_is_refused() {
     assert!(d.is_negative() && d.is_finite(), "dI1/dk = {d:?}");
 }
 
-/// Found by tests/properties.rs: at M_R = 1e-100 and k = 1e-100 the subtracted integrand's
-/// M_R²·v² underflowed, and the adaptive quadrature ran 2·10⁶ evaluations (a second) before
-/// failing; at k = 1e-110 an integrand was NaN. Now k⁴ and 1/k⁴ must be normal numbers
-/// (refused before any work), and inside that range the integrals hold their bound against
-/// 256 bits, with every speed down to 0.
+/// Tiny speeds and axis ratios at `f64` (cases from tests/properties.rs): at M_R = 1e-100 and
+/// k = 1e-100 the subtracted integrand's M_R²·v² underflows, and at k = 1e-110 an integrand
+/// would be NaN. k⁴ and 1/k⁴ must be normal numbers (refused before any work), and inside that
+/// range the integrals hold their bound against 256 bits, with every speed down to 0.
 #[test]
 fn tiny_k_and_tiny_speed_hold_their_bounds() {
     for k in [1e-100, 1e-110, 1e110] {
@@ -190,10 +189,10 @@ fn precision_above_the_rules_limit_is_refused_first() {
 }
 
 /// Near the Rayleigh speed the root falls far below the static seed, k ~ (1 − M_R)^{1/4} (I2 ~
-/// (1 − M_R)^{−1/2}, I1 ~ k^{−2}): λ = ln k ≈ −576 at 1 − M_R = 10⁻¹⁰⁰⁰. Unbracketed Newton steps
-/// were cut to a factor e² in k, so that Newton did not converge in its 200 evaluations below
-/// 1 − M_R ≈ 10⁻⁶⁵⁰; the cut now doubles after each cut step, and the solve takes a few dozen
-/// evaluations at any gap. The roots are checked against the law k·(1 − M_R)^{−1/4} =
+/// (1 − M_R)^{−1/2}, I1 ~ k^{−2}): λ = ln k ≈ −576 at 1 − M_R = 10⁻¹⁰⁰⁰. An unbracketed Newton
+/// step in λ is cut to 2 (a factor e² in k), a reach that doubles after each cut step (a fixed
+/// reach of 2 would need more than Newton's 200 evaluations below 1 − M_R ≈ 10⁻⁶⁵⁰), so the
+/// solve takes a few dozen evaluations at any gap. The roots are checked against the law k·(1 − M_R)^{−1/4} =
 /// constant, whose corrections are O((1 − M_R)^{1/2}) relative: at 256 bits the solves at
 /// 10⁻¹⁰⁰⁰ … 10⁻¹⁰⁰⁰⁰⁰ must agree with the one at 10⁻³⁰⁰ within their two bounds. At `f64`
 /// (1 − M_R = 10⁻²⁵⁰, k ~ 10⁻⁶³ and at A1/B1 = 10⁵⁰) the bound holds against 256 bits.
@@ -237,10 +236,10 @@ fn roots_far_below_the_seed_near_the_rayleigh_speed() {
 
 /// The full contact solution at 1 − M_R = 10⁻⁷⁰⁰ (k ≈ 10⁻¹⁷⁵, I1 ≈ 10³⁵⁰) and 10⁻¹⁰⁰⁰⁰
 /// (k ≈ 10⁻²⁵⁰⁰): a, b, p0 and d0 within their bounds of the same problem at 320 bits.
-/// The sensitivity of I1 to k's error, k·I1′/I1 ≈ −2, was formed from k, I1′ and I1 converted to
-/// `f64` one by one, which overflowed and made a's bound infinite (a `NoConvergence` error for
-/// a solvable problem); and J0 of (32) was computed by panels graded down to ε and to k, whose
-/// number grew with log(1/ε) and |log k| until the evaluation cap refused the problem.
+/// The sensitivity of I1 to k's error, k·I1′/I1 ≈ −2, must be formed at the working precision
+/// (k, I1′ and I1 each lie outside the `f64` range, so that converting them one by one would make
+/// a's bound infinite), and J0 of (32) must not need panels graded down to ε and to k (their
+/// number grows with log(1/ε) and |log k| up to the evaluation cap).
 #[test]
 fn contact_far_below_the_f64_range_near_the_rayleigh_speed() {
     for gap in ["1e-700", "1e-10000"] {

@@ -452,7 +452,7 @@ fn indices_out_of_range_are_typed_errors() {
 }
 
 /// A value that does not fit the working type is a typed error naming x, not ±∞ or 0: F_2 at
-/// ν = ±10³⁰⁰ overflows `f64` (and was returned as ±∞), 1/x³ at 10³⁰⁰ underflows it; at 256
+/// ν = ±10³⁰⁰ overflows `f64` (an error, not ±∞), 1/x³ at 10³⁰⁰ underflows it; at 256
 /// bits both fit and equal the exact value correctly rounded; an exact zero stays a value.
 #[test]
 fn values_beyond_the_working_type_are_typed_errors() {
