@@ -104,7 +104,7 @@ pub fn panel_nodes(bits: u32) -> usize {
 
 /// The route's largest k is 2^K_MAX_LOG2 (≈ 1.5·10⁵⁴): beyond it (k⁵ > 2⁹⁰⁰) the derivatives'
 /// factors u^{−5/2} ~ k⁻⁵ approach 2⁻⁹⁶⁹, below which a double-double's low part is subnormal
-/// and loses bits (at k = 10⁶⁰ dI/dk was off by 6·10⁷ε at double-double).
+/// and loses bits (at k = 10⁶⁰ dI/dk would be off by about 6·10⁷ε at double-double).
 pub const K_MAX_LOG2: i32 = 180;
 
 /// The longest left panel, in units of ln 2 (the plan in [`left_plan`] mixes lengths 1…8).
