@@ -99,6 +99,56 @@ fn check_against_256<T: Real>(got: &Estimated<T>, inputs: [rug::Float; 3], label
     );
 }
 
+/// k to a few ε where |ln k| is large (the Newton iteration runs in λ = ln k, whose rounding,
+/// half an ulp of λ, would leave k a relative error up to |λ|ε/2 without the final step in k
+/// itself): at A1/B1 = 10^±100 (|λ| ≈ 118), at 1 − M_R = 10⁻²⁵⁰ (`f64`, λ ≈ −143) and, at 256
+/// bits, at 1 − M_R = 10⁻¹⁰⁰⁰ and 10⁻⁵⁰⁰⁰ (λ ≈ −575, −2878): k within 4ε of the solve 64 bits
+/// higher of the same inputs, its bound within 64ε.
+#[test]
+fn k_is_within_a_few_eps_where_ln_k_is_large() {
+    fn check<T: Real>(p: T::Prec, nu: &str, gap: &str, ratio: &str) {
+        let bits = T::bits(p);
+        let sp = speed::<T>(nu, gap, p);
+        let r = T::parse(ratio, p).unwrap();
+        let got = solve_ellipse(&sp, &r, &Options::default()).unwrap().k;
+        let hp = MpPrec::new(u64::from(bits) + 64).unwrap();
+        let up = |x: &T| Mp::from_float(&x.to_float(bits), hp);
+        let sp_hi = Material::new(up(sp.material().nu()))
+            .and_then(|m| m.speed_from_gap(up(sp.gap())))
+            .unwrap();
+        let want = solve_ellipse(&sp_hi, &up(&r), &Options::default())
+            .unwrap()
+            .k
+            .value;
+        let want = want.to_float(bits + 64);
+        let err = rug::Float::with_val(bits + 64, (got.value.to_float(bits + 64) - &want) / &want)
+            .abs()
+            .to_f64()
+            / T::epsilon(p).to_f64();
+        let bound = got.error.to_f64() / T::epsilon(p).to_f64();
+        let at = format!("{bits} bits, nu = {nu}, 1 - M_R = {gap}, A1/B1 = {ratio}");
+        assert!(err <= 4.0, "{at}: k off by {err:.2} eps");
+        assert!(
+            err <= bound && bound <= 64.0,
+            "{at}: error {err:.2} eps, bound {bound:.2} eps"
+        );
+    }
+    for (nu, gap, ratio) in [
+        ("0.2", "0.5", "1e-100"),
+        ("0.2", "0.5", "1e100"),
+        ("0.5", "1e-15", "1e-100"),
+        ("-0.9", "1e-10", "1e100"),
+    ] {
+        check::<f64>((), nu, gap, ratio);
+        check::<Dd>((), nu, gap, ratio);
+        check::<Mp>(MpPrec::new(256).unwrap(), nu, gap, ratio);
+    }
+    check::<f64>((), "0.25", "1e-250", "2");
+    for gap in ["1e-1000", "1e-5000"] {
+        check::<Mp>(MpPrec::new(256).unwrap(), "0.25", gap, "2");
+    }
+}
+
 /// Item 2's library half: dI1/dk ~ k⁻⁴ underflows `f64` at k = 1.8e83; refused as a typed
 /// error before any work (k⁴ is not a normal number; a result that underflows anyway is refused
 /// after the work); at 256 bits it is a normal number.

@@ -256,7 +256,8 @@ fn static_seed_wide(ratio: f64) -> f64 {
 /// working precision, no search.
 ///
 /// Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit quadrature solve,
-/// `tests/contact.rs`), I1, I2 at k to a few ε, with error bounds that include their carry
+/// `tests/contact.rs`; within 4ε where |ln k| is large, up to 2878 at 256 bits,
+/// `tests/edges.rs`), I1, I2 at k to a few ε, with error bounds that include their carry
 /// from the last evaluation to the root (`every_bound_holds_at_any_tolerance`). The bound on k
 /// is for the inputs as represented at the working precision: near the Rayleigh speed k is
 /// ill-conditioned in M_R (condition number ~M_R/(4(1 − M_R))) but well conditioned in the gap
@@ -721,7 +722,14 @@ impl<'a, T: Real> Newton<'a, T> {
         self.spent += 1;
         let scale = lam.clone().abs().max_of(T::one(self.prec()));
         if let Some((root, err, ints)) = halley_from_f64(&lam, &f, &df, &ci, c, &self.eps, &scale) {
-            return Ok(Some(finish(root.clone(), &root, ints, err, self.spent)));
+            return Ok(Some(finish(
+                root.clone(),
+                &root,
+                ints,
+                self.ratio,
+                err,
+                self.spent,
+            )));
         }
         if df.is_positive() && df.is_finite() {
             self.lam = lam - f / &df;
@@ -737,7 +745,7 @@ impl<'a, T: Real> Newton<'a, T> {
             let (f, df, ci) = self.eval(&lam, self.chord.as_ref(), false)?;
             self.spent += 1;
             if f.is_zero() {
-                let shape = finish(lam.clone(), &lam, ci, T::zero(p), self.spent);
+                let shape = finish(lam.clone(), &lam, ci, self.ratio, T::zero(p), self.spent);
                 return Ok((shape, self.fresh_slope));
             }
             if f.is_negative() {
@@ -857,7 +865,7 @@ impl<'a, T: Real> Newton<'a, T> {
             before: None,
         };
         Some((
-            finish(root.clone(), &root, ints, err, self.spent),
+            finish(root.clone(), &root, ints, self.ratio, err, self.spent),
             Some(slope),
         ))
     }
@@ -922,6 +930,7 @@ impl<'a, T: Real> Newton<'a, T> {
                 self.lam.clone(),
                 lam_old,
                 ci,
+                self.ratio,
                 step.clone(),
                 self.spent,
             ));
@@ -933,7 +942,14 @@ impl<'a, T: Real> Newton<'a, T> {
         let carry = carry_error(step, &age.clone().mul_i64(8));
         if was_newton && quadratic && projected <= eps.clone() * &scale.square() && carry <= *eps {
             let err = projected / scale;
-            return Some(finish(self.lam.clone(), lam_old, ci, err, self.spent));
+            return Some(finish(
+                self.lam.clone(),
+                lam_old,
+                ci,
+                self.ratio,
+                err,
+                self.spent,
+            ));
         }
         None
     }
@@ -1217,35 +1233,71 @@ struct Chord<T> {
     before: Option<[T; 4]>,
 }
 
-/// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`:
-/// I1, I2 are carried to the new k to first order, I(k) ≈ I(k_old) + I′(k_old)(k − k_old),
-/// and their error estimate grows by the carry's error ([`carry_error`]).
+/// Carries I1, I2 of `ci` from `k_old` to `k` to first order, I(k) ≈ I(k_old) + I′(k_old)(k − k_old):
+/// their error estimate grows by the carry's error ([`carry_error`]) and the derivatives',
+/// which stay those at `k_old`, by ≲ |k I″/I′|·|dk/k| with |k I″/I′| ≤ 8 (5 for I1 ∝ ln k/k³).
+fn carry<T: Real>(ci: &mut Evaluation<T>, k_old: &T, k: &T) {
+    let dk = k.clone() - k_old;
+    ci.i1 += &(ci.di1_dk() * &dk);
+    ci.i2 += &(ci.di2_dk() * &dk);
+    let moved = (dk / k).abs();
+    ci.error_estimate += &carry_error(&moved, &ci.extra_error);
+    ci.extra_error += &moved.mul_i64(8);
+}
+
+/// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`,
+/// `last_step` a bound on |λ − λ*| (the step that stopped the iteration, or the Halley and
+/// Hermite stops' own estimate).
+///
+/// I1, I2 are carried to k = e^λ ([`carry`]). That k inherits λ's rounding, half an ulp of λ,
+/// as a relative error up to |λ|ε/2 (λ ≈ −576 at 1 − M_R = 10⁻¹⁰⁰⁰), so one Newton step is
+/// taken in k itself on the carried integrals: F = ln(I2/(I1·A1/B1)) there, and
+/// k ← k·e^{−F/F′} with I1, I2 carried again. Its result's relative error is bounded by
+///
+/// * the integrals' error through F: (δI2/I2 + δI1/I1 + 4ε)/F′ (F′ ≥ ~1 here; 1/4 is the floor);
+/// * the step's own error from F′'s, |F/F′|·8(r + δI/I)/F′ with r the derivatives' relative
+///   error (|k I′/I| ≤ 4 each);
+/// * the second-order remainder of both steps, 16·(|λ − λ*| + |F/F′|)²;
+/// * the rounding of e^{−F/F′} and of the product, 4ε.
+///
+/// Where F′ is not positive and finite no step is taken, and the bound keeps e^λ's rounding,
+/// |λ|ε, and twice the last step.
 fn finish<T: Real>(
     lam: T,
     lam_old: &T,
     mut ci: Evaluation<T>,
+    ratio: &T,
     last_step: T,
     iterations: usize,
 ) -> Shape<T> {
     let p = lam.prec();
-    let k = lam.clone().exp();
-    let dk = k.clone() - lam_old.clone().exp();
-    ci.i1 += &(ci.di1_dk() * &dk);
-    ci.i2 += &(ci.di2_dk() * &dk);
-    let moved = (dk.clone() / &k).abs();
-    let carried = carry_error(&moved, &ci.extra_error);
-    // The derivatives stay those of the previous iterate: relative error ≲ |k I″/I′|·|dk/k|,
-    // with |k I″/I′| ≤ 8 (5 for I1 ∝ ln k/k³).
-    ci.extra_error += &moved.mul_i64(8);
-    // δk/k ≈ (δI2/I2 + δI1/I1)/F′ + last step; F′ ≥ ~1 here, keep it simple and safe.
-    let df = k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1);
-    let prop = ci.error_estimate.clone().mul_i64(2) / df.abs().max_of(T::from_ratio(1, 4, p));
-    ci.error_estimate += &carried;
-    // k = e^λ inherits λ's rounding, half an ulp of λ, as a relative error up to |λ|ε/2
-    // (docs/calibration.md): |λ|ε covers it with exp's own, 4ε the rest.
-    let rounding = T::epsilon(p) * &(lam.abs() + &T::from_i64(4, p));
+    let lam_abs = lam.clone().abs();
+    let stepped = lam.exp();
+    carry(&mut ci, &lam_old.clone().exp(), &stepped);
+    let df = stepped.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1);
+    let floor = df.clone().abs().max_of(T::from_ratio(1, 4, p));
+    let polish = df.is_positive() && df.is_finite();
+    let delta = if polish {
+        (ci.i2.clone() / &ci.i1 / ratio).ln() / &df
+    } else {
+        T::zero(p)
+    };
+    let k = stepped.clone() * &(-delta.clone()).exp();
+    carry(&mut ci, &stepped, &k);
+    let eps = T::epsilon(p);
+    let through_f = (ci.error_estimate.clone().mul_i64(2) + &eps.clone().mul_i64(4)) / &floor;
+    let residual = if polish {
+        let df_error = (ci.extra_error.clone() + &ci.error_estimate).mul_i64(8) / &floor;
+        let second = (last_step.abs() + &delta.clone().abs())
+            .square()
+            .mul_i64(16);
+        delta.abs() * &df_error + &second
+    } else {
+        // No step in k (F′ unusable): e^λ's rounding, up to |λ|ε/2, and the last step stay.
+        last_step.mul_i64(2) + &(eps.clone() * &lam_abs)
+    };
     Shape {
-        error_estimate: prop + last_step.mul_i64(2) + &rounding,
+        error_estimate: through_f + &residual + &eps.mul_i64(4),
         k,
         integrals: ci,
         iterations,
