@@ -1245,23 +1245,29 @@ fn carry<T: Real>(ci: &mut Evaluation<T>, k_old: &T, k: &T) {
     ci.extra_error += &moved.mul_i64(8);
 }
 
+/// Above this |λ| = |ln k| the solve ends with a Newton step in k itself ([`finish`]): below it
+/// e^λ's rounding, at most |λ|ε/2 = 4ε relative, stays in k (and in its bound), where the step
+/// would cost about 5–10% of an `f64` solve (an exponential and a logarithm;
+/// docs/calibration.md).
+const STEP_IN_K_ABOVE: f64 = 8.0;
+
 /// The shape at λ = ln k from the integrals `ci` evaluated at the previous iterate `lam_old`,
 /// `last_step` a bound on |λ − λ*| (the step that stopped the iteration, or the Halley and
-/// Hermite stops' own estimate).
+/// Hermite stops' own estimate). I1, I2 are carried to k = e^λ ([`carry`]).
 ///
-/// I1, I2 are carried to k = e^λ ([`carry`]). That k inherits λ's rounding, half an ulp of λ,
-/// as a relative error up to |λ|ε/2 (λ ≈ −576 at 1 − M_R = 10⁻¹⁰⁰⁰), so one Newton step is
-/// taken in k itself on the carried integrals: F = ln(I2/(I1·A1/B1)) there, and
-/// k ← k·e^{−F/F′} with I1, I2 carried again. Its result's relative error is bounded by
+/// That k inherits λ's rounding, half an ulp of λ, as a relative error up to |λ|ε/2. Up to
+/// |λ| = [`STEP_IN_K_ABOVE`] the bound carries it: (δI2/I2 + δI1/I1)/F′ (F′ ≥ ~1 here; 1/4 is
+/// the floor) plus twice the last step plus (|λ| + 4)ε. Above (λ ≈ −576 at 1 − M_R = 10⁻¹⁰⁰⁰),
+/// one Newton step is taken in k itself on the carried integrals: F = ln(I2/(I1·A1/B1)) there,
+/// and k ← k·e^{−F/F′} with I1, I2 carried again. Its result's relative error is bounded by
 ///
-/// * the integrals' error through F: (δI2/I2 + δI1/I1 + 4ε)/F′ (F′ ≥ ~1 here; 1/4 is the floor);
+/// * the integrals' error through F: (δI2/I2 + δI1/I1 + 4ε)/F′;
 /// * the step's own error from F′'s, |F/F′|·8(r + δI/I)/F′ with r the derivatives' relative
 ///   error (|k I′/I| ≤ 4 each);
 /// * the second-order remainder of both steps, 16·(|λ − λ*| + |F/F′|)²;
 /// * the rounding of e^{−F/F′} and of the product, 4ε.
 ///
-/// Where F′ is not positive and finite no step is taken, and the bound keeps e^λ's rounding,
-/// |λ|ε, and twice the last step.
+/// Where F′ is not positive and finite no step is taken, and the first bound applies.
 fn finish<T: Real>(
     lam: T,
     lam_old: &T,
@@ -1271,33 +1277,32 @@ fn finish<T: Real>(
     iterations: usize,
 ) -> Shape<T> {
     let p = lam.prec();
+    let eps = T::epsilon(p);
     let lam_abs = lam.clone().abs();
     let stepped = lam.exp();
+    let own = ci.error_estimate.clone();
     carry(&mut ci, &lam_old.clone().exp(), &stepped);
     let df = stepped.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1);
     let floor = df.clone().abs().max_of(T::from_ratio(1, 4, p));
-    let polish = df.is_positive() && df.is_finite();
-    let delta = if polish {
-        (ci.i2.clone() / &ci.i1 / ratio).ln() / &df
-    } else {
-        T::zero(p)
-    };
+    if lam_abs.to_f64() <= STEP_IN_K_ABOVE || !(df.is_positive() && df.is_finite()) {
+        let prop = own.mul_i64(2) / &floor;
+        return Shape {
+            error_estimate: prop + &last_step.mul_i64(2) + &(eps * &(lam_abs + &T::from_i64(4, p))),
+            k: stepped,
+            integrals: ci,
+            iterations,
+        };
+    }
+    let delta = (ci.i2.clone() / &ci.i1 / ratio).ln() / &df;
     let k = stepped.clone() * &(-delta.clone()).exp();
     carry(&mut ci, &stepped, &k);
-    let eps = T::epsilon(p);
     let through_f = (ci.error_estimate.clone().mul_i64(2) + &eps.clone().mul_i64(4)) / &floor;
-    let residual = if polish {
-        let df_error = (ci.extra_error.clone() + &ci.error_estimate).mul_i64(8) / &floor;
-        let second = (last_step.abs() + &delta.clone().abs())
-            .square()
-            .mul_i64(16);
-        delta.abs() * &df_error + &second
-    } else {
-        // No step in k (F′ unusable): e^λ's rounding, up to |λ|ε/2, and the last step stay.
-        last_step.mul_i64(2) + &(eps.clone() * &lam_abs)
-    };
+    let df_error = (ci.extra_error.clone() + &ci.error_estimate).mul_i64(8) / &floor;
+    let second = (last_step.abs() + &delta.clone().abs())
+        .square()
+        .mul_i64(16);
     Shape {
-        error_estimate: through_f + &residual + &eps.mul_i64(4),
+        error_estimate: through_f + &(delta.abs() * &df_error) + &second + &eps.mul_i64(4),
         k,
         integrals: ci,
         iterations,
