@@ -645,7 +645,7 @@ impl<'a, T: Real> Newton<'a, T> {
         let p = self.prec();
         let ax = AxisRatio::new(lam.clone().exp())?;
         let mut ci = self.evaluator.for_newton(&ax, chord.is_none(), probe)?;
-        let f = (ci.i2.clone() / &ci.i1 / self.ratio).ln();
+        let f = shape_residual(&ci, self.ratio);
         let df = match chord {
             Some(c) => {
                 // Derivatives kept from an earlier iterate: their relative error grows by
@@ -655,7 +655,7 @@ impl<'a, T: Real> Newton<'a, T> {
                 ci.extra_error = age + &T::epsilon(p).mul_i64(fast::DK_BOUND_EPS);
                 c.df.clone()
             }
-            None => ax.k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1),
+            None => shape_slope(&ax.k, &ci),
         };
         Ok((f, df, ci))
     }
@@ -1233,6 +1233,17 @@ struct Chord<T> {
     before: Option<[T; 4]>,
 }
 
+/// F(λ) = ln(I2/(I1·A1/B1)) of the shape equation (33), whose root in λ = ln k the solve finds
+/// (the quotient formed first, so that F near its root carries a few ε absolute).
+fn shape_residual<T: Real>(ci: &Evaluation<T>, ratio: &T) -> T {
+    (ci.i2.clone() / &ci.i1 / ratio).ln()
+}
+
+/// F′ = dF/dλ = k (I2′/I2 − I1′/I1) at k from the k-derivatives of `ci`.
+fn shape_slope<T: Real>(k: &T, ci: &Evaluation<T>) -> T {
+    k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1)
+}
+
 /// Carries I1, I2 of `ci` from `k_old` to `k` to first order, I(k) ≈ I(k_old) + I′(k_old)(k − k_old):
 /// their error estimate grows by the carry's error ([`carry_error`]) and the derivatives',
 /// which stay those at `k_old`, by ≲ |k I″/I′|·|dk/k| with |k I″/I′| ≤ 8 (5 for I1 ∝ ln k/k³).
@@ -1282,7 +1293,7 @@ fn finish<T: Real>(
     let stepped = lam.exp();
     let own = ci.error_estimate.clone();
     carry(&mut ci, &lam_old.clone().exp(), &stepped);
-    let df = stepped.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1);
+    let df = shape_slope(&stepped, &ci);
     let floor = df.clone().abs().max_of(T::from_ratio(1, 4, p));
     if lam_abs.to_f64() <= STEP_IN_K_ABOVE || !(df.is_positive() && df.is_finite()) {
         let prop = own.mul_i64(2) / &floor;
@@ -1293,7 +1304,7 @@ fn finish<T: Real>(
             iterations,
         };
     }
-    let delta = (ci.i2.clone() / &ci.i1 / ratio).ln() / &df;
+    let delta = shape_residual(&ci, ratio) / &df;
     let k = stepped.clone() * &(-delta.clone()).exp();
     carry(&mut ci, &stepped, &k);
     let through_f = (ci.error_estimate.clone().mul_i64(2) + &eps.clone().mul_i64(4)) / &floor;
