@@ -111,6 +111,11 @@ impl fmt::Display for Error {
                 needed,
                 reached,
             } => match needed {
+                // An estimate that saturated its count: said in words, not as 2^64 - 1.
+                Some(u64::MAX) => write!(
+                    f,
+                    "{what} would need more terms than a 64-bit count holds, more than the cap of {cap} (last term relative size {reached})"
+                ),
                 Some(n) => write!(
                     f,
                     "{what} would need about {n} terms, more than the cap of {cap} (last term relative size {reached})"

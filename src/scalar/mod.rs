@@ -403,19 +403,34 @@ impl Precision {
         }
     }
 
-    /// Parses `f64`, `dd` (or `double-double`) or a bit count such as `256`.
+    /// Parses the names [`Precision::label`] prints: `f64`, `dd`, or a number of MPFR bits as
+    /// `256` or `mpfr256` (any case; `53` is MPFR at 53 bits, not `f64`). `double` is refused as
+    /// ambiguous (f64 or double-double); a bit count outside [[`MpPrec::MIN_BITS`],
+    /// [`MpPrec::MAX_BITS`]] is [`Error::Precision`], one too long for a `u64` a parse error.
     pub fn parse(s: &str) -> Result<Self> {
-        match s.trim().to_ascii_lowercase().as_str() {
-            "f64" | "double" | "53" => Ok(Precision::F64),
-            "dd" | "double-double" | "doubledouble" => Ok(Precision::DoubleDouble),
-            t => {
-                let bits: u64 = t.parse().map_err(|_| Error::Parse {
-                    text: s.to_string(),
-                    reason: "expected f64, dd or a number of bits",
-                })?;
-                Ok(Precision::Mpfr(MpPrec::new(bits)?))
+        let bad = |reason: &'static str| Error::Parse {
+            text: s.to_string(),
+            reason,
+        };
+        let t = s.trim().to_ascii_lowercase();
+        match t.as_str() {
+            "f64" => return Ok(Precision::F64),
+            "dd" => return Ok(Precision::DoubleDouble),
+            "double" => {
+                return Err(bad(
+                    "ambiguous: f64 (53 bits) or dd (double-double, 106 bits)",
+                ))
             }
+            _ => {}
         }
+        let digits = t.strip_prefix("mpfr").unwrap_or(&t);
+        if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+            return Err(bad("expected f64, dd or a number of bits (256 or mpfr256)"));
+        }
+        let bits: u64 = digits
+            .parse()
+            .map_err(|_| bad("a number of bits far outside the supported range"))?;
+        Ok(Precision::Mpfr(MpPrec::new(bits)?))
     }
     /// Significand bits of this precision.
     pub fn bits(&self) -> u32 {

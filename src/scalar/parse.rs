@@ -18,10 +18,16 @@ pub fn decimal_to_rational(text: &str) -> Result<Rational> {
         let r: Rational = s.parse().map_err(|_| bad("not a fraction p/q"))?;
         return Ok(r);
     }
+    // An exponent too large for an i64 is refused below as out of range, unless the mantissa
+    // is zero: `0e-99999999999999999999` is exactly 0.
     let (mantissa, exponent) = match s.find(['e', 'E']) {
         Some(i) => {
-            let e: i64 = s[i + 1..].parse().map_err(|_| bad("bad exponent"))?;
-            (&s[..i], e)
+            let t = &s[i + 1..];
+            let digits = t.strip_prefix(['+', '-']).unwrap_or(t);
+            if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+                return Err(bad("bad exponent"));
+            }
+            (&s[..i], t.parse::<i64>().unwrap_or(i64::MAX))
         }
         None => (s, 0),
     };
@@ -41,10 +47,13 @@ pub fn decimal_to_rational(text: &str) -> Result<Rational> {
     {
         return Err(bad("not a decimal number"));
     }
+    let digits = format!("{int_part}{frac_part}");
+    if digits.bytes().all(|b| b == b'0') {
+        return Ok(Rational::new());
+    }
     if exponent.abs() > 100_000 {
         return Err(bad("exponent out of range"));
     }
-    let digits = format!("{int_part}{frac_part}");
     let m: Integer = if digits.is_empty() {
         Integer::new()
     } else {
