@@ -33,11 +33,14 @@ pub fn main() -> Result<()> {
     println!("major axis {} the motion", lo.ellipse.major.label());
     println!("central pressure            p0 = {} Pa", lo.p0);
     println!("approach                    d0 = {} m", lo.d0);
-    // The pressure field (9) at a point of the contact, (x along the motion, y across it).
+    // The pressure field (9) at a point of the contact, (x along the motion, y across it); its
+    // bound is relative to p0 (the pressure vanishes on the edge of the contact).
     let (x, y) = (0.2 * lo.a.value, 0.1 * lo.b.value);
+    let p = lo.pressure(&x, &y)?;
     println!(
-        "pressure at ({x:.3e}, {y:.3e}) = {} Pa",
-        lo.pressure(&x, &y)?
+        "pressure at ({x:.3e}, {y:.3e}) = {} (error <= {} relative to p0) Pa",
+        p.to_decimal(),
+        p.error
     );
     Ok(())
 }

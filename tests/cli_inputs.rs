@@ -4,6 +4,7 @@
 //! no directory tree, tolerances below the `f64` range, and a tolerance refused at a precision
 //! that cannot meet it.
 
+use rug::ops::Pow;
 use rug::Float;
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -167,7 +168,7 @@ fn refusals_name_the_option_and_quote_the_value_as_typed() {
     refused(
         &e(&["--nu", "0.2", "--method", "series"]),
         2,
-        &["'--method'", "'series'", "auto, adaptive or fixed"],
+        &["'--method <METHOD>'", "'series'", "auto, adaptive, fixed"],
     );
     // A precision out of range names the bits as typed.
     refused(
@@ -348,11 +349,14 @@ fn inputs_are_echoed_as_typed() {
     assert_eq!(v["inputs"]["ratio"], "5");
     assert_eq!(v["inputs"]["nu"], "0.2");
     assert_eq!(v["inputs"]["precision"], "mpfr1024");
-    assert_eq!(field(&v, "k"), k_line);
+    // The same value in the text (scientific notation) and the JSON.
+    let at = |s: &str| Float::with_val(1100, Float::parse(s).expect("a number"));
+    assert_eq!(at(field(&v, "k")), at(k_line));
 }
 
-/// `--digits N` prints each result correctly rounded to N significant digits (the full value
-/// when N is more than the precision has), and is refused with `--json` and for N = 0.
+/// `--digits N` prints each result correctly rounded to N significant digits in scientific
+/// notation (every digit when N is more than the precision has), and is refused with `--json`
+/// and for N = 0.
 #[test]
 fn digits_shorten_the_printed_results() {
     let base = ["ellipse", "--nu", "0.2", "--speed", "0.9", "--ratio", "0.5"];
@@ -372,8 +376,7 @@ fn digits_shorten_the_printed_results() {
         assert_eq!(short.len(), keys.len());
         for (key, s) in keys.iter().zip(&short) {
             let exact = Float::with_val(200, Float::parse(field(&full, key)).unwrap());
-            let want = exact.to_string_radix(10, Some(n));
-            assert_eq!(s, &want, "{key} to {n} digits");
+            assert_rounded(s, &exact, n);
         }
     }
     // More digits than double-double has: every digit, as without --digits.
@@ -390,6 +393,25 @@ fn digits_shorten_the_printed_results() {
     );
 }
 
+/// `s` is `d.ddd…e±x` with `n` significant digits (a nonzero first digit) and within half a
+/// unit of its last digit of `exact`.
+fn assert_rounded(s: &str, exact: &Float, n: usize) {
+    let (mantissa, exp) = s
+        .split_once('e')
+        .unwrap_or_else(|| panic!("{s}: no exponent"));
+    let digits = mantissa.trim_start_matches('-').replace('.', "");
+    assert_eq!(digits.len(), n, "{s}: {n} digits");
+    let point = mantissa.find('.').unwrap_or(mantissa.len());
+    assert!(
+        !digits.starts_with('0') && point == 1 + usize::from(mantissa.starts_with('-')),
+        "{s}: one nonzero digit before the point"
+    );
+    let exp: i32 = exp.parse().unwrap_or_else(|_| panic!("{s}: exponent"));
+    let printed = Float::with_val(600, Float::parse(s).expect("a number"));
+    let ulp = Float::with_val(600, 10).pow(exp - n as i32 + 1);
+    let off = Float::with_val(600, &printed - exact).abs();
+    assert!(off <= ulp / 2u32, "{s} is not {exact} to {n} digits");
+}
 /// Issue 20 item 9: `--repeat` is capped at 1000 (stated in the help) and a larger count is
 /// refused before any work.
 #[test]
@@ -565,4 +587,537 @@ fn a_methods_range_of_k_is_checked_first() {
         2,
         &["'--k'", "8335", "(0, 1]", "adaptive-subtracted"],
     );
+}
+
+/// The commands, `help` and `--version`, each with arguments that succeed (`fig2` and `study`
+/// write under `dir`).
+fn every_command(dir: &str) -> Vec<Vec<String>> {
+    let ell = "ellipse --nu 0.2 --speed 0.5 --ratio 0.5";
+    let contact = "contact --nu 0.3 --speed 0.5 --r-along 0.05 --r-across 0.02 --load 1000 \
+                   --shear-modulus 80e9";
+    [
+        "rayleigh --nu 0.25",
+        "integrals --nu 0.2 --speed 0.5 --k 0.5",
+        ell,
+        contact,
+        "sweep --nu 0.2 --speed 0.5 --ratio 0.5,2",
+        "symbolic coefficients --n 5",
+        "symbolic moments --n 5",
+        "symbolic condition --n 5",
+        "completions bash",
+        "help",
+        "help contact",
+        "contact --help",
+        "--version",
+        &format!("fig2 --out {dir}"),
+        &format!("study rayleigh --out {dir}"),
+    ]
+    .iter()
+    .map(|c| c.split_whitespace().map(String::from).collect())
+    .collect()
+}
+
+/// Issue 46 item 5: standard output closed by its reader (`| head -1`, here before the first
+/// write) or full (`> /dev/full`) stops every command, `help` and `--version` with exit code 1
+/// and one line, `writing to standard output: …`, on standard error; no panic.
+#[test]
+fn a_closed_or_full_output_is_one_line_and_exit_1() {
+    let tmp = TempDir::new("closed-output");
+    let d = tmp.0.to_str().expect("utf-8 path");
+    for args in every_command(d) {
+        for how in ["closed", "full"] {
+            let stdout = match how {
+                "closed" => {
+                    let (reader, writer) = std::io::pipe().expect("a pipe");
+                    drop(reader);
+                    std::process::Stdio::from(writer)
+                }
+                _ => std::fs::OpenOptions::new()
+                    .write(true)
+                    .open("/dev/full")
+                    .expect("/dev/full")
+                    .into(),
+            };
+            let out = Command::new(env!("CARGO_BIN_EXE_moving-hertz"))
+                .args(&args)
+                .stdout(stdout)
+                .output()
+                .expect("the binary runs");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(1), "{args:?} {how}: {err}");
+            assert!(!err.contains("panicked"), "{args:?} {how}: {err}");
+            let last = err.trim_end().lines().last().unwrap_or("");
+            assert!(
+                last.starts_with("moving-hertz: error: writing to standard output: "),
+                "{args:?} {how}: {err}"
+            );
+            // Only `study` prints notes of its progress before.
+            if args[0] != "study" {
+                assert_eq!(err.trim_end().lines().count(), 1, "{args:?} {how}: {err}");
+            }
+        }
+    }
+}
+
+/// Issue 46 item 5: an input of 100,000 digits is quoted cut to its ends and length, in the
+/// refusals of the command and of clap's parse, not echoed in full twice.
+#[test]
+fn long_inputs_are_cut_in_messages() {
+    let long = format!("1{}", "2".repeat(99_999));
+    let bad = format!("{long}x");
+    for (args, length) in [
+        (
+            vec!["rayleigh", "--nu", long.as_str()],
+            "(100000 characters)",
+        ),
+        (
+            vec!["rayleigh", "--nu", bad.as_str()],
+            "(100001 characters)",
+        ),
+        (
+            vec!["ellipse", "--nu", "0.2", "--speed", "0.5", "--ratio", &long],
+            "(100000 characters)",
+        ),
+    ] {
+        let msg = refused(&args, 2, &["'--", "1222222222", length]);
+        assert!(msg.len() < 600, "{} characters: {msg}", msg.len());
+    }
+}
+
+/// Issue 46 item 5: counts too large for 64 bits are said in words (the series' terms at
+/// 1 - M_R = 1e-300) or in full (a sweep of 10^21 points), never as 18446744073709551615.
+#[test]
+fn counts_that_do_not_fit_are_said_in_words() {
+    let msg = refused(
+        &[
+            "integrals",
+            "--nu",
+            "0.5",
+            "--gap",
+            "1e-300",
+            "--k",
+            "2",
+            "--method",
+            "series",
+        ],
+        1,
+        &["more terms than a 64-bit count holds", "100000"],
+    );
+    assert!(!msg.contains("18446744073709551615"), "{msg}");
+    let msg = refused(
+        &[
+            "sweep",
+            "--nu",
+            "lin:0:0.5:10000000",
+            "--speed",
+            "lin:0:0.5:10000000",
+            "--ratio",
+            "lin:1:2:10000000",
+        ],
+        2,
+        &["1000000000000000000000 points", "10000000"],
+    );
+    assert!(!msg.contains("18446744073709551615"), "{msg}");
+}
+
+/// Issue 46 item 5: radii whose ratio R2/R1 overflows or underflows the working precision are
+/// refused before any work saying so, naming both options (not "A1/B1 = 0" or "inf is not
+/// finite"); at 256 bits the same ratio is inside the exponent range and meets the solve's own
+/// range, still a refusal (exit code 2).
+#[test]
+fn a_derived_ratio_that_overflows_is_named() {
+    let contact = |r1: &'static str, r2: &'static str, p: &'static str| {
+        vec![
+            "contact",
+            "--nu",
+            "0.3",
+            "--speed",
+            "0.5",
+            "--r-along",
+            r1,
+            "--r-across",
+            r2,
+            "--load",
+            "1000",
+            "--shear-modulus",
+            "80e9",
+            "--precision",
+            p,
+        ]
+    };
+    for (r1, r2, what) in [
+        ("1e-300", "1e300", "overflows f64"),
+        ("1e300", "1e-300", "underflows"),
+    ] {
+        let msg = refused(
+            &contact(r1, r2, "f64"),
+            2,
+            &[
+                "'--r-across'",
+                "'--r-along'",
+                "A1/B1 = R2/R1 = 1.00000e",
+                what,
+            ],
+        );
+        assert!(!msg.contains("inf") && !msg.contains("= 0 "), "{msg}");
+    }
+    refused(
+        &contact("1e-300", "1e300", "256"),
+        2,
+        &["A1/B1 = R2/R1 = 1e600", "[1e-100, 1e100]"],
+    );
+}
+
+/// Issue 46 item 5: a solve that fails once the work has started exits 1 (docs/cli.md), not 2:
+/// here the approach d0 overflows f64 after the ellipse is solved.
+#[test]
+fn a_failure_during_the_work_exits_1() {
+    refused(
+        &[
+            "contact",
+            "--nu",
+            "0.3",
+            "--speed",
+            "0.5",
+            "--r-along",
+            "1",
+            "--r-across",
+            "2",
+            "--load",
+            "1e300",
+            "--shear-modulus",
+            "1e-300",
+        ],
+        1,
+        &["solving the contact at f64", "approach d0 = inf"],
+    );
+}
+
+/// Issue 46 item 5: exact zero is zero whatever its exponent, where zero is in the domain (ν,
+/// the speed M_R, a sweep's speeds); a nonzero number with such an exponent is refused.
+#[test]
+fn exact_zero_is_accepted_with_any_exponent() {
+    let zero = "0e-99999999999999999999";
+    let ell = |nu: &str, speed: &str| {
+        json(&[
+            "ellipse", "--nu", nu, "--speed", speed, "--ratio", "0.5", "--json",
+        ])
+    };
+    let (a, b) = (ell(zero, zero), ell("0", "0"));
+    assert_eq!(field(&a, "k"), field(&b, "k"));
+    let sweep = |speed: &str| {
+        let out = run(&["sweep", "--nu", "0.2", "--speed", speed, "--ratio", "0.5"]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8(out.stdout).expect("UTF-8");
+        text.lines()
+            .nth(1)
+            .expect("a row")
+            .split(',')
+            .nth(3)
+            .expect("k")
+            .to_string()
+    };
+    assert_eq!(sweep(&format!("{zero},0.5")), sweep("0,0.5"));
+    refused(
+        &["rayleigh", "--nu", "1e-99999999999999999999"],
+        2,
+        &["'1e-99999999999999999999' for '--nu", "exponent out of range"],
+    );
+}
+
+/// Issue 46 item 5: `--out` and the names of the files are checked before any work: a parent
+/// that is a file, and a 300-digit `--nu` whose file names pass 255 bytes (refused naming
+/// `--nu`, nothing created).
+#[test]
+fn output_paths_are_checked_before_any_work() {
+    refused(
+        &["fig2", "--out", "/dev/null/x"],
+        2,
+        &["'--out'", "'/dev/null/x'", "/dev/null is not a directory"],
+    );
+    let tmp = TempDir::new("long-name");
+    let out = tmp.0.join("out");
+    let nu = format!("0.{}", "1".repeat(300));
+    refused(
+        &[
+            "fig2",
+            "--nu",
+            &nu,
+            "--out",
+            out.to_str().expect("utf-8 path"),
+        ],
+        2,
+        &["'--nu'", "more than the 255", "bytes"],
+    );
+    assert!(!out.exists(), "{} was created", out.display());
+}
+
+/// Issue 46 item 5: `fig2` without `--out` writes under docs/ only in the checkout (its
+/// Cargo.toml and docs/ where it runs), and prints the path of each file it wrote (all five
+/// exist); elsewhere it is refused and creates no ./docs.
+#[test]
+fn fig2_writes_docs_only_in_the_checkout() {
+    let tmp = TempDir::new("outside");
+    let out = Command::new(env!("CARGO_BIN_EXE_moving-hertz"))
+        .arg("fig2")
+        .current_dir(&tmp.0)
+        .output()
+        .expect("the binary runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("--out DIR is required"), "{err}");
+    assert!(!tmp.0.join("docs").exists(), "./docs was created");
+    std::fs::write(
+        tmp.0.join("Cargo.toml"),
+        "[package]\nname = \"moving-hertz\"\n",
+    )
+    .expect("a manifest");
+    std::fs::create_dir(tmp.0.join("docs")).expect("docs/");
+    let out = Command::new(env!("CARGO_BIN_EXE_moving-hertz"))
+        .arg("fig2")
+        .current_dir(&tmp.0)
+        .output()
+        .expect("the binary runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    let wrote = text
+        .lines()
+        .find_map(|l| l.strip_prefix("wrote "))
+        .expect("a line of the files written");
+    let paths: Vec<&str> = wrote.split(", ").collect();
+    assert_eq!(paths.len(), 5, "{wrote}");
+    for p in paths {
+        assert!(p.starts_with("docs/"), "{p}");
+        assert!(tmp.0.join(p).is_file(), "{p} was not written");
+    }
+}
+
+/// Issue 46 item 5: the progress bar is drawn only when standard error is a terminal: a sweep
+/// of several seconds with standard error a pipe leaves it empty.
+#[test]
+fn no_progress_bar_off_a_terminal() {
+    let out = run(&[
+        "sweep",
+        "--nu",
+        "0.25",
+        "--speed",
+        "lin:0:0.9:40",
+        "--ratio",
+        "log:0.1:10:150",
+        "--precision",
+        "128",
+    ]);
+    assert!(out.status.success());
+    assert!(
+        out.stderr.is_empty(),
+        "{:?}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// Issue 46 item 3: one precision vocabulary: `f64`, `dd`, bits as `256` or `mpfr256` (the
+/// output's spelling, any case) read back to the same precision; `53` is MPFR; `double`
+/// refused listing f64 and dd; every command quoting its own range ([24, 32768], or
+/// [24, 1048576] where no quadrature rule is built).
+#[test]
+fn one_precision_vocabulary() {
+    let ell = |p: &str| {
+        json(&[
+            "ellipse",
+            "--nu",
+            "0.2",
+            "--speed",
+            "0.5",
+            "--ratio",
+            "0.5",
+            "--precision",
+            p,
+            "--json",
+        ])
+    };
+    for (typed, label) in [
+        ("f64", "f64"),
+        ("dd", "dd"),
+        ("256", "mpfr256"),
+        ("53", "mpfr53"),
+    ] {
+        let v = ell(typed);
+        assert_eq!(field(&v, "precision"), label);
+        let back = ell(label);
+        assert_eq!(field(&back, "k"), field(&v, "k"), "{typed} and {label}");
+    }
+    assert_eq!(field(&ell("MPFR256"), "precision"), "mpfr256");
+    let base = ["ellipse", "--nu", "0.2", "--speed", "0.5", "--ratio", "0.5"];
+    refused(
+        &[&base[..], &["--precision", "double"]].concat(),
+        2,
+        &["'double'", "ambiguous", "f64", "dd"],
+    );
+    let contact = [
+        "contact",
+        "--nu",
+        "0.3",
+        "--speed",
+        "0.5",
+        "--r-along",
+        "1",
+        "--r-across",
+        "2",
+        "--load",
+        "1",
+        "--shear-modulus",
+        "1",
+    ];
+    let sweep = ["sweep", "--nu", "0.2", "--speed", "0.5", "--ratio", "0.5"];
+    let integrals = ["integrals", "--nu", "0.2", "--speed", "0.5", "--k", "0.5"];
+    for cmd in [
+        &base[..],
+        &contact,
+        &sweep,
+        &integrals,
+        &["fig2", "--out", "/tmp"],
+    ] {
+        for p in ["20", "40000", "mpfr99999999999999999999999"] {
+            refused(
+                &[cmd, &["--precision", p]].concat(),
+                2,
+                &["--precision", "[24, 32768]"],
+            );
+        }
+    }
+    refused(
+        &["rayleigh", "--nu", "0.2", "--precision", "20"],
+        2,
+        &["[24, 1048576]"],
+    );
+    refused(
+        &["rayleigh", "--nu", "0.2", "--precision", "2000000"],
+        2,
+        &["[24, 1048576]"],
+    );
+    // The series builds no rule: 40000 bits pass to the next check (here of the speed).
+    let series = [
+        "integrals",
+        "--nu",
+        "0.2",
+        "--speed",
+        "2",
+        "--k",
+        "0.5",
+        "--method",
+        "series",
+    ];
+    refused(
+        &[&series[..], &["--precision", "40000"]].concat(),
+        2,
+        &["'--speed'", "'2'"],
+    );
+    refused(
+        &[&series[..], &["--precision", "20"]].concat(),
+        2,
+        &["[24, 32768] ([24, 1048576] with --method series)"],
+    );
+}
+
+/// Issue 46 item 3: options a command cannot honour are refused before any work with exit code
+/// 2 and nothing on standard output (`sweep --method series`); a range where one value is
+/// taken, or a range of an unknown kind, says what is accepted.
+#[test]
+fn options_a_command_cannot_honour_are_refused() {
+    let sweep = ["sweep", "--nu", "0.2", "--ratio", "0.5"];
+    for m in ["series", "adaptive-subtracted"] {
+        refused(
+            &[&sweep[..], &["--speed", "0.5", "--method", m]].concat(),
+            2,
+            &["'--method <METHOD>'", "auto, adaptive, fixed"],
+        );
+    }
+    refused(
+        &[&sweep[..], &["--speed", "linspace:0:0.5:3"]].concat(),
+        2,
+        &["'linspace:'", "lin:START:STOP:N", "log:START:STOP:N"],
+    );
+    refused(
+        &[
+            "ellipse",
+            "--nu",
+            "0.2",
+            "--speed",
+            "lin:0:0.5:3",
+            "--ratio",
+            "0.5",
+        ],
+        2,
+        &["'--speed <M_R>'", "`sweep` only"],
+    );
+    // log: is a range of --speed and --nu too (their help says so).
+    let out = run(&[
+        "sweep",
+        "--nu",
+        "log:0.1:0.4:2",
+        "--speed",
+        "log:0.1:0.5:2",
+        "--ratio",
+        "1",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// Issue 46 item 4: every number of the text summaries in scientific notation with every digit
+/// of the working precision (17 at f64, ⌈256·log10 2⌉ + 1 = 79 at 256 bits), the large central pressure as the
+/// small semi-axes; each bound labelled by its kind.
+#[test]
+fn numbers_are_printed_one_way() {
+    let contact = |p: &str| {
+        let args = [
+            "contact",
+            "--nu",
+            "0.3",
+            "--speed",
+            "0.5",
+            "--r-along",
+            "0.05",
+            "--r-across",
+            "0.02",
+            "--load",
+            "1000",
+            "--shear-modulus",
+            "80e9",
+            "--precision",
+            p,
+        ];
+        let out = run(&args);
+        assert!(out.status.success());
+        (
+            String::from_utf8(out.stdout).expect("UTF-8"),
+            json(&[&args[..], &["--json"]].concat()),
+        )
+    };
+    for (p, n) in [("f64", 17), ("256", 79)] {
+        let (text, v) = contact(p);
+        let values: Vec<&str> = text
+            .lines()
+            .filter(|l| l.starts_with("  "))
+            .map(str::trim)
+            .collect();
+        assert_eq!(values.len(), 7, "{text}");
+        for (s, key) in values.iter().zip(["a", "b", "k", "e", "p0", "d0", "load"]) {
+            let exact = Float::with_val(400, Float::parse(field(&v, key)).unwrap());
+            assert_rounded(s, &exact, n);
+        }
+        assert!(text.contains("eccentricity e (major axis along the motion), absolute error <="));
+        assert!(text.contains("central pressure p0, relative error <="));
+    }
 }

@@ -7,8 +7,9 @@
 //! that the library's messages quote the text as typed and nothing is rounded through an `f64`.
 
 use super::CliError;
+use moving_hertz::numerics::quadrature::MAX_RULE_BITS;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
-use moving_hertz::{Material, Method, Speed};
+use moving_hertz::{Material, Method, MpPrec, Speed};
 use rug::Rational;
 
 /// A number as typed (trimmed) with its exact value; the text is checked to be a decimal
@@ -24,6 +25,13 @@ pub struct Decimal {
 /// The value parser of every numeric option: [`Decimal`], or the library's parse error (which
 /// clap prints after `invalid value 'TEXT' for '--OPTION'`).
 pub fn decimal(s: &str) -> Result<Decimal, String> {
+    if s.contains(':') {
+        return Err(
+            "one number here: ranges (lin:START:STOP:N, log:START:STOP:N) are taken by \
+                    `sweep` only"
+                .into(),
+        );
+    }
     let exact = decimal_to_rational(s).map_err(|e| e.to_string())?;
     Ok(Decimal {
         text: s.trim().to_string(),
@@ -31,16 +39,66 @@ pub fn decimal(s: &str) -> Result<Decimal, String> {
     })
 }
 
-/// The value parser of `--precision`: `f64`, `dd` or a number of MPFR bits, by
-/// [`Precision::parse`] (an out-of-range count is refused naming the bits typed).
+/// The value parser of `--precision` for the commands that solve by quadrature (`ellipse`,
+/// `contact`, `sweep`, `fig2`, and `integrals` but by the series): `f64`, `dd`, or a number of
+/// MPFR bits as `256` or `mpfr256` ([`Precision::parse`]) from 24 to [`MAX_RULE_BITS`], the
+/// largest precision the quadrature rules are built for.
 pub fn precision(s: &str) -> Result<Precision, String> {
-    Precision::parse(s).map_err(|e| e.to_string())
+    precision_upto(s, MAX_RULE_BITS, "[24, 32768]")
+}
+
+/// The value parser of `--precision` of `rayleigh`, which needs no quadrature rule: bits up to
+/// MPFR's limit here, [`MpPrec::MAX_BITS`].
+pub fn precision_any(s: &str) -> Result<Precision, String> {
+    precision_upto(s, MpPrec::MAX_BITS, "[24, 1048576]")
+}
+
+/// The value parser of `--precision` of `integrals`: bits up to [`MpPrec::MAX_BITS`], the
+/// series' range; the quadrature routes' [`MAX_RULE_BITS`] is checked once the method is known.
+pub fn precision_integrals(s: &str) -> Result<Precision, String> {
+    let shown = "[24, 32768] ([24, 1048576] with --method series)";
+    precision_upto(s, MpPrec::MAX_BITS, shown)
+}
+
+/// [`Precision::parse`], with a bit count outside [24, `max`] refused quoting the count as
+/// typed and the range as `shown`.
+fn precision_upto(s: &str, max: u32, shown: &str) -> Result<Precision, String> {
+    let range = |bits: &str| {
+        format!("precision of {bits} bits is outside the supported range {shown} bits")
+    };
+    match Precision::parse(s) {
+        Ok(p) if p.bits() <= max => Ok(p),
+        Ok(p) => Err(range(&p.bits().to_string())),
+        Err(moving_hertz::Error::Precision { bits, .. }) => Err(range(&bits.to_string())),
+        Err(e) => {
+            let t = s.trim().to_ascii_lowercase();
+            let digits = t.strip_prefix("mpfr").unwrap_or(&t);
+            match !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) {
+                true => Err(range(digits)),
+                false => Err(format!(
+                    "{e}; the precisions are f64, dd, or a number of bits in {shown} (256 or \
+                     mpfr256)"
+                )),
+            }
+        }
+    }
 }
 
 /// The value parser of `--method`: one of [`Method::label`]'s names.
 pub fn method() -> impl clap::builder::TypedValueParser<Value = Method> {
     use clap::builder::TypedValueParser;
     clap::builder::PossibleValuesParser::new(Method::ALL.map(|m| m.label()))
+        .try_map(|s| Method::parse(&s))
+}
+
+/// The value parser of `--method` for the commands that solve the ellipse (`ellipse`,
+/// `contact`, `sweep`): auto, adaptive or fixed, the methods that give the k-derivatives its
+/// Newton steps need (series and adaptive-subtracted are refused by clap before any work,
+/// listing these three).
+pub fn solve_method() -> impl clap::builder::TypedValueParser<Value = Method> {
+    use clap::builder::TypedValueParser;
+    let solving = [Method::Auto, Method::Adaptive, Method::Fixed];
+    clap::builder::PossibleValuesParser::new(solving.map(|m| m.label()))
         .try_map(|s| Method::parse(&s))
 }
 
@@ -154,19 +212,44 @@ pub fn positive<T: Real>(
 /// `--out DIR` of `fig2` and `study`: where the data (DIR/data) and figures (DIR/figures) go.
 #[derive(clap::Args, Debug)]
 pub struct OutDir {
-    /// The directory that receives data/ (CSV, Markdown tables) and figures/ (SVG); default
-    /// docs. DIR itself is created if missing, but its parent must exist (checked before any
-    /// work): no directory tree is created silently.
-    #[arg(long, value_name = "DIR", default_value = "docs")]
-    pub out: std::path::PathBuf,
+    /// The directory that receives data/ (CSV, Markdown tables) and figures/ (SVG). Default:
+    /// docs, only when run from the root of the moving-hertz checkout (its Cargo.toml and
+    /// docs/ there); anywhere else --out is required. DIR itself is created if missing, but its
+    /// parent must exist as a directory (checked before any work, as are the names of the
+    /// files): no directory tree is created silently.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<std::path::PathBuf>,
 }
 
+/// The longest file name most file systems allow, in bytes (`NAME_MAX`).
+pub const NAME_MAX: usize = 255;
+
 impl OutDir {
-    /// Checks DIR before any work and creates DIR (if its parent exists), DIR/data and
-    /// DIR/figures; a missing parent, or a DIR or subdirectory that is a file, is refused
-    /// naming `--out` and the path as typed.
-    pub fn prepare(&self) -> Result<&std::path::Path, CliError> {
-        let dir = self.out.as_path();
+    /// DIR: `--out` as given, or `docs` in the moving-hertz checkout; elsewhere refused.
+    fn dir(&self) -> Result<std::path::PathBuf, CliError> {
+        if let Some(d) = &self.out {
+            return Ok(d.clone());
+        }
+        let manifest = std::fs::read_to_string("Cargo.toml").unwrap_or_default();
+        let checkout = manifest
+            .lines()
+            .any(|l| l.trim() == "name = \"moving-hertz\"")
+            && std::path::Path::new("docs").is_dir();
+        match checkout {
+            true => Ok("docs".into()),
+            false => Err(CliError::Input(
+                "--out DIR is required here: its default, docs, is the docs/ of the \
+                 moving-hertz checkout and applies only when run from the checkout's root"
+                    .into(),
+            )),
+        }
+    }
+
+    /// Checks DIR before any work and creates DIR (if its parent is a directory), DIR/data and
+    /// DIR/figures; a parent that is missing or not a directory, or a DIR or subdirectory that
+    /// is a file, is refused naming `--out` and the path as typed.
+    pub fn prepare(&self) -> Result<std::path::PathBuf, CliError> {
+        let dir = self.dir()?;
         let text = dir.display().to_string();
         let refuse = |why: String| CliError::value("--out", &text, why);
         if !dir.is_dir() {
@@ -179,13 +262,14 @@ impl OutDir {
                 None => std::path::Path::new("."),
             };
             if !parent.is_dir() {
-                return Err(refuse(format!(
-                    "its parent directory {} does not exist (create it first)",
-                    parent.display()
-                )));
+                let why = match parent.exists() {
+                    true => "is not a directory",
+                    false => "does not exist (create it first)",
+                };
+                return Err(refuse(format!("its parent {} {why}", parent.display())));
             }
         }
-        for d in [dir.to_path_buf(), dir.join("data"), dir.join("figures")] {
+        for d in [dir.clone(), dir.join("data"), dir.join("figures")] {
             if !d.is_dir() {
                 std::fs::create_dir(&d).map_err(|e| {
                     CliError::value("--out", &text, format!("creating {}: {e}", d.display()))

@@ -28,13 +28,14 @@ pub struct ContactArgs {
     /// of P and R1).
     #[arg(long, value_name = "MU", value_parser = args::decimal, allow_hyphen_values = true)]
     pub shear_modulus: Decimal,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 32768, the largest precision the quadrature rules are built for).
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
+    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
+    /// mpfr256 as the output labels it.
     #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
     pub precision: Precision,
     /// How the ellipse solve evaluates the integrals: auto, adaptive or fixed (as for
     /// `ellipse`; series and adaptive-subtracted are refused).
-    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::method())]
+    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::solve_method())]
     pub method: Method,
     #[command(flatten)]
     pub output: OutputArgs,
@@ -100,12 +101,37 @@ pub fn run(a: &ContactArgs) -> Result<(), CliError> {
             loading,
             shear_modulus: args::positive(&a.shear_modulus, "--shear-modulus", "shear modulus mu", p)?,
         };
+        ratio_fits::<T>(a, p)?;
         let opts = Options::<T> { method: a.method, ..Default::default() };
-        let inputs = [("method", "--method", a.method.label())];
+        // The ratio's range is checked by the solve before any work: a refusal (exit code 2).
+        let inputs = [("method", "--method", a.method.label()), ("curvature ratio", "", "")];
         let context = format!("solving the contact at {}", a.precision);
         let sol = problem.solve(&opts).map_err(|e| CliError::from_run(e, &inputs, &context))?;
         report(a, &sol)
     })
+}
+
+/// Refuses, before any work, radii whose curvature ratio A1/B1 = R2/R1 (formed exactly from
+/// the text) overflows or underflows the working precision, saying so (not "A1/B1 = 0" or
+/// "inf is not finite" from the solve).
+fn ratio_fits<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<(), CliError> {
+    let exact = a.r_across.exact.clone() / &a.r_along.exact;
+    let ratio = T::from_float(&rug::Float::with_val(T::bits(p) + 64, &exact), p);
+    let why = if !ratio.is_finite() {
+        "overflows"
+    } else if ratio < T::min_positive(p) {
+        "underflows (is below the smallest normal number of)"
+    } else {
+        return Ok(());
+    };
+    let shown = rug::Float::with_val(64, &exact).to_string_radix(10, Some(6));
+    Err(CliError::Input(format!(
+        "invalid values '{}' for '--r-across' and '{}' for '--r-along': the curvature ratio \
+         A1/B1 = R2/R1 = {shown} {why} {} (rescale, or use a wider precision)",
+        a.r_across.text,
+        a.r_along.text,
+        Precision::of::<T>(p)
+    )))
 }
 
 fn report<T: Real>(a: &ContactArgs, sol: &ContactSolution<T>) -> Result<(), CliError> {
@@ -193,7 +219,7 @@ fn report<T: Real>(a: &ContactArgs, sol: &ContactSolution<T>) -> Result<(), CliE
         "eccentricity e (major axis {} the motion)",
         sol.ellipse.major.label()
     );
-    t.result_abs(&major, sol.e());
+    t.result(&major, sol.e());
     t.result("central pressure p0", &sol.p0);
     t.result("approach d0", &sol.d0);
     t.result("load P", &sol.load);

@@ -17,14 +17,15 @@ pub struct EllipseArgs {
     /// curvature along the motion, R2 across it).
     #[arg(long, value_name = "A1/B1", value_parser = args::decimal, allow_hyphen_values = true)]
     pub ratio: Decimal,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 32768, the largest precision the quadrature rules are built for).
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
+    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
+    /// mpfr256 as the output labels it.
     #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
     pub precision: Precision,
     /// How the integrals are evaluated at each Newton iterate: auto (the fixed rules where they
     /// apply, else adaptive quadrature), adaptive or fixed. series and adaptive-subtracted
     /// give no k-derivatives and are refused.
-    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::method())]
+    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::solve_method())]
     pub method: Method,
     /// Also time N further solves (1 <= N <= 1000, checked before any work) and report the
     /// median and the minimum wall time per solve, in nanoseconds.
@@ -165,7 +166,7 @@ fn report<T: Real>(a: &EllipseArgs, sol: &Ellipse<T>, times: &[f64]) -> Result<(
         "eccentricity e (major axis {} the motion)",
         sol.major.label()
     );
-    t.result_abs(&major, &sol.e);
+    t.result(&major, &sol.e);
     t.result("I1 (normalisation of (37))", &ig.i1);
     t.result("I2 (normalisation of (37))", &ig.i2);
     if let (Some(med), Some(min)) = (median, min) {

@@ -17,8 +17,9 @@ pub struct Fig2Args {
     #[arg(long, value_name = "NU", default_value = "0.2", value_parser = args::decimal,
           allow_hyphen_values = true)]
     pub nu: Decimal,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 32768, the largest precision the quadrature rules are built for).
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
+    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
+    /// mpfr256 as the output labels it.
     #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
     pub precision: Precision,
     #[command(flatten)]
@@ -33,6 +34,17 @@ fn suffix(nu: &str, prec: Precision) -> String {
     }
     format!("_nu{nu}_{}", prec.label())
 }
+
+/// The files `fig2` writes under DIR, before the suffix of ν and the precision (the charts'
+/// names as `studies::fig2::charts` gives them): their names' length is checked before any
+/// work.
+const FILES: [&str; 5] = [
+    "data/fig2_e_vs_ratio.csv",
+    "data/fig2_e_vs_speed.csv",
+    "figures/fig2_e_vs_ratio.svg",
+    "figures/fig2_e_vs_speed.svg",
+    "figures/fig2_near_rayleigh.svg",
+];
 
 pub fn run(a: &Fig2Args) -> Result<(), CliError> {
     let nu = a.nu.text.as_str();
@@ -49,6 +61,22 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
     with_precision!(prec, T, p => {
         Material::<T>::parse(nu, p).map_err(|e| CliError::value("--nu", nu, e))?;
     });
+    let suffix = suffix(nu, prec);
+    let names = FILES.map(|f| f.replace('.', &format!("{suffix}.")));
+    let base = |n: &str| n.rsplit('/').next().unwrap_or(n).to_string();
+    if let Some(base) = names
+        .iter()
+        .map(|n| base(n))
+        .find(|b| b.len() > args::NAME_MAX)
+    {
+        let why = format!(
+            "the file names carry nu as typed: {base} would be {} bytes, more than the {} a \
+             file name may have (give a shorter decimal)",
+            base.len(),
+            args::NAME_MAX
+        );
+        return Err(CliError::value("--nu", nu, why));
+    }
     let out = a.out.prepare()?;
     super::bind_global_pool();
     let by_ratio_pairs: Vec<(f64, f64)> = fig2::SPEEDS
@@ -71,12 +99,11 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
     });
     bar.finish();
     let (a_pts, b_pts) = (&a.points, &b.points);
-    let suffix = suffix(nu, prec);
-    let d1 = out.join(format!("data/fig2_e_vs_ratio{suffix}.csv"));
-    let d2 = out.join(format!("data/fig2_e_vs_speed{suffix}.csv"));
+    let d1 = out.join(&names[0]);
+    let d2 = out.join(&names[1]);
     let mut files = vec![
-        (d1.clone(), Written::Table(&a.table)),
-        (d2.clone(), Written::Table(&b.table)),
+        (d1, Written::Table(&a.table)),
+        (d2, Written::Table(&b.table)),
     ];
     // The charts are formed on every core, and the five files written two at a time.
     for (name, svg) in fig2::charts(nu, a_pts, b_pts) {
@@ -103,20 +130,15 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
         prec.label(),
         worst
     );
-    let _ = writeln!(
-        s,
-        "wrote {}, {} and figures/fig2_*{suffix}.svg under {}",
-        d1.display(),
-        d2.display(),
-        out.display()
-    );
+    let written: Vec<String> = files.iter().map(|(p, _)| p.display().to_string()).collect();
+    let _ = writeln!(s, "wrote {}", written.join(", "));
     // A few values for the terminal, as in the paper's figure.
     let _ = writeln!(s, "\n e at A1/B1 = 0.5:");
     for mr in fig2::SPEEDS {
         if let Some(q) = a_pts.iter().find(|q| q.mr == mr && q.ratio == 0.5) {
             let _ = writeln!(
                 s,
-                "   M_R = {mr:<6} e = {:.10}  k = {:.10}",
+                "   M_R = {mr:<6} e = {:.10e}  k = {:.10e}",
                 q.e_f64, q.k_f64
             );
         }

@@ -19,9 +19,11 @@ pub struct IntegralsArgs {
     /// The axis ratio k = b/a > 0 (dimensionless; a along the motion, b across).
     #[arg(long, value_name = "K", value_parser = args::decimal, allow_hyphen_values = true)]
     pub k: Decimal,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 32768, the largest precision the quadrature rules are built for). Default f64; without it, --tol chooses the precision.
-    #[arg(long, value_name = "P", value_parser = args::precision)]
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
+    /// 24 to 32768 (the largest precision the quadrature rules are built for; to 1048576 with
+    /// --method series, which builds none), written 256 or mpfr256 as the output labels it.
+    /// Default f64; without it, --tol chooses the precision.
+    #[arg(long, value_name = "P", value_parser = args::precision_integrals)]
     pub precision: Option<Precision>,
     /// The relative tolerance for I1 and I2, 0 < TOL (dimensionless, any exponent: 1e-10000
     /// is fine). Alone: the lowest precision that reaches it is chosen (TOL < 1). With
@@ -111,6 +113,19 @@ struct Json<'a> {
 }
 
 pub fn run(a: &IntegralsArgs) -> Result<(), CliError> {
+    // The quadrature routes' rules exist to MAX_RULE_BITS; only the series goes beyond.
+    if let Some(p) = a.precision {
+        let max = moving_hertz::numerics::quadrature::MAX_RULE_BITS;
+        if p.bits() > max && a.method != Method::Series {
+            let why = format!(
+                "precision of {} bits is outside the supported range [24, {max}] bits of \
+                 '--method {}' (--method series reaches 1048576)",
+                p.bits(),
+                a.method
+            );
+            return Err(CliError::value("--precision", &p.label(), why));
+        }
+    }
     match (&a.tol, a.precision) {
         (Some(tol), None) => to_tolerance(a, tol),
         (tol, precision) => {

@@ -96,24 +96,19 @@ impl CliError {
         CliError::Input(format!("invalid value '{text}' for '{option}': {why}"))
     }
 
-    /// A library error: refusals of an input (domain, not finite, parse, precision) exit 2,
-    /// computations that fail or cannot meet the request exit 1.
+    /// A library error met during the work (a study's or `fig2`'s solves, whose inputs were
+    /// checked before): exit code 1, whatever its kind.
     pub fn lib(e: moving_hertz::Error) -> CliError {
-        use moving_hertz::Error as E;
-        match e {
-            E::Domain { .. } | E::NotFinite { .. } | E::Parse { .. } | E::Precision { .. } => {
-                CliError::Input(e.to_string())
-            }
-            E::NoConvergence { .. } | E::TermCap { .. } | E::Unreachable { .. } => {
-                CliError::Failed(e.to_string())
-            }
-        }
+        CliError::Failed(e.to_string())
     }
 
     /// A library error from a run whose inputs are `inputs` (the library's name of a quantity,
-    /// or its prefix; the option; the text as typed): an error about one of them names the
-    /// option and quotes the text, any other is passed through as [`CliError::lib`] after
-    /// `context` (what was being computed, from which inputs).
+    /// or its prefix; the option; the text as typed). An error about one of them is a refusal
+    /// of that input before any work (exit code 2), naming the option and quoting the text (an
+    /// empty option: the quantity is derived from several options, and the message is the
+    /// library's after `context`); so is a precision out of range or text that does not parse.
+    /// Any other error is a failure during the work (exit code 1), printed after `context`
+    /// (what was being computed, from which inputs).
     pub fn from_run(
         e: moving_hertz::Error,
         inputs: &[(&str, &str, &str)],
@@ -125,12 +120,12 @@ impl CliError {
             _ => None,
         };
         let hit = name.and_then(|n| inputs.iter().find(|(lib, _, _)| n.starts_with(lib)));
-        match hit {
-            Some((_, option, text)) => CliError::value(option, text, &e),
-            None => match CliError::lib(e) {
-                CliError::Input(m) => CliError::Input(format!("{context}: {m}")),
-                CliError::Failed(m) => CliError::Failed(format!("{context}: {m}")),
-            },
+        match (hit, &e) {
+            (Some((_, "", _)), _) | (None, E::Precision { .. } | E::Parse { .. }) => {
+                CliError::Input(format!("{context}: {e}"))
+            }
+            (Some((_, option, text)), _) => CliError::value(option, text, &e),
+            (None, _) => CliError::Failed(format!("{context}: {e}")),
         }
     }
 
@@ -159,10 +154,49 @@ pub fn main() -> i32 {
     match run(cli.command) {
         Ok(()) => 0,
         Err(e) => {
-            eprintln!("moving-hertz: error: {e}");
+            say_error(&format!("moving-hertz: error: {e}"));
             e.code()
         }
     }
+}
+
+/// Prints one line on standard error, its long words cut ([`cut_long_words`]); a closed or full
+/// standard error is ignored (the exit code still tells).
+fn say_error(line: &str) {
+    use std::io::Write;
+    let _ = writeln!(std::io::stderr(), "{}", cut_long_words(line));
+}
+
+/// The longest word (a run between spaces and quotes) an error line echoes in full.
+const LONGEST_WORD: usize = 80;
+
+/// `line` with every word longer than [`LONGEST_WORD`] characters (an input echoed as typed,
+/// which may be 100,000 digits) cut to its first 40 and last 12 characters around
+/// `…(N characters)…`, so that a message stays readable whatever was typed.
+pub fn cut_long_words(line: &str) -> String {
+    let mut out = String::with_capacity(line.len().min(4096));
+    let mut word = String::new();
+    let flush = |word: &mut String, out: &mut String| {
+        let n = word.chars().count();
+        if n > LONGEST_WORD {
+            let head: String = word.chars().take(40).collect();
+            let tail: String = word.chars().skip(n - 12).collect();
+            out.push_str(&format!("{head}…({n} characters)…{tail}"));
+        } else {
+            out.push_str(word);
+        }
+        word.clear();
+    };
+    for c in line.chars() {
+        if c.is_whitespace() || c == '\'' || c == '"' {
+            flush(&mut word, &mut out);
+            out.push(c);
+        } else {
+            word.push(c);
+        }
+    }
+    flush(&mut word, &mut out);
+    out
 }
 
 /// Builds `rayon`'s global pool, which runs the sweeps' blocks, with one thread per CPU the
@@ -209,11 +243,20 @@ fn clap_failure(e: clap::Error) -> i32 {
         ErrorKind::DisplayHelp
         | ErrorKind::DisplayVersion
         | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            let _ = e.print();
-            e.exit_code()
+            // Written as every command writes: a closed or full output is an error (exit 1).
+            match output::emit(&e.render().to_string()) {
+                Ok(()) => e.exit_code(),
+                Err(err) => {
+                    say_error(&format!("moving-hertz: error: {err}"));
+                    err.code()
+                }
+            }
         }
         _ => {
-            eprintln!("moving-hertz: {}", one_line(&e.render().to_string()));
+            say_error(&format!(
+                "moving-hertz: {}",
+                one_line(&e.render().to_string())
+            ));
             2
         }
     }

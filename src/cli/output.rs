@@ -1,10 +1,11 @@
-//! What the commands print: text summaries in which each result stands in full on its own line
-//! (or with `--digits N` significant digits), and one JSON object a command, every number a
-//! decimal string.
+//! What the commands print: text summaries in which each result stands on its own line in
+//! scientific notation, `d.ddd…e±x`, with every significant digit of the working precision (or
+//! `--digits N` of them), each bound labelled by its kind; and one JSON object a command, every
+//! number a decimal string with every digit.
 
 use super::CliError;
 use moving_hertz::scalar::Real;
-use moving_hertz::{Estimated, RelError};
+use moving_hertz::{BoundKind, Estimated, RelError};
 use std::io::Write;
 
 /// `--json` and `--digits N`: the output options of the commands that compute a result.
@@ -15,8 +16,9 @@ pub struct OutputArgs {
     /// docs/cli.md).
     #[arg(long)]
     pub json: bool,
-    /// Print each result of the text summary to N significant digits (1 <= N; at most the
-    /// working precision's digits). Not with --json, which always carries every digit.
+    /// Print each result of the text summary to N significant digits, in scientific notation
+    /// like every number of the summary (1 <= N; N beyond the working precision's digits prints
+    /// them all: 17 at f64, 32 at dd). Not with --json, which always carries every digit.
     #[arg(long, value_name = "N", conflicts_with = "json",
           value_parser = clap::value_parser!(u32).range(1..))]
     pub digits: Option<u32>,
@@ -44,17 +46,13 @@ impl Text {
         self.out.push('\n');
     }
 
-    /// A result: `label, relative error <= bound` on one line, the value on the next.
+    /// A result: `label, relative error <= bound:` (or `absolute error`, as the value's
+    /// [`BoundKind`] says) on one line, the value on the next.
     pub fn result<T: Real>(&mut self, label: &str, x: &Estimated<T>) {
-        self.bounded(label, "relative", x);
-    }
-
-    /// A result whose bound is absolute (the eccentricity).
-    pub fn result_abs<T: Real>(&mut self, label: &str, x: &Estimated<T>) {
-        self.bounded(label, "absolute", x);
-    }
-
-    fn bounded<T: Real>(&mut self, label: &str, kind: &str, x: &Estimated<T>) {
+        let kind = match x.kind {
+            BoundKind::Relative => "relative",
+            BoundKind::Absolute => "absolute",
+        };
         self.line(format!("{label}, {kind} error <= {}:", x.error));
         self.line(format!("  {}", self.value(&x.value)));
     }
@@ -65,12 +63,10 @@ impl Text {
         self.line(format!("  {}", self.value(x)));
     }
 
-    /// A value in full, or to `--digits` significant digits.
+    /// A value in scientific notation with every digit of the working precision, or
+    /// `--digits` of them.
     pub fn value<T: Real>(&self, x: &T) -> String {
-        match self.digits {
-            Some(n) => shorten(x, n),
-            None => x.to_decimal(),
-        }
+        scientific(x, self.digits)
     }
 
     /// Writes the summary to standard output.
@@ -79,8 +75,10 @@ impl Text {
     }
 }
 
-/// `x` to `n` significant digits, correctly rounded (its full decimal when that is shorter).
-pub fn shorten<T: Real>(x: &T, n: u32) -> String {
+/// `x` as `d.ddd…e±x` with `n` significant digits, correctly rounded (every digit of the working
+/// precision, as [`Real::to_decimal`] gives them, when `n` is `None` or more than that); 0 as
+/// `0`, a non-finite value as [`Real::to_decimal`] prints it.
+pub fn scientific<T: Real>(x: &T, n: Option<u32>) -> String {
     let full = x.to_decimal();
     let f = x.to_float(T::bits(x.prec()));
     if f.is_zero() {
@@ -89,11 +87,15 @@ pub fn shorten<T: Real>(x: &T, n: u32) -> String {
     if !f.is_finite() {
         return full;
     }
-    let short = f.to_string_radix(10, Some(n.max(1) as usize));
-    if significant(&short) < significant(&full) {
-        short
-    } else {
-        full
+    let all = significant(&full);
+    let n = n.map_or(all, |n| (n as usize).min(all)).max(1);
+    let (neg, digits, exp) = f.to_sign_string_exp(10, Some(n));
+    let exp = exp.unwrap_or(1) - 1;
+    let (first, rest) = digits.split_at(1);
+    let sign = if neg { "-" } else { "" };
+    match rest.is_empty() {
+        true => format!("{sign}{first}e{exp}"),
+        false => format!("{sign}{first}.{rest}e{exp}"),
     }
 }
 
@@ -124,13 +126,12 @@ pub fn print_json<S: serde::Serialize>(value: &S) -> Result<(), CliError> {
     emit(&(text + "\n"))
 }
 
-/// Writes `text` to standard output; a reader that closed the pipe early (`| head`) is not an
-/// error.
+/// Writes `text` to standard output, the one way every command writes there: a reader that
+/// closed the pipe (`| head -1`) or a full device (`> /dev/full`) is a failure (exit code 1,
+/// `writing to standard output: …`), which stops the command.
 pub fn emit(text: &str) -> Result<(), CliError> {
     let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        Ok(()) => Ok(()),
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
-        Err(e) => Err(CliError::Failed(format!("writing to standard output: {e}"))),
-    }
+    out.write_all(text.as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(|e| CliError::Failed(format!("writing to standard output: {e}")))
 }

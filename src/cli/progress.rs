@@ -1,7 +1,8 @@
-//! A progress bar on stderr, shown only once the work has taken more than a second; advanced
-//! from any thread (the blocks of a sweep report as they are solved).
+//! A progress bar on stderr, shown only when stderr is a terminal and once the work has taken
+//! more than a second; advanced from any thread (the blocks of a sweep report as they are
+//! solved).
 
-use std::io::Write;
+use std::io::{IsTerminal, Write};
 use std::sync::{Mutex, PoisonError};
 use std::time::Instant;
 
@@ -9,6 +10,8 @@ pub struct Progress {
     label: String,
     total: usize,
     start: Instant,
+    /// Whether stderr is a terminal: the bar is drawn only then (never into a file or pipe).
+    terminal: bool,
     /// Items done, and whether the bar has been drawn.
     state: Mutex<(usize, bool)>,
 }
@@ -19,6 +22,7 @@ impl Progress {
             label: label.into(),
             total: total.max(1),
             start: Instant::now(),
+            terminal: std::io::stderr().is_terminal(),
             state: Mutex::new((0, false)),
         }
     }
@@ -26,6 +30,9 @@ impl Progress {
     /// `n` more items done: the bar is redrawn when a percent is passed (the clock is read
     /// only then).
     pub fn advance(&self, n: usize) {
+        if !self.terminal {
+            return;
+        }
         let mut state = self.state.lock().unwrap_or_else(PoisonError::into_inner);
         let (done, shown) = &mut *state;
         let step = (self.total / 100).max(1);
@@ -47,7 +54,9 @@ impl Progress {
         } else {
             0.0
         };
-        eprint!(
+        let mut err = std::io::stderr().lock();
+        let _ = write!(
+            err,
             "\r{} [{}{}] {:3.0}%  {:.0}s left ",
             self.label,
             "#".repeat(filled),
@@ -55,12 +64,13 @@ impl Progress {
             100.0 * frac,
             eta
         );
-        let _ = std::io::stderr().flush();
+        let _ = err.flush();
     }
 
     pub fn finish(&self) {
         if self.state.lock().unwrap_or_else(PoisonError::into_inner).1 {
-            eprintln!(
+            let _ = writeln!(
+                std::io::stderr(),
                 "\r{} done in {:.1} s{}",
                 self.label,
                 self.start.elapsed().as_secs_f64(),

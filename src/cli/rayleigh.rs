@@ -13,9 +13,10 @@ pub struct RayleighArgs {
     /// before it is rounded).
     #[arg(long, value_name = "NU", value_parser = args::decimal, allow_hyphen_values = true)]
     pub nu: Decimal,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 1048576).
-    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
+    /// 24 to 1048576 (the crate's MPFR limit: the roots need no quadrature rule), written 256 or
+    /// mpfr256 as the output labels it.
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision_any)]
     pub precision: Precision,
     #[command(flatten)]
     pub output: OutputArgs,

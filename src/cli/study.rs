@@ -7,11 +7,19 @@ use super::CliError;
 use crate::studies::{self, integrals, pareto, poisson, rayleigh, series, stability};
 use moving_hertz::Method;
 
-/// `println!` that ignores a reader that closed the pipe (the studies print as they go).
+/// `println!` through [`super::output::emit`]: a closed or full standard output stops the
+/// study with exit code 1 and one line, as in every command (the studies print as they go).
 macro_rules! say {
+    ($($t:tt)*) => {
+        super::output::emit(&format!("{}\n", format_args!($($t)*)))?
+    };
+}
+
+/// `eprintln!` for the studies' notes of progress, ignoring a closed or full standard error.
+macro_rules! note {
     ($($t:tt)*) => {{
         use std::io::Write as _;
-        let _ = writeln!(std::io::stdout(), $($t)*);
+        let _ = writeln!(std::io::stderr(), $($t)*);
     }};
 }
 
@@ -46,6 +54,7 @@ pub enum Study {
 
 pub fn run(a: &StudyArgs) -> Result<(), CliError> {
     let out = a.out.prepare()?;
+    let out = out.as_path();
     super::bind_global_pool();
     match a.name {
         Study::Rayleigh => study_rayleigh(out),
@@ -64,7 +73,7 @@ fn io(e: std::io::Error) -> CliError {
 
 fn study_rayleigh(out: &std::path::Path) -> Result<(), CliError> {
     let nus = rayleigh::nu_grid();
-    eprintln!(
+    note!(
         "rayleigh roots: {} values of nu at 4 precisions ...",
         nus.len()
     );
@@ -114,7 +123,7 @@ fn study_rayleigh(out: &std::path::Path) -> Result<(), CliError> {
 
 fn study_integrals(out: &std::path::Path) -> Result<(), CliError> {
     let (nu, k) = ("0.2", "0.3");
-    let rows = integrals::run(nu, k, 60.0, |mr| eprintln!("integrals: M_R = {mr} ..."))
+    let rows = integrals::run(nu, k, 60.0, |mr| note!("integrals: M_R = {mr} ..."))
         .map_err(CliError::lib)?;
     let csv: Vec<Vec<String>> = rows
         .iter()
@@ -256,8 +265,8 @@ fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
 
 fn study_pareto(out: &std::path::Path) -> Result<(), CliError> {
     let methods = [Method::Fixed, Method::Adaptive];
-    let rows = pareto::run(&methods, 200.0, |what| eprintln!("pareto: {what} ..."))
-        .map_err(CliError::lib)?;
+    let rows =
+        pareto::run(&methods, 200.0, |what| note!("pareto: {what} ...")).map_err(CliError::lib)?;
     let csv: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
@@ -319,7 +328,7 @@ fn study_pareto(out: &std::path::Path) -> Result<(), CliError> {
 
 fn study_series(out: &std::path::Path) -> Result<(), CliError> {
     let speeds = series::speed_grid();
-    eprintln!(
+    note!(
         "series (37): terms and time at {} speeds x {} targets (about a minute) ...",
         speeds.len(),
         series::targets().len()
@@ -393,7 +402,7 @@ fn study_series(out: &std::path::Path) -> Result<(), CliError> {
 }
 
 fn study_recursion(out: &std::path::Path) -> Result<(), CliError> {
-    eprintln!("forward recursion (40) against the exact form at 4 precisions ...");
+    note!("forward recursion (40) against the exact form at 4 precisions ...");
     let (points, growth) = series::forward_study().map_err(CliError::lib)?;
     let csv: Vec<Vec<String>> = points
         .iter()
@@ -500,7 +509,7 @@ fn growth_table(growth: &[series::Growth]) -> (String, Vec<Vec<String>>) {
 
 /// The bits lost in the K, E basis over (n, e) and (n, k): CSV and charts.
 fn write_condition_maps(out: &std::path::Path) -> Result<(), CliError> {
-    eprintln!("bits lost in the K, E basis over (n, e) and (n, k) ...");
+    note!("bits lost in the K, E basis over (n, e) and (n, k) ...");
     for k_side in [false, true] {
         let map = series::condition_map(k_side).map_err(CliError::lib)?;
         let mut rows = Vec::new();

@@ -21,21 +21,23 @@ const BATCH: usize = 16 * BLOCK;
 
 #[derive(clap::Args, Debug)]
 pub struct SweepArgs {
-    /// Poisson's ratios, -1 < NU <= 1/2: a list `0.1,0.2,1/4` or a range `lin:START:STOP:N`.
+    /// Poisson's ratios, -1 < NU <= 1/2: a list `0.1,0.2,1/4`, a range `lin:START:STOP:N` (N
+    /// points, evenly spaced) or `log:START:STOP:N` (N points, log-spaced; positive ends).
     #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
     pub nu: Axis,
     #[command(flatten)]
     pub speed: SpeedAxis,
-    /// Curvature ratios A1/B1 = R2/R1 > 0: a list, `lin:START:STOP:N` or `log:START:STOP:N`
-    /// (N points, log-spaced).
+    /// Curvature ratios A1/B1 = R2/R1 > 0: a list, `lin:START:STOP:N` (N points, evenly
+    /// spaced) or `log:START:STOP:N` (N points, log-spaced).
     #[arg(long, value_name = "LIST", value_parser = axis)]
     pub ratio: Axis,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits
-    /// (24 to 32768).
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
+    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
+    /// mpfr256 as the output labels it.
     #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
     pub precision: Precision,
     /// How the integrals are evaluated at each Newton iterate: auto, adaptive or fixed.
-    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::method())]
+    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::solve_method())]
     pub method: Method,
     /// The output: csv (a header line, then one row a point) or jsonl (one JSON object a line).
     #[arg(long, value_name = "FORMAT", default_value = "csv")]
@@ -46,12 +48,14 @@ pub struct SweepArgs {
 #[derive(clap::Args, Debug)]
 #[group(required = true, multiple = false)]
 pub struct SpeedAxis {
-    /// Speeds M_R = V/c_R, 0 <= M_R < 1: a list or `lin:START:STOP:N` (each gap 1 - M_R formed
-    /// exactly from the decimal).
+    /// Speeds M_R = V/c_R, 0 <= M_R < 1: a list, `lin:START:STOP:N` (N points, evenly spaced)
+    /// or `log:START:STOP:N` (N points, log-spaced; positive ends); each gap 1 - M_R formed
+    /// exactly from the decimal.
     #[arg(long, value_name = "LIST", value_parser = axis)]
     pub speed: Option<Axis>,
-    /// Speeds by their gap G = 1 - M_R, 0 < G <= 1: a list, `lin:…` or `log:START:STOP:N`
-    /// (e.g. `log:1e-2:1e-12:11` walks M_R -> 1).
+    /// Speeds by their gap G = 1 - M_R, 0 < G <= 1: a list, `lin:START:STOP:N` (N points,
+    /// evenly spaced) or `log:START:STOP:N` (N points, log-spaced; e.g. `log:1e-2:1e-12:11`
+    /// walks M_R -> 1).
     #[arg(long, value_name = "LIST", value_parser = axis)]
     pub gap: Option<Axis>,
 }
@@ -102,6 +106,12 @@ pub fn axis(s: &str) -> Result<Axis, String> {
                 n,
             });
         }
+    }
+    if let Some((prefix, _)) = s.split_once(':') {
+        return Err(format!(
+            "'{prefix}:' is not a range: a range is lin:START:STOP:N (evenly spaced) or \
+             log:START:STOP:N (log-spaced), N points"
+        ));
     }
     let items = s
         .split(',')
@@ -295,11 +305,10 @@ fn check_inputs(a: &SweepArgs) -> Result<(), CliError> {
         .as_ref()
         .or(a.speed.gap.as_ref())
         .map_or(0, Axis::len);
-    let total =
-        a.nu.len()
-            .saturating_mul(speeds)
-            .saturating_mul(a.ratio.len());
-    if total > POINT_CAP {
+    // Each axis holds at most POINT_CAP values or one per character typed: the product is
+    // exact in a u128, whatever was typed.
+    let total = (a.nu.len() as u128) * (speeds as u128) * (a.ratio.len() as u128);
+    if total > POINT_CAP as u128 {
         return Err(CliError::Input(format!(
             "the sweep has {total} points, more than the {POINT_CAP} one run solves"
         )));

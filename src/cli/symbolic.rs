@@ -3,6 +3,7 @@
 //! exact (`moving_hertz::symbolic`); `symbolic condition --n N [--format text|json]`: what the
 //! closed forms say about the K, E basis (the pole at e² = 0, the bits lost on a grid of e²).
 
+use super::output::emit;
 use super::CliError;
 use moving_hertz::routes::moments::KeTerm;
 use moving_hertz::scalar::decimal_to_rational;
@@ -10,6 +11,7 @@ use moving_hertz::symbolic::{
     coefficient_items, green_coefficients, ke_condition, moment_forms, moment_items, pole_terms,
     render, RatFunc, Style, MAX_COEFFICIENT_INDEX, MAX_MOMENT_INDEX,
 };
+use std::fmt::Write as _;
 
 /// The e² of the condition table: both sides of 1/2 and k > 1.
 const E2_GRID: [&str; 12] = [
@@ -37,8 +39,9 @@ fn n_grid(n: usize) -> Vec<usize> {
     v
 }
 
-/// The pole of α_n, β_n at e² = 0 and the bits lost by α_n K + β_n E on [`E2_GRID`].
-fn condition(forms: &[KeTerm<RatFunc>], style: Style) -> Result<(), String> {
+/// The pole of α_n, β_n at e² = 0 and the bits lost by α_n K + β_n E on [`E2_GRID`], as the
+/// text to print.
+fn condition(forms: &[KeTerm<RatFunc>], style: Style) -> Result<String, String> {
     let n = forms.len() - 1;
     let ns = n_grid(n);
     let poles = pole_terms(forms);
@@ -67,29 +70,38 @@ fn condition(forms: &[KeTerm<RatFunc>], style: Style) -> Result<(), String> {
             })
             .collect();
         let ns: Vec<String> = ns.iter().map(|k| k.to_string()).collect();
-        println!(
-            "{{\n  \"n\": [{}],\n  \"pole_at_e2_0\": [\n    {}\n  ],\n  \"condition\": [\n    {}\n  ]\n}}",
+        return Ok(format!(
+            "{{\n  \"n\": [{}],\n  \"pole_at_e2_0\": [\n    {}\n  ],\n  \"condition\": [\n    {}\n  ]\n}}\n",
             ns.join(", "),
             poles.join(",\n    "),
             rows.join(",\n    ")
-        );
-        return Ok(());
+        ));
     }
-    println!("# (40), (42) in closed form: L_n = alpha_n K + beta_n E, e2 = e^2 = 1 - k^2");
-    println!("# near e2 = 0: alpha_n = a_n e2^-p (1 + O(e2)), beta_n = b_n e2^-p (1 + O(e2))");
-    println!("n\tp\ta_n\tb_n");
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "# (40), (42) in closed form: L_n = alpha_n K + beta_n E, e2 = e^2 = 1 - k^2"
+    );
+    let _ = writeln!(
+        out,
+        "# near e2 = 0: alpha_n = a_n e2^-p (1 + O(e2)), beta_n = b_n e2^-p (1 + O(e2))"
+    );
+    let _ = writeln!(out, "n\tp\ta_n\tb_n");
     for &k in &ns {
         let t = &poles[k];
-        println!("{}\t{}\t{}\t{}", t.n, t.order, t.alpha, t.beta);
+        let _ = writeln!(out, "{}\t{}\t{}\t{}", t.n, t.order, t.alpha, t.beta);
     }
-    println!("# bits lost by alpha_n K + beta_n E: log2((|alpha_n| K + |beta_n| E) / L_n)");
+    let _ = writeln!(
+        out,
+        "# bits lost by alpha_n K + beta_n E: log2((|alpha_n| K + |beta_n| E) / L_n)"
+    );
     let head: Vec<String> = ns.iter().map(|k| format!("n={k}")).collect();
-    println!("e2\t{}", head.join("\t"));
+    let _ = writeln!(out, "e2\t{}", head.join("\t"));
     for (e2, b) in rows {
         let b: Vec<String> = b.iter().map(|x| format!("{x:.2}")).collect();
-        println!("{e2}\t{}", b.join("\t"));
+        let _ = writeln!(out, "{e2}\t{}", b.join("\t"));
     }
-    Ok(())
+    Ok(out)
 }
 
 /// `moving-hertz symbolic KIND --n N [--format FORMAT]`.
@@ -160,7 +172,8 @@ pub fn run(kind: SymbolicKind, n: usize, format: SymbolicFormat) -> Result<(), C
                 "invalid value for '--format': `symbolic condition` prints text or json".into(),
             ));
         }
-        return condition(&moment_forms(n).map_err(err)?, style).map_err(CliError::Failed);
+        let text = condition(&moment_forms(n).map_err(err)?, style).map_err(CliError::Failed)?;
+        return emit(&text);
     }
     let (title, items) = match kind {
         SymbolicKind::Coefficients => (
@@ -179,6 +192,5 @@ pub fn run(kind: SymbolicKind, n: usize, format: SymbolicFormat) -> Result<(), C
         ),
         SymbolicKind::Condition => unreachable!("handled above"),
     };
-    print!("{}", render(&title, &items, style));
-    Ok(())
+    emit(&render(&title, &items, style))
 }
