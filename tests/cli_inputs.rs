@@ -825,7 +825,10 @@ fn exact_zero_is_accepted_with_any_exponent() {
     refused(
         &["rayleigh", "--nu", "1e-99999999999999999999"],
         2,
-        &["'1e-99999999999999999999' for '--nu", "exponent out of range"],
+        &[
+            "'1e-99999999999999999999' for '--nu",
+            "exponent out of range",
+        ],
     );
 }
 
