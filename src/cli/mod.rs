@@ -5,9 +5,10 @@
 //! on this module.
 //!
 //! Exit codes: 0 success; 1 the computation failed or cannot meet the request (no convergence,
-//! an unreachable tolerance, a file that cannot be written); 2 the command line was refused (an
-//! unknown command or option, a missing or conflicting option, a value that does not parse or
-//! lies outside its domain). Every failure prints one line on standard error.
+//! an unreachable tolerance, any failure once the work has started, a file that cannot be
+//! written, standard output closed or full); 2 the command line was refused before any work
+//! (an unknown command or option, a missing or conflicting option, a value that does not parse
+//! or lies outside its domain). Every failure prints one line on standard error.
 
 mod args;
 mod contact;
@@ -61,7 +62,8 @@ enum Command {
     Contact(contact::ContactArgs),
     /// The contact ellipse over every (nu, speed, A1/B1) of three lists or ranges, in parallel
     /// on every core, as CSV or JSON lines written as they are solved (a progress bar on
-    /// stderr past a second). Exit code 1 if a point failed (its row carries the error).
+    /// stderr past a second when it is a terminal). Exit code 1 if a point failed (its row
+    /// carries the error).
     Sweep(sweep::SweepArgs),
     /// A study of the crate's docs: runs it and writes its CSV (DIR/data), SVG (DIR/figures)
     /// and summary tables.
