@@ -249,7 +249,12 @@ fn recursion_map<T: Real>(p: T::Prec, label: Precision, tick: &mut impl FnMut())
                 .map(|&n| {
                     tick();
                     match (&fwd, &reference) {
-                        (Ok(f), Ok(r)) => digits(rel(&f.l()[n], r.l()[n].as_float()), full),
+                        // A value the recursion overflowed to (not finite) has no correct
+                        // digit; a recursion that refused (a typed error) is NaN.
+                        (Ok(f), Ok(r)) => match rel(&f.l()[n], r.l()[n].as_float()) {
+                            e if e.is_nan() => 0.0,
+                            e => digits(e, full),
+                        },
                         _ => f64::NAN,
                     }
                 })
