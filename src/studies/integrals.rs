@@ -220,7 +220,7 @@ pub fn charts(rows: &[Row]) -> Vec<(String, String)> {
             "correct digits of I1, I2, −log₁₀(relative error)",
         )
         .log(true, false);
-        for m in METHODS {
+        for (look, m) in METHODS.into_iter().enumerate() {
             let sel: Vec<&Row> = (rows.iter())
                 .filter(|r| r.mr == key && r.method == m)
                 .collect();
@@ -233,7 +233,7 @@ pub fn charts(rows: &[Row]) -> Vec<(String, String)> {
                 .collect();
             // A route that failed at every precision (the series' term cap) is named, not drawn.
             if !pts.is_empty() {
-                chart.push(Series::new(m.label(), pts, Style::LineMarkers));
+                chart.push(Series::new(m.label(), pts, Style::LineMarkers).look(look));
             }
             let failed: Vec<String> = (sel.iter())
                 .filter(|r| r.failure.is_some())

@@ -60,6 +60,9 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Drawing style.
     pub style: Style,
+    /// The colour and marker by number (the series' place in the chart when `None`): a series
+    /// keeps its look across charts where others are left out.
+    pub look: Option<usize>,
 }
 
 impl Series {
@@ -69,7 +72,13 @@ impl Series {
             label: label.into(),
             points,
             style,
+            look: None,
         }
+    }
+    /// The colour and marker of its place `i`, wherever it is drawn.
+    pub fn look(mut self, i: usize) -> Series {
+        self.look = Some(i);
+        self
     }
 }
 
@@ -218,6 +227,7 @@ impl Chart {
     /// The series; every usable point lies inside the plot area (the axes are fitted to them).
     fn curves(&self, o: &mut String, px: &dyn Fn(f64) -> f64, py: &dyn Fn(f64) -> f64) {
         for (i, s) in self.series.iter().enumerate() {
+            let i = s.look.unwrap_or(i);
             let c = PALETTE[i % PALETTE.len()];
             if !s.points.iter().any(|&(x, y)| self.usable(x, y)) {
                 // Refused by `studies::write_text`: a chart never shows an empty series.
@@ -260,6 +270,7 @@ impl Chart {
         let lx = f.ml + f.pw + 14.0;
         let mut y = f.mt + 10.0;
         for (i, s) in self.series.iter().enumerate() {
+            let i = s.look.unwrap_or(i);
             let c = PALETTE[i % PALETTE.len()];
             if s.style != Style::Markers {
                 let _ = write!(
