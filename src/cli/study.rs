@@ -30,6 +30,11 @@ pub struct StudyArgs {
     pub name: Study,
     #[command(flatten)]
     pub out: OutDir,
+    /// Draw the charts from the study's CSV data already under DIR/data, without measuring
+    /// (the timing studies: integrals, pareto, series). The study itself draws its charts the same way,
+    /// from the CSV it has just written.
+    #[arg(long)]
+    pub redraw: bool,
 }
 
 /// The studies behind the pages of docs/.
@@ -53,10 +58,20 @@ pub enum Study {
 }
 
 pub fn run(a: &StudyArgs) -> Result<(), CliError> {
+    if a.redraw && !matches!(a.name, Study::Integrals | Study::Pareto | Study::Series) {
+        return Err(CliError::Input(format!(
+            "--redraw draws the charts of the timing studies (integrals, pareto, series) from \
+             their CSV; study {} draws its charts as it runs",
+            format!("{:?}", a.name).to_lowercase()
+        )));
+    }
     let out = a.out.prepare()?;
     let out = out.as_path();
     super::bind_global_pool();
     match a.name {
+        Study::Integrals if a.redraw => draw_integrals(out),
+        Study::Pareto if a.redraw => draw_pareto(out, &PARETO_METHODS),
+        Study::Series if a.redraw => draw_series(out),
         Study::Rayleigh => study_rayleigh(out),
         Study::Integrals => study_integrals(out),
         Study::Poisson => study_poisson(out),
@@ -156,9 +171,7 @@ fn study_integrals(out: &std::path::Path) -> Result<(), CliError> {
         &csv,
     )
     .map_err(io)?;
-    for (name, svg) in integrals::charts(&rows) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
+    draw_integrals(out)?;
     say!("| M_R | method | precision | rel. error | estimate | time | work |");
     say!("|---|---|---|---|---|---|---|");
     for r in &rows {
@@ -189,6 +202,39 @@ fn study_integrals(out: &std::path::Path) -> Result<(), CliError> {
     );
     Ok(())
 }
+
+/// The integrals study's charts, drawn from its CSV data under `out`.
+fn draw_integrals(out: &std::path::Path) -> Result<(), CliError> {
+    let table = studies::Table::read(&out.join("data/integrals_study.csv")).map_err(io)?;
+    let rows = integrals::rows_from_csv(&table).map_err(CliError::Failed)?;
+    for (name, svg) in integrals::charts(&rows) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    Ok(())
+}
+
+/// The pareto study's charts for `methods`, drawn from its CSV data under `out`.
+fn draw_pareto(out: &std::path::Path, methods: &[Method]) -> Result<(), CliError> {
+    let table = studies::Table::read(&out.join("data/pareto_ellipse.csv")).map_err(io)?;
+    let rows = pareto::rows_from_csv(&table).map_err(CliError::Failed)?;
+    for (name, svg) in pareto::charts(&rows, methods) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    Ok(())
+}
+
+/// The series study's charts, drawn from its CSV data under `out`.
+fn draw_series(out: &std::path::Path) -> Result<(), CliError> {
+    let table = studies::Table::read(&out.join("data/series_terms.csv")).map_err(io)?;
+    let rows = series::rows_from_csv(&table).map_err(CliError::Failed)?;
+    for (name, svg) in series::terms_charts(&rows) {
+        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+    }
+    Ok(())
+}
+
+/// The methods the pareto study compares.
+const PARETO_METHODS: [Method; 2] = [Method::Fixed, Method::Adaptive];
 
 fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
     let total = poisson::nu_grid().len() * poisson::SPEEDS.len() * poisson::ratio_grid().len();
@@ -264,7 +310,7 @@ fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
 }
 
 fn study_pareto(out: &std::path::Path) -> Result<(), CliError> {
-    let methods = [Method::Fixed, Method::Adaptive];
+    let methods = PARETO_METHODS;
     let rows =
         pareto::run(&methods, 200.0, |what| note!("pareto: {what} ...")).map_err(CliError::lib)?;
     let csv: Vec<Vec<String>> = rows
@@ -298,9 +344,7 @@ fn study_pareto(out: &std::path::Path) -> Result<(), CliError> {
         &csv,
     )
     .map_err(io)?;
-    for (name, svg) in pareto::charts(&rows, &methods) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
+    draw_pareto(out, &methods)?;
     say!("| M_R | method | precision | error of k | estimate | time per solve |");
     say!("|---|---|---|---|---|---|");
     for r in &rows {
@@ -365,9 +409,7 @@ fn study_series(out: &std::path::Path) -> Result<(), CliError> {
         &csv,
     )
     .map_err(io)?;
-    for (name, svg) in series::terms_charts(&rows) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
+    draw_series(out)?;
     let mut md = String::from(
         "| M_R | target | precision | terms | estimate | time | error reached | error estimate |\n|---|---|---|---|---|---|---|---|\n",
     );
@@ -552,8 +594,9 @@ fn study_stability(out: &std::path::Path) -> Result<(), CliError> {
         let all: Vec<f64> = m.z.iter().flatten().cloned().collect();
         let min = all.iter().cloned().fold(f64::INFINITY, f64::min);
         let full = all.iter().filter(|&&d| d >= m.full - 1.0).count();
+        let refused = all.iter().filter(|d| d.is_nan()).count();
         say!(
-            "{}: min {:.1} digits, {} of {} cells within a digit of full ({:.1})",
+            "{}: min {:.1} digits, {} of {} cells within a digit of full ({:.1}), {refused} refused",
             m.name,
             min,
             full,

@@ -45,10 +45,16 @@ pub const SPEEDS: [f64; 8] = [0.0, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99, 0.999];
 /// The curvature ratios of the e-against-M_R chart.
 pub const RATIOS: [f64; 6] = [0.01, 0.05, 0.1, 0.25, 0.5, 1.0];
 
-/// The grid of A1/B1 for the first chart: 0.005 … 1.
+/// The grid of A1/B1 for the first chart: 0.005 … 1 in steps of 0.005, and 20 more points
+/// between 0.995 and 1 at gaps 1 − A1/B1 = 0.005·10^(−3j/20), j = 1 … 20 (down to 5·10⁻⁶): the
+/// static curve falls to e = 0 at A1/B1 = 1 like the square root of the gap, and a uniform
+/// grid draws that fall as a kink.
 /// Inputs of (33) for Fig. 2; exact binary values.
 pub fn ratio_grid() -> Vec<f64> {
-    (1..=200).map(|j| j as f64 / 200.0).collect()
+    let mut v: Vec<f64> = (1..200).map(|j| j as f64 / 200.0).collect();
+    v.extend((1..=20).map(|j| 1.0 - 0.005 * 10f64.powf(-3.0 * j as f64 / 20.0)));
+    v.push(1.0);
+    v
 }
 
 /// The grid of M_R for the second chart: 0 … 0.9999, denser near 1.
@@ -171,7 +177,7 @@ fn push_decimal(t: &mut String, decimals: &HashMap<u64, String>, v: f64) {
 /// Draws the solutions of (33) (Fig. 2 of the paper); no arithmetic beyond plotting.
 pub fn charts(nu: &str, by_ratio: &[Point], by_speed: &[Point]) -> Vec<(String, String)> {
     let mut c1 = Chart::new(
-        format!("Eccentricity of the contact ellipse against A1/B1 (ν = {nu}), after the paper's Fig. 2"),
+        format!("Eccentricity against A1/B1 (ν = {nu}), after the paper's Fig. 2"),
         "A1/B1 = R2/R1 (curvature along / across the motion)",
         "eccentricity e = (1 − (b/a)²)^(1/2)",
     );

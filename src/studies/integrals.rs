@@ -182,55 +182,122 @@ pub fn run(
     Ok(rows)
 }
 
-/// One Pareto chart per speed (error against time, log-log; a line per method through its
-/// precisions), and the cost of each method at f64 against 1 − M_R.
+/// The rows of the study's CSV table (as `moving-hertz study integrals` writes it, header
+/// `mr,method,precision,rel_error,error_estimate,time_ns,work,failure`): the data the charts are
+/// drawn from. An error names the line that does not read.
+/// Reads the measurements of the routes to (34) back; no arithmetic.
+pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
+    (0..table.rows.len())
+        .map(|i| {
+            let (method, failure) = (table.text(i, "method")?, table.text(i, "failure")?);
+            let work = table.text(i, "work")?;
+            Ok(Row {
+                mr: table.text(i, "mr")?,
+                method: (METHODS.into_iter().find(|m| m.label() == method))
+                    .ok_or_else(|| table.at(i, format!("no route {method:?}")))?,
+                precision: table.precision(i, "precision")?,
+                error: table.number(i, "rel_error")?,
+                estimate: table.number(i, "error_estimate")?,
+                time_ns: table.number(i, "time_ns")?,
+                work: (work.parse()).map_err(|_| table.at(i, format!("work = {work:?}")))?,
+                failure: (!failure.is_empty()).then_some(failure),
+            })
+        })
+        .collect()
+}
+
+/// One Pareto chart per speed (correct digits of I1, I2 on a linear axis against time on a
+/// log axis; a line per route through its precisions; routes that failed named in the legend),
+/// and the cost of each route at f64 against 1 − M_R.
 /// Draws the measurements of [`run`] on (34); no arithmetic beyond plotting.
 pub fn charts(rows: &[Row]) -> Vec<(String, String)> {
     let mut out = Vec::new();
     for (i, mr) in SPEEDS.iter().enumerate() {
         let key = format!("{}", mr.parse::<f64>().unwrap_or(0.0));
         let mut chart = Chart::new(
-            format!(
-                "I1, I2 at M_R = {mr}: accuracy against cost (points: f64, dd, mpfr128, mpfr256)"
-            ),
+            format!("I1, I2 at M_R = {mr}: correct digits against time"),
             "time per evaluation of I1 and I2 (ns)",
-            "relative error (0 plotted as 1e-80)",
+            "correct digits of I1, I2, −log₁₀(relative error)",
         )
-        .log(true, true);
-        // A route that refused at every precision (the series' term cap) is named as refused,
-        // not drawn.
-        let mut refused = Vec::new();
-        for m in METHODS {
-            let pts: Vec<(f64, f64)> = rows
-                .iter()
-                .filter(|r| r.mr == key && r.method == m && r.failure.is_none())
-                .map(|r| (r.time_ns, r.error.max(1e-80)))
+        .log(true, false);
+        for (look, m) in METHODS.into_iter().enumerate() {
+            let sel: Vec<&Row> = (rows.iter())
+                .filter(|r| r.mr == key && r.method == m)
                 .collect();
-            if pts.is_empty() {
-                refused.push(m.label());
-            } else {
-                chart.push(Series::new(m.label(), pts, Style::LineMarkers));
+            let pts: Vec<(f64, f64)> = (sel.iter())
+                .filter(|r| r.failure.is_none())
+                .map(|r| {
+                    let full = super::full_digits(r.precision.bits());
+                    (r.time_ns, super::correct_digits(r.error, full))
+                })
+                .collect();
+            // A route that failed at every precision (the series' term cap) is named, not drawn.
+            if !pts.is_empty() {
+                chart.push(Series::new(m.label(), pts, Style::LineMarkers).look(look));
+            }
+            let failed: Vec<String> = (sel.iter())
+                .filter(|r| r.failure.is_some())
+                .map(|r| r.precision.label())
+                .collect();
+            if !failed.is_empty() {
+                chart.notes.push(failure_note(m, &failed, &sel));
             }
         }
-        if !refused.is_empty() {
-            chart.title = format!("{} — refused: {}", chart.title, refused.join(", "));
-        }
+        chart
+            .notes
+            .push("points: f64, dd, mpfr128, mpfr256 (ν = 0.2, k = 0.3)".into());
         out.push((format!("integrals_pareto_{i}.svg"), chart.to_svg()));
     }
+    out.push(("integrals_cost_f64.svg".into(), cost_chart(rows)));
+    out
+}
+
+/// The legend's note for a route that failed at the precisions `failed`.
+fn failure_note(m: Route, failed: &[String], sel: &[&Row]) -> String {
+    let why = (sel.iter().find_map(|r| r.failure.as_deref())).map_or("", |f| {
+        if f.contains("cap") {
+            " (term cap)"
+        } else {
+            ""
+        }
+    });
+    if failed.len() == sel.len() {
+        format!("{}: refused at every precision{why}", m.label())
+    } else {
+        format!("{}: refused at {}{why}", m.label(), failed.join(", "))
+    }
+}
+
+/// The cost of each route at f64 against 1 − M_R; the speeds where a route failed are named in
+/// the legend.
+fn cost_chart(rows: &[Row]) -> String {
     let mut cost = Chart::new(
-        "Cost of I1, I2 at f64 as M_R approaches 1 (missing points: the method failed)",
+        "Cost of I1, I2 at f64 as M_R approaches 1",
         "1 − M_R",
         "time per evaluation (ns)",
     )
     .log(true, true);
     for m in METHODS {
-        let pts: Vec<(f64, f64)> = rows
-            .iter()
-            .filter(|r| r.method == m && r.precision == Precision::F64 && r.failure.is_none())
-            .map(|r| (1.0 - r.mr.parse::<f64>().unwrap_or(0.0), r.time_ns))
+        let sel: Vec<&Row> = (rows.iter())
+            .filter(|r| r.method == m && r.precision == Precision::F64)
+            .collect();
+        let gap = |r: &Row| 1.0 - r.mr.parse::<f64>().unwrap_or(0.0);
+        let pts = (sel.iter())
+            .filter(|r| r.failure.is_none())
+            .map(|r| (gap(r), r.time_ns))
             .collect();
         cost.push(Series::new(m.label(), pts, Style::LineMarkers));
+        let failed: Vec<&str> = (sel.iter())
+            .filter(|r| r.failure.is_some())
+            .map(|r| r.mr.as_str())
+            .collect();
+        if !failed.is_empty() {
+            cost.notes.push(format!(
+                "{}: refused at M_R = {}",
+                m.label(),
+                failed.join(", ")
+            ));
+        }
     }
-    out.push(("integrals_cost_f64.svg".into(), cost.to_svg()));
-    out
+    cost.to_svg()
 }

@@ -11,6 +11,7 @@ pub mod series;
 pub mod stability;
 pub mod svg;
 
+use moving_hertz::scalar::Precision;
 use std::io::{IoSlice, Write};
 use std::path::Path;
 use std::time::Instant;
@@ -83,6 +84,83 @@ pub fn write_pieces(path: &Path, pieces: &[impl AsRef<str>]) -> std::io::Result<
         Ok(())
     };
     write().map_err(naming(path))
+}
+
+/// A CSV table as [`write_csv`] writes it (fields without commas), read back to draw a study's
+/// charts from its committed data. Implements no equation; holds the text as written.
+#[derive(Clone, Debug)]
+pub struct Table {
+    /// The file, for messages.
+    pub path: String,
+    /// The column names.
+    pub header: Vec<String>,
+    /// The fields of each row.
+    pub rows: Vec<Vec<String>>,
+}
+
+impl Table {
+    /// The table in the file `path`; an error names the file (and the line whose field count
+    /// differs from the header's).
+    pub fn read(path: &Path) -> std::io::Result<Table> {
+        let text = std::fs::read_to_string(path).map_err(naming(path))?;
+        let mut lines = text.lines();
+        let split = |l: &str| l.split(',').map(str::to_string).collect::<Vec<_>>();
+        let header = lines.next().map(split).unwrap_or_default();
+        let rows: Vec<Vec<String>> = lines.map(split).collect();
+        if let Some(i) = rows.iter().position(|r| r.len() != header.len()) {
+            let bad = std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!(
+                    "line {}: {} fields, the header has {}",
+                    i + 2,
+                    rows[i].len(),
+                    header.len()
+                ),
+            );
+            return Err(naming(path)(bad));
+        }
+        let path = path.display().to_string();
+        Ok(Table { path, header, rows })
+    }
+    /// The message `e` about row `i`, naming the file and the line.
+    pub fn at(&self, i: usize, e: impl std::fmt::Display) -> String {
+        format!("{}: line {}: {e}", self.path, i + 2)
+    }
+    /// The field of row `i` in column `name`.
+    pub fn text(&self, i: usize, name: &str) -> Result<String, String> {
+        let j = (self.header.iter().position(|h| h == name))
+            .ok_or_else(|| format!("{}: no column {name}", self.path))?;
+        Ok(self.rows[i][j].clone())
+    }
+    /// The number in row `i`, column `name` (`NaN` reads as NaN).
+    pub fn number(&self, i: usize, name: &str) -> Result<f64, String> {
+        let t = self.text(i, name)?;
+        t.parse()
+            .map_err(|_| self.at(i, format!("{name} = {t:?} is not a number")))
+    }
+    /// The precision labelled in row `i`, column `name` (`f64`, `dd`, `mpfr256`).
+    pub fn precision(&self, i: usize, name: &str) -> Result<Precision, String> {
+        let t = self.text(i, name)?;
+        Precision::parse(t.strip_prefix("mpfr").unwrap_or(&t)).map_err(|e| self.at(i, e))
+    }
+}
+
+/// The correct decimal digits of a result with relative error `err`: −log₁₀ err, 0 for an
+/// error of 1 or more, and `exact` (the digits of the working precision) for an error of 0.
+/// The accuracy axis of the studies' charts (a linear axis of digits, on which an exact result
+/// has a place). Implements no equation of the paper.
+pub fn correct_digits(err: f64, exact: f64) -> f64 {
+    if err == 0.0 {
+        exact
+    } else {
+        (-err.log10()).max(0.0)
+    }
+}
+
+/// The decimal digits of a precision of `bits` significand bits, (bits − 1)·log₁₀ 2 (the
+/// digits of its unit roundoff). Implements no equation of the paper.
+pub fn full_digits(bits: u32) -> f64 {
+    (bits as f64 - 1.0) * std::f64::consts::LOG10_2
 }
 
 /// Median wall time of `f` in nanoseconds, over enough repetitions to fill about `budget_ms`

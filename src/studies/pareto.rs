@@ -132,56 +132,127 @@ pub fn run(
     Ok(rows)
 }
 
-/// Pareto charts (error against time, one line per method through its precisions, one chart per
-/// speed) and the cost of precision (time per solve against bits, one line per speed).
+/// The rows of the study's CSV table (as `moving-hertz study pareto` writes it, header
+/// `mr,method,precision,bits,k_rel_error,error_estimate,time_ns,failure`): the data the charts
+/// are drawn from. An error names the line that does not read.
+/// Reads the measurements of (33)'s solve back; no arithmetic.
+pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
+    (0..table.rows.len())
+        .map(|i| {
+            let failure = table.text(i, "failure")?;
+            Ok(Row {
+                mr: table.number(i, "mr")?,
+                method: Method::parse(&table.text(i, "method")?).map_err(|e| table.at(i, e))?,
+                precision: table.precision(i, "precision")?,
+                error: table.number(i, "k_rel_error")?,
+                estimate: table.number(i, "error_estimate")?,
+                time_ns: table.number(i, "time_ns")?,
+                failure: (!failure.is_empty()).then_some(failure),
+            })
+        })
+        .collect()
+}
+
+/// Pareto charts (correct digits of k on a linear axis against time on a log axis, one line
+/// per method through its precisions, one chart per speed; failures named in the legend) and
+/// the cost of precision (time per solve against bits: a line per speed through the MPFR
+/// precisions, f64 and double-double as markers of their own).
 /// Draws the measurements of (33)'s solve; no arithmetic beyond plotting.
 pub fn charts(rows: &[Row], methods: &[Method]) -> Vec<(String, String)> {
     let mut out = Vec::new();
     for (i, mr) in SPEEDS.iter().enumerate() {
         let mut c = Chart::new(
-            format!(
-                "Ellipse solve at M_R = {mr}: error of k against time (f64, dd, MPFR 64 … 1024)"
-            ),
+            format!("Ellipse solve at M_R = {mr}: correct digits of k against time"),
             "time per solve (ns)",
-            "relative error of k (0 plotted as 1e-320)",
+            "correct digits of k, −log₁₀(relative error)",
         )
-        .log(true, true);
+        .log(true, false);
         for &m in methods {
-            let mut pts: Vec<(f64, f64)> = rows
-                .iter()
-                .filter(|r| r.mr == *mr && r.method == m && r.failure.is_none())
-                .map(|r| (r.time_ns, r.error.max(1e-320)))
+            let sel: Vec<&Row> = (rows.iter())
+                .filter(|r| r.mr == *mr && r.method == m)
+                .collect();
+            let mut pts: Vec<(f64, f64)> = (sel.iter())
+                .filter(|r| r.failure.is_none())
+                .map(|r| (r.time_ns, digits(r)))
                 .collect();
             pts.sort_by(|a, b| a.0.total_cmp(&b.0));
             c.push(Series::new(m.label(), pts, Style::LineMarkers));
+            c.notes.extend(refused(m.label(), &sel));
         }
+        c.notes
+            .push("points: f64, dd and MPFR 64, 128, 256, 512, 1024 bits, in order of time".into());
         out.push((format!("pareto_ellipse_{i}.svg"), c.to_svg()));
     }
     for &m in methods {
-        let mut c = Chart::new(
-            format!(
-                "Cost of precision: the ellipse solve ({}) against the working precision",
-                m.label()
-            ),
-            "significand bits (53 = f64, 106 = dd, then MPFR)",
-            "time per solve (ns)",
-        )
-        .log(true, true);
-        for mr in SPEEDS {
-            let mut pts: Vec<(f64, f64)> = rows
-                .iter()
-                .filter(|r| r.mr == mr && r.method == m && r.failure.is_none())
-                .map(|r| (r.precision.bits() as f64, r.time_ns))
-                .collect();
-            // MPFR 64 comes after double-double (106 bits) in the rows; draw by bits. The dip
-            // from MPFR 64 down to double-double is the point of the chart.
-            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            c.push(Series::new(format!("M_R = {mr}"), pts, Style::LineMarkers));
-        }
         out.push((
             format!("pareto_cost_of_precision_{}.svg", m.label()),
-            c.to_svg(),
+            cost_of_precision(rows, m),
         ));
     }
     out
+}
+
+/// The correct digits of a row's k (an exact k counts the digits of its precision).
+fn digits(r: &Row) -> f64 {
+    super::correct_digits(r.error, super::full_digits(r.precision.bits()))
+}
+
+/// The legend's note for the rows of one method that failed, if any: the method, the
+/// precisions and the first reason.
+fn refused(method: &str, rows: &[&Row]) -> Option<String> {
+    let failed: Vec<&&Row> = rows.iter().filter(|r| r.failure.is_some()).collect();
+    let first = failed.first()?;
+    let precs: Vec<String> = failed.iter().map(|r| r.precision.label()).collect();
+    Some(format!(
+        "{method} failed at {} (not drawn): {}",
+        precs.join(", "),
+        first.failure.as_deref().unwrap_or_default()
+    ))
+}
+
+/// Time per solve against the significand bits for method `m`: the MPFR precisions a line per
+/// speed; f64 (53 bits) and double-double (106) are hardware arithmetic, far cheaper than MPFR
+/// at 64 bits, and are drawn as markers of their own (all speeds), not joined to MPFR's lines.
+fn cost_of_precision(rows: &[Row], m: Method) -> String {
+    let mut c = Chart::new(
+        format!(
+            "Cost of precision: the ellipse solve ({}) against the working precision",
+            m.label()
+        ),
+        "significand bits (log scale)",
+        "time per solve (ns)",
+    )
+    .log(true, true);
+    c.x_ticks = Some(
+        [53u32, 64, 106, 128, 256, 512, 1024]
+            .iter()
+            .map(|&b| (b as f64, b.to_string()))
+            .collect(),
+    );
+    let of = |r: &&Row| r.method == m && r.failure.is_none();
+    for mr in SPEEDS {
+        let mut pts: Vec<(f64, f64)> = (rows.iter().filter(of))
+            .filter(|r| r.mr == mr && matches!(r.precision, Precision::Mpfr(_)))
+            .map(|r| (r.precision.bits() as f64, r.time_ns))
+            .collect();
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        c.push(Series::new(
+            format!("MPFR, M_R = {mr}"),
+            pts,
+            Style::LineMarkers,
+        ));
+    }
+    for (p, label) in [
+        (Precision::F64, "f64 (53 bits), all M_R"),
+        (Precision::DoubleDouble, "dd (106 bits), all M_R"),
+    ] {
+        let pts = (rows.iter().filter(of))
+            .filter(|r| r.precision == p)
+            .map(|r| (r.precision.bits() as f64, r.time_ns))
+            .collect();
+        c.push(Series::new(label, pts, Style::Markers));
+    }
+    c.notes
+        .push("f64 and dd run on the hardware's doubles: cheaper than MPFR at 64 bits".into());
+    c.to_svg()
 }

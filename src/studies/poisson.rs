@@ -236,6 +236,7 @@ pub fn charts(points: &[Point]) -> Vec<(String, String)> {
         x_log: true,
         y_log: true,
         z_range: (0.0, zmax.max(1e-6)),
+        missing: "not solved".into(),
     };
     out.push(("poisson_e_map.svg".into(), hm.to_svg()));
     out

@@ -133,7 +133,6 @@ pub fn charts(rows: &[RootError]) -> Vec<(String, String)> {
                 "error / ε (m1 relative; m2, m3 relative to |m|)",
             )
             .log(false, true);
-            chart.y_range = Some((1e-2, 1e17));
             for method in ["complex-cardano", "real-branches", "default"] {
                 for (which, pick) in [("m1", 0usize), ("m2,m3", 1)] {
                     let pts = rows
@@ -174,8 +173,6 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
         "relative error of m1 / ε",
     )
     .log(true, true);
-    merge.y_range = Some((1e-2, 1e8));
-    p0.y_range = Some((1e-2, 1e17));
     let mut precs: Vec<Precision> = Vec::new();
     for r in rows {
         if !precs.contains(&r.precision) {

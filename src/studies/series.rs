@@ -152,6 +152,32 @@ fn series_label(target: f64, prec: Precision) -> String {
     format!("{target:.0e} at {}", prec.label())
 }
 
+/// The rows of the terms study's CSV table (as `moving-hertz study series` writes it, header
+/// `M_R,target,precision,terms,terms_estimate,time_ns,error,error_estimate`): the data its
+/// charts are drawn from. An error names the line that does not read.
+/// Reads the terms of (37) back; no arithmetic.
+pub fn rows_from_csv(table: &super::Table) -> std::result::Result<Vec<TermsRow>, String> {
+    let count = |i: usize, name: &str| -> std::result::Result<u64, String> {
+        let t = table.text(i, name)?;
+        t.parse()
+            .map_err(|_| table.at(i, format!("{name} = {t:?}")))
+    };
+    (0..table.rows.len())
+        .map(|i| {
+            Ok(TermsRow {
+                mr: table.number(i, "M_R")?,
+                target: table.number(i, "target")?,
+                precision: table.precision(i, "precision")?,
+                terms: usize::try_from(count(i, "terms")?).map_err(|e| table.at(i, e))?,
+                estimate: count(i, "terms_estimate")?,
+                time_ns: table.number(i, "time_ns")?,
+                error: table.number(i, "error")?,
+                error_estimate: table.number(i, "error_estimate")?,
+            })
+        })
+        .collect()
+}
+
 /// Charts of the terms study: terms needed and time per evaluation against 1 − M_R (log-log).
 /// Draws the terms of (37); no arithmetic beyond plotting.
 pub fn terms_charts(rows: &[TermsRow]) -> Vec<(String, String)> {
@@ -430,8 +456,6 @@ pub fn forward_charts(points: &[ForwardPoint], growth: &[Growth]) -> Vec<(String
             "relative error of L_n (log scale, clipped)",
         )
         .log(true, true);
-        chart.y_range = Some((lo, hi));
-        chart.x_range = Some((1.0, FORWARD_N as f64));
         for &mc in FORWARD_MC.iter() {
             let pts = points
                 .iter()
@@ -570,6 +594,7 @@ pub fn condition_chart(map: &ConditionMap, k_side: bool) -> (String, String) {
         x_log: true,
         y_log: k_side,
         z_range: (0.0, 256.0),
+        missing: "no value".into(),
     };
     (
         if k_side {

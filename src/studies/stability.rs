@@ -34,7 +34,7 @@ pub struct DigitMap {
     pub ys: Vec<f64>,
     /// Log axes.
     pub log: (bool, bool),
-    /// Digits, `z[j][i]` at `(xs[i], ys[j])`.
+    /// Digits, `z[j][i]` at `(xs[i], ys[j])`; NaN where the method refused (a typed error).
     pub z: Vec<Vec<f64>>,
     /// The precision's full digit count (colour scale top).
     pub full: f64,
@@ -55,10 +55,11 @@ impl DigitMap {
             x_log: self.log.0,
             y_log: self.log.1,
             z_range: (0.0, self.full),
+            missing: "refused".into(),
         }
         .to_svg()
     }
-    /// CSV rows (x, y, digits).
+    /// CSV rows (x, y, digits; `refused` where the method refused).
     /// The digits each method of (6), (37), (40) delivers, as measured.
     pub fn rows(&self) -> Vec<Vec<String>> {
         let mut out = Vec::new();
@@ -67,7 +68,11 @@ impl DigitMap {
                 out.push(vec![
                     format!("{x:e}"),
                     format!("{y:e}"),
-                    format!("{:.2}", self.z[j][i]),
+                    if self.z[j][i].is_nan() {
+                        "refused".to_string()
+                    } else {
+                        format!("{:.2}", self.z[j][i])
+                    },
                 ]);
             }
         }
@@ -75,18 +80,13 @@ impl DigitMap {
     }
 }
 
+/// The digits a relative error `err` leaves, at most `full`; NaN (a refused cell) for NaN.
 fn digits(err: f64, full: f64) -> f64 {
     if err.is_nan() {
-        0.0
-    } else if err <= 0.0 {
-        full
+        f64::NAN
     } else {
-        (-err.log10()).clamp(0.0, full)
+        super::correct_digits(err, full).min(full)
     }
-}
-
-fn full_digits(p: Precision) -> f64 {
-    (p.bits() as f64 - 1.0) * std::f64::consts::LOG10_2
 }
 
 /// The grid 1 − M_R from 10^-6 up to 1 and k from 10^-3 to 10^3.
@@ -199,7 +199,7 @@ fn integral_map(
     tick: &mut impl FnMut(),
 ) -> DigitMap {
     let (xs, ys) = speed_k_grid();
-    let full = full_digits(label);
+    let full = super::full_digits(label.bits());
     let z = ys
         .iter()
         .map(|&k| {
@@ -236,7 +236,7 @@ fn recursion_map<T: Real>(p: T::Prec, label: Precision, tick: &mut impl FnMut())
         .collect();
     // e² from −3 to 0.95: mc = k² = 1 − e² from 4 down to 0.05.
     let e2s: Vec<f64> = (0..=16).map(|j| -3.0 + 3.95 * j as f64 / 16.0).collect();
-    let full = full_digits(label);
+    let full = super::full_digits(label.bits());
     let n_max = *ns.last().unwrap_or(&1);
     let pr = MpPrec::clamped(T::bits(p) + 256);
     let z = e2s
@@ -249,8 +249,13 @@ fn recursion_map<T: Real>(p: T::Prec, label: Precision, tick: &mut impl FnMut())
                 .map(|&n| {
                     tick();
                     match (&fwd, &reference) {
-                        (Ok(f), Ok(r)) => digits(rel(&f.l()[n], r.l()[n].as_float()), full),
-                        _ => 0.0,
+                        // A value the recursion overflowed to (not finite) has no correct
+                        // digit; a recursion that refused (a typed error) is NaN.
+                        (Ok(f), Ok(r)) => match rel(&f.l()[n], r.l()[n].as_float()) {
+                            e if e.is_nan() => 0.0,
+                            e => digits(e, full),
+                        },
+                        _ => f64::NAN,
                     }
                 })
                 .collect()

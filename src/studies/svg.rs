@@ -2,10 +2,40 @@
 //! labelled axes, grid, legend; and heat maps with a colour bar. No dependency: the charts are
 //! plain SVG 1.1 text.
 //!
+//! The rules every chart follows live here, once:
+//! * **Axes fitted to the data.** An axis spans its data (widened to a range the chart asks
+//!   for, never narrowed), padded by [`PAD`] of its span (of its decades on a log axis): every
+//!   point drawn lies inside the plot area, and no axis starts a decade or more before its data.
+//! * **Ticks** in 1-2-5 steps on a linear axis; on a log axis at decades (every 1, 2, 5, 10 …
+//!   decades), with 2 and 5 between them when the axis spans under three decades, or in
+//!   linear steps when it spans under one. A chart may set its own x ticks.
+//! * **Text inside the canvas.** Text widths are estimated at [`TEXT_EM`] of the font size a
+//!   character: a title too wide for the canvas is broken into lines (the plot moves down), a
+//!   legend label is broken at the legend's width, an axis label too long for its side is set
+//!   smaller.
+//! * **Marked for checking** (tests/charts.rs reads every committed chart): the plot area is the
+//!   `rect` of class `plot-area`, each data line a `path` of class `line` (absolute `M`/`L`
+//!   commands), each marker a `g` of class `point` translated to its data point, each heat-map
+//!   cell a `rect` of class `cell`.
+//!
 //! No item of this module implements a formula of the paper: they draw the studies' results (each
 //! study names its equations); coordinates are written to a tenth or a hundredth of a pixel.
 
 use std::fmt::Write;
+
+/// The padding of a fitted axis, as a fraction of its span (of its decades on a log axis).
+pub const PAD: f64 = 0.04;
+/// The estimated width of a character, as a fraction of the font size (Helvetica's widest
+/// common letters aside, its average is about 0.5).
+pub const TEXT_EM: f64 = 0.6;
+/// The least distance of any text from the canvas' edge, in pixels.
+const EDGE: f64 = 4.0;
+/// Font sizes of the title, the axis labels and the rest, in pixels.
+const TITLE_SIZE: f64 = 15.0;
+const LABEL_SIZE: f64 = 13.0;
+const TEXT_SIZE: f64 = 12.0;
+/// The width right of the plot area that holds the legend.
+const LEGEND_WIDTH: f64 = 190.0;
 
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -30,6 +60,9 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Drawing style.
     pub style: Style,
+    /// The colour and marker by number (the series' place in the chart when `None`): a series
+    /// keeps its look across charts where others are left out.
+    pub look: Option<usize>,
 }
 
 impl Series {
@@ -39,14 +72,20 @@ impl Series {
             label: label.into(),
             points,
             style,
+            look: None,
         }
+    }
+    /// The colour and marker of its place `i`, wherever it is drawn.
+    pub fn look(mut self, i: usize) -> Series {
+        self.look = Some(i);
+        self
     }
 }
 
 /// A 2-D chart.
 #[derive(Clone, Debug)]
 pub struct Chart {
-    /// Title above the plot.
+    /// Title above the plot (broken into lines to fit the canvas).
     pub title: String,
     /// Horizontal axis label (with units).
     pub x_label: String,
@@ -56,12 +95,17 @@ pub struct Chart {
     pub x_log: bool,
     /// Logarithmic vertical axis.
     pub y_log: bool,
-    /// Fixed horizontal range (otherwise from the data).
+    /// A horizontal range the axis spans at least (the data widen it).
     pub x_range: Option<(f64, f64)>,
-    /// Fixed vertical range (otherwise from the data).
+    /// A vertical range the axis spans at least (the data widen it).
     pub y_range: Option<(f64, f64)>,
+    /// Ticks of the horizontal axis (value, label) in place of the automatic ones; those
+    /// outside the fitted axis are left out.
+    pub x_ticks: Option<Vec<(f64, String)>>,
     /// The series.
     pub series: Vec<Series>,
+    /// Lines of text below the legend's keys: what is not drawn and why (refused routes).
+    pub notes: Vec<String>,
     /// Width in pixels.
     pub width: f64,
     /// Height in pixels.
@@ -88,7 +132,9 @@ impl Chart {
             y_log: false,
             x_range: None,
             y_range: None,
+            x_ticks: None,
             series: Vec::new(),
+            notes: Vec::new(),
             width: 760.0,
             height: 480.0,
         }
@@ -108,45 +154,40 @@ impl Chart {
         x.is_finite() && y.is_finite() && (!self.x_log || x > 0.0) && (!self.y_log || y > 0.0)
     }
 
-    fn data_range(&self, axis_x: bool) -> (f64, f64) {
-        let mut lo = f64::INFINITY;
-        let mut hi = f64::NEG_INFINITY;
-        for s in &self.series {
-            for &(x, y) in &s.points {
-                if self.usable(x, y) {
-                    let v = if axis_x { x } else { y };
-                    lo = lo.min(v);
-                    hi = hi.max(v);
-                }
-            }
-        }
-        if !lo.is_finite() {
-            return (0.0, 1.0);
-        }
-        if lo == hi {
-            let d = if lo == 0.0 { 1.0 } else { lo.abs() * 0.1 };
-            return (lo - d, hi + d);
-        }
-        (lo, hi)
+    /// The range of the usable points along x (or y); `None` without any.
+    fn data_range(&self, axis_x: bool) -> Option<(f64, f64)> {
+        let values = (self.series.iter())
+            .flat_map(|s| s.points.iter())
+            .filter(|&&(x, y)| self.usable(x, y))
+            .map(|&(x, y)| if axis_x { x } else { y });
+        values.fold(None, |r, v| match r {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((v.min(lo), v.max(hi))),
+        })
     }
 
     /// Renders the chart as an SVG document.
     pub fn to_svg(&self) -> String {
-        let f = Frame::new(self.width, self.height, 190.0);
-        let xr = self.x_range.unwrap_or_else(|| self.data_range(true));
-        let yr = self.y_range.unwrap_or_else(|| self.data_range(false));
-        let xa = Axis::new(xr, self.x_log);
-        let ya = Axis::new(yr, self.y_log);
+        let f = Frame::new(self.width, self.height, LEGEND_WIDTH, &self.title);
+        let xa = Axis::fit(self.data_range(true), self.x_range, self.x_log);
+        let ya = Axis::fit(self.data_range(false), self.y_range, self.y_log);
         let px = |x: f64| f.ml + f.pw * xa.frac(x);
         let py = |y: f64| f.mt + f.ph * (1.0 - ya.frac(y));
-        let mut o = f.open(&self.title);
+        let mut o = f.open();
         // The frame, ticks and legend take a few kilobytes, each point of a path about 16 bytes:
         // the text is grown once, not doubled as it is written.
         let points: usize = self.series.iter().map(|s| s.points.len()).sum();
         o.reserve(8192 + 16 * points);
+        let x_ticks = match &self.x_ticks {
+            Some(t) => (t.iter())
+                .filter(|&(v, _)| (0.0..=1.0).contains(&xa.frac(*v)))
+                .cloned()
+                .collect(),
+            None => xa.ticks(),
+        };
         // Grid and ticks.
         let (ml, mt, pw, ph) = (f.ml, f.mt, f.pw, f.ph);
-        for (v, label) in xa.ticks() {
+        for (v, label) in x_ticks {
             let x = px(v);
             let _ = write!(
                 o,
@@ -177,20 +218,16 @@ impl Chart {
         }
         f.border(&mut o);
         f.axis_labels(&mut o, &self.x_label, &self.y_label);
-        self.curves(&mut o, &f, &px, &py);
+        self.curves(&mut o, &px, &py);
         self.legend(&mut o, &f);
         o.push_str("</svg>\n");
         o
     }
 
-    /// The series, clipped to the plot area.
-    fn curves(&self, o: &mut String, f: &Frame, px: &dyn Fn(f64) -> f64, py: &dyn Fn(f64) -> f64) {
-        let _ = write!(
-            o,
-            r#"<clipPath id="plot"><rect x="{}" y="{}" width="{}" height="{}"/></clipPath><g clip-path="url(#plot)">"#,
-            f.ml, f.mt, f.pw, f.ph
-        );
+    /// The series; every usable point lies inside the plot area (the axes are fitted to them).
+    fn curves(&self, o: &mut String, px: &dyn Fn(f64) -> f64, py: &dyn Fn(f64) -> f64) {
         for (i, s) in self.series.iter().enumerate() {
+            let i = s.look.unwrap_or(i);
             let c = PALETTE[i % PALETTE.len()];
             if !s.points.iter().any(|&(x, y)| self.usable(x, y)) {
                 // Refused by `studies::write_text`: a chart never shows an empty series.
@@ -213,27 +250,28 @@ impl Chart {
                 }
                 let _ = write!(
                     o,
-                    r#"<path d="{path}" fill="none" stroke="{c}" stroke-width="1.8"{}/>"#,
+                    r#"<path class="line" d="{path}" fill="none" stroke="{c}" stroke-width="1.8"{}/>"#,
                     dash(s.style)
                 );
             }
             if matches!(s.style, Style::Markers | Style::LineMarkers) {
                 for &(x, y) in &s.points {
                     if self.usable(x, y) {
-                        let _ = write!(o, "{}", marker(i, px(x), py(y), c));
+                        o.push_str(&marker("point", i, px(x), py(y), c));
                     }
                 }
             }
         }
-        o.push_str("</g>");
     }
 
-    /// The legend, right of the plot area.
+    /// The legend, right of the plot area: a key and its label (broken into lines at the
+    /// legend's width) a series, then the notes.
     fn legend(&self, o: &mut String, f: &Frame) {
         let lx = f.ml + f.pw + 14.0;
+        let mut y = f.mt + 10.0;
         for (i, s) in self.series.iter().enumerate() {
+            let i = s.look.unwrap_or(i);
             let c = PALETTE[i % PALETTE.len()];
-            let y = f.mt + 10.0 + 18.0 * i as f64;
             if s.style != Style::Markers {
                 let _ = write!(
                     o,
@@ -243,16 +281,68 @@ impl Chart {
                 );
             }
             if matches!(s.style, Style::Markers | Style::LineMarkers) {
-                let _ = write!(o, "{}", marker(i, lx + 11.0, y, c));
+                o.push_str(&marker("key", i, lx + 11.0, y, c));
             }
-            let _ = write!(
-                o,
-                r#"<text x="{}" y="{}">{}</text>"#,
-                lx + 28.0,
-                y + 4.0,
-                esc(&s.label)
-            );
+            y = text_lines(o, &s.label, lx + 28.0, y + 4.0, f.w - EDGE) - 1.0;
         }
+        for note in &self.notes {
+            y = text_lines(o, note, lx, y + 4.0, f.w - EDGE) - 1.0;
+        }
+    }
+}
+
+/// Writes `text` left-aligned at (`x`, `y`) in the default size, broken into lines that end
+/// before `right`; the baseline of the line after the last.
+fn text_lines(o: &mut String, text: &str, x: f64, y: f64, right: f64) -> f64 {
+    let mut y = y;
+    for line in wrap(text, TEXT_SIZE, right - x) {
+        let _ = write!(o, r#"<text x="{x:.1}" y="{y:.1}">{}</text>"#, esc(&line));
+        y += 15.0;
+    }
+    y
+}
+
+/// The estimated width of `text` set at `size` pixels ([`TEXT_EM`] a character).
+pub fn text_width(text: &str, size: f64) -> f64 {
+    text.chars().count() as f64 * TEXT_EM * size
+}
+
+/// `text` broken at spaces into lines no wider than `width` at `size` (a word longer than a
+/// line is broken inside).
+fn wrap(text: &str, size: f64, width: f64) -> Vec<String> {
+    let per_line = ((width / (TEXT_EM * size)).floor() as usize).max(1);
+    let mut lines = Vec::new();
+    let mut line = String::new();
+    for word in text.split(' ') {
+        let mut word: Vec<char> = word.chars().collect();
+        while word.len() > per_line {
+            if !line.is_empty() {
+                lines.push(std::mem::take(&mut line));
+            }
+            lines.push(word.drain(..per_line).collect());
+        }
+        let n = line.chars().count();
+        if n > 0 && n + 1 + word.len() > per_line {
+            lines.push(std::mem::take(&mut line));
+        }
+        if !line.is_empty() {
+            line.push(' ');
+        }
+        line.extend(word);
+    }
+    if !line.is_empty() || lines.is_empty() {
+        lines.push(line);
+    }
+    lines
+}
+
+/// The font size, at most `size`, at which `text` is no wider than `width`.
+fn fitted_size(text: &str, size: f64, width: f64) -> f64 {
+    let w = text_width(text, size);
+    if w <= width {
+        size
+    } else {
+        (size * width / w * 10.0).floor() / 10.0
     }
 }
 
@@ -268,7 +358,7 @@ fn dash(style: Style) -> &'static str {
     }
 }
 
-/// A chart's canvas (w × h) and plot area (left and top margins, width and height).
+/// A chart's canvas (w × h), plot area (left and top margins, width and height) and title lines.
 struct Frame {
     w: f64,
     h: f64,
@@ -276,13 +366,16 @@ struct Frame {
     mt: f64,
     pw: f64,
     ph: f64,
+    title: Vec<String>,
 }
 
 impl Frame {
-    /// The canvas `w` × `h` with the standard left, top and bottom margins and `right` for
-    /// the legend or colour bar.
-    fn new(w: f64, h: f64, right: f64) -> Frame {
-        let (ml, mt, mb) = (78.0, 40.0, 58.0);
+    /// The canvas `w` × `h` with the standard left and bottom margins, `right` for the legend
+    /// or colour bar, and a top margin that holds `title` broken into lines.
+    fn new(w: f64, h: f64, right: f64, title: &str) -> Frame {
+        let title = wrap(title, TITLE_SIZE, w - 2.0 * EDGE);
+        let (ml, mb) = (78.0, 58.0);
+        let mt = 40.0 + 18.0 * (title.len() - 1) as f64;
         Frame {
             w,
             h,
@@ -290,49 +383,56 @@ impl Frame {
             mt,
             pw: w - ml - right,
             ph: h - mt - mb,
+            title,
         }
     }
 
-    /// The SVG document's opening, white background and title.
-    fn open(&self, title: &str) -> String {
+    /// The SVG document's opening, white background and title (centred on the canvas).
+    fn open(&self) -> String {
         let (w, h) = (self.w, self.h);
         let mut o = String::new();
         let _ = write!(
             o,
-            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="Helvetica, Arial, sans-serif" font-size="12">"#
+            r#"<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" viewBox="0 0 {w} {h}" font-family="Helvetica, Arial, sans-serif" font-size="{TEXT_SIZE}">"#
         );
         let _ = write!(o, r#"<rect width="{w}" height="{h}" fill="white"/>"#);
-        let _ = write!(
-            o,
-            r#"<text x="{}" y="22" text-anchor="middle" font-size="15">{}</text>"#,
-            self.ml + self.pw / 2.0,
-            esc(title)
-        );
+        for (i, line) in self.title.iter().enumerate() {
+            let _ = write!(
+                o,
+                r#"<text x="{}" y="{}" text-anchor="middle" font-size="{TITLE_SIZE}">{}</text>"#,
+                w / 2.0,
+                22.0 + 18.0 * i as f64,
+                esc(line)
+            );
+        }
         o
     }
 
-    /// The plot area's border.
+    /// The plot area's border (the `plot-area` rectangle).
     fn border(&self, o: &mut String) {
         let _ = write!(
             o,
-            r#"<rect x="{}" y="{}" width="{}" height="{}" fill="none" stroke="black"/>"#,
+            r#"<rect class="plot-area" x="{}" y="{}" width="{}" height="{}" fill="none" stroke="black"/>"#,
             self.ml, self.mt, self.pw, self.ph
         );
     }
 
-    /// The axis labels below and left of the plot area.
+    /// The axis labels below and left of the plot area, centred on it, each set smaller where
+    /// it would not fit the canvas.
     fn axis_labels(&self, o: &mut String, x_label: &str, y_label: &str) {
+        let cx = self.ml + self.pw / 2.0;
+        let size = fitted_size(x_label, LABEL_SIZE, 2.0 * (cx.min(self.w - cx) - EDGE));
         let _ = write!(
             o,
-            r#"<text x="{:.1}" y="{:.1}" text-anchor="middle" font-size="13">{}</text>"#,
-            self.ml + self.pw / 2.0,
+            r#"<text x="{cx:.1}" y="{:.1}" text-anchor="middle" font-size="{size}">{}</text>"#,
             self.h - 14.0,
             esc(x_label)
         );
+        let cy = self.mt + self.ph / 2.0;
+        let size = fitted_size(y_label, LABEL_SIZE, 2.0 * (cy.min(self.h - cy) - EDGE));
         let _ = write!(
             o,
-            r#"<text transform="translate(18,{:.1}) rotate(-90)" text-anchor="middle" font-size="13">{}</text>"#,
-            self.mt + self.ph / 2.0,
+            r#"<text transform="translate(18,{cy:.1}) rotate(-90)" text-anchor="middle" font-size="{size}">{}</text>"#,
             esc(y_label)
         );
     }
@@ -361,43 +461,48 @@ pub struct Heatmap {
     pub y_log: bool,
     /// Colour scale range.
     pub z_range: (f64, f64),
+    /// What a grey (NaN) cell means, named by a grey key under the colour bar when the map has
+    /// one (e.g. "refused").
+    pub missing: String,
 }
+
+/// The colour of a cell without a value.
+const GREY: &str = "#bdbdbd";
 
 impl Heatmap {
     /// Renders the map as an SVG document (760×480 px).
     pub fn to_svg(&self) -> String {
-        let f = Frame::new(760.0, 480.0, 120.0);
+        let f = Frame::new(760.0, 480.0, 120.0, &self.title);
         let ex = cell_edges(&self.xs, self.x_log);
         let ey = cell_edges(&self.ys, self.y_log);
         let (x0, x1) = (ex[0], *ex.last().unwrap_or(&1.0));
         let (y0, y1) = (ey[0], *ey.last().unwrap_or(&1.0));
         let px = |t: f64| f.ml + f.pw * (t - x0) / (x1 - x0);
         let py = |t: f64| f.mt + f.ph * (1.0 - (t - y0) / (y1 - y0));
-        let mut o = f.open(&self.title);
+        let mut o = f.open();
+        let (ml, mt, pw, ph) = (f.ml, f.mt, f.pw, f.ph);
         for (j, row) in self.z.iter().enumerate() {
             for (i, &v) in row.iter().enumerate() {
                 if i + 1 >= ex.len() || j + 1 >= ey.len() {
                     continue;
                 }
-                let (xa, xb) = (px(ex[i]), px(ex[i + 1]));
-                let (ya, yb) = (py(ey[j + 1]), py(ey[j]));
                 let fill = if v.is_finite() {
                     colour(v, self.z_range)
                 } else {
-                    "#bdbdbd".to_string()
+                    GREY.to_string()
                 };
+                // A cell overlaps its neighbours by 0.3 px (no hairline gaps), inside the plot.
+                let (xa, xb) = (px(ex[i]).max(ml), (px(ex[i + 1]) + 0.3).min(ml + pw));
+                let (ya, yb) = ((py(ey[j + 1]) - 0.3).max(mt), py(ey[j]).min(mt + ph));
                 let _ = write!(
                     o,
-                    r#"<rect x="{:.2}" y="{:.2}" width="{:.2}" height="{:.2}" fill="{fill}"/>"#,
-                    xa,
-                    ya,
-                    (xb - xa).abs() + 0.3,
-                    (yb - ya).abs() + 0.3
+                    r#"<rect class="cell" x="{xa:.2}" y="{ya:.2}" width="{:.2}" height="{:.2}" fill="{fill}"/>"#,
+                    xb - xa - 0.005,
+                    yb - ya - 0.005,
                 );
             }
         }
         f.border(&mut o);
-        let (ml, mt, ph) = (f.ml, f.mt, f.ph);
         for t in ticks_within(x0, x1, self.x_log) {
             let x = px(t.0);
             let _ = write!(
@@ -426,9 +531,12 @@ impl Heatmap {
         o
     }
 
-    /// The colour bar and its label, right of the map.
+    /// The colour bar and its label, right of the map; under it a grey key naming the cells
+    /// without a value, when there are any.
     fn colour_bar(&self, o: &mut String, f: &Frame) {
-        let (mt, ph) = (f.mt, f.ph);
+        let missing = self.z.iter().flatten().any(|v| !v.is_finite());
+        let mt = f.mt;
+        let ph = if missing { f.ph - 30.0 } else { f.ph };
         let bx = f.ml + f.pw + 24.0;
         let n = 50;
         for k in 0..n {
@@ -446,8 +554,13 @@ impl Heatmap {
             o,
             r#"<rect x="{bx}" y="{mt}" width="18" height="{ph}" fill="none" stroke="black"/>"#
         );
-        for (v, label) in Axis::new(self.z_range, false).ticks() {
-            let y = mt + ph * (1.0 - (v - self.z_range.0) / (self.z_range.1 - self.z_range.0));
+        let bar = Axis {
+            lo: self.z_range.0,
+            hi: self.z_range.1,
+            log: false,
+        };
+        for (v, label) in bar.ticks() {
+            let y = mt + ph * (1.0 - bar.frac(v));
             let _ = write!(
                 o,
                 r#"<text x="{:.1}" y="{:.1}">{}</text>"#,
@@ -456,9 +569,18 @@ impl Heatmap {
                 esc(&label)
             );
         }
+        if missing {
+            let y = f.mt + f.ph - 16.0;
+            let _ = write!(
+                o,
+                r#"<rect x="{bx}" y="{y}" width="18" height="16" fill="{GREY}" stroke="black"/>"#
+            );
+            text_lines(o, &self.missing, bx + 22.0, y + 12.0, f.w - EDGE);
+        }
+        let size = fitted_size(&self.z_label, TEXT_SIZE, ph - 2.0 * EDGE);
         let _ = write!(
             o,
-            r#"<text transform="translate({:.1},{:.1}) rotate(-90)" text-anchor="middle">{}</text>"#,
+            r#"<text transform="translate({:.1},{:.1}) rotate(-90)" text-anchor="middle" font-size="{size}">{}</text>"#,
             bx + 70.0,
             mt + ph / 2.0,
             esc(&self.z_label)
@@ -485,16 +607,13 @@ fn cell_edges(c: &[f64], log: bool) -> Vec<f64> {
 /// The ticks of a heat map axis spanning [t0, t1] (log10 values on a log axis), as positions
 /// on that scale with their labels.
 fn ticks_within(t0: f64, t1: f64, log: bool) -> Vec<(f64, String)> {
-    let range = if log {
-        (10f64.powf(t0), 10f64.powf(t1))
-    } else {
-        (t0, t1)
+    let axis = Axis {
+        lo: t0.min(t1),
+        hi: t0.max(t1),
+        log,
     };
-    Axis::new(range, log)
-        .ticks()
-        .into_iter()
+    (axis.ticks().into_iter())
         .map(|(v, label)| (if log { v.log10() } else { v }, label))
-        .filter(|(t, _)| *t >= t0.min(t1) - 1e-9 && *t <= t0.max(t1) + 1e-9)
         .collect()
 }
 
@@ -552,24 +671,15 @@ fn push_px(o: &mut String, v: f64) {
     o.push_str(std::str::from_utf8(&buf[i..]).unwrap_or_default());
 }
 
-fn marker(i: usize, x: f64, y: f64, c: &str) -> String {
-    match i % 3 {
-        0 => format!(r#"<circle cx="{x:.2}" cy="{y:.2}" r="3.2" fill="{c}"/>"#),
-        1 => format!(
-            r#"<rect x="{:.2}" y="{:.2}" width="6" height="6" fill="{c}"/>"#,
-            x - 3.0,
-            y - 3.0
-        ),
-        _ => format!(
-            r#"<path d="M{:.2},{:.2} L{:.2},{:.2} L{:.2},{:.2} Z" fill="{c}"/>"#,
-            x,
-            y - 4.0,
-            x - 3.6,
-            y + 3.0,
-            x + 3.6,
-            y + 3.0
-        ),
-    }
+/// A marker of series `i` (circle, square, triangle in turn) centred at (`x`, `y`): a `g` of
+/// class `class` (`point` in the plot, `key` in the legend) translated there.
+fn marker(class: &str, i: usize, x: f64, y: f64, c: &str) -> String {
+    let shape = match i % 3 {
+        0 => format!(r#"<circle r="3.2" fill="{c}"/>"#),
+        1 => format!(r#"<rect x="-3" y="-3" width="6" height="6" fill="{c}"/>"#),
+        _ => format!(r#"<path d="M0,-4 L-3.6,3 L3.6,3 Z" fill="{c}"/>"#),
+    };
+    format!(r#"<g class="{class}" transform="translate({x:.2},{y:.2})">{shape}</g>"#)
 }
 
 fn esc(s: &str) -> String {
@@ -578,7 +688,7 @@ fn esc(s: &str) -> String {
         .replace('>', "&gt;")
 }
 
-/// A linear or logarithmic axis over a range.
+/// A linear or logarithmic axis over [lo, hi] (log10 of the values on a log axis).
 struct Axis {
     lo: f64,
     hi: f64,
@@ -586,54 +696,109 @@ struct Axis {
 }
 
 impl Axis {
-    fn new((lo, hi): (f64, f64), log: bool) -> Axis {
-        if log {
-            let (l, h) = (
-                lo.max(1e-300).log10().floor(),
-                hi.max(1e-300).log10().ceil(),
-            );
-            let h = if h <= l { l + 1.0 } else { h };
-            Axis { lo: l, hi: h, log }
-        } else {
-            let span = hi - lo;
-            let pad = if span > 0.0 { span * 0.04 } else { 1.0 };
-            Axis {
-                lo: lo - pad,
-                hi: hi + pad,
-                log,
+    /// The axis fitted to `data` (the range of the points drawn) widened to `want`, padded by
+    /// [`PAD`] of its span; on a log axis non-positive bounds of `want` are ignored.
+    fn fit(data: Option<(f64, f64)>, want: Option<(f64, f64)>, log: bool) -> Axis {
+        let to_axis = |v: f64| if log { v.log10() } else { v };
+        let ok = |v: f64| v.is_finite() && (!log || v > 0.0);
+        let mut range: Option<(f64, f64)> = None;
+        let mut add = |v: f64| {
+            if ok(v) {
+                let t = to_axis(v);
+                range = Some(range.map_or((t, t), |(lo, hi)| (t.min(lo), t.max(hi))));
             }
+        };
+        for (a, b) in data.into_iter().chain(want) {
+            add(a);
+            add(b);
+        }
+        let (lo, hi) = range.unwrap_or((0.0, 1.0));
+        let span = hi - lo;
+        let pad = if span > 0.0 {
+            span * PAD
+        } else if log {
+            0.5
+        } else if lo == 0.0 {
+            1.0
+        } else {
+            lo.abs() * 0.1
+        };
+        Axis {
+            lo: lo - pad,
+            hi: hi + pad,
+            log,
         }
     }
     fn frac(&self, v: f64) -> f64 {
         let t = if self.log { v.log10() } else { v };
         (t - self.lo) / (self.hi - self.lo)
     }
+    /// The ticks inside the axis, (value, label).
     fn ticks(&self) -> Vec<(f64, String)> {
-        if self.log {
-            let span = (self.hi - self.lo) as i64;
-            let step = ((span as f64) / 10.0).ceil().max(1.0) as i64;
-            (self.lo as i64..=self.hi as i64)
-                .filter(|e| (e - self.lo as i64) % step == 0)
-                .map(|e| (10f64.powi(e as i32), format!("1e{e}")))
-                .collect()
-        } else {
-            let span = self.hi - self.lo;
-            let raw = span / 8.0;
-            let mag = 10f64.powf(raw.log10().floor());
-            let step = [1.0, 2.0, 2.5, 5.0, 10.0]
-                .iter()
-                .map(|m| m * mag)
-                .find(|s| *s >= raw)
-                .unwrap_or(10.0 * mag);
-            let first = (self.lo / step).ceil() as i64;
-            let last = (self.hi / step).floor() as i64;
-            (first..=last)
-                .map(|k| {
-                    let v = k as f64 * step;
-                    (v, fmt_tick(v, step))
-                })
-                .collect()
+        if !self.log {
+            return linear_ticks(self.lo, self.hi);
         }
+        let (lo, hi) = (self.lo, self.hi);
+        let raw = (hi - lo) / 8.0;
+        let step =
+            (([1, 2, 5, 10, 20, 50, 100].into_iter()).find(|&s| s as f64 >= raw)).unwrap_or(200);
+        let (first, last) = (
+            (lo / step as f64).ceil() as i64,
+            (hi / step as f64).floor() as i64,
+        );
+        if last - first >= 2 {
+            return (first..=last)
+                .map(|j| (10f64.powi((j * step) as i32), log_label(1, j * step)))
+                .collect();
+        }
+        let mut t: Vec<(f64, String)> = Vec::new();
+        for e in lo.floor() as i64..=hi.ceil() as i64 {
+            for m in [1, 2, 5] {
+                let v = m as f64 * 10f64.powi(e as i32);
+                if (lo..=hi).contains(&v.log10()) {
+                    t.push((v, log_label(m, e)));
+                }
+            }
+        }
+        if t.len() >= 3 {
+            return t;
+        }
+        // Under a decade: linear steps between the ends, placed on the log scale.
+        linear_ticks(10f64.powf(lo), 10f64.powf(hi))
+    }
+}
+
+/// The smallest of 1, 2, 2.5, 5 × 10^n at least `raw`.
+fn nice_step(raw: f64) -> f64 {
+    let mag = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 2.5, 5.0, 10.0]
+        .iter()
+        .map(|m| m * mag)
+        .find(|s| *s >= raw)
+        .unwrap_or(10.0 * mag)
+}
+
+/// Ticks in 1-2-5 steps inside [lo, hi], about six to ten of them.
+fn linear_ticks(lo: f64, hi: f64) -> Vec<(f64, String)> {
+    let step = nice_step((hi - lo) / 8.0);
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last)
+        .map(|k| {
+            let v = k as f64 * step;
+            (v, fmt_tick(v, step))
+        })
+        .collect()
+}
+
+/// The label of m·10^e on a log axis: plain from 0.001 to 9999, else `me±n`.
+fn log_label(m: i64, e: i64) -> String {
+    if (-3..=3).contains(&e) {
+        let v = m as f64 * 10f64.powi(e as i32);
+        let decimals = (-e).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{m}e{e}")
     }
 }
 
@@ -644,7 +809,13 @@ fn fmt_tick(v: f64, step: f64) -> String {
     if v.abs() >= 1e5 || v.abs() < 1e-3 {
         return format!("{v:.1e}");
     }
-    let decimals = (-step.log10().floor()).max(0.0) as usize;
+    // As many decimals as the step has (2.5 needs one, 0.25 two).
+    let decimals = (0..=12)
+        .find(|&d| {
+            let s = step * 10f64.powi(d);
+            (s - s.round()).abs() <= 1e-9 * s
+        })
+        .unwrap_or(12) as usize;
     format!("{v:.decimals$}")
 }
 
