@@ -50,7 +50,6 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
         Material::<T>::parse(nu, p).map_err(|e| CliError::value("--nu", nu, e))?;
     });
     let out = a.out.prepare()?;
-    super::bind_global_pool();
     let by_ratio_pairs: Vec<(f64, f64)> = fig2::SPEEDS
         .iter()
         .flat_map(|&mr| fig2::ratio_grid().into_iter().map(move |r| (mr, r)))
@@ -59,6 +58,7 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
         .iter()
         .flat_map(|&r| fig2::speed_grid().into_iter().map(move |mr| (mr, r)))
         .collect();
+    super::bind_global_pool(by_ratio_pairs.len() + by_speed_pairs.len(), &prec);
     let bar = Progress::new(
         format!("fig2 at {}", prec.label()),
         by_ratio_pairs.len() + by_speed_pairs.len(),

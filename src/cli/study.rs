@@ -46,7 +46,8 @@ pub enum Study {
 
 pub fn run(a: &StudyArgs) -> Result<(), CliError> {
     let out = a.out.prepare()?;
-    super::bind_global_pool();
+    // Studies time their work and run many precisions: every CPU.
+    super::bind_global_pool(usize::MAX, &moving_hertz::Precision::F64);
     match a.name {
         Study::Rayleigh => study_rayleigh(out),
         Study::Integrals => study_integrals(out),
