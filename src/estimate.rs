@@ -284,13 +284,57 @@ impl fmt::Display for RelError {
         // The mantissa rounded upwards to `digits` decimals (a bound stays a bound), after
         // forgiving the ~10⁻¹¹ relative error of log₁₀ at exponents of 10⁶ (so that a parsed
         // `1e-10000` prints as itself).
-        let mut mant = (10f64.powf(l10 - exp10) * scale * (1.0 - 1e-9)).ceil() / scale;
-        if mant >= 10.0 {
-            mant /= 10.0;
+        // The mantissa's digits as one integer in [10^digits, 10^(digits+1)]: written as
+        // integers are (a float formatted to a precision costs ten times more).
+        // At least 10^digits: the forgiveness must not take a mantissa of 1 below 1
+        // (`1e-300` at 12 digits is `1.000000000000e-300`, not `0.999999999999e-300`).
+        let mut mant = ((10f64.powf(l10 - exp10) * scale * (1.0 - 1e-9)).ceil() as u64)
+            .max(10u64.pow(digits as u32));
+        if mant as f64 >= 10.0 * scale {
+            mant /= 10;
             exp10 += 1.0;
         }
-        write!(f, "{mant:.prec$}e{}", exp10 as i64, prec = digits as usize)
+        // "d.ddde-xxxx" in a buffer, written at once: ≤ 13 digits, a point, "e", a sign and
+        // ≤ 19 digits.
+        let mut text = [0u8; 40];
+        let mut end = push_digits(&mut text, 0, mant);
+        if end > 1 {
+            text.copy_within(1..end, 2);
+            text[1] = b'.';
+            end += 1;
+        }
+        text[end] = b'e';
+        end += 1;
+        let exp10 = exp10 as i64;
+        if exp10 < 0 {
+            text[end] = b'-';
+            end += 1;
+        }
+        end = push_digits(&mut text, end, exp10.unsigned_abs());
+        // ASCII digits, a point, "e" and "-" only.
+        f.write_str(std::str::from_utf8(&text[..end]).unwrap_or("?"))
     }
+}
+
+/// Writes the decimal digits of `n` into `text` from `at`; returns the end.
+fn push_digits(text: &mut [u8; 40], at: usize, mut n: u64) -> usize {
+    let mut digits = [0u8; 20];
+    let mut len = 0;
+    loop {
+        digits[len] = b'0' + (n % 10) as u8;
+        len += 1;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    for (slot, d) in text[at..at + len]
+        .iter_mut()
+        .zip(digits[..len].iter().rev())
+    {
+        *slot = *d;
+    }
+    at + len
 }
 
 /// What the bound of an [`Estimated`] value measures.
@@ -395,6 +439,39 @@ fn frexp(x: f64) -> (f64, i64) {
 mod tests {
     use super::*;
     use crate::scalar::{FieldOps, Mp, MpPrec};
+
+    /// The bound's text, written from integers, is what `std` writes for the same mantissa
+    /// rounded upwards and at least 1 (`{:.N}` of the float `mant / 10^N`), for 0 to 12 decimals and bounds
+    /// from 1e-300 to 1e300, powers of ten and values just above them included.
+    #[test]
+    fn display_writes_the_digits_std_writes() {
+        let std_text = |r: &RelError, digits: i32| {
+            let l10 = r.log2() * std::f64::consts::LOG10_2;
+            let mut exp10 = l10.floor();
+            let scale = 10f64.powi(digits);
+            let mut mant =
+                ((10f64.powf(l10 - exp10) * scale * (1.0 - 1e-9)).ceil() / scale).max(1.0);
+            if mant >= 10.0 {
+                mant /= 10.0;
+                exp10 += 1.0;
+            }
+            format!("{mant:.prec$}e{}", exp10 as i64, prec = digits as usize)
+        };
+        let mut x = 1e-300f64;
+        while x < 1e300 {
+            for v in [x, x * 1.0000001, x * 9.999999, x * 3.14159] {
+                let r = RelError::from_f64(v);
+                for digits in 0..=12 {
+                    assert_eq!(
+                        format!("{r:.digits$}", digits = digits as usize),
+                        std_text(&r, digits),
+                        "{v:e}"
+                    );
+                }
+            }
+            x *= 10.0 * 1.37;
+        }
+    }
 
     #[test]
     fn round_trips_and_order() {

@@ -54,7 +54,7 @@ use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::physics::{Material, Speed};
 use crate::routes::{Evaluator, IntegralOptions, Integrals};
-use crate::scalar::Real;
+use crate::scalar::{Precision, Real};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
@@ -116,7 +116,10 @@ pub fn ellipses<T>(points: &[EllipsePoint<T>], opts: &Options<T>) -> Vec<Result<
 where
     T: Real + Send + Sync,
 {
-    in_blocks(points, |block, out| {
+    let worth = points
+        .first()
+        .map_or(1, |pt| worth::<T>(points.len(), &pt.ratio));
+    in_blocks(points, worth, |block, out| {
         let mut run = Run::new(opts);
         let mut material: Option<(&T, Result<Material<T>>)> = None;
         let mut last: Option<(&EllipsePoint<T>, Result<Speed<T>>)> = None;
@@ -151,7 +154,8 @@ pub fn contacts<T>(
 where
     T: Real + Send + Sync,
 {
-    in_blocks(problems, |block, out| {
+    let worth = (problems.first()).map_or(1, |pb| worth::<T>(problems.len(), &pb.radius_along));
+    in_blocks(problems, worth, |block, out| {
         let mut run = Run::new(opts);
         for (pb, slot) in block.iter().zip(out) {
             *slot = pb.solve_by(|speed, ratio| run.solve(speed, ratio));
@@ -168,12 +172,38 @@ pub fn integrals<T>(speed: &Speed<T>, ks: &[T], opts: &IntegralOptions) -> Vec<R
 where
     T: Real + Send + Sync,
 {
-    in_blocks(ks, |block, out| {
+    in_blocks(ks, worth::<T>(ks.len(), speed.mr()), |block, out| {
         let ev = Evaluator::new(speed, *opts);
         for (k, slot) in block.iter().zip(out) {
             *slot = ev.as_ref().map_err(Error::clone).and_then(|ev| ev.at(k));
         }
     })
+}
+
+/// [`threads_worth`] for `points` points at the precision of `x`.
+fn worth<T: Real>(points: usize, x: &T) -> usize {
+    threads_worth(points, &Precision::of::<T>(x.prec()))
+}
+
+/// The least work, in nanoseconds, worth a thread of its own: starting a thread, waking it and
+/// its first touches of memory cost tens to hundreds of microseconds, so that a thread given
+/// less than this slows a job more than it helps.
+const WORK_PER_THREAD_NS: f64 = 1e6;
+
+/// How many threads a job of `points` sweep points at `precision` keeps busy: its estimated
+/// work over [`WORK_PER_THREAD_NS`], at least 1 (callers take the smaller of this and the
+/// pool's threads). The cost of a point is a floor of what a sweep point costs (about 2 µs at
+/// `f64`, 20 µs at double-double, 100 µs at 128 bits and more above: docs/precision.md), so
+/// that a job is never given more threads than it can use. Implements no equation of the
+/// paper.
+pub fn threads_worth(points: usize, precision: &Precision) -> usize {
+    let point_ns = match precision {
+        Precision::F64 => 2e3,
+        Precision::DoubleDouble => 2e4,
+        Precision::Mpfr(_) => 1e5 * (f64::from(precision.bits()) / 128.0).max(1.0).powf(1.5),
+    };
+    let threads = points as f64 * point_ns / WORK_PER_THREAD_NS;
+    threads.clamp(1.0, usize::MAX as f64) as usize
 }
 
 /// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
@@ -182,11 +212,13 @@ where
 /// take one: copies taken late find no block left), and each copy takes the next unsolved block
 /// from a shared counter until none is left, so that the threads finish within one block of
 /// each other whatever the blocks cost (they differ near the Rayleigh speed and at large k) and
-/// a thread that starts late only takes fewer blocks. A
+/// a thread that starts late only takes fewer blocks; no more copies than the job's work is
+/// `worth` ([`threads_worth`]). A
 /// single block runs on the calling thread: there its solves may put their node loops on every
 /// core (above 448 bits, `numerics::shares`), which they never do on a thread of the pool.
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
+    worth: usize,
     solve_block: impl Fn(&[I], &mut [Result<R>]) + Sync + Send,
 ) -> Vec<Result<R>> {
     let mut out: Vec<Result<R>> = (0..items.len()).map(|_| Err(unsolved())).collect();
@@ -206,7 +238,7 @@ fn in_blocks<I: Sync, R: Send>(
         let block = &items[b * BLOCK..(b * BLOCK + BLOCK).min(items.len())];
         solve_block(block, &mut share.lock().unwrap_or_else(|e| e.into_inner()));
     };
-    let copies = rayon::current_num_threads().min(shares.len());
+    let copies = rayon::current_num_threads().min(shares.len()).min(worth);
     rayon::scope(|scope| {
         for _ in 0..copies {
             scope.spawn(|_| take_blocks());

@@ -78,7 +78,6 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
         return Err(CliError::value("--nu", nu, why));
     }
     let out = a.out.prepare()?;
-    super::bind_global_pool();
     let by_ratio_pairs: Vec<(f64, f64)> = fig2::SPEEDS
         .iter()
         .flat_map(|&mr| fig2::ratio_grid().into_iter().map(move |r| (mr, r)))
@@ -87,6 +86,7 @@ pub fn run(a: &Fig2Args) -> Result<(), CliError> {
         .iter()
         .flat_map(|&r| fig2::speed_grid().into_iter().map(move |mr| (mr, r)))
         .collect();
+    super::bind_global_pool(by_ratio_pairs.len() + by_speed_pairs.len(), &prec);
     let bar = Progress::new(
         format!("fig2 at {}", prec.label()),
         by_ratio_pairs.len() + by_speed_pairs.len(),

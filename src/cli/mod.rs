@@ -16,6 +16,7 @@ mod ellipse;
 mod fig2;
 mod integrals;
 mod output;
+mod pipeline;
 mod progress;
 mod rayleigh;
 mod study;
@@ -24,6 +25,7 @@ mod symbolic;
 
 use clap::{CommandFactory, Parser, Subcommand};
 use std::fmt;
+use std::io::Write;
 
 /// moving-hertz: the Hertz contact of a rigid punch sliding without friction at a constant
 /// speed below the Rayleigh wave speed over an elastic half-space, at f64, double-double or any
@@ -201,22 +203,40 @@ pub fn cut_long_words(line: &str) -> String {
     out
 }
 
-/// Builds `rayon`'s global pool, which runs the sweeps' blocks, with one thread per CPU the
-/// process may run on, each bound to its own (`moving_hertz::sweep::bind_to_cpu`; see
-/// `moving_hertz::sweep` for why). When `RAYON_NUM_THREADS` sets the pool's size, rayon builds
-/// it as usual, unbound. Called by `fig2`, `study` and `sweep` once their inputs are checked,
-/// so that a refused command line starts no threads.
-fn bind_global_pool() {
-    if std::env::var_os("RAYON_NUM_THREADS").is_some() {
-        return;
+/// Builds `rayon`'s global pool, which runs the sweeps' blocks: one thread per CPU the process
+/// may run on, each bound to its own (`moving_hertz::sweep::bind_to_cpu`; see
+/// `moving_hertz::sweep` for why), or as many as `RAYON_NUM_THREADS` asks (unbound), at most one
+/// a CPU (a note on standard error says so when more were asked); and never more than the job's
+/// `points` at `precision` keep busy (`moving_hertz::sweep::threads_worth`), so that a small
+/// job is not slowed by threads that would cost more to start than they save. Called by `fig2`,
+/// `study` and `sweep` once their inputs are checked, so that a refused command line starts no
+/// threads.
+fn bind_global_pool(points: usize, precision: &moving_hertz::Precision) {
+    let cpus = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let asked = std::env::var("RAYON_NUM_THREADS").ok();
+    let asked = asked.and_then(|v| v.trim().parse::<usize>().ok().filter(|&n| n > 0));
+    if let Some(n) = asked.filter(|&n| n > cpus) {
+        let _ = writeln!(
+            std::io::stderr(),
+            "moving-hertz: note: RAYON_NUM_THREADS = {n} is more than the {cpus} CPUs this \
+             process may run on; running {cpus} threads"
+        );
     }
+    let threads = asked
+        .unwrap_or(cpus)
+        .min(cpus)
+        .min(moving_hertz::sweep::threads_worth(points, precision));
+    let builder = rayon::ThreadPoolBuilder::new().num_threads(threads);
     // An error means the pool exists already, or that its threads cannot be started (rayon
     // then tries again, unbound, on first use).
-    let _ = rayon::ThreadPoolBuilder::new()
-        .start_handler(|i| {
-            moving_hertz::sweep::bind_to_cpu(i);
-        })
-        .build_global();
+    let _ = match asked {
+        Some(_) => builder.build_global(),
+        None => builder
+            .start_handler(|i| {
+                moving_hertz::sweep::bind_to_cpu(i);
+            })
+            .build_global(),
+    };
 }
 
 fn run(command: Command) -> Result<(), CliError> {

@@ -67,7 +67,8 @@ pub fn run(a: &StudyArgs) -> Result<(), CliError> {
     }
     let out = a.out.prepare()?;
     let out = out.as_path();
-    super::bind_global_pool();
+    // Studies time their work and run many precisions: every CPU.
+    super::bind_global_pool(usize::MAX, &moving_hertz::Precision::F64);
     match a.name {
         Study::Integrals if a.redraw => draw_integrals(out),
         Study::Pareto if a.redraw => draw_pareto(out, &PARETO_METHODS),

@@ -1,9 +1,11 @@
 //! `moving-hertz sweep`: the contact ellipse (33) over every (ν, speed, A1/B1) of three lists or
 //! ranges, by the library's [`sweep::ellipses`] (parallel blocks, shared set-ups,
-//! continuation), written as CSV or JSON lines in batches as they are solved.
+//! continuation), written as CSV or JSON lines in input order as the blocks are solved
+//! ([`pipeline::solve_in_order`]).
 
 use super::args::{self, Decimal};
 use super::output::emit;
+use super::pipeline;
 use super::progress::Progress;
 use super::CliError;
 use moving_hertz::scalar::{short, Precision, Real};
@@ -15,9 +17,6 @@ use std::borrow::Cow;
 
 /// The most points one sweep solves (checked before any work).
 pub const POINT_CAP: usize = 10_000_000;
-
-/// Points solved and written per batch (a multiple of the library's block).
-const BATCH: usize = 16 * BLOCK;
 
 #[derive(clap::Args, Debug)]
 pub struct SweepArgs {
@@ -138,19 +137,24 @@ impl Axis {
 
     /// The values at precision `p` with their text: a list's as typed, a range's as the value
     /// at the working precision prints (a linear range's points exact before their one
-    /// rounding, a log range's formed 64 bits above the working precision).
-    fn values<T: Real>(&self, p: T::Prec) -> Vec<(String, T)> {
+    /// rounding, a log range's formed 64 bits above the working precision), formed on the
+    /// pool's threads.
+    fn values<T: Real + Send>(&self, p: T::Prec) -> Vec<(String, T)> {
         match self {
             Axis::List(v) => v
                 .iter()
                 .map(|d| (d.text.clone(), exact::<T>(&d.exact, p)))
                 .collect(),
-            Axis::Range { n, .. } => (0..*n)
-                .map(|j| {
-                    let x = T::from_float(&self.point(j, T::bits(p) + 64).0, p);
-                    (x.to_decimal(), x)
-                })
-                .collect(),
+            Axis::Range { n, .. } => {
+                let point = self.points(T::bits(p) + 64);
+                (0..*n)
+                    .into_par_iter()
+                    .map(|j| {
+                        let x = T::from_float(&point(j).0, p);
+                        (x.to_decimal(), x)
+                    })
+                    .collect()
+            }
         }
     }
 }
@@ -204,27 +208,37 @@ impl Axis {
     /// Point `j` at `bits` (MPFR's exponent range holds any typed value; a linear range's
     /// point is exact before this one rounding) and whether it is exactly 0.
     fn point(&self, j: usize, bits: u32) -> (Float, bool) {
-        let q = match self {
-            Axis::List(v) => v[j].exact.clone(),
+        self.points(bits)(j)
+    }
+
+    /// [`Axis::point`] as a function of `j`, a log range's logarithms of its ends formed once.
+    fn points(&self, bits: u32) -> impl Fn(usize) -> (Float, bool) + '_ {
+        let logs = match self {
             Axis::Range {
                 log: true,
                 start,
                 stop,
-                n,
-            } => {
-                let (a, b) = (
-                    Float::with_val(bits, &start.exact),
-                    Float::with_val(bits, &stop.exact),
-                );
-                let t = Float::with_val(bits, Rational::from((j as u64, *n as u64 - 1)));
-                return ((a.clone().ln() + (b.ln() - a.ln()) * t).exp(), false);
-            }
-            Axis::Range { start, stop, n, .. } => {
-                let t = Rational::from((j as u64, *n as u64 - 1));
-                start.exact.clone() + (stop.exact.clone() - &start.exact) * t
-            }
+                ..
+            } => Some((
+                Float::with_val(bits, &start.exact).ln(),
+                Float::with_val(bits, &stop.exact).ln(),
+            )),
+            _ => None,
         };
-        (Float::with_val(bits, &q), q == 0)
+        move |j| {
+            let q = match (self, &logs) {
+                (Axis::List(v), _) => v[j].exact.clone(),
+                (Axis::Range { n, .. }, Some((la, lb))) => {
+                    let t = Float::with_val(bits, Rational::from((j as u64, *n as u64 - 1)));
+                    return ((la.clone() + (lb.clone() - la) * t).exp(), false);
+                }
+                (Axis::Range { start, stop, n, .. }, None) => {
+                    let t = Rational::from((j as u64, *n as u64 - 1));
+                    start.exact.clone() + (stop.exact.clone() - &start.exact) * t
+                }
+            };
+            (Float::with_val(bits, &q), q == 0)
+        }
     }
 }
 
@@ -299,21 +313,22 @@ fn check_inputs(a: &SweepArgs) -> Result<(), CliError> {
         None,
         "(0, inf)",
     )?;
-    let speeds = a
-        .speed
-        .speed
-        .as_ref()
-        .or(a.speed.gap.as_ref())
-        .map_or(0, Axis::len);
-    // Each axis holds at most POINT_CAP values or one per character typed: the product is
-    // exact in a u128, whatever was typed.
-    let total = (a.nu.len() as u128) * (speeds as u128) * (a.ratio.len() as u128);
+    let total = point_count(a);
     if total > POINT_CAP as u128 {
         return Err(CliError::Input(format!(
             "the sweep has {total} points, more than the {POINT_CAP} one run solves"
         )));
     }
     Ok(())
+}
+
+/// The number of points of the grid: each axis holds at most POINT_CAP values or one per
+/// character typed, so the product is exact in a u128, whatever was typed.
+fn point_count(a: &SweepArgs) -> u128 {
+    let speeds = (a.speed.speed.as_ref())
+        .or(a.speed.gap.as_ref())
+        .map_or(0, Axis::len);
+    (a.nu.len() as u128) * (speeds as u128) * (a.ratio.len() as u128)
 }
 
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
@@ -355,7 +370,7 @@ impl<T: Real> Grid<T> {
 
 /// The grid of the three axes, each value with its text; a value that overflows or underflows
 /// the working precision is refused before any work.
-fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
+fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
     let nus = a.nu.values::<T>(p);
     let (by_gap, speeds) = match (&a.speed.speed, &a.speed.gap) {
         (Some(s), _) => (false, s.values::<T>(p)),
@@ -401,11 +416,14 @@ fn points<T: Real>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
     })
 }
 
-/// Solves the sweep in batches, writing each batch's rows as it is solved; exit code 1 when a
-/// point failed (its row carries the error).
+/// Solves the sweep block by block on the pool, writing the rows in input order as they are
+/// solved; exit code 1 when a point failed (its row carries the error).
 fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(), CliError> {
+    super::bind_global_pool(
+        usize::try_from(point_count(a)).unwrap_or(usize::MAX),
+        &a.precision,
+    );
     let grid = points::<T>(a, p)?;
-    super::bind_global_pool();
     let opts = Options::<T> {
         method: a.method,
         ..Default::default()
@@ -422,7 +440,6 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
     }
     let total = grid.len();
     let bar = Progress::new("sweep", total);
-    let mut failed = 0;
     // The rows of the points `range` and their count of failed points, formed where the block
     // is solved, which then advances the progress bar.
     let solve = |range: std::ops::Range<usize>| {
@@ -436,21 +453,7 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         bar.advance(texts.len());
         (out, failed)
     };
-    for start in (0..total).step_by(BATCH) {
-        let end = (start + BATCH).min(total);
-        // The blocks on the pool's threads, each solved and its rows formed by one task (a
-        // block gives the same bits as in a sweep of the whole batch); a batch of one block on
-        // this thread, where its solves may share their node loops among the cores.
-        let blocks: Vec<(String, usize)> = if end - start <= BLOCK {
-            vec![solve(start..end)]
-        } else {
-            ((start..end).into_par_iter().step_by(BLOCK))
-                .map(|b| solve(b..(b + BLOCK).min(end)))
-                .collect()
-        };
-        failed += blocks.iter().map(|(_, f)| f).sum::<usize>();
-        emit(&blocks.into_iter().map(|(rows, _)| rows).collect::<String>())?;
-    }
+    let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit(&rows))?;
     bar.finish();
     if failed > 0 {
         return Err(CliError::Failed(format!(

@@ -33,7 +33,7 @@ pub struct Point {
 pub struct Curve {
     /// The points, in input order.
     pub points: Vec<Point>,
-    /// The table's pieces: the header, then the rows of each block of [`BLOCK`] points.
+    /// The table's pieces: the header, then the rows of each block of [`task_len`] points.
     pub table: Vec<String>,
 }
 
@@ -79,7 +79,7 @@ pub fn grid_decimals() -> HashMap<u64, String> {
 }
 
 /// Solves the ellipse at every (M_R, A1/B1) of each curve of `curves` at precision `p`, for ν
-/// given as text, by the library's sweep: the curves' blocks of [`BLOCK`] points, one a task,
+/// given as text, by the library's sweep: the curves' blocks of [`task_len`] points, one a task,
 /// in one pass on every core (each curve's results are those of one sweep over its points).
 /// Each block writes its points and its rows of the table where it was solved (`decimals`,
 /// from [`grid_decimals`], holds the text of the inputs; others are written as `{}` writes
@@ -97,7 +97,7 @@ pub fn solve_all<T: Real + Send + Sync, const N: usize>(
     let opts = Options::default();
     let mut solved = curves.map(|pairs| Curve {
         points: vec![Point::default(); pairs.len()],
-        table: vec![String::new(); 1 + pairs.len().div_ceil(BLOCK)],
+        table: vec![String::new(); 1 + pairs.len().div_ceil(task_len(T::bits(p)))],
     });
     let mut blocks = Vec::new();
     for (pairs, curve) in curves.iter().zip(&mut solved) {
@@ -105,8 +105,8 @@ pub fn solve_all<T: Real + Send + Sync, const N: usize>(
         let pieces = curve.table[1..].iter_mut();
         blocks.extend(
             pairs
-                .chunks(BLOCK)
-                .zip(curve.points.chunks_mut(BLOCK))
+                .chunks(task_len(T::bits(p)))
+                .zip(curve.points.chunks_mut(task_len(T::bits(p))))
                 .zip(pieces),
         );
     }
@@ -119,6 +119,20 @@ pub fn solve_all<T: Real + Send + Sync, const N: usize>(
         .collect();
     results.into_iter().collect::<moving_hertz::Result<()>>()?;
     Ok(solved)
+}
+
+/// The points of one task of [`solve_all`] at `bits`: the library's [`BLOCK`] at `f64` and
+/// double-double; 16 above, where a point costs 100 µs or more, so that the 2,386 points make
+/// 150 tasks rather than 38 and 16 threads finish within a short task of each other (38 equal
+/// tasks keep 16 threads busy at most 38/48 of the time). A shorter block starts more points
+/// from the static seed instead of a neighbour's root, which costs little where the higher
+/// stages of the ladder dominate. The bits of a point depend on its task, never on the threads.
+fn task_len(bits: u32) -> usize {
+    if bits > 106 {
+        16
+    } else {
+        BLOCK
+    }
 }
 
 /// One block of [`solve_all`]: solves the ellipse at each of `pairs`, writes `points` and
