@@ -188,7 +188,7 @@ fn worth<T: Real>(points: usize, x: &T) -> usize {
 /// The least work, in nanoseconds, worth a thread of its own: starting a thread, waking it and
 /// its first touches of memory cost tens to hundreds of microseconds, so that a thread given
 /// less than this slows a job more than it helps.
-const WORK_PER_THREAD_NS: f64 = 1e6;
+const WORK_PER_THREAD_NS: f64 = 2e6;
 
 /// How many threads a job of `points` sweep points at `precision` keeps busy: its estimated
 /// work over [`WORK_PER_THREAD_NS`], at least 1 (callers take the smaller of this and the
@@ -443,4 +443,29 @@ fn lagrange(pts: &[(f64, f64)], t: f64) -> Option<f64> {
         sum += w * yi;
     }
     (!pts.is_empty() && sum.is_finite()).then_some(sum)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scalar::MpPrec;
+
+    /// A few hundred `f64` points keep one thread busy, a million keep a thousand; a point
+    /// costs more at double-double and more again at 256 bits, so the same points keep more
+    /// threads busy.
+    #[test]
+    fn threads_worth_grows_with_points_and_precision() {
+        let mp = |bits| Precision::Mpfr(MpPrec::new(bits).expect("bits"));
+        assert_eq!(threads_worth(0, &Precision::F64), 1);
+        assert_eq!(threads_worth(300, &Precision::F64), 1);
+        assert_eq!(threads_worth(1_000_000, &Precision::F64), 1000);
+        assert_eq!(threads_worth(2_546, &Precision::F64), 2);
+        let (f, d, m) = (
+            threads_worth(10_000, &Precision::F64),
+            threads_worth(10_000, &Precision::DoubleDouble),
+            threads_worth(10_000, &mp(256)),
+        );
+        assert!(f < d && d < m, "{f} {d} {m}");
+        assert_eq!(threads_worth(usize::MAX, &mp(32768)), usize::MAX);
+    }
 }
