@@ -79,7 +79,7 @@ fn setup<T: Real>(points: &[T], tol: &T) -> Result<(Vec<(T, T)>, bool)> {
     let reversed = n >= 2 && points[0] > points[n - 1];
     let monotone = points
         .windows(2)
-        .all(|w| if reversed { w[0] > w[1] } else { w[0] < w[1] });
+        .all(|w| w[0] != w[1] && (w[0] < w[1]) != reversed);
     let finite = points.iter().all(|x| x.is_finite()) && tol.is_finite();
     if n < 2 || !monotone || !finite || tol.is_negative() {
         return Err(Error::Domain {
@@ -88,14 +88,12 @@ fn setup<T: Real>(points: &[T], tol: &T) -> Result<(Vec<(T, T)>, bool)> {
             bound: "at least two finite, strictly monotone points; 0 <= tol < inf",
         });
     }
-    let mut iv: Vec<(T, T)> = points
-        .windows(2)
-        .map(|w| (w[0].clone(), w[1].clone()))
-        .collect();
+    let mut ends = points.to_vec();
     if reversed {
-        iv = iv.into_iter().rev().map(|(a, b)| (b, a)).collect();
+        ends.reverse();
     }
-    Ok((iv, reversed))
+    let iv = ends.windows(2).map(|w| (w[0].clone(), w[1].clone()));
+    Ok((iv.collect(), reversed))
 }
 
 fn not_finite<T: Real>(v: &T) -> Error {
