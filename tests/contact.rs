@@ -7,8 +7,8 @@
 mod common;
 
 use common::rel_eps;
+use common::roots::brent;
 use moving_hertz::numerics::elliptic::{ellipb_mc, ellipd_mc, ellipke_mc};
-use moving_hertz::numerics::roots::brent;
 use moving_hertz::prelude::*;
 use moving_hertz::{integrals, solve_ellipse, ContactSolution, Ellipse, MajorAxis, Route};
 
@@ -61,9 +61,7 @@ fn johnson<T: Real>(p: T::Prec, load: &T, r1: &T, r2: &T, estar: &T) -> (T, T, T
     // cancellation: K − E = m·D(m), E/mc − K = m·B(m)/mc, so A/B = mc·D/B.
     let f = |mc: &T| mc.clone() * ellipd_mc(mc).unwrap() / ellipb_mc(mc).unwrap() - &target;
     let tiny = T::epsilon(p);
-    let mc = brent(f, &tiny, &(one.clone() - &tiny), &T::zero(p), 400)
-        .unwrap()
-        .root;
+    let mc = brent(f, &tiny, &(one.clone() - &tiny), 400);
     let (kk, ee) = ellipke_mc(&mc).unwrap();
     let e2 = one - &mc;
     let pi = T::pi(p);

@@ -17,6 +17,10 @@ use moving_hertz::{Error, Result};
 use rug::Float;
 use std::collections::BTreeMap;
 
+#[allow(dead_code)]
+#[path = "common/tanh_sinh.rs"]
+mod tanh_sinh;
+
 const MAIN: &str = include_str!("data/elliptic_mpmath.csv");
 const EXTRA: &str = include_str!("data/carlson_cel_mpmath.csv");
 const SPOT: &str = include_str!("data/elliptic_mpmath_8192.csv");
@@ -473,12 +477,12 @@ fn extreme_arguments() {
     assert_eq!(mixed_precision_events(), 0);
 }
 
-/// K, E, F(φ|m) and E(φ|m) at 512 bits against the crate's own tanh–sinh quadrature of their
+/// K, E, F(φ|m) and E(φ|m) at 512 bits against tanh–sinh quadrature (`tests/common/tanh_sinh.rs`) of their
 /// defining integrals ∫ (1 − m sin²θ)^(∓1/2) dθ, with 1 − m sin²θ formed as cos²θ + mc·sin²θ and
 /// cos θ = sin(π/2 − θ) taken from the distance to the end π/2 (so m → 1 keeps its digits).
 #[test]
 fn agreement_with_quadrature_at_512_bits() {
-    use moving_hertz::numerics::quadrature::{tanh_sinh_gaps, Limits};
+    use crate::tanh_sinh::{tanh_sinh_gaps, DeLimits};
     let p = mp(512);
     let one = Mp::one(p);
     let half_pi = Mp::pi(p).mul_pow2(-1);
@@ -506,14 +510,14 @@ fn agreement_with_quadrature_at_512_bits() {
                 |t: &Mp, _: &Mp, b: &Mp| delta(t, b).sqrt().recip(),
                 &[Mp::zero(p), upper.clone()],
                 &Mp::zero(p),
-                Limits::default(),
+                DeLimits::default(),
             )
             .unwrap();
             let second = tanh_sinh_gaps(
                 |t: &Mp, _: &Mp, b: &Mp| delta(t, b).sqrt(),
                 &[Mp::zero(p), upper.clone()],
                 &Mp::zero(p),
-                Limits::default(),
+                DeLimits::default(),
             )
             .unwrap();
             let (f, e) = if complete {

@@ -1,14 +1,13 @@
 //! Quadrature at f64, double-double and MPFR 128/256/1024 bits: Gauss–Legendre rules, the
-//! adaptive Gauss–Legendre driver and tanh–sinh. Errors are asserted in units of the working ε,
+//! adaptive Gauss–Legendre driver and the tanh–sinh reference of `common/tanh_sinh.rs`. Errors are asserted in units of the working ε,
 //! and every error estimate must bound the true error. Run with `--nocapture` to see the
 //! measured worst errors.
 
 mod common;
 
 use common::rel_err_eps as err_eps;
-use moving_hertz::numerics::quadrature::{
-    integrate, tanh_sinh, tanh_sinh_gaps, GaussLegendre, Limits, Quadrature,
-};
+use common::tanh_sinh::{tanh_sinh, tanh_sinh_gaps, DeLimits};
+use moving_hertz::numerics::quadrature::{integrate, GaussLegendre, Limits, Quadrature};
 use moving_hertz::scalar::{Dd, FieldOps, Mp, MpPrec, Real};
 use moving_hertz::Error;
 
@@ -252,22 +251,23 @@ fn integrals<T: Real>(p: T::Prec, label: &str) {
     let zero = T::zero(p);
     let one = T::one(p);
     let lim = Limits::default();
+    let de = DeLimits::default();
     let hp = ref_prec::<T>(p);
     let mut worst = 0f64;
 
     // ∫_0^1 ln x = −1 and ∫_0^1 √x = 2/3: endpoint singularities, tanh–sinh.
     let (ln_ref, sqrt_ref) = (Mp::from_i64(-1, hp), Mp::from_ratio(2, 3, hp));
     let ends = [zero.clone(), one.clone()];
-    let q = tanh_sinh(|x: &T| x.clone().ln(), &ends, &eps, lim).expect("log");
+    let q = tanh_sinh(|x: &T| x.clone().ln(), &ends, &eps, de).expect("log");
     worst = worst.max(check(&q, &ln_ref, "tanh-sinh  int_0^1 ln x", label));
-    let q = tanh_sinh(|x: &T| x.clone().sqrt(), &ends, &eps, lim).expect("sqrt");
+    let q = tanh_sinh(|x: &T| x.clone().sqrt(), &ends, &eps, de).expect("sqrt");
     worst = worst.max(check(&q, &sqrt_ref, "tanh-sinh  int_0^1 sqrt x", label));
     // ∫_1^2 ln(x − 1)/√(2 − x) dx = ∫_0^1 ln u/√(1−u) du = 4 ln 2 − 4, through the gaps.
     let q = tanh_sinh_gaps(
         |_: &T, da: &T, db: &T| da.clone().ln() / &db.clone().sqrt(),
         &[one.clone(), T::from_i64(2, p)],
         &eps,
-        lim,
+        de,
     )
     .expect("gaps");
     let want = Mp::ln2(hp).mul_i64(4) - &Mp::from_i64(4, hp);
@@ -300,7 +300,7 @@ fn integrals<T: Real>(p: T::Prec, label: &str) {
             &format!("adaptive GL K(m = {num}/{den})"),
             label,
         ));
-        let q = tanh_sinh(f, &ends, &eps, lim).expect("DE K");
+        let q = tanh_sinh(f, &ends, &eps, de).expect("DE K");
         worst = worst.max(check(
             &q,
             &want,
@@ -317,7 +317,7 @@ fn integrals<T: Real>(p: T::Prec, label: &str) {
     let want = e_hp.clone().recip().atan().mul_pow2(1) / &e_hp;
     let q = integrate(f, &pts, &eps, lim).expect("GL peak");
     worst = worst.max(check(&q, &want, "adaptive GL peak 1/(e^2+x^2)", label));
-    let q = tanh_sinh(f, &pts, &eps, lim).expect("DE peak");
+    let q = tanh_sinh(f, &pts, &eps, de).expect("DE peak");
     worst = worst.max(check(&q, &want, "tanh-sinh  peak 1/(e^2+x^2)", label));
     // Reversed breakpoints negate the integral.
     let rev = [one.clone(), zero.clone(), -one.clone()];
@@ -336,7 +336,7 @@ fn integrals<T: Real>(p: T::Prec, label: &str) {
         q.value.clone().abs() <= q.error.clone().max_of(eps.clone()),
         "{label} odd GL"
     );
-    let q = tanh_sinh(|x: &T| x.clone().sin(), &sym, &eps, lim).expect("odd DE");
+    let q = tanh_sinh(|x: &T| x.clone().sin(), &sym, &eps, de).expect("odd DE");
     assert!(
         q.value.clone().abs() <= q.error.clone().max_of(eps.clone()),
         "{label} odd DE"
@@ -353,6 +353,7 @@ fn integrals_at_every_precision() {
 #[test]
 fn typed_errors_and_no_panics() {
     let lim = Limits::default();
+    let de = DeLimits::default();
     let tol = f64::EPSILON;
     // Breakpoints and tolerance.
     assert!(matches!(
@@ -364,7 +365,7 @@ fn typed_errors_and_no_panics() {
         Err(Error::Domain { .. })
     ));
     assert!(matches!(
-        tanh_sinh(|x: &f64| *x, &[0.0, 0.0], &tol, lim),
+        tanh_sinh(|x: &f64| *x, &[0.0, 0.0], &tol, de),
         Err(Error::Domain { .. })
     ));
     assert!(matches!(
@@ -380,24 +381,28 @@ fn typed_errors_and_no_panics() {
         integrate(|_: &f64| f64::NAN, &[0.0, 1.0], &tol, lim),
         Err(Error::NotFinite { .. })
     ));
-    assert!(tanh_sinh(|x: &f64| 1.0 / (x - 0.5), &[0.0, 1.0], &tol, lim).is_err());
+    assert!(tanh_sinh(|x: &f64| 1.0 / (x - 0.5), &[0.0, 1.0], &tol, de).is_err());
     // A non-integrable singularity exhausts the work bound.
     let small = Limits {
         max_evals: 20_000,
         ..lim
+    };
+    let de_small = DeLimits {
+        max_evals: 20_000,
+        ..de
     };
     assert!(matches!(
         integrate(|x: &f64| 1.0 / x, &[0.0, 1.0], &tol, small),
         Err(Error::NoConvergence { .. })
     ));
     assert!(matches!(
-        tanh_sinh(|x: &f64| 1.0 / x, &[0.0, 1.0], &tol, small),
+        tanh_sinh(|x: &f64| 1.0 / x, &[0.0, 1.0], &tol, de_small),
         Err(Error::NoConvergence { .. })
     ));
     // A discontinuity inside a panel converges only algebraically: cap on levels.
-    let few = Limits {
+    let few = DeLimits {
         max_levels: 6,
-        ..lim
+        ..de
     };
     let step = |x: &f64| if *x < 1.0 / 3.0 { 0.0 } else { 1.0 };
     assert!(matches!(
@@ -411,7 +416,7 @@ fn typed_errors_and_no_panics() {
     let exact = ((2.0f64 / 3.0) / e2.sqrt()).atan() / e2.sqrt()
         + ((1.0f64 / 3.0) / e2.sqrt()).atan() / e2.sqrt();
     for r in [
-        tanh_sinh(peak, &[0.0, 1.0], &tol, lim),
+        tanh_sinh(peak, &[0.0, 1.0], &tol, de),
         integrate(peak, &[0.0, 1.0], &tol, lim),
     ] {
         match r {

@@ -1,4 +1,4 @@
-//! Generic numerical building blocks: elliptic integrals, quadrature, root finding and the
+//! Generic numerical building blocks: elliptic integrals, quadrature and the
 //! series driver. Every routine is written once over [`crate::scalar::Real`], takes its
 //! tolerance from the working precision, bounds its work and returns a typed error when it does
 //! not converge.
@@ -6,7 +6,6 @@
 pub mod elliptic;
 pub mod gauss_legendre;
 pub mod quadrature;
-pub mod roots;
 pub mod series;
 pub(crate) mod shares;
 mod sum;

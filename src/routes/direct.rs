@@ -588,25 +588,6 @@ pub fn s_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T
     Ok(first + second)
 }
 
-/// S1 of (51) by the closed form (52): S1 = bracket / (M_R ε √(1 − k²ε²)), same bracket and
-/// conventions as [`s_closed_form`]. For M_R > 0.
-pub fn s1_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T> {
-    let p = speed.mr().prec();
-    let one = T::one(p);
-    if axes.k > one || !speed.mr().is_positive() {
-        return Err(Error::Domain {
-            name: "closed form (52) needs 0 < k <= 1 and M_R > 0; k",
-            value: short(&axes.k),
-            bound: "(0, 1]",
-        });
-    }
-    let eps = speed.one_minus_mr2().clone().sqrt();
-    let q = one - axes.k2.clone() * speed.one_minus_mr2();
-    let beta = eps.clone().atan2(speed.mr());
-    let bracket = T::pi(p).mul_pow2(-1) * heuman_lambda_c_mc(&beta, &axes.k2)?;
-    Ok(bracket / (speed.mr().clone() * eps * q.sqrt()))
-}
-
 /// I1, I2 with I2 by the subtraction (48) and S by (53); I1 by quadrature of (46). Valid where
 /// (53) is (k ≤ 1). Same tolerance semantics as [`quadrature`].
 pub fn subtracted<T: Real>(

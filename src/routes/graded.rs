@@ -49,34 +49,22 @@
 //! (at most two units of ln 2 beyond 4/(5k)).
 //!
 //! **Cost.** The plan's left nodes + [`panel_nodes`] evaluations of G (two square roots and
-//! one division each) at ν = 0.25: at `f64` 32 at M_R = 0, k = 1; 39 at M_R = 0.9, k = 3 and at
-//! M_R = 0.9999, k = 3; 78 at k = 10³; 127 at k = 10⁶; at double-double 70, 77, 77, 150, 240
-//! (`moving-hertz integrals --nu 0.25 --speed M_R --k K --precision P`). [`GradedSetup`] keeps
-//! the layout for every k up to 5/4 of the k it was laid out for, so that a further k costs one
-//! square root and one division a node (the ellipse solve's Newton iterates; timings in
-//! docs/performance.md). The Gauss–Legendre rules come from the shared cache.
+//! one division each); [`GradedSetup`] keeps the layout for every k up to 5/4 of the k it was
+//! laid out for, so that a further k costs one square root and one division a node (the ellipse
+//! solve's Newton iterates). The Gauss–Legendre rules come from the shared cache. Node counts
+//! and timings: docs/performance.md.
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^180 ([`K_MAX_LOG2`]), else
 //! [`Error::Domain`]. The left half's x-range, and with it the work, grows like log₂ k (and like
-//! log₂(1/ε) only while kε > 1/4, i.e. by at most two units): at
-//! k = 10⁵¹ (the largest k of an ellipse solve, A1/B1 = 10¹⁰⁰) 872 nodes at `f64`, 1619 at
-//! double-double and 3731 at 256 bits, against 35, 69 and 163 at k = 2 (M_R = 0.5, ν = 0.2:
-//! `moving-hertz integrals --nu 0.2 --speed 0.5 --k 1e51 --precision P`; what a solve then costs:
-//! the `ellipse_extreme` bench in docs/performance.md).
+//! log₂(1/ε) only while kε > 1/4, i.e. by at most two units).
 //!
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
-//! checked against the adaptive route at 400 bits in `tests/graded.rs` over ν ∈ {−0.9, 0, 0.25,
-//! 0.5}, M_R ∈ {0, 0.5, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {1, 1.5, 3, 10, 10³, 10⁶}, with the
-//! derivatives: worst 4.0ε at `f64`, 2.9ε at double-double, 3.4ε and 3.2ε at MPFR 128 and 256
-//! bits (derivatives, ≤ 128 bits: 3.3ε, 2.4ε, 3.1ε); a layout for another k_ref (k at 5/4 of
-//! it, or 16 times below it): 3.9ε, 2.4ε, 3.6ε, 4.1ε (`cargo test --release --test graded --
-//! --nocapture`). The node counts' margin, measured on
-//! this grid with every panel of one length ℓ = 1…8 in turn: with 2^{−bits−8} (the counts of
-//! [`left_nodes`]) the worst error is 4.9ε, dI/dk 5.9ε; with 2^{−bits−6} dI/dk reaches 17ε,
-//! with 2^{−bits−4} 32ε, with 2^{−bits} 370ε.
+//! checked against the adaptive route at 400 bits in `tests/graded.rs`, with the derivatives and
+//! with layouts for another k_ref. The measured worst errors, and the margin of the node counts
+//! of [`left_nodes`], are in docs/calibration.md.
 
-use super::fast::SpeedConsts;
 use super::guard::{run_guarded, GuardedJob};
+use super::speed_consts::SpeedConsts;
 use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;

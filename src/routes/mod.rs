@@ -16,8 +16,6 @@
 //! The series route: [`coefficients`] (f_n of (35)–(36)), [`moments`] (L_n, M_n of (39)–(42)),
 //! [`series`] (I1, I2 by (37) with truncation control); findings in `docs/series.md`.
 
-#[doc(hidden)]
-pub mod asymptotic;
 pub mod choose;
 #[doc(hidden)]
 pub mod coefficients;
@@ -33,6 +31,7 @@ mod guard;
 pub mod moments;
 #[doc(hidden)]
 pub mod series;
+mod speed_consts;
 
 pub use choose::{integrals_to_tolerance, ExactInputs};
 pub use coefficients::{GreenSeries, SpeedCoefficients};

@@ -2,6 +2,9 @@
 //! macro running a generic check at every precision.
 #![allow(dead_code)]
 
+pub mod roots;
+pub mod tanh_sinh;
+
 use moving_hertz::scalar::{mixed_precision_events, FieldOps, MpPrec, Real};
 use rug::Float;
 

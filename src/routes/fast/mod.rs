@@ -45,8 +45,8 @@
 //! subtracted pole ±iε is removable and may lie inside. Three units of ln 2 take one 3-unit
 //! panel up to 512 bits (77 nodes at 256 bits against 109), a 2-unit and a 1-unit panel above
 //! (1556 nodes at 4096 bits), whose rules and e^{±x} tables the right half's sinh layouts
-//! share. Measured against the single rule at 256 and 1024 bits in `tests/fast.rs`
-//! (`left_layouts_agree`: within 2.2ε, derivatives included).
+//! share. Checked against the single rule at 256 and 1024 bits by the unit test
+//! `left_layouts_agree` (derivatives included).
 //!
 //! **Right half: the k-peak.** The weight (σ + k²)^{−3/2} has branch points at v = ±ik, near the
 //! end v = 0 when k is small, while b is analytic in |σ| < 1 (its nearest singularity is
@@ -117,17 +117,14 @@
 //!
 //! **Accuracy.** The node counts are fixed functions of the working precision
 //! ([`RuleSizes::for_bits`]), chosen so that the truncation error is below 1ε over the whole
-//! domain; [`BOUND_EPS`] = 16 is the a-priori bound on the relative error of I1 and I2
-//! in units of ε, checked against the adaptive route at 400 bits over ν ∈ {−0.9, 0, 0.25, 0.5},
-//! M_R ∈ {0, 0.3, 0.7, 0.9, 0.99, 0.9999, 1 − 10⁻⁸}, k ∈ {10⁻⁶, 10⁻⁴, 0.01, 0.1, 0.3, 0.5, 0.7, 1}
-//! (`tests/fast.rs`): worst 2.8ε at `f64` (6·10⁻¹⁶), 5.5ε at double-double, 1.9ε and 2.8ε at
-//! MPFR 128 and 256 bits. The derivatives: worst 47ε at `f64` (10⁻¹⁴), 53ε at double-double
-//! (near k = 1, M_R = 0, where the closed forms of the (σ + k²)^{−5/2} moments cancel most; no
-//! guard precision is spent on them below MPFR), 2.3ε at MPFR 128 bits. At 1024 bits against
-//! the adaptive route at 1088 bits (`tests/precision_scaling.rs`, seven cases across ν, M_R and
-//! k = 10⁻⁶ … 1): I1, I2 within 1.4ε, the derivatives within 5.6ε. (The Taylor form's
-//! derivatives near k = 1, M_R = 0 degrade with the precision, 74ε at 1024 bits and some 6700ε at
-//! 2048: there the right half is always on the sinh-mapped panels.)
+//! domain; [`BOUND_EPS`] = 16 is the a-priori bound on the relative error of I1 and I2 in units
+//! of ε and [`DK_BOUND_EPS`] that of the k-derivatives, checked against the adaptive route at 400
+//! bits (`tests/fast.rs`) and at 1024 bits against it at 1088 bits
+//! (`tests/precision_scaling.rs`). The measured worst errors by precision are in
+//! docs/calibration.md. The derivatives are least accurate near k = 1, M_R = 0, where the closed
+//! forms of the (σ + k²)^{−5/2} moments cancel most (no guard precision is spent on them below
+//! MPFR); above 1024 bits the right half is always on the sinh-mapped panels, since the Taylor
+//! form's derivatives there degrade with the precision.
 
 use super::graded;
 use super::{AxisRatio, Evaluation, Route};
@@ -143,21 +140,19 @@ use std::sync::{Arc, OnceLock};
 mod closed;
 mod rule;
 mod sinh;
-pub(crate) use closed::SpeedConsts;
+pub(crate) use super::speed_consts::SpeedConsts;
 use closed::*;
 pub use rule::*;
 use sinh::*;
 
 /// The a-priori bound on the relative error of I1 and I2 for the default sizes, in units of ε of
-/// the working precision, valid on the whole domain of the route at every precision. Measured
-/// over the test grid (`tests/fast.rs`): at most 2.8ε at `f64`, 5.5ε at double-double, 1.9ε and
-/// 2.8ε at MPFR 128 and 256 bits (1.4ε at 512 bits on a sub-grid); the truncation error of the
-/// default rules is below 1ε everywhere on the domain (module docs), the rest is rounding.
+/// the working precision, valid on the whole domain of the route at every precision: the
+/// truncation error of the default rules is below 1ε everywhere on the domain (module docs), the
+/// rest is rounding (measured worst errors: docs/calibration.md).
 pub const BOUND_EPS: i64 = 16;
 
-/// The bound on the relative error of the k-derivatives, in units of ε: measured ≤ 47ε at
-/// `f64`, ≤ 53ε at double-double (near k = 1, M_R = 0), ≤ 3ε at MPFR; asserted in
-/// `tests/fast.rs`.
+/// The bound on the relative error of the k-derivatives, in units of ε, asserted in
+/// `tests/fast.rs` (measured worst errors: docs/calibration.md).
 pub const DK_BOUND_EPS: i64 = 128;
 
 // ---------------------------------------------------------------------------------------------
@@ -503,8 +498,8 @@ fn run<T: Real>(
 ///
 /// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 0 < k ≤ 1, else [`Error::Domain`]. Accuracy: relative
 /// error of I1 and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate` (at
-/// `f64` 3.6e-15; measured ≤ 2.8ε). Work: [`RuleSizes::nodes`] evaluations of G (32 at `f64`,
-/// 70 at double-double; timings in docs/performance.md), no allocation at `f64` and double-double once the rule
+/// `f64` 3.6e-15). Work: [`RuleSizes::nodes`] evaluations of G (32 at `f64`, 70 at
+/// double-double; timings in docs/performance.md), no allocation at `f64` and double-double once the rule
 /// is built; above double-double the right half's sinh-mapped panels where they are cheaper
 /// (module docs). The route reported is [`Route::FixedRule`].
 pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
@@ -514,24 +509,11 @@ pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evalu
 
 /// I1, I2 (as [`integrals`]) and dI1/dk, dI2/dk, differentiated under the integral sign on the
 /// same nodes (see the module docs). The derivatives' relative error is not bounded by the
-/// reported estimate (which is for I1, I2): measured ≤ 47ε at `f64`, ≤ 53ε at double-double
-/// (near k = 1, M_R = 0), ≤ 3ε at MPFR; tested ≤ 128ε. Cost: the same nodes as [`integrals`] and a few products more a node.
+/// reported estimate (which is for I1, I2): it is below [`DK_BOUND_EPS`]·ε = 128ε. Cost: the same nodes as [`integrals`] and a few products more a node.
 /// Implements (46)–(47) and their k-derivatives.
 pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
     let rule = FastRule::<T>::get(axes.k.prec())?;
     run(speed, axes, &rule, true, true)
-}
-
-/// As [`integrals_with_dk`] with an explicit rule (from [`FastRule::build`]): for convergence
-/// studies. The reported `error_estimate` is the default rule's bound and does not apply to
-/// smaller rules.
-/// Implements (46)–(47).
-pub fn integrals_with_rule<T: Real>(
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-    rule: &FastRule<T>,
-) -> Result<Evaluation<T>> {
-    run(speed, axes, rule, true, false)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -644,8 +626,8 @@ impl<T: Real> FastSetup<T> {
             let octaves = (0..OCTAVES).map(|_| OnceLock::new()).collect();
             (TaylorCell::Lazy(OnceLock::new()), octaves)
         };
-        // Written straight into its allocation: `Box::new` builds the value on the stack and
-        // copies it, ~3 % of an `f64` solve (docs/calibration.md).
+        // Written straight into its allocation: `Box::new` would build the value on the stack
+        // and copy it (its cost: docs/calibration.md, `SETUP_INLINE`).
         let mut setup = Box::write(
             Box::new_uninit(),
             FastSetup {
@@ -838,6 +820,54 @@ mod tests {
                 let tol = tol_eps * (1 + j * j) as f64;
                 assert!(e <= tol, "nu={nu} M_R={mr} b_{j}: {e:.1} eps");
             }
+        }
+    }
+
+    /// Above double-double the left half lies on sinh-mapped panels (`RuleSizes::left_sinh`): it
+    /// agrees with the single Gauss–Legendre rule in w of ⌈0.433·bits⌉ − 2 nodes (the layout used
+    /// up to double-double, extended) to a few ε at 256 and 1024 bits, on the left half's hardest
+    /// cases (ν = 1/2 and M_R → 1, where G's branch point comes nearest) and across k.
+    #[test]
+    fn left_layouts_agree() {
+        for bits in [256u32, 1024] {
+            let p = MpPrec::new(bits as u64).unwrap();
+            let plain = RuleSizes {
+                left: (bits as usize * 433).div_ceil(1000) - 2,
+                left_sinh: false,
+                ..RuleSizes::for_bits(bits)
+            };
+            let sinh = RuleSizes::for_bits(bits);
+            assert!(sinh.left_sinh && sinh.left == left_sinh_nodes(bits) && sinh.left < plain.left);
+            let (a, b) = (
+                FastRule::build(plain, p).unwrap(),
+                FastRule::build(sinh, p).unwrap(),
+            );
+            let eps = Mp::epsilon(p);
+            let rel = |y: &Mp, x: &Mp| ((y.clone() - x) / x).abs().to_f64() / eps.to_f64();
+            let mut worst = 0.0f64;
+            for nu in [-0.9, 0.25, 0.5] {
+                for mr in [0.0, 0.9, 0.9999, 1.0 - 1e-12] {
+                    for k in [1e-6, 0.3, 1.0] {
+                        let mat = Material::new(Mp::from_f64(nu, p)).unwrap();
+                        let sp = mat.speed(Mp::from_f64(mr, p)).unwrap();
+                        let ax = AxisRatio::new(Mp::from_f64(k, p)).unwrap();
+                        let x = run(&sp, &ax, &a, true, false).unwrap();
+                        let y = run(&sp, &ax, &b, true, false).unwrap();
+                        let e = [
+                            rel(&y.i1, &x.i1),
+                            rel(&y.i2, &x.i2),
+                            rel(&y.di1_dk(), &x.di1_dk()),
+                            rel(&y.di2_dk(), &x.di2_dk()),
+                        ];
+                        let e = e.into_iter().fold(0.0, f64::max);
+                        assert!(e <= 8.0, "{bits} bits nu={nu} M_R={mr} k={k}: {e:.1} eps");
+                        worst = worst.max(e);
+                    }
+                }
+            }
+            println!(
+                "{bits} bits: sinh-mapped left half against the plain rule, worst {worst:.2} eps"
+            );
         }
     }
 
