@@ -359,3 +359,47 @@ fn failed_points_across_batches_carry_their_errors() {
         );
     }
 }
+
+/// A sweep whose reader goes away (`| head -1`) stops at its next write with exit code 1 and
+/// the one-line message of a closed output, instead of solving every point: here 10⁷ points at
+/// double-double, minutes of work, of which the reader takes the header and one row. A sweep
+/// that went on would trip the watchdog (a minute).
+#[test]
+fn a_sweep_stops_when_its_reader_goes_away() {
+    use std::io::{BufRead, BufReader};
+    use std::process::{Command, Stdio};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_moving-hertz"))
+        .args(["sweep", "--nu", "0.25", "--gap", "log:1e-1:1e-8:1000"])
+        .args(["--ratio", "log:1e-2:1e2:10000", "--precision", "dd"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    let mut reader = BufReader::new(child.stdout.take().expect("stdout"));
+    let (mut header, mut row) = (String::new(), String::new());
+    reader.read_line(&mut header).expect("the header");
+    reader.read_line(&mut row).expect("a row");
+    assert!(header.starts_with("nu,gap,ratio,k,"), "{header}");
+    assert!(row.starts_with("0.25,"), "{row}");
+    drop(reader);
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("wait") {
+            break status;
+        }
+        if start.elapsed() > std::time::Duration::from_secs(60) {
+            let _ = child.kill();
+            panic!("the sweep went on after its reader closed the pipe");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    let mut err = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().expect("stderr"), &mut err)
+        .expect("stderr");
+    assert_eq!(status.code(), Some(1), "{err}");
+    let last = err.trim_end().lines().last().unwrap_or("");
+    assert!(
+        last.starts_with("moving-hertz: error: writing to standard output: "),
+        "{err}"
+    );
+}

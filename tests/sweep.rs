@@ -114,13 +114,15 @@ fn on_threads<R: Send>(n: usize, f: impl FnOnce() -> R + Send) -> R {
         .install(f)
 }
 
-/// The same results on 1 and 4 threads, on 2 threads bound to CPUs, and from a sweep split at
-/// a multiple of [`BLOCK`].
+/// The same results on 1, 4 and 16 threads, on 2 threads bound to CPUs, and from a sweep split
+/// at a multiple of [`BLOCK`].
 fn check_reproducible<T: Real + Send + Sync>(pts: &[EllipsePoint<T>]) {
     let opts = Options::default();
     let one = bits(&on_threads(1, || sweep::ellipses(pts, &opts)));
     let four = bits(&on_threads(4, || sweep::ellipses(pts, &opts)));
     assert_eq!(one, four);
+    let sixteen = bits(&on_threads(16, || sweep::ellipses(pts, &opts)));
+    assert_eq!(one, sixteen);
     let bound = rayon::ThreadPoolBuilder::new()
         .num_threads(2)
         .start_handler(|i| {
@@ -136,7 +138,7 @@ fn check_reproducible<T: Real + Send + Sync>(pts: &[EllipsePoint<T>]) {
 }
 
 #[test]
-fn same_bits_on_one_and_four_threads() {
+fn same_bits_on_one_four_and_sixteen_threads() {
     check_reproducible(&grid::<f64>((), 40, 5.0));
     check_reproducible(&grid::<Dd>((), 12, 5.0));
     let p = MpPrec::new(256).unwrap();
