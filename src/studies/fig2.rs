@@ -122,9 +122,9 @@ pub fn solve_all<T: Real + Send + Sync, const N: usize>(
 }
 
 /// The points of one task of [`solve_all`] at `bits`: the library's [`BLOCK`] at `f64` and
-/// double-double; 16 above, where a point costs 100 µs or more, so that the 2,386 points make
-/// 150 tasks rather than 38 and 16 threads finish within a short task of each other (38 equal
-/// tasks keep 16 threads busy at most 38/48 of the time). A shorter block starts more points
+/// double-double; 16 above, where a point costs 100 µs or more, so that the 2,546 points make
+/// 160 tasks rather than 41 and 16 threads finish within a short task of each other (41 equal
+/// tasks keep 16 threads busy at most 41/48 of the time). A shorter block starts more points
 /// from the static seed instead of a neighbour's root, which costs little where the higher
 /// stages of the ladder dominate. The bits of a point depend on its task, never on the threads.
 fn task_len(bits: u32) -> usize {
