@@ -54,19 +54,23 @@ pub(super) fn hermite_root<T: Real>(
     for _ in 0..2 {
         h = newton.clone() - (c2.clone() + c3.clone() * &h) * &h.square() / &b.df;
     }
-    let (hf, df_, c3f) = (h.to_f64().abs(), d.to_f64().abs(), c3.to_f64().abs());
-    let err = 8.0 * (1.0 + c3f) * df_ * df_ * hf * hf / b.df.to_f64();
+    // The bounds in the working type: products of squares of steps underflow f64 above
+    // about 1075 bits.
+    let (ha, da) = (h.clone().abs(), d.clone().abs());
+    let one = T::one(eps.prec());
+    let err = (c3.abs() + &one).mul_i64(8) * &(da.clone() * &ha).square() / &b.df;
     // The integrals, in k: Hermite cubics from the two iterates' values and k-derivatives.
     let (ka, kb) = (a.lam.clone().exp(), b.lam.clone().exp());
     let x = (b.lam.clone() + &h).exp();
     let least = ka.clone().min_of(kb.clone()).min_of(x.clone());
     let dk = ka.clone() - &kb;
     let hk = x.clone() - &kb;
-    let rel = |y: T| (y / &x).to_f64();
-    let carry_err = 16.0 * (rel(x.clone() - &ka) * rel(hk.clone())).powi(2) * rel(least).powi(-7);
-    let epsf = eps.to_f64();
-    let fine = err <= epsf * scale.to_f64() && carry_err <= epsf;
-    if !(hf * 8.0 <= df_ && fine && err.is_finite() && carry_err.is_finite()) {
+    let spread = x.clone() / &least;
+    let spread7 = spread.square().square() * &spread.square() * &spread;
+    let moved = (x.clone() - &ka) / &x * &(hk.clone() / &x);
+    let carry_err = moved.square().mul_i64(16) * &spread7;
+    let fine = err <= eps.clone() * scale && carry_err <= *eps;
+    if !(ha.mul_i64(8) <= da && fine && err.is_finite() && carry_err.is_finite()) {
         return None;
     }
     let carry = |ya: &T, yb: &T, dya: &T, dyb: &T| {
@@ -76,7 +80,7 @@ pub(super) fn hermite_root<T: Real>(
     let (ia, ib) = (&a.ints, &b.ints);
     let (i1, di1) = carry(&ia.i1, &ib.i1, &ia.di1_dk(), &ib.di1_dk());
     let (i2, di2) = carry(&ia.i2, &ib.i2, &ia.di2_dk(), &ib.di2_dk());
-    let carried = T::from_f64(carry_err, eps.prec());
+    let carried = carry_err;
     let ints = Evaluation {
         i1,
         i2,
@@ -85,7 +89,7 @@ pub(super) fn hermite_root<T: Real>(
         extra_error: ib.extra_error.clone() + &carried.sqrt(),
         ..ib.clone()
     };
-    Some((b.lam.clone() + h, T::from_f64(err, eps.prec()), ints))
+    Some((b.lam.clone() + h, err, ints))
 }
 
 /// The relative error of carrying I1, I2 a relative distance `moved` = |dk/k| to first order
@@ -98,6 +102,7 @@ pub(super) fn carry_error<T: Real>(moved: &T, r: &T) -> T {
     (moved.clone().mul_i64(16) + &r.clone().mul_i64(4)) * moved
 }
 
+/// Carries I1, I2 of `ci` from `k_old` to `k` to first order, I(k) ≈ I(k_old) + I′(k_old)(k − k_old):
 /// their error estimate grows by the carry's error ([`carry_error`]) and the derivatives',
 /// which stay those at `k_old`, by ≲ |k I″/I′|·|dk/k| with |k I″/I′| ≤ 8 (5 for I1 ∝ ln k/k³).
 #[inline]

@@ -43,6 +43,7 @@ impl<T: Real> ShapeSolver<T> {
     /// `f64`, when it converges from there within [`GUESS_EVALUATIONS`], and from the static
     /// ellipse otherwise: a far seed costs a few `f64` evaluations, never a search at the
     /// working precision.
+    #[inline]
     pub(crate) fn solve(
         &self,
         ratio: &T,
@@ -138,6 +139,7 @@ impl<T: Real> Newton<'_, T> {
     /// evaluation with derivatives. `None` (and a Newton step taken instead) when its bounds do
     /// not reach ε — near the Rayleigh speed, where the `f64` stage solved inputs rounded to
     /// `f64`.
+    #[inline]
     pub(super) fn halley_step(&mut self, c: &Chord<T>) -> Result<Option<Shape<T>>> {
         let lam = self.lam.clone();
         let (f, df, ci) = self.eval(&lam, None, false)?;
@@ -162,6 +164,7 @@ impl<T: Real> Newton<'_, T> {
 
 /// F″ at λ0 and its error bound, the first part of [`curvature`] (which needs no evaluation at
 /// λ0, so that the ladder decides before evaluating whether the Halley step can work).
+#[inline]
 pub(super) fn f_second<T: Real>(c: &Chord<T>, lam0: &T) -> Option<(f64, f64)> {
     let b = c.before.as_ref()?;
     let (la, lb) = (b[0].to_f64(), c.lam.to_f64());
@@ -182,6 +185,7 @@ pub(super) fn f_second<T: Real>(c: &Chord<T>, lam0: &T) -> Option<(f64, f64)> {
 /// 2r|I′|/Δk + 100(I/k³)(Δk + |k0 − k_c|) for I″ (|k³I‴| ≤ 100 I assumed: 60 for
 /// I1 ∝ ln k/k³; `ints` gives I at λ0). `None` when the F″ bound exceeds 0.1 (D too small for the
 /// rounding or too large for the truncation).
+#[inline]
 pub(super) fn curvature<T: Real>(
     c: &Chord<T>,
     lam0: &T,
@@ -210,6 +214,7 @@ pub(super) fn curvature<T: Real>(
 /// (|ΔF″|/2F′)δ² + |δ|³) and I1, I2 carried to second order (relative error ≤ ½|ΔI″|dk²/I).
 /// Taken when the first bound is ≤ ε·scale/4 and the second ≤ ε: one evaluation with
 /// derivatives instead of two chord evaluations without.
+#[inline]
 pub(super) fn halley_from_f64<T: Real>(
     lam: &T,
     f: &T,
@@ -267,6 +272,7 @@ impl<T: Real> ShapeSolver<T> {
     /// stage fails (inputs beyond its range), the working precision solves on its own from the
     /// static seed. The `f64` stage starts from `guess` when given. `tol`: the tolerance on k at
     /// the working precision (`None`: its floor).
+    #[inline]
     pub(super) fn ladder(&self, ratio: &T, tol: Option<T>, guess: Option<f64>) -> Result<Shape<T>> {
         self.climb(ratio, tol, guess, true).map(|(s, _)| s)
     }
@@ -274,6 +280,7 @@ impl<T: Real> ShapeSolver<T> {
     /// The ladder of [`ShapeSolver::ladder`], returning the working precision's last
     /// derivatives too; `allow_chord`: whether its last evaluation may skip the k-derivatives
     /// (false for a stage that hands them on, [`ShapeSolver::via_mid`]).
+    #[inline]
     pub(super) fn climb(
         &self,
         ratio: &T,

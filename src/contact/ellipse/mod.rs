@@ -291,10 +291,9 @@ fn shape_slope<T: Real>(k: &T, ci: &Evaluation<T>) -> T {
     k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1)
 }
 
-/// Carries I1, I2 of `ci` from `k_old` to `k` to first order, I(k) ≈ I(k_old) + I′(k_old)(k − k_old):
-
 #[cfg(test)]
 mod tests {
+    use super::seed::static_seed;
     use super::*;
 
     /// The seeds' stated accuracy against the static root (M_R = 0): the k ≫ 1 form within

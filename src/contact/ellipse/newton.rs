@@ -15,12 +15,40 @@ use crate::scalar::{short, Real};
 /// A stage's result: the shape and the derivatives it hands on to the stage above.
 pub(super) type Handed<T> = Result<(Shape<T>, Option<Chord<T>>)>;
 
+/// F and F′ = k(I2′/I2 − I1′/I1) at λ, with the integrals. With `chord` (the derivatives
+/// kept from an earlier iterate) the derivatives are not evaluated again: a chord step instead
+/// of a Newton step. `probe`: see [`Evaluator::for_newton`].
+#[inline(always)]
+pub(super) fn residual<T: Real>(
+    ev: &Evaluator<T>,
+    ratio: &T,
+    lam: &T,
+    chord: Option<&Chord<T>>,
+    probe: bool,
+) -> Result<(T, T, Evaluation<T>)> {
+    let p = ratio.prec();
+    let ax = AxisRatio::new(lam.clone().exp())?;
+    let mut ci = ev.for_newton(&ax, chord.is_none(), probe)?;
+    let f = shape_residual(&ci, ratio);
+    let df = match chord {
+        Some(c) => {
+            // Derivatives kept from an earlier iterate: their relative error grows by
+            // ≲ 8|Δλ| (see [`finish`]).
+            ci.dk = Some([c.di1.clone(), c.di2.clone()]);
+            let age = (lam.clone() - &c.lam).abs().mul_i64(8) + &c.rel_err;
+            ci.extra_error = age + &T::epsilon(p).mul_i64(fast::DK_BOUND_EPS);
+            c.df.clone()
+        }
+        None => shape_slope(&ax.k, &ci),
+    };
+    Ok((f, df, ci))
+}
+
 /// F′ and the integrals' k-derivatives at λ = ln k (one evaluation with derivatives): a
 /// secant's partner, or the hand-off of a stage whose last step was a chord step; `None` if
 /// that evaluation fails.
 pub(super) fn slope_at<S: Real>(ev: &Evaluator<S>, ratio: &S, lam: S) -> Option<Chord<S>> {
-    let newton = Newton::new(ev, ratio, None, false, None, 1);
-    let (_, df, ci) = newton.eval(&lam, None, false).ok()?;
+    let (_, df, ci) = residual(ev, ratio, &lam, None, false).ok()?;
     Some(Chord {
         di1: ci.di1_dk(),
         di2: ci.di2_dk(),
@@ -61,8 +89,8 @@ impl<T: Real> Stage<'_, T> {
 
 /// One stage of the solve ([`Stage`]): Newton's method on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k,
 /// with its named steps — the k = 1 probe ([`Newton::probe_k_one`]), the Halley step from a
-/// lower precision ([`Newton::halley_step`]), the safeguarded Newton or asymptotic step inside
-/// the bracket ([`Newton::next_iterate`]), the Hermite stop ([`Newton::hermite_stop`]), the
+/// lower precision ([`Newton::halley_step`]), the safeguarded Newton step inside the bracket
+/// ([`Newton::next_iterate`]), the Hermite stop ([`Newton::hermite_stop`]), the
 /// stopping rules ([`Newton::converged`]) and the chord steps at the end ([`Newton::plan_chord`]).
 /// Returns the shape and the derivatives of the last evaluation that computed them (the hand-off
 /// to the next stage).
@@ -73,17 +101,10 @@ pub(super) fn solve_core<T: Real>(
 ) -> Result<(Shape<T>, Option<Chord<T>>)> {
     check_ratio(ratio)?;
     let method = evaluator.method();
-    let Stage {
-        seed,
-        seed_slope,
-        allow_chord,
-        halley,
-        tol,
-        budget,
-    } = stage;
-    let mut newton = Newton::new(evaluator, ratio, seed, allow_chord, tol, budget);
-    let halley_slope = seed_slope.and_then(|(c, err)| newton.adopt_slope(c, &err, halley));
-    if seed.is_none() && method != Method::Adaptive {
+    let mut newton = Newton::new(evaluator, ratio, &stage);
+    let halley = stage.halley;
+    let halley_slope = (stage.seed_slope).and_then(|(c, err)| newton.adopt_slope(c, &err, halley));
+    if stage.seed.is_none() && method != Method::Adaptive {
         newton.probe_k_one()?;
     }
     if let Some(c) = halley_slope {
@@ -103,8 +124,6 @@ pub(super) struct Newton<'a, T: Real + 'static> {
     pub(super) evaluator: &'a Evaluator<T>,
     /// The stopping rules' unit: ε, or the tolerance asked for.
     pub(super) eps: T,
-    /// ε_R = √(1 − M_R²), the width of G's Rayleigh pole: the asymptotic step needs k·ε_R ≫ 1.
-    pub(super) pole_width: f64,
     pub(super) seeded: bool,
     /// Whether the evaluation expected to be the last may skip the k-derivatives.
     pub(super) allow_chord: bool,
@@ -133,26 +152,23 @@ pub(super) struct Newton<'a, T: Real + 'static> {
 }
 
 impl<'a, T: Real> Newton<'a, T> {
-    pub(super) fn new(
-        evaluator: &'a Evaluator<T>,
-        ratio: &'a T,
-        seed: Option<&T>,
-        allow_chord: bool,
-        tol: Option<T>,
-        budget: usize,
-    ) -> Self {
+    /// The iteration of `stage` from its seed, or else from the static ellipse.
+    pub(super) fn new(evaluator: &'a Evaluator<T>, ratio: &'a T, stage: &Stage<'_, T>) -> Self {
         let p = ratio.prec();
-        let k0 = match seed {
+        let k0 = match stage.seed {
             Some(s) if s.is_positive() && s.is_finite() => s.clone(),
             _ => T::from_f64(static_seed(ratio.to_f64()), p),
         };
+        let eps = T::epsilon(p);
         Newton {
             ratio,
             evaluator,
-            eps: tol.map_or_else(|| T::epsilon(p), |t| t.max_of(T::epsilon(p))),
-            pole_width: evaluator.speed().one_minus_mr2().to_f64().sqrt(),
-            seeded: seed.is_some(),
-            allow_chord,
+            eps: match &stage.tol {
+                Some(t) => t.clone().max_of(eps),
+                None => eps,
+            },
+            seeded: stage.seed.is_some(),
+            allow_chord: stage.allow_chord,
             lam: k0.ln(),
             lo: None,
             hi: None,
@@ -161,7 +177,7 @@ impl<'a, T: Real> Newton<'a, T> {
             fresh_slope: None,
             prev: None,
             spent: 0,
-            budget,
+            budget: stage.budget,
             reach: T::from_i64(2, p),
             lam_range: (
                 (RelError::of(&T::min_positive(p)).log2() + 8.0) / 4.0 * std::f64::consts::LN_2,
@@ -174,9 +190,7 @@ impl<'a, T: Real> Newton<'a, T> {
         self.ratio.prec()
     }
 
-    /// F and F′ = k(I2′/I2 − I1′/I1) at λ, with the integrals. With `chord` (the derivatives
-    /// kept from an earlier iterate) the derivatives are not evaluated again: a chord step
-    /// instead of a Newton step. `probe`: see [`Evaluator::for_newton`].
+    /// F, F′ and the integrals at λ ([`residual`]).
     #[inline(always)]
     pub(super) fn eval(
         &self,
@@ -184,22 +198,7 @@ impl<'a, T: Real> Newton<'a, T> {
         chord: Option<&Chord<T>>,
         probe: bool,
     ) -> Result<(T, T, Evaluation<T>)> {
-        let p = self.prec();
-        let ax = AxisRatio::new(lam.clone().exp())?;
-        let mut ci = self.evaluator.for_newton(&ax, chord.is_none(), probe)?;
-        let f = shape_residual(&ci, self.ratio);
-        let df = match chord {
-            Some(c) => {
-                // Derivatives kept from an earlier iterate: their relative error grows by
-                // ≲ 8|Δλ| (see [`finish`]).
-                ci.dk = Some([c.di1.clone(), c.di2.clone()]);
-                let age = (lam.clone() - &c.lam).abs().mul_i64(8) + &c.rel_err;
-                ci.extra_error = age + &T::epsilon(p).mul_i64(fast::DK_BOUND_EPS);
-                c.df.clone()
-            }
-            None => shape_slope(&ax.k, &ci),
-        };
-        Ok((f, df, ci))
+        residual(self.evaluator, self.ratio, lam, chord, probe)
     }
 
     /// The hand-off from a lower precision: its derivatives `c` (relative error r) and a bound
@@ -279,9 +278,8 @@ impl<'a, T: Real> Newton<'a, T> {
         })
     }
 
-    /// The next iterate from F, F′ at λ: the Newton (or chord) step — or the asymptotic step for
-    /// k ≫ 1 ([`log_model_step`], where it lands at k·ε_R ≥ [`MODEL_MIN_K_EPS`]) — when it stays
-    /// inside the bracket; bisection when it does not; unbracketed, the step cut to the reach
+    /// The next iterate from F, F′ at λ: the Newton (or chord) step when it stays inside the
+    /// bracket; bisection when it does not; unbracketed, the step cut to the reach
     /// and never past a known end. The reach starts at 2 (a factor e² in k) and doubles after
     /// each cut step, as long as the longer step stays inside `lam_range` (else 2): far from the
     /// root F grows like 2|λ| (I1 ~ k^{−2} as k → 0, I2 ~ 1/k as k → ∞), so that a root at
@@ -292,14 +290,7 @@ impl<'a, T: Real> Newton<'a, T> {
     pub(super) fn next_iterate(&self, f: &T, df: &T) -> (T, bool, bool) {
         let p = self.prec();
         let lam = &self.lam;
-        let newton = (df.is_positive() && df.is_finite()).then(|| {
-            let model = log_model_step(lam.to_f64(), f.to_f64(), df.to_f64())
-                .filter(|d| (lam.to_f64() + d).exp() * self.pole_width >= MODEL_MIN_K_EPS);
-            match model {
-                Some(d) => lam.clone() + T::from_f64(d, p),
-                None => lam.clone() - f.clone() / df,
-            }
-        });
+        let newton = (df.is_positive() && df.is_finite()).then(|| lam.clone() - f.clone() / df);
         let half_way = |end: &T| (lam.clone() + end).mul_pow2(-1);
         match (&self.lo, &self.hi, newton) {
             // Inside the closed bracket (a converged step may land on its end).
@@ -363,21 +354,23 @@ impl<'a, T: Real> Newton<'a, T> {
     /// minimises the secant's error bound r/D + D (r = 2¹²ε, the derivatives' error bound).
     #[inline]
     pub(super) fn hand_on(&mut self, h: &Point<T>) {
-        let r = self.eps.to_f64() * 4096.0;
+        // r/D + D in the working type (2¹²ε underflows f64 above about 1075 bits); `None` at
+        // D = 0, where the secant does not exist.
+        let r = self.eps.clone().mul_i64(4096);
         let bound = |x: &T| {
-            let d = (h.lam.clone() - x).to_f64().abs();
-            if d > 0.0 {
-                r / d + d
-            } else {
-                f64::INFINITY
-            }
+            let d = (h.lam.clone() - x).abs();
+            (!d.is_zero()).then(|| r.clone() / &d + &d)
+        };
+        let nearer = |a: Option<T>, b: Option<T>| match (a, b) {
+            (Some(a), Some(b)) => a < b,
+            (a, b) => a.is_some() && b.is_none(),
         };
         let before = self
             .fresh_slope
             .as_ref()
             .filter(|_| !self.allow_chord)
             .map(|c| match &c.before {
-                Some(b) if bound(&b[0]) < bound(&c.lam) => b.clone(),
+                Some(b) if nearer(bound(&b[0]), bound(&c.lam)) => b.clone(),
                 _ => [c.lam.clone(), c.df.clone(), c.di1.clone(), c.di2.clone()],
             });
         self.fresh_slope = Some(Chord {
@@ -462,48 +455,6 @@ impl<'a, T: Real> Newton<'a, T> {
             self.chord = None;
         }
     }
-}
-
-/// The asymptotic step of [`log_model_step`] is taken only when it lands at kε ≥ this
-/// (ε = √(1 − M_R²)): its form assumes the Rayleigh pole's width ε ≫ 1/k (evidence:
-/// `docs/calibration.md`).
-pub(super) const MODEL_MIN_K_EPS: f64 = 5.0;
-
-/// A long first step above k = 1 from the asymptotic form of (33) for k ≫ 1: I2 ≈ 2g(V)/k and
-/// I1 ≈ (2/k³)(g(V)(ln 4k − 1) + J(ν, M_R)), so F(λ) ≈ 2λ − ln(λ + c) + d. The two constants
-/// are fitted to F and F′ at the iterate (λ + c = 1/(2 − F′)) and the model solved for the step
-/// Δ in `f64`: g(Δ) = F + 2Δ − ln(1 + Δ/(λ + c)) = 0 on the model's increasing branch
-/// λ + c + Δ > 1/2. g is convex there and g ≥ 0 at Newton's step, so Newton's method on g from
-/// that step falls monotonically to the root when one exists. `None` (a plain Newton step
-/// instead) below k = 1, where the Newton step is short (|F/F′| ≤ 10⁻²: the last steps stay
-/// Newton's, whose error the stopping rule assumes), where the fit does not apply (F′ ∉ (0, 2)),
-/// where the model has no root on its branch (far from the asymptotic regime, e.g. kε ≲ 1 near
-/// the Rayleigh speed), or where its step is not within a factor 4 of Newton's. The caller also
-/// drops it where it lands at kε < [`MODEL_MIN_K_EPS`].
-pub(super) fn log_model_step(lam: f64, f: f64, df: f64) -> Option<f64> {
-    let newton = -f / df;
-    if !(lam > 0.0 && newton.abs() > 1e-2 && df > 0.0 && df < 2.0) {
-        return None;
-    }
-    let q0 = 1.0 / (2.0 - df);
-    let g = |d: f64| f + 2.0 * d - (d / q0).ln_1p();
-    let mut d = newton;
-    // Converged when a step falls below 1e-10 (1 + |d|): then |g| ≤ 2·10⁻¹⁰(1 + |d|), as
-    // 0 < g′ ≤ 2 on the branch.
-    let mut converged = false;
-    for _ in 0..30 {
-        let step = g(d) / (2.0 - 1.0 / (q0 + d));
-        d -= step;
-        if (q0 + d).is_nan() || q0 + d <= 0.5 {
-            return None;
-        }
-        if step.abs() <= 1e-10 * (1.0 + d.abs()) {
-            converged = true;
-            break;
-        }
-    }
-    let ratio = d / newton;
-    (converged && (0.25..=4.0).contains(&ratio)).then_some(d)
 }
 
 /// An iterate with its F, F′ and integrals with their k-derivatives (the Hermite stop).

@@ -92,11 +92,14 @@ impl<T: Real> Newton<'_, T> {
     /// below it; from below, at most a factor e² below 1.
     #[inline]
     pub(super) fn probe_k_one(&mut self) -> Result<()> {
-        let near_rayleigh = self.lam.to_f64().exp() * self.pole_width < PROBE_BELOW_SEED_K_EPS;
+        // k0·ε_R in the working type: ε_R = √(1 − M_R²) may lie below the f64 range at MPFR.
+        let p = self.prec();
+        let pole_width = self.evaluator.speed().one_minus_mr2().clone().sqrt();
+        let near_rayleigh =
+            self.lam.clone().exp() * &pole_width < T::from_f64(PROBE_BELOW_SEED_K_EPS, p);
         if !(self.lam.is_positive() && (self.ratio.to_f64() < PROBE_BELOW_RATIO || near_rayleigh)) {
             return Ok(());
         }
-        let p = self.prec();
         let (zero, two) = (T::zero(p), T::from_i64(2, p));
         let (f, df, _) = self.eval(&zero, None, true)?;
         self.spent += 1;
