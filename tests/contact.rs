@@ -419,7 +419,31 @@ fn ratio_above_one_agrees_with_quadrature_and_uses_the_fast_route_below_k1() {
     }
 }
 
-/// Whatever path the solve takes (the k = 1 probe, the static start with the asymptotic step,
+/// The solve evaluates by the routing table users get: the route of its last evaluation is the
+/// route `integrals` with k-derivatives takes at the root, for each method, at roots below
+/// k = 1 (the fixed rule), above it (the graded rule) and far from it (k ≈ 10⁻³ and 10³).
+#[test]
+fn the_solve_routes_as_a_user_evaluation_does() {
+    let sp = Material::new(0.25).unwrap().speed(0.9).unwrap();
+    for method in [Method::Auto, Method::Fixed, Method::Adaptive] {
+        for ratio in [1e-5, 0.5, 2.0, 10.0, 1e5] {
+            let s = ellipse_by(&sp, &ratio, method);
+            let opts = IntegralOptions {
+                method,
+                derivatives: true,
+                ..Default::default()
+            };
+            let user = integrals(&sp, &s.k.value, &opts).unwrap();
+            assert_eq!(
+                s.integrals.route, user.route,
+                "{method:?} A1/B1 = {ratio}: the solve's route at k = {}",
+                s.k.value
+            );
+        }
+    }
+}
+
+/// Whatever path the solve takes (the k = 1 probe, the static start,
 /// the fast or graded routes, bisection), its k satisfies the shape equation (33): I2/I1 at the
 /// returned k, recomputed by the adaptive quadrature at double-double (an independent route at
 /// a higher precision), equals A1/B1 to within the conditioning of F = ln(I2/I1) in ln k times

@@ -2,10 +2,18 @@
 //! precision: [`integrals`] for one k, [`Evaluator`] for many k at one speed (the fixed rules'
 //! k-independent set-up kept between calls).
 //!
-//! **Which route runs.** [`Method::Auto`] takes, at k ≤ 1, the fixed rule ([`Route::FixedRule`],
-//! a-priori bound 16ε) and at k > 1 the graded rule ([`Route::GradedRule`], 32ε), when the
-//! tolerance allows their bound and k ≤ 2¹⁸⁰; otherwise the adaptive quadratures
-//! (the subtracted form (48) at k ≤ 1 when no derivatives are asked for). J0 comes with the
+//! **Which route runs.** One table (`Evaluator::route_for`) serves users and the ellipse
+//! solve alike. [`Method::Auto`] picks, for the axis ratio k and the tolerance t asked for
+//! (none: the working precision's floor), the first row that applies:
+//!
+//! | k | t | derivatives | route |
+//! |---|---|---|---|
+//! | k ≤ 1 | none, or ≥ 16ε | either | [`Route::FixedRule`] (a-priori bound 16ε) |
+//! | 1 < k ≤ 2¹⁸⁰ | none, or ≥ 32ε | either | [`Route::GradedRule`] (32ε) |
+//! | k ≤ 1 | (so 12ε ≤ t < 16ε) | no | [`Route::AdaptiveSubtracted`] ((48), its estimate) |
+//! | any | any | either | [`Route::Adaptive`] (its estimate) |
+//!
+//! A route that fails returns its error; no other route is tried. J0 comes with the
 //! derivatives from [`Route::Adaptive`] (one evaluation of G serves all five integrals), and
 //! otherwise as k² I1 + I2 from the route's I1, I2 (their integrands add up to J0's), so that
 //! I1 and I2 do not depend on whether J0 is asked for. A named method runs that route, and a
@@ -125,8 +133,8 @@ impl<T: Real> Evaluator<T> {
     /// the route's bound (16ε fixed rule, 32ε graded rule, the tolerance for the adaptive routes).
     pub fn at(&self, k: &T) -> Result<Integrals<T>> {
         let axes = AxisRatio::new(k.clone())?;
-        let route = self.route_for(&axes)?;
-        let r = self.run(route, &axes)?;
+        let route = self.route_for(&axes, self.opts.derivatives)?;
+        let r = self.run(route, &axes, self.opts.derivatives, false)?;
         self.check_tolerance(&r)?;
         self.with_j0(r, &axes).publish()
     }
@@ -151,13 +159,16 @@ impl<T: Real> Evaluator<T> {
         r
     }
 
-    /// The route for `axes`, checked against the method's domain before any work.
-    fn route_for(&self, axes: &AxisRatio<T>) -> Result<Route> {
+    /// The route for `axes`, with k-derivatives when `dk` asks for them: the one routing
+    /// table, for users ([`Evaluator::at`]) and the ellipse solve ([`Evaluator::for_newton`])
+    /// alike (the rule for [`Method::Auto`]: module docs). Checked against the method's domain
+    /// before any work.
+    #[inline]
+    fn route_for(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Route> {
         let p = axes.k.prec();
         let one = T::one(p);
         let below = axes.k <= one;
-        let fixed_range = in_fixed_range(&axes.k);
-        let dk = self.opts.derivatives;
+        let fixed_range = below || in_fixed_range(&axes.k);
         let bound_ok = |eps: i64| {
             self.tol
                 .as_ref()
@@ -199,8 +210,16 @@ impl<T: Real> Evaluator<T> {
         }
     }
 
-    /// Runs `route` at `axes`.
-    fn run(&self, route: Route, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
+    /// Runs `route` at `axes`, with k-derivatives when `dk` asks for them; `probe`: see
+    /// [`Evaluator::fixed`].
+    #[inline]
+    fn run(
+        &self,
+        route: Route,
+        axes: &AxisRatio<T>,
+        dk: bool,
+        probe: bool,
+    ) -> Result<Evaluation<T>> {
         let sp = &self.speed;
         let p = axes.k.prec();
         // The adaptive routes aim at half the tolerance (their estimate must meet it).
@@ -208,9 +227,8 @@ impl<T: Real> Evaluator<T> {
             .tol
             .clone()
             .map_or_else(|| T::zero(p), |t| t.mul_pow2(-1));
-        let dk = self.opts.derivatives;
         match route {
-            Route::FixedRule => self.fixed(axes, dk, false),
+            Route::FixedRule => self.fixed(axes, dk, probe),
             Route::GradedRule => self.graded(axes, dk),
             Route::Adaptive if dk => direct::contact_integrals(sp, axes, &tol),
             Route::Adaptive => direct::quadrature(sp, axes, &tol),
@@ -282,9 +300,9 @@ impl<T: Real> Evaluator<T> {
     }
 
     /// The ellipse solve's evaluation at a Newton iterate: I1, I2 and, with `dk`, their
-    /// k-derivatives, by the fixed rules wherever they apply (the graded rule above k = 1) unless
-    /// the method is [`Method::Adaptive`], by the adaptive quadrature (always with derivatives)
-    /// elsewhere — or, for [`Method::Fixed`], an error. `probe`: see [`Evaluator::fixed`].
+    /// k-derivatives, by the route [`Evaluator::route_for`] gives (an error of that route is
+    /// returned). The adaptive route forms the k-derivatives from the same evaluation of G as
+    /// the integrals, and gives them always. `probe`: see [`Evaluator::fixed`].
     #[inline]
     pub(crate) fn for_newton(
         &self,
@@ -292,19 +310,8 @@ impl<T: Real> Evaluator<T> {
         dk: bool,
         probe: bool,
     ) -> Result<Evaluation<T>> {
-        if self.opts.method != Method::Adaptive {
-            let r = if axes.k > T::one(axes.k.prec()) {
-                self.graded(axes, dk)
-            } else {
-                self.fixed(axes, dk, probe)
-            };
-            match r {
-                Ok(r) => return Ok(r),
-                Err(e) if self.opts.method == Method::Fixed => return Err(e),
-                Err(_) => {}
-            }
-        }
-        direct::contact_integrals(&self.speed, axes, &T::zero(axes.k.prec()))
+        let route = self.route_for(axes, dk)?;
+        self.run(route, axes, dk || route == Route::Adaptive, probe)
     }
 
     /// The method the options name.

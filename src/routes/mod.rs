@@ -125,7 +125,8 @@ impl std::fmt::Display for Route {
 /// adaptive quadratures otherwise.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Method {
-    /// The cheapest route that meets the request.
+    /// The cheapest route that meets the request, by a rule on k, the tolerance and the
+    /// derivatives asked for: the table in [`crate::routes::evaluate`]'s docs.
     #[default]
     Auto,
     /// [`Route::Series`] (I1, I2 only: no k-derivatives, no J0).

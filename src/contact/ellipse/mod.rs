@@ -1,0 +1,326 @@
+//! The shape of the contact ellipse, (33): given ν, M_R and the curvature ratio
+//! A1/B1 = R2/R1 (R1 the punch's radius of curvature along the motion, R2 across it), the axis
+//! ratio k = b/a (a along the motion, b across) solves
+//!
+//! ```text
+//! I2(k)/I1(k) = A1/B1.
+//! ```
+//!
+//! The solve runs in five stages, one file each, in the order they run:
+//!
+//! 1. **Check the inputs** (this file: [`check_ratio`], `checked_options`), before any work.
+//! 2. **Seed** (`seed.rs`): the static Hertz ellipse in closed form, or a neighbour's root (a
+//!    sweep's guess or the caller's seed); unseeded above k = 1, one evaluation at k = 1 tells
+//!    the root's side.
+//! 3. **Safeguarded Newton** (`newton.rs`) on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, at the
+//!    ladder's lowest stage (`f64`), with F′(λ) = k (I2′/I2 − I1′/I1) from the integrals'
+//!    k-derivatives: F increases with k (checked over ν, M_R and 10^-6 ≤ A1/B1 ≤ 10^6 in
+//!    `tests/contact.rs`), so a step leaving the bracket [lo, hi] of known signs is replaced by
+//!    bisection in λ. Once converging, a Newton step δ leaves an error ~δ²: the iteration stops
+//!    when 64δ² ≤ ε; the evaluation expected to be the last (64δ³ ≤ ε) skips the k-derivatives
+//!    and steps with the previous F′ (a chord step).
+//! 4. **Lift through the precision ladder** (`ladder.rs`): above `f64` the root and F′ of the
+//!    stage below (`f64`, then double-double above 106 bits, then the solve at p/2 + 32 bits
+//!    above 1024 bits) start the working precision, which takes chord steps with that F′ (each
+//!    contracts the error by F′'s accuracy) — at double-double one Halley step whose F″ comes by
+//!    a secant from the `f64` iterates: a few high-precision evaluations, no search.
+//! 5. **Final step and error bound** (`finish.rs`): I1, I2 carried from the last evaluation to
+//!    the root, one Newton step in k itself where |ln k| is large (e^λ's rounding), and the
+//!    bound on k from the last step, the integrals' bounds and the rounding.
+//!
+//! The thresholds and the evidence they were chosen on: `docs/calibration.md`. Tests:
+//! `tests/contact.rs` (the ladder's k within 10ε of a 320-bit adaptive-quadrature solve at f64,
+//! double-double and 256 bits), `tests/high_precision.rs` (2048 to 8192 bits, against the solve
+//! 256 bits higher), `tests/edges.rs` (|ln k| up to 2878).
+
+mod finish;
+mod ladder;
+mod newton;
+mod seed;
+
+pub(crate) use ladder::ShapeSolver;
+
+use crate::error::{Error, Result};
+use crate::estimate::{Estimated, RelError};
+use crate::physics::Speed;
+use crate::routes::{Evaluation, Integrals, Method};
+use crate::scalar::{check_finite, check_positive, short, Real};
+
+/// Which axis of the contact ellipse is the longer one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MajorAxis {
+    /// The semi-axis a, along the motion (k ≤ 1).
+    Along,
+    /// The semi-axis b, across the motion (k > 1).
+    Across,
+}
+
+impl MajorAxis {
+    /// `along` or `across`.
+    /// Names the axis of (33)'s major-axis convention; exact.
+    pub fn label(&self) -> &'static str {
+        match self {
+            MajorAxis::Along => "along",
+            MajorAxis::Across => "across",
+        }
+    }
+}
+
+/// Options of [`solve_ellipse`] (and of [`crate::contact::ContactProblem::solve`]): every
+/// field has a default, so a call names only what it changes,
+/// `Options { method: Method::Adaptive, ..Default::default() }`.
+#[derive(Clone, Debug)]
+pub struct Options<T> {
+    /// How the integrals are evaluated at each Newton iterate: [`Method::Auto`] (default: the
+    /// fixed rules where they apply, the adaptive quadrature elsewhere), [`Method::Fixed`] (the
+    /// fixed rules only; an iterate above k = 2¹⁸⁰ is an error) or [`Method::Adaptive`].
+    /// The series and the adaptive subtracted routes give no k-derivatives and are refused.
+    pub method: Method,
+    /// A starting value for k, positive and finite (else [`Error::NotFinite`] or
+    /// [`Error::Domain`] before any work). Without one (the default) the solve starts from the
+    /// static ellipse; with one, from the seed (rounded to `f64`), falling back to the static
+    /// ellipse when Newton's method does not converge from it within a few evaluations (or when
+    /// the seed rounds to 0 or ∞ in `f64`). Either way,
+    /// above `f64` the solve climbs the precision ladder (`f64`, then double-double, above 1024
+    /// bits stages at about half the precision of the next, then the working precision: a few
+    /// high-precision evaluations, no search).
+    pub seed: Option<T>,
+    /// The relative accuracy wanted for k; `None` (the default) asks for the working
+    /// precision's floor (a few ε). A tolerance below 4ε is refused before any work
+    /// ([`Error::Unreachable`]); one above 2⁻²⁰ ≈ 10⁻⁶ is met as 2⁻²⁰ (the loosest the
+    /// stopping rules' error model covers). Either way every bound returned holds: k's, and
+    /// I1's and I2's, which include their carry from the last evaluation to the root.
+    pub tolerance: Option<RelError>,
+}
+
+impl<T> Default for Options<T> {
+    fn default() -> Self {
+        Options {
+            method: Method::Auto,
+            seed: None,
+            tolerance: None,
+        }
+    }
+}
+
+/// The solved shape of the contact ellipse (33), each quantity with a bound on its error.
+#[derive(Clone, Debug)]
+pub struct Ellipse<T: Real> {
+    /// k = b/a (b across the motion, a along it), with a bound on its relative error for the
+    /// inputs as represented at the working precision (see [`solve_ellipse`] for the speed's
+    /// rounding).
+    pub k: Estimated<T>,
+    /// The eccentricity √(1 − (minor/major)²) ∈ [0, 1). Its bound is on the *absolute* error
+    /// |ẽ − e| (e vanishes for a circular contact, where δe ≈ δk/e: a relative bound would be
+    /// unbounded there); since e < 1 it also bounds e's error relative to 1.
+    pub e: Estimated<T>,
+    /// Which axis is the major one.
+    pub major: MajorAxis,
+    /// I1, I2 at the solution (normalisation of (37)) with their k-derivatives (when known to
+    /// at least one digit) and the route of the last evaluation.
+    pub integrals: Integrals<T>,
+    /// Evaluations of the integrals at the working precision (above `f64` the precision
+    /// ladder's lower stages come on top: an evaluation at `f64` or double-double costs a small
+    /// fraction of one at the working precision, one at the half-precision stage above 1024
+    /// bits about a fifth).
+    pub iterations: usize,
+}
+
+/// The solve's internal result: k, the integrals at k, the error estimate of k, the work.
+#[derive(Clone, Debug)]
+pub(crate) struct Shape<T: Real> {
+    k: T,
+    integrals: Evaluation<T>,
+    error_estimate: T,
+    iterations: usize,
+}
+
+impl<T: Real> Shape<T> {
+    /// The public result: e and its absolute bound from k's, everything checked finite.
+    pub(crate) fn publish(self) -> Result<Ellipse<T>> {
+        let p = self.k.prec();
+        let one = T::one(p);
+        let (q, major) = if self.k <= one {
+            (self.k.clone(), MajorAxis::Along)
+        } else {
+            (self.k.clone().recip(), MajorAxis::Across)
+        };
+        let e = ((one.clone() - &q) * (one + &q)).sqrt();
+        // δ(e²) = 2q²·δk/k; |δe| ≤ min(δ(e²)/(2e), √δ(e²)), plus e's own rounding (4ε·e),
+        // formed at the working precision (which holds any bound without underflow).
+        let de2 = q.square().mul_i64(2) * &self.error_estimate;
+        let root = de2.clone().sqrt();
+        let de = if e.is_positive() {
+            (de2 / e.clone().mul_i64(2)).min_of(root)
+        } else {
+            root
+        };
+        let e_err = de + &(T::epsilon(p).mul_i64(4) * &e);
+        if !(self.k.is_finite() && self.error_estimate.is_finite() && e_err.is_finite()) {
+            return Err(Error::NoConvergence {
+                what: "the axis ratio k",
+                iterations: self.iterations,
+                reached: format!(
+                    "k = {}, estimate {}",
+                    short(&self.k),
+                    short(&self.error_estimate)
+                ),
+            });
+        }
+        Ok(Ellipse {
+            k: Estimated::new(self.k, RelError::of(&self.error_estimate)),
+            e: Estimated::absolute(e, RelError::of(&e_err)),
+            major,
+            integrals: self.integrals.without_poor_extras().publish()?,
+            iterations: self.iterations,
+        })
+    }
+}
+
+/// Checks a curvature ratio A1/B1 = R2/R1: positive, finite and within the supported range
+/// [10⁻¹⁰⁰, 10¹⁰⁰] ([`RATIO_RANGE`]), before any work.
+/// The domain of the shape equation (33) as solved here; exact comparisons on the value as given.
+pub fn check_ratio<T: Real>(ratio: &T) -> Result<()> {
+    check_finite("curvature ratio A1/B1", ratio)?;
+    if !ratio.is_positive() {
+        return Err(Error::Domain {
+            name: "curvature ratio A1/B1 = R2/R1",
+            value: short(ratio),
+            bound: "(0, inf)",
+        });
+    }
+    // Compared in f64, so that the decimal ends typed at any precision are inside.
+    let (lo, hi) = RATIO_RANGE;
+    let r = ratio.to_f64();
+    if !(lo..=hi).contains(&r) {
+        return Err(Error::Domain {
+            name: "curvature ratio A1/B1 = R2/R1",
+            value: short(ratio),
+            bound: "[1e-100, 1e100], the supported range (beyond it the axis ratio k passes 1e-50 or 1e50, where the quadrature overflows f64 and takes a minute at 256 bits)",
+        });
+    }
+    Ok(())
+}
+
+/// The supported curvature ratios A1/B1: a solve inside costs at most about 100 solves at
+/// A1/B1 ~ 1 at 256 bits and a few at `f64` (evidence: `docs/calibration.md`).
+pub const RATIO_RANGE: (f64, f64) = (1e-100, 1e100);
+
+/// Solves (33), I2(k)/I1(k) = A1/B1, for the axis ratio k = b/a at the working precision of
+/// `ratio` = A1/B1 = R2/R1, for the material and speed of `speed`.
+///
+/// Without a seed (the default) the solve climbs the precision ladder above `f64`
+/// (the precision ladder of the module docs): a few evaluations of the integrals at the
+/// working precision, no search.
+///
+/// Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit quadrature solve,
+/// `tests/contact.rs`; within 4ε where |ln k| is large, up to 2878 at 256 bits,
+/// `tests/edges.rs`), I1, I2 at k to a few ε, with error bounds that include their carry
+/// from the last evaluation to the root (`every_bound_holds_at_any_tolerance`). The bound on k
+/// is for the inputs as represented at the working precision: near the Rayleigh speed k is
+/// ill-conditioned in M_R (condition number ~M_R/(4(1 − M_R))) but well conditioned in the gap
+/// 1 − M_R, which a speed made by [`crate::physics::Material::parse_speed`] or
+/// [`crate::physics::Material::speed_from_gap`] carries to within ε.
+///
+/// Errors: [`Error::Domain`] for a ratio that is not positive and finite, for the series or the
+/// adaptive subtracted method (no k-derivatives); [`Error::Precision`] above 32,768 bits (the
+/// rules' limit), before any work; [`Error::Unreachable`] for a tolerance below 4ε;
+/// [`Error::NoConvergence`] if Newton's method fails (not observed).
+pub fn solve_ellipse<T: Real>(
+    speed: &Speed<T>,
+    ratio: &T,
+    opts: &Options<T>,
+) -> Result<Ellipse<T>> {
+    check_ratio(ratio)?;
+    let tol = checked_options(opts, ratio.prec())?;
+    ShapeSolver::new(speed, opts.method)?
+        .solve(ratio, tol, opts.seed.as_ref(), None)?
+        .publish()
+}
+
+/// The checks of [`solve_ellipse`] that the options and the precision decide, before any work:
+/// a precision the quadrature rules are built for (at most
+/// [`crate::numerics::quadrature::MAX_RULE_BITS`]), a method that gives k-derivatives, a
+/// tolerance not below 4ε, a seed that is a positive finite number. Returns the tolerance at
+/// the working precision `p` (`None`: its floor).
+pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<Option<T>> {
+    crate::numerics::quadrature::check_rule_bits(T::bits(p))?;
+    if let Some(seed) = &opts.seed {
+        check_positive("seed for the axis ratio k", seed)?;
+    }
+    if matches!(opts.method, Method::Series | Method::AdaptiveSubtracted) {
+        return Err(Error::Domain {
+            name: "method for the ellipse solve",
+            value: opts.method.label().into(),
+            bound: "auto, adaptive or fixed (the series and adaptive-subtracted routes give no k-derivatives)",
+        });
+    }
+    if let Some(t) = opts.tolerance {
+        let floor = RelError::eps::<T>(4, p);
+        if t < floor {
+            return Err(Error::Unreachable {
+                what: "the axis ratio k",
+                tolerance: t.to_string(),
+                reason: format!("below 4 eps = {floor} of the working precision"),
+            });
+        }
+    }
+    Ok(opts.tolerance.map(|t| {
+        t.min(RelError::pow2(LOOSEST_TOLERANCE_LOG2))
+            .to_real::<T>(p)
+    }))
+}
+
+/// The loosest tolerance on k the solve works to, 2⁻²⁰ ≈ 10⁻⁶: a looser one is met as this
+/// one. The stopping rules' error model (an error ~δ² after a Newton step δ) and the
+/// integrals' carry from the last iterate to the root ([`carry_error`], Hermite's
+/// [`hermite_root`]) hold for the steps they allow here; at `f64` a solve to 2⁻²⁰ costs about
+/// two evaluations fewer than one to the working precision's floor.
+const LOOSEST_TOLERANCE_LOG2: i64 = -20;
+
+/// F(λ) = ln(I2/(I1·A1/B1)) of the shape equation (33), whose root in λ = ln k the solve finds
+/// (the quotient formed first, so that F near its root carries a few ε absolute).
+#[inline]
+fn shape_residual<T: Real>(ci: &Evaluation<T>, ratio: &T) -> T {
+    (ci.i2.clone() / &ci.i1 / ratio).ln()
+}
+
+/// F′ = dF/dλ = k (I2′/I2 − I1′/I1) at k from the k-derivatives of `ci`.
+#[inline]
+fn shape_slope<T: Real>(k: &T, ci: &Evaluation<T>) -> T {
+    k.clone() * (ci.di2_dk() / &ci.i2 - ci.di1_dk() / &ci.i1)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::seed::static_seed;
+    use super::*;
+
+    /// The seeds' stated accuracy against the static root (M_R = 0): the k ≫ 1 form within
+    /// 1.5 % at A1/B1 = 30 and 0.01 % at 10⁶, Hamrock & Brewe's 2.3× too large at 10⁶.
+    #[test]
+    fn static_seeds_against_the_static_root() {
+        let mat = crate::physics::Material::new(0.2f64).unwrap();
+        let sp = mat.speed(0.0).unwrap();
+        let solve = |ratio: f64| {
+            solve_ellipse(&sp, &ratio, &Options::default())
+                .unwrap()
+                .k
+                .value
+        };
+        for (ratio, tol) in [(30.0, 0.015), (1e3, 0.002), (1e6, 1e-4)] {
+            let k = solve(ratio);
+            let seed = static_seed(ratio);
+            assert!(
+                (seed / k - 1.0).abs() <= tol,
+                "A1/B1 = {ratio}: seed {seed}, root {k}"
+            );
+        }
+        let k = solve(1e6);
+        let hb = 1e6f64.powf(std::f64::consts::FRAC_2_PI);
+        assert!(
+            hb / k > 2.2 && hb / k < 2.4,
+            "Hamrock & Brewe {hb} against {k}"
+        );
+    }
+}
