@@ -1,0 +1,33 @@
+//! `moving_hertz._native`: the native module of the Python package `moving_hertz` (PyO3).
+//!
+//! The pure-Python package (`python/moving_hertz/`) is the public interface: it converts the
+//! numbers it accepts into floats or exact text, calls these entries, and builds the result
+//! objects and exceptions. Each entry parses and solves with the GIL released and never lets a
+//! panic unwind into the interpreter (`fail::guard`): a panic becomes `MovingHertzError`.
+//! Implements no formula of its own: every number comes from the `moving-hertz` crate.
+
+mod fail;
+mod input;
+mod out;
+mod single;
+mod sweeps;
+
+use pyo3::prelude::*;
+
+/// The native entries of `moving_hertz` (use the package's functions, which document them).
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(single::precision_info, m)?)?;
+    m.add_function(wrap_pyfunction!(single::rayleigh, m)?)?;
+    m.add_function(wrap_pyfunction!(single::ellipse, m)?)?;
+    m.add_function(wrap_pyfunction!(single::contact, m)?)?;
+    m.add_function(wrap_pyfunction!(single::integrals_of, m)?)?;
+    m.add_function(wrap_pyfunction!(single::symbolic, m)?)?;
+    m.add_function(wrap_pyfunction!(sweeps::sweep_ellipses, m)?)?;
+    m.add_function(wrap_pyfunction!(sweeps::sweep_contacts, m)?)?;
+    m.add_function(wrap_pyfunction!(sweeps::sweep_integrals, m)?)?;
+    let routes: Vec<&str> = sweeps::ROUTES.iter().map(|r| r.label()).collect();
+    m.add("ROUTES", routes)?;
+    m.add("BLOCK", moving_hertz::sweep::BLOCK)?;
+    Ok(())
+}
