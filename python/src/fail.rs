@@ -79,11 +79,36 @@ impl Fail {
 
 impl From<Error> for Fail {
     fn from(error: Error) -> Fail {
-        Fail::Lib {
-            error,
-            argument: None,
-        }
+        let argument = match &error {
+            // A precision the quadrature rules are not built for is refused by the solve.
+            Error::Precision { .. } => Some("precision"),
+            Error::Domain { name, .. } | Error::NotFinite { name, .. } => argument_of(name),
+            // Only a tolerance asked for can be unreachable.
+            Error::Unreachable { .. } => Some("tol"),
+            _ => None,
+        };
+        Fail::Lib { error, argument }
     }
+}
+
+/// The Python keyword of an input the library names in an error (`None`: a result or an
+/// intermediate quantity, not an input).
+fn argument_of(name: &str) -> Option<&'static str> {
+    const KEYWORDS: [(&str, &str); 9] = [
+        ("method", "method"),
+        ("curvature ratio", "ratio"),
+        ("radius along", "radius_along"),
+        ("radius across", "radius_across"),
+        ("shear modulus", "shear_modulus"),
+        ("load P", "load"),
+        ("approach d0", "approach"),
+        ("relative tolerance", "tol"),
+        ("axis ratio", "k"),
+    ];
+    KEYWORDS
+        .iter()
+        .find(|(start, _)| name.starts_with(start))
+        .map(|(_, keyword)| *keyword)
 }
 
 /// The exception class of a library error.

@@ -14,6 +14,15 @@ mod sweeps;
 
 use pyo3::prelude::*;
 
+/// Runs a panic inside [`fail::guard`], as every entry runs its work: the check (by the
+/// package's tests) that a panic reaches Python as `MovingHertzError`, never as an abort or a
+/// `PanicException`.
+#[pyfunction]
+fn _panic_through_guard(py: Python<'_>, message: &str) -> PyResult<()> {
+    let r = py.detach(|| fail::guard(|| -> Result<(), fail::Fail> { panic!("{message}") }));
+    fail::to_py(py, r)
+}
+
 /// The native entries of `moving_hertz` (use the package's functions, which document them).
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -26,6 +35,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweeps::sweep_ellipses, m)?)?;
     m.add_function(wrap_pyfunction!(sweeps::sweep_contacts, m)?)?;
     m.add_function(wrap_pyfunction!(sweeps::sweep_integrals, m)?)?;
+    m.add_function(wrap_pyfunction!(_panic_through_guard, m)?)?;
     let routes: Vec<&str> = sweeps::ROUTES.iter().map(|r| r.label()).collect();
     m.add("ROUTES", routes)?;
     m.add("BLOCK", moving_hertz::sweep::BLOCK)?;
