@@ -121,25 +121,47 @@ def test_progress_callback():
         mh.sweep_ellipses(0.25, speed=0.9, ratio=1.0, threads=0)
 
 
+def _runs_beside(work):
+    """How often the main thread ran (1 ms sleeps) while ``work`` ran in another thread: with
+    the GIL held through the native call it could not run at all until the call returned."""
+    done = threading.Event()
+
+    def run():
+        work()
+        done.set()
+
+    t = threading.Thread(target=run)
+    t.start()
+    ticks = 0
+    while not done.is_set():
+        ticks += 1
+        time.sleep(0.001)
+    t.join()
+    return ticks
+
+
 def test_sweeps_release_the_gil():
-    """Two threads start a sweep each at a barrier: with the GIL held by the first, the
-    second could not even take its start time before the first returned; released, the two
-    calls overlap."""
-    ratio = np.geomspace(0.01, 100, 3000)
-    barrier = threading.Barrier(2)
+    """One chunk of double-double solves (no progress calls, so no return to Python before
+    its end) in a thread while the main thread keeps running; and two such sweeps in two
+    threads overlap in time."""
+    ratio = np.geomspace(0.01, 100, 2000)
+    sweep = lambda: mh.sweep_ellipses(0.25, gap=1e-6, ratio=ratio, precision="dd", threads=1)
+    assert _runs_beside(sweep) >= 5
     spans = []
 
-    def work():
-        barrier.wait()
+    def timed():
         t0 = time.perf_counter()
-        mh.sweep_ellipses(0.25, gap=1e-6, ratio=ratio, precision="dd", threads=1)
+        sweep()
         spans.append((t0, time.perf_counter()))
 
-    threads = [threading.Thread(target=work) for _ in range(2)]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
+    def two():
+        threads = [threading.Thread(target=timed) for _ in range(2)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+
+    assert _runs_beside(two) >= 5
     (a0, a1), (b0, b1) = spans
     assert b0 < a1 and a0 < b1, spans
 
@@ -147,17 +169,5 @@ def test_sweeps_release_the_gil():
 def test_single_solves_release_the_gil():
     """A 4096-bit solve in a thread leaves the interpreter free: the main thread runs
     meanwhile."""
-    done = threading.Event()
-
-    def work():
-        mh.solve_ellipse(0.25, speed="0.999", ratio=2, precision=4096)
-        done.set()
-
-    t = threading.Thread(target=work)
-    t.start()
-    ticks = 0
-    while not done.is_set():
-        ticks += 1
-        time.sleep(0.001)
-    t.join()
-    assert ticks >= 5
+    assert _runs_beside(lambda: mh.solve_ellipse(0.25, speed="0.999", ratio=2,
+                                                 precision=4096)) >= 5
