@@ -122,6 +122,55 @@ pub fn speed<T: Real>(mat: &Material<T>, x: &Num, kind: SpeedKind) -> Result<Spe
     }
 }
 
+/// The last speed made on this thread, with what it was made from: repeated calls at one
+/// material and speed (a loop over ratios) skip the Rayleigh roots and the Green's function's
+/// set-up, as a Rust caller holding its `Speed` does.
+type Cached = (Precision, Num, Num, SpeedKind, Box<dyn std::any::Any>);
+
+thread_local! {
+    static LAST_SPEED: std::cell::RefCell<Option<Cached>> = const { std::cell::RefCell::new(None) };
+}
+
+/// [`material`] then [`speed`], or a copy of the last speed made on this thread from the same
+/// inputs at the same precision (the same bits: the inputs decide them).
+pub fn cached_speed<T: Real>(
+    nu: &Num,
+    x: &Num,
+    kind: SpeedKind,
+    p: T::Prec,
+) -> Result<Speed<T>, Fail> {
+    let prec = Precision::of::<T>(p);
+    let hit = LAST_SPEED.with(|c| {
+        c.borrow().as_ref().and_then(|(q, n, v, k, speed)| {
+            let same = *q == prec && same_num(n, nu) && same_num(v, x) && *k == kind;
+            same.then(|| speed.downcast_ref::<Speed<T>>().cloned())
+                .flatten()
+        })
+    });
+    if let Some(s) = hit {
+        return Ok(s);
+    }
+    let made = speed(&material::<T>(nu, p)?, x, kind)?;
+    let entry = (
+        prec,
+        nu.clone(),
+        x.clone(),
+        kind,
+        Box::new(made.clone()) as Box<dyn std::any::Any>,
+    );
+    LAST_SPEED.with(|c| *c.borrow_mut() = Some(entry));
+    Ok(made)
+}
+
+/// Whether two inputs are the same number as given (a float by its bits, text as typed).
+pub fn same_num(a: &Num, b: &Num) -> bool {
+    match (a, b) {
+        (Num::F(x), Num::F(y)) => x.to_bits() == y.to_bits(),
+        (Num::T(x), Num::T(y)) => x == y,
+        _ => false,
+    }
+}
+
 /// A positive quantity (a ratio, k, a radius, a load, a modulus) at precision `p`, as the
 /// command-line tool takes it: refused naming `argument` unless it is positive (checked
 /// exactly for text) and its rounded value a finite normal number of the working precision

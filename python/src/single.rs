@@ -25,6 +25,16 @@ pub fn precision_info(py: Python<'_>, precision: &str) -> PyResult<(String, u32)
     Ok((p.label(), p.bits()))
 }
 
+/// Runs `f` with the GIL released above double-double (an MPFR solve takes from tens of
+/// microseconds to seconds); at `f64` and double-double, where a solve takes a few
+/// microseconds, releasing and taking back the GIL would cost a sizeable share of the call.
+fn detach_above_dd<R: Send>(py: Python<'_>, prec: Precision, f: impl FnOnce() -> R + Send) -> R {
+    match prec {
+        Precision::Mpfr(_) => py.detach(f),
+        _ => f(),
+    }
+}
+
 /// Whether numbers go back as text: above `f64`, or when asked for.
 fn as_text(prec: Precision, text: bool) -> bool {
     text || prec != Precision::F64
@@ -76,8 +86,8 @@ pub fn ellipse<'py>(
     let prec = to_py(py, input::precision(precision))?;
     let method = to_py(py, self::method(method))?;
     with_precision!(prec, T, p => {
-        let sol = py.detach(|| guard(|| {
-            let speed = input::speed(&input::material::<T>(&nu, p)?, &sp, kind)?;
+        let sol = detach_above_dd(py, prec, || guard(|| {
+            let speed = input::cached_speed::<T>(&nu, &sp, kind, p)?;
             let ratio: T = input::positive(&ratio, "ratio", p)?;
             let opts = Options::<T> { method, ..Default::default() };
             Ok(solve_ellipse(&speed, &ratio, &opts)?)
@@ -126,8 +136,8 @@ pub fn contact<'py>(
     let prec = to_py(py, input::precision(precision))?;
     let method = to_py(py, self::method(method))?;
     with_precision!(prec, T, p => {
-        let sol = py.detach(|| guard(|| {
-            let speed = input::speed(&input::material::<T>(&nu, p)?, &sp, kind)?;
+        let sol = detach_above_dd(py, prec, || guard(|| {
+            let speed = input::cached_speed::<T>(&nu, &sp, kind, p)?;
             let size: T = input::positive(&size, size_name, p)?;
             let problem = ContactProblem {
                 speed,
@@ -210,8 +220,8 @@ pub fn integrals_of<'py>(
         return with_precision!(r.precision, T, p => report(py, &narrow::<T>(r, p), text));
     };
     with_precision!(prec, T, p => {
-        let r = py.detach(|| guard(|| {
-            let speed = input::speed(&input::material::<T>(&nu, p)?, &sp, kind)?;
+        let r = detach_above_dd(py, prec, || guard(|| {
+            let speed = input::cached_speed::<T>(&nu, &sp, kind, p)?;
             let k: T = input::positive(&k, "k", p)?;
             let opts = IntegralOptions { method: req.method, tolerance: req.tol, derivatives: req.derivatives, j0: req.j0 };
             Ok(integrals(&speed, &k, &opts)?)

@@ -359,7 +359,9 @@ fn contact_problems<T: Real>(
         let problem = (|| -> Result<ContactProblem<T>, Fail> {
             let (nu_i, sp_i) = (nu.num(i), sp.num(i));
             let speed = match &last {
-                Some((a, b, s)) if same(a, &nu_i) && same(b, &sp_i) => s.clone(),
+                Some((a, b, s)) if input::same_num(a, &nu_i) && input::same_num(b, &sp_i) => {
+                    s.clone()
+                }
                 _ => input::speed(&input::material::<T>(&nu_i, p)?, &sp_i, kind)?,
             };
             last = Some((nu_i, sp_i, speed.clone()));
@@ -391,15 +393,6 @@ fn contact_problems<T: Real>(
         }));
     }
     Ok((problems, pre))
-}
-
-/// Whether two inputs are the same number as given.
-fn same(a: &Num, b: &Num) -> bool {
-    match (a, b) {
-        (Num::F(x), Num::F(y)) => x.to_bits() == y.to_bits(),
-        (Num::T(x), Num::T(y)) => x == y,
-        _ => false,
-    }
 }
 
 /// `sweep::contacts` over the columns: per point a, b, k, e, p0, d0, load with their bounds,
