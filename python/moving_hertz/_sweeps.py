@@ -35,6 +35,9 @@ class SweepResult:
     def __setattr__(self, name, value):
         raise AttributeError("a SweepResult is immutable")
 
+    def __reduce__(self):
+        return (SweepResult, (self._d,))
+
     def __dir__(self):
         return sorted(self._d)
 
@@ -142,7 +145,10 @@ def result(native, shape, fields, keep, counts, precision, as_text):
         out[name] = np.ma.masked_array(arr.reshape(shape), mask=mask)
     out[counts] = native["iterations"].reshape(shape)
     out["route"] = native["route"].reshape(shape)
-    out["messages"] = np.array(native["messages"] + [None], dtype=object)[:-1].reshape(shape)
+    messages = np.full(ok.size, None, dtype=object)
+    for i, m in native["failures"]:
+        messages[i] = m
+    out["messages"] = messages.reshape(shape)
     out["precision"] = prec_label
     out["bits"] = bits
     return SweepResult(out)

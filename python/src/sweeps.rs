@@ -10,7 +10,7 @@
 //! positive) is handed to the library as a point it refuses too (ν = NaN), so that the blocks
 //! are the same whatever the inputs, and carries the binding's message.
 
-use crate::fail::{guard, panic_text, to_py, Fail};
+use crate::fail::{guard, to_py, Fail};
 use crate::input::{self, Num, SpeedKind};
 use crate::single::method;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
@@ -22,6 +22,7 @@ use moving_hertz::{
 use numpy::{IntoPyArray, PyReadonlyArray1};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
+use std::ops::Range;
 use std::sync::{Arc, Mutex};
 
 /// Points per chunk: 256 blocks.
@@ -80,7 +81,8 @@ pub struct Columns {
     iterations: Vec<i64>,
     route: Vec<i8>,
     ok: Vec<bool>,
-    messages: Vec<Option<String>>,
+    /// The failed points: (index, message).
+    failures: Vec<(usize, String)>,
 }
 
 impl Columns {
@@ -97,7 +99,7 @@ impl Columns {
             iterations: Vec::with_capacity(n),
             route: Vec::with_capacity(n),
             ok: Vec::with_capacity(n),
-            messages: Vec::with_capacity(n),
+            failures: Vec::new(),
         }
     }
 
@@ -126,7 +128,6 @@ impl Columns {
                 .map_or(-1, |i| i as i8),
         );
         self.ok.push(true);
-        self.messages.push(None);
     }
 
     /// A failed point with its message.
@@ -135,11 +136,12 @@ impl Columns {
         self.s.iter_mut().for_each(|c| c.push(String::new()));
         self.iterations.push(-1);
         self.route.push(-1);
+        self.failures.push((self.ok.len(), message));
         self.ok.push(false);
-        self.messages.push(Some(message));
     }
 
-    /// `{"values": [...], "iterations", "route", "ok", "messages"}` for the Python layer.
+    /// `{"values": [...], "iterations", "route", "ok", "failures": [(index, message)]}` for the
+    /// Python layer.
     fn into_py<'py>(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = PyDict::new(py);
         let values = PyList::empty(py);
@@ -153,7 +155,7 @@ impl Columns {
         d.set_item("iterations", self.iterations.into_pyarray(py))?;
         d.set_item("route", self.route.into_pyarray(py))?;
         d.set_item("ok", self.ok.into_pyarray(py))?;
-        d.set_item("messages", PyList::new(py, self.messages)?)?;
+        d.set_item("failures", PyList::new(py, self.failures)?)?;
         Ok(d)
     }
 }
@@ -182,46 +184,48 @@ fn pool(threads: Option<usize>) -> Result<Option<Arc<rayon::ThreadPool>>, Fail> 
     Ok(Some(p))
 }
 
-/// Solves `items` chunk by chunk with the GIL released (on `pool`, if any), hands each result
-/// to `collect`, and calls `progress(done, total)` between chunks.
-fn in_chunks<I: Sync, R: Send>(
+/// Builds and solves the points `0..n` chunk by chunk with the GIL released (on `pool`, if
+/// any): `build` makes a chunk's points with the binding's message for each point it refuses,
+/// `solve` runs the library's sweep, `collect` takes each result or message in order; calls
+/// `progress(done, n)` between chunks. Only one chunk's points and results are held at once.
+fn in_chunks<I: Send + Sync, R: Send>(
     py: Python<'_>,
-    items: &[I],
+    n: usize,
     threads: Option<usize>,
     progress: Option<&Bound<'_, PyAny>>,
+    build: impl Fn(Range<usize>) -> Result<Built<I>, Fail> + Sync + Send,
     solve: impl Fn(&[I]) -> Vec<moving_hertz::Result<R>> + Sync + Send,
-    mut collect: impl FnMut(usize, moving_hertz::Result<R>) + Send,
+    mut collect: impl FnMut(Result<R, String>) + Send,
 ) -> PyResult<()> {
     let pool = to_py(py, pool(threads))?;
     let mut done = 0;
-    for chunk in items.chunks(CHUNK) {
+    while done < n {
+        let range = done..(done + CHUNK).min(n);
         let r = py.detach(|| {
-            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            guard(|| {
+                let (items, pre) = build(range.clone())?;
                 let out = match &pool {
-                    Some(p) => p.install(|| solve(chunk)),
-                    None => solve(chunk),
+                    Some(p) => p.install(|| solve(&items)),
+                    None => solve(&items),
                 };
-                for (i, r) in out.into_iter().enumerate() {
-                    collect(done + i, r);
+                for (r, pre) in out.into_iter().zip(pre) {
+                    collect(r.map_err(|e| pre.unwrap_or_else(|| e.to_string())));
                 }
-            }))
+                Ok(())
+            })
         });
-        if let Err(payload) = r {
-            return Err(Fail::Panic(panic_text(payload.as_ref())).into_py(py));
-        }
-        done += chunk.len();
+        to_py(py, r)?;
+        done = range.end;
         py.check_signals()?;
         if let Some(cb) = progress {
-            cb.call1((done, items.len()))?;
+            cb.call1((done, n))?;
         }
     }
     Ok(())
 }
 
-/// A message for a failed point: the binding's own (inputs it refused) or the library's.
-fn message(pre: &[Option<String>], i: usize, e: &moving_hertz::Error) -> String {
-    pre[i].clone().unwrap_or_else(|| e.to_string())
-}
+/// A chunk's points and the binding's message for each point it refused (`None`: valid).
+type Built<I> = (Vec<I>, Vec<Option<String>>);
 
 /// The columns' common length, or a refusal.
 fn common_len(cols: &[&Col]) -> Result<usize, Fail> {
@@ -238,18 +242,15 @@ fn common_len(cols: &[&Col]) -> Result<usize, Fail> {
 }
 
 /// The ellipse points at precision `p`, with the binding's message for each point it refuses.
-#[allow(clippy::type_complexity)]
 fn ellipse_points<T: Real>(
-    nu: &Col,
-    sp: &Col,
+    [nu, sp, ratio]: &[Col; 3],
     kind: SpeedKind,
-    ratio: &Col,
+    range: Range<usize>,
     p: T::Prec,
-) -> Result<(Vec<EllipsePoint<T>>, Vec<Option<String>>), Fail> {
-    let n = common_len(&[nu, sp, ratio])?;
-    let mut points = Vec::with_capacity(n);
-    let mut pre = vec![None; n];
-    for (i, slot) in pre.iter_mut().enumerate() {
+) -> Result<Built<EllipsePoint<T>>, Fail> {
+    let mut points = Vec::with_capacity(range.len());
+    let mut pre = vec![None; range.len()];
+    for (i, slot) in range.zip(pre.iter_mut()) {
         let point = (|| -> Result<EllipsePoint<T>, Fail> {
             let nu = match nu {
                 Col::F(v) => T::from_f64(v[i], p),
@@ -322,40 +323,39 @@ pub fn sweep_ellipses<'py>(
             Col::from_py(ratio, "ratio")?,
         ])
     })();
-    let [nu, sp, ratio] = to_py(py, cols)?;
+    let cols = to_py(py, cols)?;
+    let n = to_py(py, common_len(&cols.iter().collect::<Vec<_>>()))?;
     let prec = to_py(py, input::precision(precision))?;
     let method = to_py(py, self::method(method))?;
     let text = text || prec != Precision::F64;
     with_precision!(prec, T, p => {
-        let built = py.detach(|| guard(|| ellipse_points::<T>(&nu, &sp, kind, &ratio, p)));
-        let (points, pre) = to_py(py, built)?;
         let opts = Options::<T> { method, ..Default::default() };
-        let mut cols = Columns::new(4, points.len(), text);
-        in_chunks(py, &points, threads, progress, |c| sweep::ellipses(c, &opts), |i, r| match r {
-            Ok(s) => cols.push(&[Some(&s.k), Some(&s.e), Some(&s.integrals.i1), Some(&s.integrals.i2)], s.iterations, s.integrals.route),
-            Err(e) => cols.fail(message(&pre, i, &e)),
+        let mut out = Columns::new(4, n, text);
+        let build = |r| ellipse_points::<T>(&cols, kind, r, p);
+        in_chunks(py, n, threads, progress, build, |c| sweep::ellipses(c, &opts), |r| match r {
+            Ok(s) => out.push(&[Some(&s.k), Some(&s.e), Some(&s.integrals.i1), Some(&s.integrals.i2)], s.iterations, s.integrals.route),
+            Err(m) => out.fail(m),
         })?;
-        cols.into_py(py)
+        out.into_py(py)
     })
 }
 
 /// The contact problems at precision `p`, with the binding's message for each it refuses.
-#[allow(clippy::type_complexity)]
 fn contact_problems<T: Real>(
     cols: &[Col; 6],
     kind: SpeedKind,
     by_load: bool,
+    range: Range<usize>,
     p: T::Prec,
-) -> Result<(Vec<ContactProblem<T>>, Vec<Option<String>>), Fail> {
+) -> Result<Built<ContactProblem<T>>, Fail> {
     let [nu, sp, r1, r2, size, mu] = cols;
-    let n = common_len(&cols.iter().collect::<Vec<_>>())?;
     let zero = T::zero(p);
     let fallback = Material::new(zero.clone())?.speed(zero)?;
     let size_name = if by_load { "load" } else { "approach" };
     let mut last: Option<(Num, Num, Speed<T>)> = None;
-    let mut problems = Vec::with_capacity(n);
-    let mut pre = vec![None; n];
-    for (i, slot) in pre.iter_mut().enumerate() {
+    let mut problems = Vec::with_capacity(range.len());
+    let mut pre = vec![None; range.len()];
+    for (i, slot) in range.zip(pre.iter_mut()) {
         let problem = (|| -> Result<ContactProblem<T>, Fail> {
             let (nu_i, sp_i) = (nu.num(i), sp.num(i));
             let speed = match &last {
@@ -429,17 +429,17 @@ pub fn sweep_contacts<'py>(
         ])
     })();
     let cols = to_py(py, cols)?;
+    let n = to_py(py, common_len(&cols.iter().collect::<Vec<_>>()))?;
     let prec = to_py(py, input::precision(precision))?;
     let method = to_py(py, self::method(method))?;
     let text = text || prec != Precision::F64;
     with_precision!(prec, T, p => {
-        let built = py.detach(|| guard(|| contact_problems::<T>(&cols, kind, by_load, p)));
-        let (problems, pre) = to_py(py, built)?;
         let opts = Options::<T> { method, ..Default::default() };
-        let mut out = Columns::new(7, problems.len(), text);
-        in_chunks(py, &problems, threads, progress, |c| sweep::contacts(c, &opts), |i, r| match r {
+        let mut out = Columns::new(7, n, text);
+        let build = |r| contact_problems::<T>(&cols, kind, by_load, r, p);
+        in_chunks(py, n, threads, progress, build, |c| sweep::contacts(c, &opts), |r| match r {
             Ok(s) => out.push(&[Some(&s.a), Some(&s.b), Some(s.k()), Some(s.e()), Some(&s.p0), Some(&s.d0), Some(&s.load)], s.ellipse.iterations, s.ellipse.integrals.route),
-            Err(e) => out.fail(message(&pre, i, &e)),
+            Err(m) => out.fail(m),
         })?;
         out.into_py(py)
     })
@@ -488,20 +488,20 @@ pub fn sweep_integrals<'py>(
     };
     let text = text || prec != Precision::F64;
     with_precision!(prec, T, p => {
-        let built = py.detach(|| guard(|| {
-            let speed = input::speed(&input::material::<T>(&nu, p)?, &sp, kind)?;
-            let mut pre = vec![None; ks.len()];
-            let ks: Vec<T> = (0..ks.len()).map(|i| input::positive(&ks.num(i), "k", p).unwrap_or_else(|f| {
-                pre[i] = Some(f.message());
+        let speed = py.detach(|| guard(|| input::speed(&input::material::<T>(&nu, p)?, &sp, kind)));
+        let speed = to_py(py, speed)?;
+        let mut out = Columns::new(5, ks.len(), text);
+        let build = |r: Range<usize>| {
+            let mut pre = vec![None; r.len()];
+            let ks: Vec<T> = r.zip(pre.iter_mut()).map(|(i, slot)| input::positive(&ks.num(i), "k", p).unwrap_or_else(|f| {
+                *slot = Some(f.message());
                 T::from_f64(f64::NAN, p)
             })).collect();
-            Ok((speed, ks, pre))
-        }));
-        let (speed, ks, pre) = to_py(py, built)?;
-        let mut out = Columns::new(5, ks.len(), text);
-        in_chunks(py, &ks, threads, progress, |c| sweep::integrals(&speed, c, &opts), |i, r| match r {
+            Ok((ks, pre))
+        };
+        in_chunks(py, ks.len(), threads, progress, build, |c| sweep::integrals(&speed, c, &opts), |r| match r {
             Ok(s) => out.push(&[Some(&s.i1), Some(&s.i2), s.di1_dk.as_ref(), s.di2_dk.as_ref(), s.j0.as_ref()], s.work, s.route),
-            Err(e) => out.fail(message(&pre, i, &e)),
+            Err(m) => out.fail(m),
         })?;
         out.into_py(py)
     })
