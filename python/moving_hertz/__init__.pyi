@@ -105,10 +105,12 @@ def solve_ellipse(nu: Number, *, speed: Optional[Number] = ..., gap: Optional[Nu
                   ratio: Optional[Number] = ..., precision: Precision = ...,
                   method: Method = ..., as_text: bool = ...) -> Ellipse: ...
 def solve_contact(nu: Number, *, speed: Optional[Number] = ..., gap: Optional[Number] = ...,
-                  radius_along: Optional[Number] = ..., radius_across: Optional[Number] = ...,
-                  load: Optional[Number] = ..., approach: Optional[Number] = ...,
-                  shear_modulus: Optional[Number] = ..., precision: Precision = ...,
-                  method: Method = ..., as_text: bool = ...) -> Contact: ...
+                  velocity: Optional[Number] = ..., radius_along: Optional[Number] = ...,
+                  radius_across: Optional[Number] = ..., load: Optional[Number] = ...,
+                  approach: Optional[Number] = ..., shear_modulus: Optional[Number] = ...,
+                  youngs_modulus: Optional[Number] = ..., density: Optional[Number] = ...,
+                  precision: Precision = ..., method: Method = ...,
+                  as_text: bool = ...) -> Contact: ...
 def integrals(nu: Number, *, speed: Optional[Number] = ..., gap: Optional[Number] = ...,
               k: Optional[Number] = ..., precision: Optional[Precision] = ...,
               tol: Optional[Number] = ..., method: Method = ..., derivatives: bool = ...,

@@ -8,7 +8,7 @@ use crate::out::Fields;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{
     integrals, integrals_to_tolerance, solve_ellipse, with_precision, ContactProblem, Estimated,
-    ExactInputs, IntegralOptions, Integrals, Loading, Method, Mp, Options, RelError,
+    ExactInputs, IntegralOptions, Integrals, Loading, Method, Moduli, Mp, Options, RelError, Solid,
 };
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
@@ -101,9 +101,73 @@ pub fn ellipse<'py>(
     })
 }
 
+/// How the half-space's stiffness and the speed are given to `contact`.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Units {
+    /// μ and M_R (or its gap).
+    Shear,
+    /// E (μ = E/(2(1 + ν)), `physics::solid::shear_from_youngs`) and M_R (or its gap).
+    Youngs,
+    /// μ or E with the density ρ and the velocity V in m/s ([`Solid`]).
+    Velocity { youngs: bool },
+}
+
+/// The speed and the shear modulus of a contact problem at precision `p`.
+fn speed_and_modulus<T: Real>(
+    [nu, sp, modulus, density]: &[Option<Num>; 4],
+    kind: SpeedKind,
+    units: Units,
+    p: T::Prec,
+) -> Result<(moving_hertz::Speed<T>, T), Fail> {
+    let (Some(nu), Some(sp), Some(modulus)) = (nu, sp, modulus) else {
+        return Err(Fail::Arg {
+            argument: "nu",
+            message: "nu, the speed and a modulus are required".into(),
+        });
+    };
+    let Units::Velocity { youngs } = units else {
+        let speed = input::cached_speed::<T>(nu, sp, kind, p)?;
+        return Ok(if units == Units::Youngs {
+            let e: T = input::positive(modulus, "youngs_modulus", p)?;
+            let mu = moving_hertz::physics::solid::shear_from_youngs(&e, speed.material().nu());
+            (speed, mu)
+        } else {
+            (speed.clone(), input::positive(modulus, "shear_modulus", p)?)
+        });
+    };
+    let Some(density) = density else {
+        return Err(Fail::Arg {
+            argument: "density",
+            message: "velocity= needs density= (kg/m^3)".into(),
+        });
+    };
+    let [nu, modulus, density, v] = [nu, modulus, density, sp].map(exact_text);
+    let moduli = if youngs {
+        Moduli::Youngs {
+            youngs_modulus: modulus.as_str(),
+            density: density.as_str(),
+        }
+    } else {
+        Moduli::Shear {
+            shear_modulus: modulus.as_str(),
+            density: density.as_str(),
+        }
+    };
+    let solid = Solid::<T>::parse(&nu, moduli, p)?;
+    let speed = solid.parse_velocity(&v).map_err(Fail::about("velocity"))?;
+    let mu = solid
+        .shear_modulus()
+        .cloned()
+        .ok_or_else(|| Fail::Panic("a solid of given moduli without its shear modulus".into()))?;
+    Ok((speed, mu))
+}
+
 /// `(precision, bits, route, a, a_error, b, b_error, k, k_error, e, e_error, major_axis, p0,
-/// p0_error, d0, d0_error, load, load_error)`: the contact solution of section 4.
+/// p0_error, d0, d0_error, load, load_error)`: the contact solution of section 4. `kind` is
+/// `speed`, `gap` or `velocity` (V in m/s, with `density`); `modulus_kind` `shear` or
+/// `youngs`.
 #[pyfunction]
+#[pyo3(signature = (precision, nu, speed, kind, radius_along, radius_across, loading, size, modulus, modulus_kind, density, method, text))]
 #[allow(clippy::too_many_arguments)]
 pub fn contact<'py>(
     py: Python<'py>,
@@ -115,36 +179,58 @@ pub fn contact<'py>(
     radius_across: &Bound<'py, PyAny>,
     loading: &str,
     size: &Bound<'py, PyAny>,
-    shear_modulus: &Bound<'py, PyAny>,
+    modulus: &Bound<'py, PyAny>,
+    modulus_kind: &str,
+    density: Option<&Bound<'py, PyAny>>,
     method: &str,
     text: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let kind = SpeedKind::parse(kind);
+    let youngs = modulus_kind == "youngs";
+    let (units, kind) = match (kind, youngs) {
+        ("velocity", _) => (Units::Velocity { youngs }, SpeedKind::Mr),
+        (_, true) => (Units::Youngs, SpeedKind::parse(kind)),
+        _ => (Units::Shear, SpeedKind::parse(kind)),
+    };
+    let speed_name = if matches!(units, Units::Velocity { .. }) {
+        "velocity"
+    } else {
+        kind.argument()
+    };
     let by_load = loading == "load";
     let size_name = if by_load { "load" } else { "approach" };
+    let modulus_name = if youngs {
+        "youngs_modulus"
+    } else {
+        "shear_modulus"
+    };
     let nums = (|| {
-        Ok::<_, Fail>([
-            Num::from_py(nu, "nu")?,
-            Num::from_py(speed, kind.argument())?,
-            Num::from_py(radius_along, "radius_along")?,
-            Num::from_py(radius_across, "radius_across")?,
-            Num::from_py(size, size_name)?,
-            Num::from_py(shear_modulus, "shear_modulus")?,
-        ])
+        Ok::<_, Fail>((
+            [
+                Some(Num::from_py(nu, "nu")?),
+                Some(Num::from_py(speed, speed_name)?),
+                Some(Num::from_py(modulus, modulus_name)?),
+                density.map(|d| Num::from_py(d, "density")).transpose()?,
+            ],
+            [
+                Num::from_py(radius_along, "radius_along")?,
+                Num::from_py(radius_across, "radius_across")?,
+                Num::from_py(size, size_name)?,
+            ],
+        ))
     })();
-    let [nu, sp, r1, r2, size, mu] = to_py(py, nums)?;
+    let (given, [r1, r2, size]) = to_py(py, nums)?;
     let prec = to_py(py, input::precision(precision))?;
     let method = to_py(py, self::method(method))?;
     with_precision!(prec, T, p => {
         let sol = detach_above_dd(py, prec, || guard(|| {
-            let speed = input::cached_speed::<T>(&nu, &sp, kind, p)?;
+            let (speed, shear_modulus) = speed_and_modulus::<T>(&given, kind, units, p)?;
             let size: T = input::positive(&size, size_name, p)?;
             let problem = ContactProblem {
                 speed,
                 radius_along: input::positive(&r1, "radius_along", p)?,
                 radius_across: input::positive(&r2, "radius_across", p)?,
                 loading: if by_load { Loading::Load(size) } else { Loading::Approach(size) },
-                shear_modulus: input::positive(&mu, "shear_modulus", p)?,
+                shear_modulus,
             };
             Ok(problem.solve(&Options::<T> { method, ..Default::default() })?)
         }));
