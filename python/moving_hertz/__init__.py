@@ -92,30 +92,49 @@ def solve_ellipse(nu, *, speed=None, gap=None, ratio=None, precision="f64", meth
     return _results.build(Ellipse, t, as_text or t[0] != "f64", as_text)
 
 
-def solve_contact(nu, *, speed=None, gap=None, radius_along=None, radius_across=None,
-                  load=None, approach=None, shear_modulus=None, precision="f64", method="auto",
+def solve_contact(nu, *, speed=None, gap=None, velocity=None, radius_along=None,
+                  radius_across=None, load=None, approach=None, shear_modulus=None,
+                  youngs_modulus=None, density=None, precision="f64", method="auto",
                   as_text=False):
     """The moving-punch Hertz contact of section 4: the ellipse (33), then a, b, p0, d0 and
     the load in closed form ((28)-(32), as corrected in docs/errata.md).
 
-    ``nu``, ``speed`` | ``gap`` as for :func:`solve_ellipse`; ``radius_along`` R1 and
-    ``radius_across`` R2, the punch's radii of curvature along and across the motion (> 0,
-    length, e.g. m); exactly one of ``load`` P (> 0, force, e.g. N) and ``approach`` d0 (> 0,
-    length); ``shear_modulus`` μ (> 0, pressure, e.g. Pa). Units as given: SI in, SI out.
+    ``nu`` as for :func:`solve_ellipse`; the speed as exactly one of ``speed`` (M_R),
+    ``gap`` (1 - M_R) or ``velocity`` (V in m/s, below the Rayleigh speed c_R of the solid,
+    which needs ``density``); the stiffness as exactly one of ``shear_modulus`` μ and
+    ``youngs_modulus`` E (> 0, Pa; μ = E/(2(1 + ν))); ``density`` ρ (> 0, kg/m³; with
+    ``velocity`` only: c2 = √(μ/ρ), c_R from the Rayleigh root of section 3, by the crate's
+    ``Solid``); ``radius_along`` R1 and ``radius_across`` R2, the punch's radii of curvature
+    along and across the motion (> 0, m); exactly one of ``load`` P (> 0, N) and
+    ``approach`` d0 (> 0, m). SI in, SI out (any consistent units without ``velocity``).
     Returns :class:`Contact`, every quantity to a few units of the working precision's last
     place, each within its bound. Raises :class:`DomainError` before any work for an input
-    out of its domain.
+    out of its domain (a velocity at or above c_R names c_R).
     """
-    value, kind = _speed(speed, gap)
+    given = [(n, v) for n, v in (("speed", speed), ("gap", gap), ("velocity", velocity))
+             if v is not None]
+    if len(given) != 1:
+        raise DomainError("give exactly one of speed= (M_R), gap= (1 - M_R) and velocity= "
+                          "(V in m/s)", "speed")
+    (kind, value), = given
     if (load is None) == (approach is None):
         raise DomainError("give exactly one of load= (P) and approach= (d0)", "load")
+    if (shear_modulus is None) == (youngs_modulus is None):
+        raise DomainError("give exactly one of shear_modulus= (mu) and youngs_modulus= (E)",
+                          "shear_modulus")
+    if (density is None) == (kind == "velocity"):
+        raise DomainError("density= (kg/m^3) goes with velocity= (V in m/s), and only with it",
+                          "density")
     loading, size = ("load", load) if approach is None else ("approach", approach)
+    modulus_kind, modulus = (("shear", shear_modulus) if youngs_modulus is None
+                             else ("youngs", youngs_modulus))
     t = _native.contact(
         _numbers.precision(precision), _scalar(nu, "nu"), _scalar(value, kind), kind,
         _scalar(_required(radius_along, "radius_along"), "radius_along"),
         _scalar(_required(radius_across, "radius_across"), "radius_across"),
-        loading, _scalar(size, loading),
-        _scalar(_required(shear_modulus, "shear_modulus"), "shear_modulus"), method, as_text)
+        loading, _scalar(size, loading), _scalar(modulus, modulus_kind + "_modulus"),
+        modulus_kind, None if density is None else _scalar(density, "density"), method,
+        as_text)
     return _results.build(Contact, t, as_text or t[0] != "f64", as_text)
 
 
