@@ -10,7 +10,9 @@
 //! ## The library in six nouns
 //!
 //! * [`Material`] (Poisson's ratio) makes a [`Speed`], which carries it: from M_R, from the gap
-//!   1 − M_R, from V and c2, or from decimal text with the gap formed exactly.
+//!   1 − M_R, or from decimal text with the gap formed exactly. A [`Solid`] (ν with Young's or
+//!   the shear modulus and the density, [`Moduli`], or the wave speeds c1, c2) gives c1, c2,
+//!   c_R in m/s and makes a speed from the velocity V in m/s.
 //! * [`ContactProblem`] — the punch's radii along and across the motion, the [`Loading`], the
 //!   shear modulus and the speed — is solved by [`ContactProblem::solve`] into a
 //!   [`ContactSolution`]: a, b, k, e, p0, d0, the load, each an [`Estimated`] value with a bound
@@ -83,7 +85,7 @@ pub use contact::{
 };
 pub use error::{Error, Result};
 pub use estimate::{BoundKind, Estimated, RelError};
-pub use physics::{Material, Speed};
+pub use physics::{Material, Moduli, Solid, Speed};
 pub use routes::{
     integrals, integrals_to_tolerance, Evaluator, ExactInputs, IntegralOptions, Integrals, Method,
     Route,
@@ -100,7 +102,7 @@ pub mod prelude {
     pub use crate::contact::{ContactProblem, Loading, Options};
     pub use crate::error::{Error, Result};
     pub use crate::estimate::{BoundKind, Estimated, RelError};
-    pub use crate::physics::{Material, Speed};
+    pub use crate::physics::{Material, Moduli, Solid, Speed};
     pub use crate::routes::{IntegralOptions, Method};
     pub use crate::scalar::{Complex, Dd, Field, FieldOps, Mp, MpPrec, Precision, Real};
 }

@@ -52,7 +52,7 @@ use crate::contact::{
 };
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
-use crate::physics::{Material, Speed};
+use crate::physics::{Material, Moduli, Solid, Speed};
 use crate::routes::{Evaluator, IntegralOptions, Integrals};
 use crate::scalar::{Precision, Real};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -72,6 +72,15 @@ pub enum SpeedGiven<T> {
     /// M_R as decimal text, the gap 1 − M_R formed exactly from it
     /// ([`Material::parse_speed`]): `"0.9999999999"` keeps its gap 10⁻¹⁰ to within ε.
     Text(String),
+    /// The velocity V (m/s) in the half-space of the point's ν with these moduli
+    /// ([`Solid::new`], [`Solid::speed_from_velocity`]): M_R = V/c_R, refused (naming c_R)
+    /// unless 0 ≤ V < c_R.
+    Velocity {
+        /// V (m/s).
+        velocity: T,
+        /// E or μ, and ρ.
+        moduli: Moduli<T>,
+    },
 }
 
 /// One point of an ellipse sweep: Poisson's ratio ν, the speed and the curvature ratio
@@ -306,12 +315,16 @@ fn unsolved() -> Error {
 }
 
 impl<T: Real> EllipsePoint<T> {
-    /// The point's speed in the material of its ν, from its M_R or gap (their typed errors).
+    /// The point's speed in the material of its ν, from its M_R, gap or velocity (their typed
+    /// errors).
     fn speed_of(&self, mat: &Material<T>) -> Result<Speed<T>> {
         match &self.speed {
             SpeedGiven::Mr(mr) => mat.speed(mr.clone()),
             SpeedGiven::Gap(gap) => mat.speed_from_gap(gap.clone()),
             SpeedGiven::Text(mr) => mat.parse_speed(mr),
+            SpeedGiven::Velocity { velocity, moduli } => {
+                Solid::new(mat, moduli.clone())?.speed_from_velocity(velocity.clone())
+            }
         }
     }
 }

@@ -110,7 +110,18 @@ fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Sh
     }
     for r in [
         mat.speed_from_gap(x(gap)),
-        mat.speed_from_velocity(x(g.value(0.0, 3e3)), x(g.value(0.0, 3e3))),
+        {
+            // V and c2 (μ = c2², ρ = 1): the half-space's speeds, then the velocity's.
+            let (v, c2) = (g.value(0.0, 3e3), g.value(0.0, 3e3));
+            let moduli = Moduli::Shear {
+                shear_modulus: x(c2 * c2),
+                density: x(1.0),
+            };
+            Solid::new(&mat, moduli).and_then(|s| {
+                finite("solid", &[s.c2(), s.c_r()], &[]);
+                s.speed_from_velocity(x(v))
+            })
+        },
         mat.speed_from_m2(x(g.value(0.0, 1.0))),
         mat.parse_speed(&format!("{mr:e}")),
     ] {

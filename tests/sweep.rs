@@ -67,6 +67,63 @@ fn every_point_within_its_bound_of_the_independent_solve_256() {
     check_against_independent(&pts);
 }
 
+/// Speeds given as velocities (m/s) in a half-space of E and ρ at each ν: every point within
+/// its bound of a 256-bit solve of the same inputs, and a velocity at or above that ν's c_R
+/// refused in its own row, naming c_R, while the other rows are solved.
+#[test]
+fn velocity_points_within_their_bounds_and_refused_above_rayleigh() {
+    let moduli = Moduli::Youngs {
+        youngs_modulus: 210e9,
+        density: 7850.0,
+    };
+    let speeds: Vec<_> = [0.0, 1500.0, 2000.0, 2974.0, 2980.0]
+        .map(|velocity| SpeedGiven::Velocity { velocity, moduli })
+        .into();
+    let ratios = [0.1, 0.4, 1.0, 2.5, 10.0];
+    let pts = EllipsePoint::grid(&[0.25, 0.3, 0.5], &speeds, &ratios);
+    let swept = sweep::ellipses(&pts, &Options::default());
+    let p256 = MpPrec::new(256).unwrap();
+    let (mut solved, mut refused) = (0, 0);
+    for (pt, got) in pts.iter().zip(&swept) {
+        let mat = Material::new(pt.nu).unwrap();
+        let c_r = *Solid::new(&mat, moduli).unwrap().c_r();
+        let SpeedGiven::Velocity { velocity, .. } = pt.speed else {
+            unreachable!()
+        };
+        match got {
+            Ok(got) => {
+                assert!(velocity < c_r, "{pt:?} solved above c_R = {c_r}");
+                // The same inputs (exact in f64) at 256 bits.
+                let up = |x: f64| Mp::from_f64(x, p256);
+                let m = Moduli::Youngs {
+                    youngs_modulus: up(210e9),
+                    density: up(7850.0),
+                };
+                let mat = Material::new(up(pt.nu)).unwrap();
+                let speed = Solid::new(&mat, m)
+                    .unwrap()
+                    .speed_from_velocity(up(velocity));
+                let want = solve_ellipse(&speed.unwrap(), &up(pt.ratio), &Options::default());
+                let want = want.unwrap().k.value;
+                let d = ((up(got.k.value) - &want) / &want).abs().to_f64();
+                assert!(
+                    d <= got.k.error.to_f64(),
+                    "{pt:?}: k {:?} vs {want:?}",
+                    got.k
+                );
+                solved += 1;
+            }
+            Err(e) => {
+                assert!(velocity >= c_r, "{pt:?}: {e}");
+                assert!(e.to_string().contains("c_R = 2"), "{e}");
+                refused += 1;
+            }
+        }
+    }
+    // c_R = 3007.5 m/s at ν = 0.25, 2974.8 at 0.3, 2852.7 at 1/2 (E fixed: μ falls as ν rises).
+    assert_eq!((solved, refused), (60, 15));
+}
+
 /// At double-double the sweep's k is within its bound of a 256-bit solve of the same
 /// (double-double) inputs: continuation keeps the ladder's accuracy.
 #[test]
@@ -83,6 +140,7 @@ fn double_double_sweep_against_256_bits() {
                 SpeedGiven::Mr(m) => SpeedGiven::Mr(up(m)),
                 SpeedGiven::Gap(g) => SpeedGiven::Gap(up(g)),
                 SpeedGiven::Text(m) => SpeedGiven::Text(m.clone()),
+                SpeedGiven::Velocity { .. } => unreachable!("the grid has no velocities"),
             },
             ratio: up(&pt.ratio),
         };

@@ -10,7 +10,7 @@
 use super::green::GreenFunction;
 use super::rayleigh::RayleighRoots;
 use crate::error::{Error, Result};
-use crate::scalar::{check_finite, decimal_to_rational, short, Precision, Real};
+use crate::scalar::{check_finite, decimal_to_rational, short, Field, Precision, Real};
 use rug::Rational;
 
 /// An isotropic elastic half-space, described by Poisson's ratio ν ∈ (−1, 1/2].
@@ -45,10 +45,8 @@ impl<T: Real> Material<T> {
                 bound: NU_BOUND,
             });
         }
-        let one = T::one(p);
-        let one_minus_nu = one.clone() - &nu;
-        // γ = (1 − 2ν)/(2(1 − ν)).
-        let gamma = (one - nu.clone().mul_i64(2)) / one_minus_nu.clone().mul_i64(2);
+        let one_minus_nu = T::one(p) - &nu;
+        let gamma = gamma_of(&nu);
         let roots = RayleighRoots::new(&nu)?;
         let mut mat = Material {
             nu,
@@ -103,9 +101,7 @@ impl<T: Real> Material<T> {
                 bound: "[0, sqrt(3)/2)",
             });
         }
-        let one = T::one(p);
-        let nu = (one.clone() - gamma.clone().mul_i64(2)) / (one - gamma).mul_i64(2);
-        Material::new(nu)
+        Material::new(nu_of_gamma(&gamma))
     }
 
     /// Poisson's ratio ν of the Green's function (4)–(6), as given (rounded once to the working
@@ -259,28 +255,6 @@ impl<T: Real> Material<T> {
         self.speed(mr)
     }
 
-    /// The speed `v` in the units of the shear-wave speed `c2` (both positive, v < c_R):
-    /// M_R = (v/c2)/√m1 (M2 of (5)), within a few ε.
-    pub fn speed_from_velocity(&self, v: T, c2: T) -> Result<Speed<T>> {
-        check_finite("velocity V", &v)?;
-        check_finite("shear wave speed c2", &c2)?;
-        if !c2.is_positive() {
-            return Err(Error::Domain {
-                name: "shear wave speed c2",
-                value: short(&c2),
-                bound: "(0, inf)",
-            });
-        }
-        if v.is_negative() {
-            return Err(Error::Domain {
-                name: "velocity V",
-                value: short(&v),
-                bound: "[0, c_R)",
-            });
-        }
-        self.speed_from_m2(v / c2)
-    }
-
     /// This material at another precision `q` (ν rounded once). Used by the precision ladder's
     /// lower stages, whose roots only seed the working precision: a ν that rounds onto the edge
     /// −1 there is moved one unit inside.
@@ -292,6 +266,19 @@ impl<T: Real> Material<T> {
         }
         Material::new(nu)
     }
+}
+
+/// γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)) (M1² = γM2² in (5)): exact over [`rug::Rational`],
+/// within 2 ε otherwise.
+pub fn gamma_of<F: Field>(nu: &F) -> F {
+    let one = F::one(nu.prec());
+    (one.clone() - nu.clone().mul_i64(2)) / (one - nu).mul_i64(2)
+}
+
+/// ν = (1 − 2γ)/(2(1 − γ)): Poisson's ratio of γ = (c2/c1)² (the inverse of [`gamma_of`], the
+/// same form: the map is its own inverse); exact over [`rug::Rational`], within 2 ε otherwise.
+pub fn nu_of_gamma<F: Field>(gamma: &F) -> F {
+    gamma_of(gamma)
 }
 
 const MR_NAME: &str = "speed M_R = V/c_R";
@@ -356,7 +343,7 @@ pub struct Speed<T: Real> {
 
 impl<T: Real> Speed<T> {
     /// From M_R and its gap, both at the working precision (validated by the caller).
-    fn new(mat: &Material<T>, mr: T, gap: T) -> Result<Speed<T>> {
+    pub(crate) fn new(mat: &Material<T>, mr: T, gap: T) -> Result<Speed<T>> {
         let p = mr.prec();
         let one = T::one(p);
         let mr2 = mr.square();

@@ -8,7 +8,9 @@
 pub mod green;
 pub mod material;
 pub mod rayleigh;
+pub mod solid;
 
 pub use green::{rayleigh_function, GreenFunction};
 pub use material::{Material, Speed};
 pub use rayleigh::{ClosedForm, RayleighRoots};
+pub use solid::{Moduli, Solid};

@@ -300,6 +300,10 @@ pub fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellips
         SpeedGiven::Mr(m) => mat.speed(m.clone())?,
         SpeedGiven::Gap(g) => mat.speed_from_gap(g.clone())?,
         SpeedGiven::Text(m) => mat.parse_speed(m)?,
+        SpeedGiven::Velocity { velocity, moduli } => {
+            moving_hertz::physics::Solid::new(&mat, moduli.clone())?
+                .speed_from_velocity(velocity.clone())?
+        }
     };
     solve_ellipse(&speed, &pt.ratio, &Options::default())
 }

@@ -1,0 +1,508 @@
+//! Vectorised sweeps: `moving_hertz::sweep::{ellipses, contacts, integrals}` over columns of
+//! points that the Python layer has broadcast and flattened, with the GIL released.
+//!
+//! The points run in chunks of [`CHUNK`] (a multiple of the library's block, so that every
+//! point's result is bit for bit the one of the whole sweep in one call: a point's result
+//! depends only on its block, `moving_hertz::sweep`); between chunks the GIL is taken back to
+//! call the progress callback and to let Ctrl-C through. A chunk's results are copied into
+//! the output columns at once, so that the memory beyond the output arrays is one chunk's.
+//! A point whose input the binding refuses (text that does not parse, a ratio that is not
+//! positive) is handed to the library as a point it refuses too (ν = NaN), so that the blocks
+//! are the same whatever the inputs, and carries the binding's message.
+
+use crate::fail::{guard, to_py, Fail};
+use crate::input::{self, Num, SpeedKind};
+use crate::single::method;
+use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
+use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
+use moving_hertz::{
+    with_precision, ContactProblem, Estimated, IntegralOptions, Loading, Material, Options,
+    RelError, Route, Speed,
+};
+use numpy::{IntoPyArray, PyReadonlyArray1};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use std::ops::Range;
+use std::sync::{Arc, Mutex};
+
+/// Points per chunk: 256 blocks.
+const CHUNK: usize = BLOCK * 256;
+
+/// The route codes of the `route` column, in this order (−1: the point failed).
+pub const ROUTES: [Route; 5] = [
+    Route::Series,
+    Route::Adaptive,
+    Route::AdaptiveSubtracted,
+    Route::FixedRule,
+    Route::GradedRule,
+];
+
+/// One input column: float64 values or exact texts.
+pub enum Col {
+    F(Vec<f64>),
+    T(Vec<String>),
+}
+
+impl Col {
+    /// A 1-d float64 array or a list of str.
+    fn from_py(x: &Bound<'_, PyAny>, argument: &'static str) -> Result<Col, Fail> {
+        if let Ok(a) = x.extract::<PyReadonlyArray1<f64>>() {
+            return Ok(Col::F(a.as_array().to_vec()));
+        }
+        x.extract::<Vec<String>>()
+            .map(Col::T)
+            .map_err(|_| Fail::Arg {
+                argument,
+                message: format!("{argument}: expected a float64 array or a list of decimal texts"),
+            })
+    }
+
+    fn len(&self) -> usize {
+        match self {
+            Col::F(v) => v.len(),
+            Col::T(v) => v.len(),
+        }
+    }
+
+    fn num(&self, i: usize) -> Num {
+        match self {
+            Col::F(v) => Num::F(v[i]),
+            Col::T(v) => Num::T(v[i].clone()),
+        }
+    }
+}
+
+/// The output columns: per result field a value and a bound column, plus iterations (or the
+/// work), the route code, the ok mask and the message of each failed point.
+pub struct Columns {
+    text: bool,
+    f: Vec<Vec<f64>>,
+    s: Vec<Vec<String>>,
+    iterations: Vec<i64>,
+    route: Vec<i8>,
+    ok: Vec<bool>,
+    /// The failed points: (index, message).
+    failures: Vec<(usize, String)>,
+}
+
+impl Columns {
+    fn new(fields: usize, n: usize, text: bool) -> Columns {
+        let (nf, ns) = if text {
+            (0, 2 * fields)
+        } else {
+            (2 * fields, 0)
+        };
+        Columns {
+            text,
+            f: (0..nf).map(|_| Vec::with_capacity(n)).collect(),
+            s: (0..ns).map(|_| Vec::with_capacity(n)).collect(),
+            iterations: Vec::with_capacity(n),
+            route: Vec::with_capacity(n),
+            ok: Vec::with_capacity(n),
+            failures: Vec::new(),
+        }
+    }
+
+    /// A solved point: its fields (absent ones as NaN or empty text).
+    fn push<T: Real>(&mut self, fields: &[Option<&Estimated<T>>], iterations: usize, route: Route) {
+        for (j, x) in fields.iter().enumerate() {
+            if self.text {
+                let (v, e) = x.map_or((String::new(), String::new()), |x| {
+                    (x.value.to_decimal(), x.error.to_string())
+                });
+                self.s[2 * j].push(v);
+                self.s[2 * j + 1].push(e);
+            } else {
+                let (v, e) = x.map_or((f64::NAN, f64::NAN), |x| {
+                    (x.value.to_f64(), x.error.to_f64())
+                });
+                self.f[2 * j].push(v);
+                self.f[2 * j + 1].push(e);
+            }
+        }
+        self.iterations.push(iterations as i64);
+        self.route.push(
+            ROUTES
+                .iter()
+                .position(|r| *r == route)
+                .map_or(-1, |i| i as i8),
+        );
+        self.ok.push(true);
+    }
+
+    /// A failed point with its message.
+    fn fail(&mut self, message: String) {
+        self.f.iter_mut().for_each(|c| c.push(f64::NAN));
+        self.s.iter_mut().for_each(|c| c.push(String::new()));
+        self.iterations.push(-1);
+        self.route.push(-1);
+        self.failures.push((self.ok.len(), message));
+        self.ok.push(false);
+    }
+
+    /// `{"values": [...], "iterations", "route", "ok", "failures": [(index, message)]}` for the
+    /// Python layer.
+    fn into_py<'py>(self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = PyDict::new(py);
+        let values = PyList::empty(py);
+        for c in self.f {
+            values.append(c.into_pyarray(py))?;
+        }
+        for c in self.s {
+            values.append(PyList::new(py, c)?)?;
+        }
+        d.set_item("values", values)?;
+        d.set_item("iterations", self.iterations.into_pyarray(py))?;
+        d.set_item("route", self.route.into_pyarray(py))?;
+        d.set_item("ok", self.ok.into_pyarray(py))?;
+        d.set_item("failures", PyList::new(py, self.failures)?)?;
+        Ok(d)
+    }
+}
+
+/// The pools of `threads=`, one per size, built once.
+static POOLS: Mutex<Vec<(usize, Arc<rayon::ThreadPool>)>> = Mutex::new(Vec::new());
+
+/// The pool of `threads` threads (`None`: rayon's global pool, every core).
+fn pool(threads: Option<usize>) -> Result<Option<Arc<rayon::ThreadPool>>, Fail> {
+    let Some(n) = threads else { return Ok(None) };
+    if n == 0 || n > 4096 {
+        let message = format!("threads = {n} is outside 1 <= threads <= 4096");
+        return Err(Fail::Arg {
+            argument: "threads",
+            message,
+        });
+    }
+    let mut pools = POOLS.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, p)) = pools.iter().find(|(m, _)| *m == n) {
+        return Ok(Some(p.clone()));
+    }
+    let built = rayon::ThreadPoolBuilder::new().num_threads(n).build();
+    let p =
+        Arc::new(built.map_err(|e| Fail::Panic(format!("building a pool of {n} threads: {e}")))?);
+    pools.push((n, p.clone()));
+    Ok(Some(p))
+}
+
+/// Builds and solves the points `0..n` chunk by chunk with the GIL released (on `pool`, if
+/// any): `build` makes a chunk's points with the binding's message for each point it refuses,
+/// `solve` runs the library's sweep, `collect` takes each result or message in order; calls
+/// `progress(done, n)` between chunks. Only one chunk's points and results are held at once.
+fn in_chunks<I: Send + Sync, R: Send>(
+    py: Python<'_>,
+    n: usize,
+    threads: Option<usize>,
+    progress: Option<&Bound<'_, PyAny>>,
+    build: impl Fn(Range<usize>) -> Result<Built<I>, Fail> + Sync + Send,
+    solve: impl Fn(&[I]) -> Vec<moving_hertz::Result<R>> + Sync + Send,
+    mut collect: impl FnMut(Result<R, String>) + Send,
+) -> PyResult<()> {
+    let pool = to_py(py, pool(threads))?;
+    let mut done = 0;
+    while done < n {
+        let range = done..(done + CHUNK).min(n);
+        let r = py.detach(|| {
+            guard(|| {
+                let (items, pre) = build(range.clone())?;
+                let out = match &pool {
+                    Some(p) => p.install(|| solve(&items)),
+                    None => solve(&items),
+                };
+                for (r, pre) in out.into_iter().zip(pre) {
+                    collect(r.map_err(|e| pre.unwrap_or_else(|| e.to_string())));
+                }
+                Ok(())
+            })
+        });
+        to_py(py, r)?;
+        done = range.end;
+        py.check_signals()?;
+        if let Some(cb) = progress {
+            cb.call1((done, n))?;
+        }
+    }
+    Ok(())
+}
+
+/// A chunk's points and the binding's message for each point it refused (`None`: valid).
+type Built<I> = (Vec<I>, Vec<Option<String>>);
+
+/// The columns' common length, or a refusal.
+fn common_len(cols: &[&Col]) -> Result<usize, Fail> {
+    let n = cols[0].len();
+    if cols.iter().any(|c| c.len() != n) {
+        let message =
+            "the input columns differ in length (the Python layer broadcasts them)".into();
+        return Err(Fail::Arg {
+            argument: "nu",
+            message,
+        });
+    }
+    Ok(n)
+}
+
+/// The ellipse points at precision `p`, with the binding's message for each point it refuses.
+fn ellipse_points<T: Real>(
+    [nu, sp, ratio]: &[Col; 3],
+    kind: SpeedKind,
+    range: Range<usize>,
+    p: T::Prec,
+) -> Result<Built<EllipsePoint<T>>, Fail> {
+    let mut points = Vec::with_capacity(range.len());
+    let mut pre = vec![None; range.len()];
+    for (i, slot) in range.zip(pre.iter_mut()) {
+        let point = (|| -> Result<EllipsePoint<T>, Fail> {
+            let nu = match nu {
+                Col::F(v) => T::from_f64(v[i], p),
+                Col::T(v) => input::material::<T>(&Num::T(v[i].clone()), p)?.nu().clone(),
+            };
+            let speed = match (sp, kind) {
+                (Col::F(v), SpeedKind::Mr) => SpeedGiven::Mr(T::from_f64(v[i], p)),
+                (Col::F(v), SpeedKind::Gap) => SpeedGiven::Gap(T::from_f64(v[i], p)),
+                (Col::T(v), SpeedKind::Mr) => SpeedGiven::Text(v[i].clone()),
+                (Col::T(v), SpeedKind::Gap) => SpeedGiven::Text(mr_of_gap(&v[i])?),
+            };
+            let ratio = match ratio {
+                Col::F(v) => T::from_f64(v[i], p),
+                Col::T(_) => input::positive(&ratio.num(i), "ratio", p)?,
+            };
+            Ok(EllipsePoint { nu, speed, ratio })
+        })();
+        points.push(point.unwrap_or_else(|f| {
+            *slot = Some(f.message());
+            let nan = T::from_f64(f64::NAN, p);
+            EllipsePoint {
+                nu: nan.clone(),
+                speed: SpeedGiven::Mr(nan.clone()),
+                ratio: nan,
+            }
+        }));
+    }
+    Ok((points, pre))
+}
+
+/// The exact M_R = 1 − gap as text `p/q`, for a gap given as text (checked exactly:
+/// 0 < gap ≤ 1), so that the library forms the gap back exactly.
+fn mr_of_gap(gap: &str) -> Result<String, Fail> {
+    let g = decimal_to_rational(gap).map_err(Fail::about("gap"))?;
+    if g <= 0 || g > 1 {
+        let message = format!(
+            "speed gap 1 - M_R = {} is outside its domain (0, 1]",
+            gap.trim()
+        );
+        return Err(Fail::Arg {
+            argument: "gap",
+            message,
+        });
+    }
+    Ok((-(g - 1u32)).to_string())
+}
+
+/// `sweep::ellipses` over the columns: per point k, e, I1, I2 with their bounds, iterations,
+/// route.
+#[pyfunction]
+#[pyo3(signature = (precision, nu, speed, kind, ratio, method, threads, progress, text))]
+#[allow(clippy::too_many_arguments)]
+pub fn sweep_ellipses<'py>(
+    py: Python<'py>,
+    precision: &str,
+    nu: &Bound<'py, PyAny>,
+    speed: &Bound<'py, PyAny>,
+    kind: &str,
+    ratio: &Bound<'py, PyAny>,
+    method: &str,
+    threads: Option<usize>,
+    progress: Option<&Bound<'py, PyAny>>,
+    text: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let kind = SpeedKind::parse(kind);
+    let cols = (|| {
+        Ok::<_, Fail>([
+            Col::from_py(nu, "nu")?,
+            Col::from_py(speed, kind.argument())?,
+            Col::from_py(ratio, "ratio")?,
+        ])
+    })();
+    let cols = to_py(py, cols)?;
+    let n = to_py(py, common_len(&cols.iter().collect::<Vec<_>>()))?;
+    let prec = to_py(py, input::precision(precision))?;
+    let method = to_py(py, self::method(method))?;
+    let text = text || prec != Precision::F64;
+    with_precision!(prec, T, p => {
+        let opts = Options::<T> { method, ..Default::default() };
+        let mut out = Columns::new(4, n, text);
+        let build = |r| ellipse_points::<T>(&cols, kind, r, p);
+        in_chunks(py, n, threads, progress, build, |c| sweep::ellipses(c, &opts), |r| match r {
+            Ok(s) => out.push(&[Some(&s.k), Some(&s.e), Some(&s.integrals.i1), Some(&s.integrals.i2)], s.iterations, s.integrals.route),
+            Err(m) => out.fail(m),
+        })?;
+        out.into_py(py)
+    })
+}
+
+/// The contact problems at precision `p`, with the binding's message for each it refuses.
+fn contact_problems<T: Real>(
+    cols: &[Col; 6],
+    kind: SpeedKind,
+    by_load: bool,
+    range: Range<usize>,
+    p: T::Prec,
+) -> Result<Built<ContactProblem<T>>, Fail> {
+    let [nu, sp, r1, r2, size, mu] = cols;
+    let zero = T::zero(p);
+    let fallback = Material::new(zero.clone())?.speed(zero)?;
+    let size_name = if by_load { "load" } else { "approach" };
+    let mut last: Option<(Num, Num, Speed<T>)> = None;
+    let mut problems = Vec::with_capacity(range.len());
+    let mut pre = vec![None; range.len()];
+    for (i, slot) in range.zip(pre.iter_mut()) {
+        let problem = (|| -> Result<ContactProblem<T>, Fail> {
+            let (nu_i, sp_i) = (nu.num(i), sp.num(i));
+            let speed = match &last {
+                Some((a, b, s)) if input::same_num(a, &nu_i) && input::same_num(b, &sp_i) => {
+                    s.clone()
+                }
+                _ => input::speed(&input::material::<T>(&nu_i, p)?, &sp_i, kind)?,
+            };
+            last = Some((nu_i, sp_i, speed.clone()));
+            let size: T = input::positive(&size.num(i), size_name, p)?;
+            Ok(ContactProblem {
+                speed,
+                radius_along: input::positive(&r1.num(i), "radius_along", p)?,
+                radius_across: input::positive(&r2.num(i), "radius_across", p)?,
+                loading: if by_load {
+                    Loading::Load(size)
+                } else {
+                    Loading::Approach(size)
+                },
+                shear_modulus: input::positive(&mu.num(i), "shear_modulus", p)?,
+            })
+        })();
+        problems.push(problem.unwrap_or_else(|f| {
+            *slot = Some(f.message());
+            let one = T::one(p);
+            let loading = Loading::Load(one.clone());
+            let nan = T::from_f64(f64::NAN, p);
+            ContactProblem {
+                speed: fallback.clone(),
+                radius_along: nan,
+                radius_across: one.clone(),
+                loading,
+                shear_modulus: one,
+            }
+        }));
+    }
+    Ok((problems, pre))
+}
+
+/// `sweep::contacts` over the columns: per point a, b, k, e, p0, d0, load with their bounds,
+/// iterations, route.
+#[pyfunction]
+#[pyo3(signature = (precision, nu, speed, kind, radius_along, radius_across, loading, size, shear_modulus, method, threads, progress, text))]
+#[allow(clippy::too_many_arguments)]
+pub fn sweep_contacts<'py>(
+    py: Python<'py>,
+    precision: &str,
+    nu: &Bound<'py, PyAny>,
+    speed: &Bound<'py, PyAny>,
+    kind: &str,
+    radius_along: &Bound<'py, PyAny>,
+    radius_across: &Bound<'py, PyAny>,
+    loading: &str,
+    size: &Bound<'py, PyAny>,
+    shear_modulus: &Bound<'py, PyAny>,
+    method: &str,
+    threads: Option<usize>,
+    progress: Option<&Bound<'py, PyAny>>,
+    text: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let kind = SpeedKind::parse(kind);
+    let by_load = loading == "load";
+    let cols = (|| {
+        Ok::<_, Fail>([
+            Col::from_py(nu, "nu")?,
+            Col::from_py(speed, kind.argument())?,
+            Col::from_py(radius_along, "radius_along")?,
+            Col::from_py(radius_across, "radius_across")?,
+            Col::from_py(size, if by_load { "load" } else { "approach" })?,
+            Col::from_py(shear_modulus, "shear_modulus")?,
+        ])
+    })();
+    let cols = to_py(py, cols)?;
+    let n = to_py(py, common_len(&cols.iter().collect::<Vec<_>>()))?;
+    let prec = to_py(py, input::precision(precision))?;
+    let method = to_py(py, self::method(method))?;
+    let text = text || prec != Precision::F64;
+    with_precision!(prec, T, p => {
+        let opts = Options::<T> { method, ..Default::default() };
+        let mut out = Columns::new(7, n, text);
+        let build = |r| contact_problems::<T>(&cols, kind, by_load, r, p);
+        in_chunks(py, n, threads, progress, build, |c| sweep::contacts(c, &opts), |r| match r {
+            Ok(s) => out.push(&[Some(&s.a), Some(&s.b), Some(s.k()), Some(s.e()), Some(&s.p0), Some(&s.d0), Some(&s.load)], s.ellipse.iterations, s.ellipse.integrals.route),
+            Err(m) => out.fail(m),
+        })?;
+        out.into_py(py)
+    })
+}
+
+/// `sweep::integrals` at one speed over the column of k: per point I1, I2, dI1/dk, dI2/dk, J0
+/// (the last three when asked for) with their bounds, the work, the route.
+#[pyfunction]
+#[pyo3(signature = (precision, nu, speed, kind, k, method, tol, derivatives, j0, threads, progress, text))]
+#[allow(clippy::too_many_arguments)]
+pub fn sweep_integrals<'py>(
+    py: Python<'py>,
+    precision: &str,
+    nu: &Bound<'py, PyAny>,
+    speed: &Bound<'py, PyAny>,
+    kind: &str,
+    k: &Bound<'py, PyAny>,
+    method: &str,
+    tol: Option<&str>,
+    derivatives: bool,
+    j0: bool,
+    threads: Option<usize>,
+    progress: Option<&Bound<'py, PyAny>>,
+    text: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let kind = SpeedKind::parse(kind);
+    let nums = (|| {
+        Ok::<_, Fail>((
+            Num::from_py(nu, "nu")?,
+            Num::from_py(speed, kind.argument())?,
+            Col::from_py(k, "k")?,
+        ))
+    })();
+    let (nu, sp, ks) = to_py(py, nums)?;
+    let prec = to_py(py, input::precision(precision))?;
+    let tol = to_py(
+        py,
+        tol.map(|t| RelError::parse(t).map_err(Fail::about("tol")))
+            .transpose(),
+    )?;
+    let opts = IntegralOptions {
+        method: to_py(py, self::method(method))?,
+        tolerance: tol,
+        derivatives,
+        j0,
+    };
+    let text = text || prec != Precision::F64;
+    with_precision!(prec, T, p => {
+        let speed = py.detach(|| guard(|| input::speed(&input::material::<T>(&nu, p)?, &sp, kind)));
+        let speed = to_py(py, speed)?;
+        let mut out = Columns::new(5, ks.len(), text);
+        let build = |r: Range<usize>| {
+            let mut pre = vec![None; r.len()];
+            let ks: Vec<T> = r.zip(pre.iter_mut()).map(|(i, slot)| input::positive(&ks.num(i), "k", p).unwrap_or_else(|f| {
+                *slot = Some(f.message());
+                T::from_f64(f64::NAN, p)
+            })).collect();
+            Ok((ks, pre))
+        };
+        in_chunks(py, ks.len(), threads, progress, build, |c| sweep::integrals(&speed, c, &opts), |r| match r {
+            Ok(s) => out.push(&[Some(&s.i1), Some(&s.i2), s.di1_dk.as_ref(), s.di2_dk.as_ref(), s.j0.as_ref()], s.work, s.route),
+            Err(m) => out.fail(m),
+        })?;
+        out.into_py(py)
+    })
+}
