@@ -300,3 +300,127 @@ fn a_bad_argument_prints_one_line_and_fails() {
         );
     }
 }
+
+/// `contact` in physical units (issue 46): steel from E, ν, ρ at V = 2000 m/s. c_R and M_R are
+/// stated (JSON `c_r`, `mr`; text lines) against the mpmath values of tests/data/solid_mpmath.csv;
+/// a, p0 and d0 are within their bounds of a 1024-bit library solve of the same inputs; E and
+/// μ = E/(2(1 + ν)) typed as a fraction give the same bits; a velocity above c_R and a missing
+/// density are refused (exit 2, one line naming the option and c_R).
+#[test]
+fn contact_in_physical_units() {
+    let steel = |modulus: &[&str], speed: &[&str], extra: &[&str]| {
+        let mut v = vec![
+            "contact",
+            "--nu",
+            "0.3",
+            "--r-along",
+            "0.05",
+            "--r-across",
+            "0.02",
+        ];
+        v.extend_from_slice(&["--load", "1000"]);
+        v.extend_from_slice(modulus);
+        v.extend_from_slice(speed);
+        v.extend_from_slice(extra);
+        v.into_iter().map(String::from).collect::<Vec<_>>()
+    };
+    let strs = |v: &[String]| run(&v.iter().map(String::as_str).collect::<Vec<_>>());
+    let by_velocity = ["--density", "7850", "--velocity", "2000"];
+    let f = fields(&strs(&steel(
+        &["--youngs-modulus", "210e9"],
+        &by_velocity,
+        &["--json"],
+    )));
+    let rel = |got: &str, want: &str| {
+        let (g, w) = (got.parse::<f64>().unwrap(), want.parse::<f64>().unwrap());
+        ((g - w) / w).abs()
+    };
+    // c_R = 2974.8233958335301755… m/s, M_R = 0.67230881765995063824… (mpmath).
+    assert!(rel(get(&f, "c_r"), "2974.82339583353017552621184379") <= 2.0 * f64::EPSILON);
+    assert!(rel(get(&f, "mr"), "0.672308817659950638248924148813") <= 2.0 * f64::EPSILON);
+    // The same inputs at 1024 bits through the library.
+    let p = MpPrec::new(1024).unwrap();
+    let moduli = Moduli::Youngs {
+        youngs_modulus: "210e9",
+        density: "7850",
+    };
+    let solid = Solid::<Mp>::parse("0.3", moduli, p).unwrap();
+    let num = |s: &str| Mp::parse(s, p).unwrap();
+    let want = ContactProblem {
+        speed: solid.parse_velocity("2000").unwrap(),
+        radius_along: num("0.05"),
+        radius_across: num("0.02"),
+        loading: Loading::Load(num("1000")),
+        shear_modulus: solid.shear_modulus().unwrap().clone(),
+    }
+    .solve(&Options::default())
+    .unwrap();
+    for (key, w) in [("a", &want.a), ("p0", &want.p0), ("d0", &want.d0)] {
+        let bound: f64 = get(&f, &format!("{key}_error")).parse().unwrap();
+        let d = rel(get(&f, key), &w.value.to_decimal());
+        assert!(d <= bound, "{key}: {d:e} > {bound:e}");
+    }
+    // μ = E/(2(1 + ν)) = 1050000000000/13 exactly, typed as μ: the same bits.
+    let g = fields(&strs(&steel(
+        &["--shear-modulus", "1050000000000/13"],
+        &by_velocity,
+        &["--json"],
+    )));
+    for key in ["c_r", "mr", "a", "b", "p0", "d0"] {
+        assert_eq!(get(&f, key), get(&g, key), "{key}");
+    }
+    // The text summary states c_R and M_R.
+    let out = strs(&steel(&["--youngs-modulus", "210e9"], &by_velocity, &[]));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("Rayleigh wave speed c_R (m/s):\n  2.97482339583353"),
+        "{text}"
+    );
+    assert!(
+        text.contains("speed M_R = V/c_R:\n  6.72308817659950"),
+        "{text}"
+    );
+    // Refusals.
+    for (args, named) in [
+        (
+            steel(
+                &["--youngs-modulus", "210e9"],
+                &["--density", "7850", "--velocity", "3000"],
+                &[],
+            ),
+            vec!["'--velocity'", "3000", "c_R = 2974.82339583 m/s"],
+        ),
+        (
+            steel(&["--youngs-modulus", "210e9"], &["--velocity", "2000"], &[]),
+            vec!["--density"],
+        ),
+        (
+            steel(
+                &["--youngs-modulus", "210e9", "--shear-modulus", "8e10"],
+                &["--speed", "0.5"],
+                &[],
+            ),
+            vec!["--shear-modulus"],
+        ),
+        (
+            steel(&["--youngs-modulus", "-1"], &["--speed", "0.5"], &[]),
+            vec!["'--youngs-modulus'", "-1"],
+        ),
+        (
+            steel(
+                &["--shear-modulus", "8e10"],
+                &["--density", "0", "--velocity", "1"],
+                &[],
+            ),
+            vec!["'--density'", "0"],
+        ),
+    ] {
+        let out = strs(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        for n in named {
+            assert!(err.contains(n), "{args:?}: {err} does not name {n}");
+        }
+    }
+}

@@ -11,17 +11,20 @@ mod error_estimates;
 mod precision_cost;
 #[path = "../examples/series_convergence.rs"]
 mod series_convergence;
+#[path = "../examples/steel_in_si_units.rs"]
+mod steel_in_si_units;
 #[path = "../examples/sweep_curves.rs"]
 mod sweep_curves;
 
 const TUTORIAL: &str = include_str!("../docs/tutorial.md");
 
 /// The examples run below, by file name.
-const RUN: [&str; 5] = [
+const RUN: [&str; 6] = [
     "contact_solution",
     "error_estimates",
     "precision_cost",
     "series_convergence",
+    "steel_in_si_units",
     "sweep_curves",
 ];
 
@@ -96,6 +99,7 @@ fn the_tutorials_examples_run() {
     error_estimates::main().expect("error_estimates");
     precision_cost::main().expect("precision_cost");
     series_convergence::main().expect("series_convergence");
+    steel_in_si_units::main().expect("steel_in_si_units");
     sweep_curves::main().expect("sweep_curves");
 }
 

@@ -279,3 +279,37 @@ impl OutDir {
         Ok(dir)
     }
 }
+
+/// A positive quantity formed exactly from the inputs (μ = E/(2(1 + ν)) of `contact
+/// --youngs-modulus`), rounded once from `arg.exact` to precision `p`; refused as
+/// [`positive`] refuses, naming `option` and quoting `arg.text` (the input it came from).
+pub fn positive_exact<T: Real>(
+    arg: &Decimal,
+    option: &str,
+    what: &str,
+    p: T::Prec,
+) -> Result<T, CliError> {
+    let refuse = |why: String| CliError::value(option, &arg.text, why);
+    let prec = Precision::of::<T>(p);
+    let x = T::from_float(&rug::Float::with_val(T::bits(p) + 64, &arg.exact), p);
+    if arg.exact <= 0 {
+        return Err(refuse(format!(
+            "{what} = {} is outside its domain (0, inf)",
+            arg.text
+        )));
+    }
+    if !x.is_finite() {
+        return Err(refuse(format!(
+            "{what} = {} overflows {prec} (rescale, or use a wider precision)",
+            arg.text
+        )));
+    }
+    if x < T::min_positive(p) {
+        return Err(refuse(format!(
+            "{what} = {} is below the smallest normal number of {prec} (rescale, or use a \
+             wider precision)",
+            arg.text
+        )));
+    }
+    Ok(x)
+}

@@ -3,12 +3,16 @@
 use super::args::{self, Decimal, MaterialSpeed};
 use super::output::{json_pair, largest, print_json, OutputArgs, Text};
 use super::CliError;
+use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{Precision, Real};
-use moving_hertz::{with_precision, ContactProblem, ContactSolution, Loading, Method, Options};
+use moving_hertz::{
+    with_precision, ContactProblem, ContactSolution, Loading, Method, Moduli, Options, Solid, Speed,
+};
 use serde::Serialize;
 
 #[derive(clap::Args, Debug)]
 #[command(group = clap::ArgGroup::new("loading").required(true).args(["load", "approach"]))]
+#[command(group = clap::ArgGroup::new("modulus").required(true).args(["shear_modulus", "youngs_modulus"]))]
 pub struct ContactArgs {
     #[command(flatten)]
     pub input: MaterialSpeed,
@@ -25,9 +29,23 @@ pub struct ContactArgs {
     #[arg(long, value_name = "D0", value_parser = args::decimal, allow_hyphen_values = true)]
     pub approach: Option<Decimal>,
     /// The half-space's shear modulus mu > 0 (pressure, e.g. Pa: force/length^2 in the units
-    /// of P and R1).
+    /// of P and R1). Exactly one of --shear-modulus and --youngs-modulus.
     #[arg(long, value_name = "MU", value_parser = args::decimal, allow_hyphen_values = true)]
-    pub shear_modulus: Decimal,
+    pub shear_modulus: Option<Decimal>,
+    /// The half-space's Young's modulus E > 0 (pressure, e.g. Pa); mu = E/(2(1 + nu)) is formed
+    /// exactly.
+    #[arg(long, value_name = "E", value_parser = args::decimal, allow_hyphen_values = true)]
+    pub youngs_modulus: Option<Decimal>,
+    /// The speed as the velocity V >= 0 (m/s with SI moduli and density), below the Rayleigh
+    /// wave speed c_R of the half-space (E or mu, nu and --density give c_R): a third way to
+    /// give the speed besides --speed and --gap. Needs --density.
+    #[arg(long, value_name = "V", value_parser = args::decimal, allow_hyphen_values = true,
+          group = "SpeedArg", requires = "density")]
+    pub velocity: Option<Decimal>,
+    /// The density rho > 0 of the half-space (kg/m^3 with SI moduli), for --velocity.
+    #[arg(long, value_name = "RHO", value_parser = args::decimal, allow_hyphen_values = true,
+          requires = "velocity")]
+    pub density: Option<Decimal>,
     /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
     /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
     /// mpfr256 as the output labels it.
@@ -49,13 +67,20 @@ struct Inputs<'a> {
     speed: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     gap: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    velocity: Option<&'a str>,
     r_along: &'a str,
     r_across: &'a str,
     #[serde(skip_serializing_if = "Option::is_none")]
     load: Option<&'a str>,
     #[serde(skip_serializing_if = "Option::is_none")]
     approach: Option<&'a str>,
-    shear_modulus: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    shear_modulus: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    youngs_modulus: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    density: Option<&'a str>,
     method: &'a str,
     precision: String,
 }
@@ -68,6 +93,11 @@ struct Json<'a> {
     precision: String,
     bits: String,
     route: &'static str,
+    /// c_R (m/s) and M_R = V/c_R, when the speed was given by --velocity.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    c_r: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    mr: Option<String>,
     a: String,
     a_error: String,
     b: String,
@@ -88,7 +118,7 @@ struct Json<'a> {
 
 pub fn run(a: &ContactArgs) -> Result<(), CliError> {
     with_precision!(a.precision, T, p => {
-        let speed = a.input.at::<T>(p)?;
+        let (speed, shear_modulus, solid) = half_space::<T>(a, p)?;
         let loading = match (&a.load, &a.approach) {
             (Some(l), None) => Loading::Load(args::positive::<T>(l, "--load", "load P", p)?),
             (None, Some(d)) => Loading::Approach(args::positive::<T>(d, "--approach", "approach d0", p)?),
@@ -99,7 +129,7 @@ pub fn run(a: &ContactArgs) -> Result<(), CliError> {
             radius_along: args::positive(&a.r_along, "--r-along", "radius along the motion R1", p)?,
             radius_across: args::positive(&a.r_across, "--r-across", "radius across the motion R2", p)?,
             loading,
-            shear_modulus: args::positive(&a.shear_modulus, "--shear-modulus", "shear modulus mu", p)?,
+            shear_modulus,
         };
         ratio_fits::<T>(a, p)?;
         let opts = Options::<T> { method: a.method, ..Default::default() };
@@ -107,7 +137,7 @@ pub fn run(a: &ContactArgs) -> Result<(), CliError> {
         let inputs = [("method", "--method", a.method.label()), ("curvature ratio", "", "")];
         let context = format!("solving the contact at {}", a.precision);
         let sol = problem.solve(&opts).map_err(|e| CliError::from_run(e, &inputs, &context))?;
-        report(a, &sol)
+        report(a, &sol, solid.as_ref())
     })
 }
 
@@ -134,10 +164,101 @@ fn ratio_fits<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<(), CliError> {
     )))
 }
 
-fn report<T: Real>(a: &ContactArgs, sol: &ContactSolution<T>) -> Result<(), CliError> {
+/// The speed and μ: by --velocity through the [`Solid`] of ν, E or μ and ρ (which gives c_R),
+/// else by --speed or --gap with μ as given or μ = E/(2(1 + ν)) formed exactly. Refusals name
+/// the option and quote the text.
+fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliError> {
+    let nu = &a.input.nu;
+    let text = |d: &Option<Decimal>| d.as_ref().map_or(String::new(), |d| d.text.clone());
+    let (e_text, mu_text, rho_text) = (
+        text(&a.youngs_modulus),
+        text(&a.shear_modulus),
+        text(&a.density),
+    );
+    if let (Some(v), Some(rho)) = (&a.velocity, &a.density) {
+        let moduli = match (&a.youngs_modulus, &a.shear_modulus) {
+            (Some(e), _) => Moduli::Youngs {
+                youngs_modulus: e.text.as_str(),
+                density: rho.text.as_str(),
+            },
+            (None, Some(mu)) => Moduli::Shear {
+                shear_modulus: mu.text.as_str(),
+                density: rho.text.as_str(),
+            },
+            (None, None) => return Err(CliError::Input(MODULUS_REQUIRED.into())),
+        };
+        let names = [
+            ("Young's modulus", "--youngs-modulus", e_text.as_str()),
+            (
+                "shear modulus",
+                if e_text.is_empty() {
+                    "--shear-modulus"
+                } else {
+                    "--youngs-modulus"
+                },
+                if e_text.is_empty() {
+                    mu_text.as_str()
+                } else {
+                    e_text.as_str()
+                },
+            ),
+            ("density", "--density", rho_text.as_str()),
+            ("nu", "--nu", nu.text.as_str()),
+            ("velocity", "--velocity", v.text.as_str()),
+        ];
+        let context = "forming the half-space's wave speeds";
+        let solid = Solid::<T>::parse(&nu.text, moduli, p)
+            .map_err(|e| CliError::from_run(e, &names, context))?;
+        let speed = solid
+            .parse_velocity(&v.text)
+            .map_err(|e| CliError::from_run(e, &names, context))?;
+        let mu = solid
+            .shear_modulus()
+            .cloned()
+            .ok_or_else(|| CliError::Input(MODULUS_REQUIRED.into()))?;
+        return Ok((speed, mu, Some(solid)));
+    }
+    let speed = a.input.at::<T>(p)?;
+    let mu = match (&a.shear_modulus, &a.youngs_modulus) {
+        (Some(mu), _) => args::positive(mu, "--shear-modulus", "shear modulus mu", p)?,
+        (None, Some(e)) => {
+            if e.exact <= 0 {
+                let why = format!(
+                    "Young's modulus E = {} is outside its domain (0, inf)",
+                    e.text
+                );
+                return Err(CliError::value("--youngs-modulus", &e.text, why));
+            }
+            // μ = E/(2(1 + ν)) exactly; its text has a '/', so it is rounded from the exact value.
+            let mu = Decimal {
+                text: e.text.clone(),
+                exact: shear_from_youngs(&e.exact, &nu.exact),
+            };
+            let what = "shear modulus mu = E/(2(1 + nu)) from E";
+            args::positive_exact(&mu, "--youngs-modulus", what, p)?
+        }
+        (None, None) => return Err(CliError::Input(MODULUS_REQUIRED.into())),
+    };
+    Ok((speed, mu, None))
+}
+
+/// The speed, μ and (when the speed was given by --velocity) the half-space.
+type HalfSpace<T> = (Speed<T>, T, Option<Solid<T>>);
+
+const MODULUS_REQUIRED: &str =
+    "exactly one of --shear-modulus MU and --youngs-modulus E is required";
+
+fn report<T: Real>(
+    a: &ContactArgs,
+    sol: &ContactSolution<T>,
+    solid: Option<&Solid<T>>,
+) -> Result<(), CliError> {
     let ig = &sol.ellipse.integrals;
     let prec = ig.precision;
-    let (speed_kind, speed_text) = a.input.given();
+    fn text(d: &Option<Decimal>) -> Option<&str> {
+        d.as_ref().map(|d| d.text.as_str())
+    }
+    let mr = sol.problem().speed.mr();
     if a.output.json {
         let (av, a_error) = json_pair(&sol.a);
         let (b, b_error) = json_pair(&sol.b);
@@ -159,19 +280,24 @@ fn report<T: Real>(a: &ContactArgs, sol: &ContactSolution<T>) -> Result<(), CliE
             command: "contact",
             inputs: Inputs {
                 nu: &a.input.nu.text,
-                speed: (speed_kind == "speed").then_some(speed_text),
-                gap: (speed_kind == "gap").then_some(speed_text),
+                speed: text(&a.input.speed.speed),
+                gap: text(&a.input.speed.gap),
+                velocity: text(&a.velocity),
                 r_along: &a.r_along.text,
                 r_across: &a.r_across.text,
                 load: a.load.as_ref().map(|d| d.text.as_str()),
                 approach: a.approach.as_ref().map(|d| d.text.as_str()),
-                shear_modulus: &a.shear_modulus.text,
+                shear_modulus: text(&a.shear_modulus),
+                youngs_modulus: text(&a.youngs_modulus),
+                density: text(&a.density),
                 method: a.method.label(),
                 precision: a.precision.label(),
             },
             precision: prec.label(),
             bits: prec.bits().to_string(),
             route: ig.route.label(),
+            c_r: solid.map(|s| s.c_r().to_decimal()),
+            mr: solid.map(|_| mr.to_decimal()),
             a: av,
             a_error,
             b,
@@ -196,14 +322,19 @@ fn report<T: Real>(a: &ContactArgs, sol: &ContactSolution<T>) -> Result<(), CliE
         (_, Some(d)) => format!("approach d0 = {}", d.text),
         _ => String::new(),
     };
+    let modulus = match (&a.shear_modulus, &a.youngs_modulus) {
+        (Some(mu), _) => format!("mu = {}", mu.text),
+        (_, Some(e)) => format!("E = {}", e.text),
+        _ => String::new(),
+    };
+    let speed = match (&a.velocity, &a.density) {
+        (Some(v), Some(rho)) => format!("V = {} m/s, rho = {}", v.text, rho.text),
+        _ => a.input.phrase(),
+    };
     t.line(format!(
-        "moving rigid punch on an elastic half-space: nu = {}, {}, R1 (along) = {}, \
-         R2 (across) = {}, {given}, mu = {}",
-        a.input.nu.text,
-        a.input.phrase(),
-        a.r_along.text,
-        a.r_across.text,
-        a.shear_modulus.text
+        "moving rigid punch on an elastic half-space: nu = {}, {speed}, R1 (along) = {}, \
+         R2 (across) = {}, {given}, {modulus}",
+        a.input.nu.text, a.r_along.text, a.r_across.text,
     ));
     t.line(format!(
         "at {} ({} bits), method {}: route {}; units as given (SI inputs give SI outputs: m, Pa, N)",
@@ -212,6 +343,10 @@ fn report<T: Real>(a: &ContactArgs, sol: &ContactSolution<T>) -> Result<(), CliE
         a.method,
         ig.route
     ));
+    if let Some(solid) = solid {
+        t.plain("Rayleigh wave speed c_R (m/s)", solid.c_r());
+        t.plain("speed M_R = V/c_R", mr);
+    }
     t.result("semi-axis along the motion a", &sol.a);
     t.result("semi-axis across the motion b", &sol.b);
     t.result("axis ratio k = b/a", sol.k());
