@@ -32,6 +32,12 @@
 //!   second-order term and the same roundings. It is the tighter one wherever the
 //!   derivatives are known; `tests/references.rs` prints the worst error/bound of each
 //!   quantity against independent references.
+//!
+//! **J0 from I1 and I2.** The integrands of I1 and I2 weighted by k² and 1 add up to J0's, so
+//! J0 = k² I1 + I2 at the solved k, from the integrals the ellipse solve returns; its bound, as
+//! a value at the exact root, is the larger of theirs plus 4ε (both are positive) plus k's, or
+//! the correlated bound where that is smaller. `tests/contact.rs` checks it against the
+//! independent quadrature `routes::direct::approach_integral`.
 
 use super::convolution;
 use super::ellipse::{solve_ellipse, Ellipse, Options};
