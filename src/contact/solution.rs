@@ -18,15 +18,25 @@
 //! In the static limit these are Johnson's (Contact Mechanics §4.2) with E* = 2μ/(1 − ν):
 //! A1 = p0 b (K − E)/(E* e² a²), d0 = p0 b K/E* (tested to a few ε in `tests/contact.rs`).
 //!
-//! **Error bounds.** Each returned quantity carries a bound on its relative error, propagated
-//! to first order from the ellipse's bounds on k and I1, the bound on J0, the sensitivity of
-//! I1 and J0 to k (|k I1′/I1| ≈ 3, |k J0′/J0| ≤ 1, taken from the computed derivatives) and the
-//! rounding of each operation (a few ε): a = (·)^{1/3} divides I1's error by 3, p0 and the load
-//! add those of a and b, and so on (see [`ContactProblem::solve`]).
+//! **Error bounds.** Each returned quantity carries a bound on its relative error (relative to
+//! its exact value for the inputs as given), the smaller of two honest bounds:
+//!
+//! * the separate bound: the ellipse's bounds on k and I1, the bound on J0, the sensitivity of
+//!   I1 and J0 to k (|k I1′/I1| ≈ 3, |k J0′/J0| ≤ 1, from the computed derivatives) and the
+//!   rounding of each operation (a few ε), added: a = (·)^{1/3} divides I1's error by 3, p0
+//!   and the load add those of a and b, and so on;
+//! * the correlated bound (`ShapeErrors` below): k's error and the integrals' errors at the
+//!   computed k are one error seen three ways (the solve makes Ĩ2/Ĩ1 = A1/B1), so each size's
+//!   error is written to first order as a combination of the integrals' errors at the computed
+//!   k and the residual of (33), each counted once with its actual sensitivity, plus a
+//!   second-order term and the same roundings. It is the tighter one wherever the
+//!   derivatives are known; `tests/references.rs` prints the worst error/bound of each
+//!   quantity against independent references.
 //!
 //! **J0 from I1 and I2.** The integrands of I1 and I2 weighted by k² and 1 add up to J0's, so
-//! J0 = k² I1 + I2 at the solved k, from the integrals the ellipse solve returns; its bound is the
-//! larger of theirs plus 4ε (both are positive). `tests/contact.rs` checks it against the
+//! J0 = k² I1 + I2 at the solved k, from the integrals the ellipse solve returns; its bound, as
+//! a value at the exact root, is the larger of theirs plus 4ε (both are positive) plus k's, or
+//! the correlated bound where that is smaller. `tests/contact.rs` checks it against the
 //! independent quadrature `routes::direct::approach_integral`.
 
 use super::convolution;
@@ -102,6 +112,91 @@ pub struct ContactSolution<T: Real> {
     b1: T,
 }
 
+/// The shape's errors as they reach the sizes. With q1, q2 the relative errors of I1, I2 at
+/// the computed k (bounded by their bounds e1, e2), ρ the residual Ĩ2/(Ĩ1·A1/B1) − 1 of (33)
+/// there, s_i = k I_i′/I_i and σ = s2 − s1 = F′ > 0, the computed k̃ = k*·e^δ and, to first
+/// order, σδ = ρ − q2 + q1, and Ĩ_i = I_i(k*)(1 + t_i) with
+///
+/// ```text
+/// t1 = (s2 q1 − s1 q2 + s1 ρ)/σ,   t2 = (s2 q1 − s1 q2 + s2 ρ)/σ.
+/// ```
+///
+/// Every size's error is A t1 + B t2 + C δ for constants from its closed form (with
+/// w1 = k² I1/J0, w2 = I2/J0 = 1 − w1: a³ ∝ I1 gives A = 1/3, b = k a adds C = 1, …), so it is
+/// bounded by the sum over q1, q2, ρ of |coefficient|·bound: the errors of I1, I2 and k, which
+/// are one error seen three ways, are counted once. The coefficients take the derivatives'
+/// own errors (|s_i| times their relative bounds) at their worst, and a second-order term
+/// 32(δ + e1 + e2)² covers the rest. Only where the derivatives are known and σ is positive
+/// with their errors below σ/2.
+struct ShapeErrors {
+    s1: f64,
+    s2: f64,
+    /// The uncertainties of s1, s2.
+    d1: f64,
+    d2: f64,
+    /// The least σ the derivatives' errors allow.
+    sigma: f64,
+    w1: f64,
+    e1: RelError,
+    e2: RelError,
+    rho: RelError,
+    second: RelError,
+}
+
+impl ShapeErrors {
+    fn new<T: Real>(el: &Ellipse<T>, j0: &T, ratio: &T) -> Option<Self> {
+        let ints = &el.integrals;
+        let (d1, d2) = (ints.di1_dk.as_ref()?, ints.di2_dk.as_ref()?);
+        let k = &el.k.value;
+        let p = k.prec();
+        let s = |d: &Estimated<T>, i: &T| (k.clone() * &d.value / i).to_f64();
+        let (s1, s2) = (s(d1, &ints.i1.value), s(d2, &ints.i2.value));
+        let unc = |s: f64, d: &Estimated<T>| s.abs() * (d.error.to_f64() + 1e-14);
+        let (u1, u2) = (unc(s1, d1), unc(s2, d2));
+        let sigma = s2 - s1 - u1 - u2;
+        if !(sigma.is_finite() && sigma > 0.5 * (s2 - s1)) {
+            return None;
+        }
+        let w1 = (k.clone().square() * &ints.i1.value / j0).to_f64();
+        if !(0.0..=1.0).contains(&w1) {
+            return None;
+        }
+        let rho_hat = ints.i2.value.clone() / &ints.i1.value / ratio - T::one(p);
+        // The two divisions' roundings and the ratio R2/R1's own.
+        let rho = RelError::of(&rho_hat).add(RelError::eps::<T>(3, p));
+        let (e1, e2) = (ints.i1.error, ints.i2.error);
+        let delta = rho.add(e1).add(e2).scale(1.0 / sigma);
+        let first = delta.add(e1).add(e2);
+        Some(ShapeErrors {
+            s1,
+            s2,
+            d1: u1,
+            d2: u2,
+            sigma,
+            w1,
+            e1,
+            e2,
+            rho,
+            second: first.mul(first).scale(32.0),
+        })
+    }
+
+    /// A bound on |A t1 + B t2 + C δ| (first order, plus the second-order term scaled by
+    /// |A| + |B| + |C| + 1).
+    fn bound(&self, a: f64, b: f64, c: f64) -> RelError {
+        let s = a + b;
+        let c1 = (s * self.s2 + c).abs() + s.abs() * self.d2;
+        let c2 = (s * self.s1 + c).abs() + s.abs() * self.d1;
+        let cr = (a * self.s1 + b * self.s2 + c).abs() + a.abs() * self.d1 + b.abs() * self.d2;
+        let up = 1.0 + 1e-12;
+        self.e1
+            .scale(up * c1 / self.sigma)
+            .add(self.e2.scale(up * c2 / self.sigma))
+            .add(self.rho.scale(up * cr / self.sigma))
+            .add(self.second.scale(1.0 + a.abs() + b.abs() + c.abs()))
+    }
+}
+
 /// The inputs' names and the message for a quantity that overflows or underflows the working
 /// type although every input is valid (a radius of 1e-320, a load of 1e300).
 const RESCALE: &str = "(overflow or underflow: rescale the inputs)";
@@ -155,9 +250,21 @@ impl<T: Real> ContactProblem<T> {
         let ellipse = ellipse(&self.speed, &ratio)?;
         let ints = &ellipse.integrals;
         let pair_error = ints.i1.error.max(ints.i2.error);
-        let j0 = j0_from_pair(&ellipse.k.value, &ints.i1.value, &ints.i2.value, pair_error)
+        let mut j0 = j0_from_pair(&ellipse.k.value, &ints.i1.value, &ints.i2.value, pair_error)
             .checked("J0")?;
-        let sizes = Sizes::new(self, &ellipse, &j0, &a1, &b1);
+        let shape = ShapeErrors::new(&ellipse, &j0.value, &ratio);
+        let sizes = Sizes::new(self, &ellipse, &j0, &a1, &b1, shape.as_ref());
+        // J0 as the value at the exact root: its error at the computed k plus its change over
+        // k's error (|k J0′/J0| ≤ 1), or the correlated bound where it is smaller.
+        let p = a1.prec();
+        j0.error = j0.error.add(ellipse.k.error.add(RelError::eps::<T>(2, p)));
+        if let Some(sh) = &shape {
+            let w1 = sh.w1;
+            let tight = sh
+                .bound(w1, 1.0 - w1, 2.0 * w1)
+                .add(RelError::eps::<T>(5, p));
+            j0.error = j0.error.min(tight);
+        }
         Ok(ContactSolution {
             a: fits("semi-axis a", sizes.a)?,
             b: fits("semi-axis b", sizes.b)?,
@@ -198,7 +305,64 @@ struct Sizes<T: Real> {
 }
 
 impl<T: Real> Sizes<T> {
-    fn new(pb: &ContactProblem<T>, el: &Ellipse<T>, j0: &Estimated<T>, a1: &T, b1: &T) -> Self {
+    /// The sizes with the bounds of [`Sizes::separate`], each replaced by the correlated bound
+    /// of [`ShapeErrors`] plus the same roundings where that is smaller.
+    fn new(
+        pb: &ContactProblem<T>,
+        el: &Ellipse<T>,
+        j0: &Estimated<T>,
+        a1: &T,
+        b1: &T,
+        shape: Option<&ShapeErrors>,
+    ) -> Self {
+        let mut s = Self::separate(pb, el, j0, a1, b1);
+        let Some(sh) = shape else { return s };
+        let p = a1.prec();
+        let eps = |x: f64| RelError::eps::<T>(1, p).scale(x);
+        let w1 = sh.w1;
+        let w2 = 1.0 - w1;
+        // (A, B, C) of each quantity's error A t1 + B t2 + C δ (module docs) and its roundings
+        // (in ε: those of the separate bounds, a's entering b, p0, d0 as a's value does).
+        let rows: [(&mut Estimated<T>, [f64; 3], f64); 4] = match &pb.loading {
+            Loading::Load(_) => {
+                let ra = 8.0 / 3.0 + 4.0;
+                [
+                    (&mut s.a, [1.0 / 3.0, 0.0, 0.0], ra),
+                    (&mut s.b, [1.0 / 3.0, 0.0, 1.0], ra + 1.0),
+                    (&mut s.p0, [-2.0 / 3.0, 0.0, -1.0], 2.0 * ra + 6.0),
+                    (&mut s.d0, [w1 - 1.0 / 3.0, w2, 2.0 * w1], 3.0 * ra + 16.0),
+                ]
+            }
+            Loading::Approach(_) => {
+                let ra = 7.0;
+                let (ah, bh) = ((1.0 - w1) / 2.0, -w2 / 2.0);
+                [
+                    (&mut s.a, [ah, bh, -w1], ra),
+                    (&mut s.b, [ah, bh, 1.0 - w1], ra + 1.0),
+                    (&mut s.p0, [ah - 1.0, bh, -w1 - 1.0], ra + 5.0),
+                    (
+                        &mut s.load,
+                        [(1.0 - 3.0 * w1) / 2.0, -1.5 * w2, -3.0 * w1],
+                        3.0 * ra + 11.0,
+                    ),
+                ]
+            }
+        };
+        for (q, [a, b, c], r) in rows {
+            q.error = q.error.min(sh.bound(a, b, c).add(eps(r)));
+        }
+        s
+    }
+
+    /// Each size with a bound that adds the bounds of its parts: k's, I1's (with its change
+    /// over k's error) and J0's.
+    fn separate(
+        pb: &ContactProblem<T>,
+        el: &Ellipse<T>,
+        j0: &Estimated<T>,
+        a1: &T,
+        b1: &T,
+    ) -> Self {
         let p = a1.prec();
         let eps = |n: u32| RelError::eps::<T>(n, p);
         let k = &el.k.value;
