@@ -248,7 +248,20 @@ type HalfSpace<T> = (Speed<T>, T, Option<Solid<T>>);
 const MODULUS_REQUIRED: &str =
     "exactly one of --shear-modulus MU and --youngs-modulus E is required";
 
+/// Prints the solution: one JSON object with `--json`, else the text summary.
 fn report<T: Real>(
+    a: &ContactArgs,
+    sol: &ContactSolution<T>,
+    solid: Option<&Solid<T>>,
+) -> Result<(), CliError> {
+    match a.output.json {
+        true => report_json(a, sol, solid),
+        false => report_text(a, sol, solid),
+    }
+}
+
+/// The solution as one JSON object (docs/cli.md lists its keys).
+fn report_json<T: Real>(
     a: &ContactArgs,
     sol: &ContactSolution<T>,
     solid: Option<&Solid<T>>,
@@ -259,63 +272,72 @@ fn report<T: Real>(
         d.as_ref().map(|d| d.text.as_str())
     }
     let mr = sol.problem().speed.mr();
-    if a.output.json {
-        let (av, a_error) = json_pair(&sol.a);
-        let (b, b_error) = json_pair(&sol.b);
-        let (k, k_error) = json_pair(sol.k());
-        let (e, e_error) = json_pair(sol.e());
-        let (p0, p0_error) = json_pair(&sol.p0);
-        let (d0, d0_error) = json_pair(&sol.d0);
-        let (load, load_error) = json_pair(&sol.load);
-        let bounds = [
-            sol.a.error,
-            sol.b.error,
-            sol.k().error,
-            sol.e().error,
-            sol.p0.error,
-            sol.d0.error,
-            sol.load.error,
-        ];
-        return print_json(&Json {
-            command: "contact",
-            inputs: Inputs {
-                nu: &a.input.nu.text,
-                speed: text(&a.input.speed.speed),
-                gap: text(&a.input.speed.gap),
-                velocity: text(&a.velocity),
-                r_along: &a.r_along.text,
-                r_across: &a.r_across.text,
-                load: a.load.as_ref().map(|d| d.text.as_str()),
-                approach: a.approach.as_ref().map(|d| d.text.as_str()),
-                shear_modulus: text(&a.shear_modulus),
-                youngs_modulus: text(&a.youngs_modulus),
-                density: text(&a.density),
-                method: a.method.label(),
-                precision: a.precision.label(),
-            },
-            precision: prec.label(),
-            bits: prec.bits().to_string(),
-            route: ig.route.label(),
-            c_r: solid.map(|s| s.c_r().to_decimal()),
-            mr: solid.map(|_| mr.to_decimal()),
-            a: av,
-            a_error,
-            b,
-            b_error,
-            k,
-            k_error,
-            e,
-            e_error,
-            major_axis: sol.ellipse.major.label(),
-            p0,
-            p0_error,
-            d0,
-            d0_error,
-            load,
-            load_error,
-            error_estimate: largest(&bounds),
-        });
-    }
+    let (av, a_error) = json_pair(&sol.a);
+    let (b, b_error) = json_pair(&sol.b);
+    let (k, k_error) = json_pair(sol.k());
+    let (e, e_error) = json_pair(sol.e());
+    let (p0, p0_error) = json_pair(&sol.p0);
+    let (d0, d0_error) = json_pair(&sol.d0);
+    let (load, load_error) = json_pair(&sol.load);
+    let bounds = [
+        sol.a.error,
+        sol.b.error,
+        sol.k().error,
+        sol.e().error,
+        sol.p0.error,
+        sol.d0.error,
+        sol.load.error,
+    ];
+    print_json(&Json {
+        command: "contact",
+        inputs: Inputs {
+            nu: &a.input.nu.text,
+            speed: text(&a.input.speed.speed),
+            gap: text(&a.input.speed.gap),
+            velocity: text(&a.velocity),
+            r_along: &a.r_along.text,
+            r_across: &a.r_across.text,
+            load: a.load.as_ref().map(|d| d.text.as_str()),
+            approach: a.approach.as_ref().map(|d| d.text.as_str()),
+            shear_modulus: text(&a.shear_modulus),
+            youngs_modulus: text(&a.youngs_modulus),
+            density: text(&a.density),
+            method: a.method.label(),
+            precision: a.precision.label(),
+        },
+        precision: prec.label(),
+        bits: prec.bits().to_string(),
+        route: ig.route.label(),
+        c_r: solid.map(|s| s.c_r().to_decimal()),
+        mr: solid.map(|_| mr.to_decimal()),
+        a: av,
+        a_error,
+        b,
+        b_error,
+        k,
+        k_error,
+        e,
+        e_error,
+        major_axis: sol.ellipse.major.label(),
+        p0,
+        p0_error,
+        d0,
+        d0_error,
+        load,
+        load_error,
+        error_estimate: largest(&bounds),
+    })
+}
+
+/// The solution as text: the inputs, then each value with its bound.
+fn report_text<T: Real>(
+    a: &ContactArgs,
+    sol: &ContactSolution<T>,
+    solid: Option<&Solid<T>>,
+) -> Result<(), CliError> {
+    let ig = &sol.ellipse.integrals;
+    let prec = ig.precision;
+    let mr = sol.problem().speed.mr();
     let mut t = Text::new(a.output.digits);
     let given = match (&a.load, &a.approach) {
         (Some(l), _) => format!("load P = {}", l.text),
