@@ -11,13 +11,15 @@ import os
 import re
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-CRIT = os.path.join(ROOT, "target", "criterion", "scaling")
+CRIT = os.path.join(ROOT, "target", "criterion")
 
 
 def medians():
     out = {}
-    for est in glob.glob(os.path.join(CRIT, "*", "*", "new", "estimates.json")):
-        job, cell = est.split(os.sep)[-4:-2]
+    # criterion names a group's folder by its name with '/' as '_': scaling_<job>/threads=N
+    for est in glob.glob(os.path.join(CRIT, "scaling_*", "*", "new", "estimates.json")):
+        group, cell = est.split(os.sep)[-4:-2]
+        job = group[len("scaling_"):]
         m = re.fullmatch(r"threads=(\d+)", cell)
         if m:
             with open(est) as fh:
