@@ -179,6 +179,19 @@ pub fn positive<T: Real>(
     what: &str,
     p: T::Prec,
 ) -> Result<T, CliError> {
+    positive_by(arg, option, what, p, arg.text.contains('/'))
+}
+
+/// [`positive`] and [`positive_exact`]: the domain check, the one rounding (from `arg.exact`
+/// when `from_exact`, else by `T::parse` of the text) and the check that the rounded value is
+/// a normal number of the working precision.
+fn positive_by<T: Real>(
+    arg: &Decimal,
+    option: &str,
+    what: &str,
+    p: T::Prec,
+    from_exact: bool,
+) -> Result<T, CliError> {
     let refuse = |why: String| CliError::value(option, &arg.text, why);
     if arg.exact <= 0 {
         return Err(refuse(format!(
@@ -186,7 +199,7 @@ pub fn positive<T: Real>(
             arg.text
         )));
     }
-    let x = if arg.text.contains('/') {
+    let x = if from_exact {
         let bits = T::bits(p) + 64;
         T::from_float(&rug::Float::with_val(bits, &arg.exact), p)
     } else {
@@ -289,27 +302,5 @@ pub fn positive_exact<T: Real>(
     what: &str,
     p: T::Prec,
 ) -> Result<T, CliError> {
-    let refuse = |why: String| CliError::value(option, &arg.text, why);
-    let prec = Precision::of::<T>(p);
-    let x = T::from_float(&rug::Float::with_val(T::bits(p) + 64, &arg.exact), p);
-    if arg.exact <= 0 {
-        return Err(refuse(format!(
-            "{what} = {} is outside its domain (0, inf)",
-            arg.text
-        )));
-    }
-    if !x.is_finite() {
-        return Err(refuse(format!(
-            "{what} = {} overflows {prec} (rescale, or use a wider precision)",
-            arg.text
-        )));
-    }
-    if x < T::min_positive(p) {
-        return Err(refuse(format!(
-            "{what} = {} is below the smallest normal number of {prec} (rescale, or use a \
-             wider precision)",
-            arg.text
-        )));
-    }
-    Ok(x)
+    positive_by(arg, option, what, p, true)
 }
