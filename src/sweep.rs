@@ -1,5 +1,6 @@
 //! Sweeps: many solves at once — the ellipse (33) over points of (ν, speed, A1/B1), full contact
-//! solutions over a list of problems, and I1, I2 of (34) over a list of axis ratios — returned
+//! solutions over a list of problems (or of problems some of which could not be formed:
+//! [`try_contacts`]), and I1, I2 of (34) over a list of axis ratios — returned
 //! in input order, each point with its own result or its own typed error (one bad point never
 //! fails the others).
 //!
@@ -163,11 +164,67 @@ pub fn contacts<T>(
 where
     T: Real + Send + Sync,
 {
-    let worth = (problems.first()).map_or(1, |pb| worth::<T>(problems.len(), &pb.radius_along));
-    in_blocks(problems, worth, |block, out| {
+    contacts_by(problems, |pb| Ok(pb), opts)
+}
+
+/// [`contacts`] over problems the caller formed point by point, some of which could not be
+/// formed (a velocity at or above c_R at one point of a grid, a modulus out of range): each
+/// error is that point's result, unchanged, and the other problems are solved as [`contacts`]
+/// solves them (the same blocks, shared set-ups and continuation: without errors, the same
+/// bits). One result per entry, in input order.
+/// Implements (26)–(33) per problem, each within its own bound as [`ContactProblem::solve`].
+///
+/// ```
+/// use moving_hertz::sweep;
+/// use moving_hertz::physics::{Moduli, Solid};
+/// use moving_hertz::{ContactProblem, Loading, Options};
+/// // Steel (E = 210 GPa, ν = 0.3, ρ = 7850 kg/m³) at 2000 and 3000 m/s (above c_R).
+/// let moduli = Moduli::Youngs { youngs_modulus: "210e9", density: "7850" };
+/// let steel = Solid::<f64>::parse("0.3", moduli, ())?;
+/// let problems: Vec<_> = ["2000", "3000"]
+///     .iter()
+///     .map(|v| {
+///         Ok(ContactProblem {
+///             speed: steel.parse_velocity(v)?,
+///             radius_along: 0.05,
+///             radius_across: 0.02,
+///             loading: Loading::Load(1000.0),
+///             shear_modulus: *steel.shear_modulus().expect("given by E"),
+///         })
+///     })
+///     .collect();
+/// let solved = sweep::try_contacts(&problems, &Options::default());
+/// assert!(solved[0].as_ref().is_ok_and(|s| s.p0.error.to_f64() < 1e-13));
+/// assert!(solved[1].as_ref().is_err_and(|e| e.to_string().contains("c_R")));
+/// # Ok::<(), moving_hertz::Error>(())
+/// ```
+pub fn try_contacts<T>(
+    problems: &[Result<ContactProblem<T>>],
+    opts: &Options<T>,
+) -> Vec<Result<ContactSolution<T>>>
+where
+    T: Real + Send + Sync,
+{
+    contacts_by(problems, |r| r.as_ref().map_err(Error::clone), opts)
+}
+
+/// The one loop of [`contacts`] and [`try_contacts`]: the problem of each item (or its error,
+/// which becomes its result) solved with the block's [`Run`].
+fn contacts_by<T, I: Sync>(
+    items: &[I],
+    problem: impl for<'i> Fn(&'i I) -> Result<&'i ContactProblem<T>> + Sync + Send,
+    opts: &Options<T>,
+) -> Vec<Result<ContactSolution<T>>>
+where
+    T: Real + Send + Sync,
+{
+    let first = items.iter().find_map(|i| problem(i).ok());
+    let worth = first.map_or(1, |pb| worth::<T>(items.len(), &pb.radius_along));
+    in_blocks(items, worth, |block, out| {
         let mut run = Run::new(opts);
-        for (pb, slot) in block.iter().zip(out) {
-            *slot = pb.solve_by(|speed, ratio| run.solve(speed, ratio));
+        for (item, slot) in block.iter().zip(out) {
+            *slot =
+                problem(item).and_then(|pb| pb.solve_by(|speed, ratio| run.solve(speed, ratio)));
         }
     })
 }

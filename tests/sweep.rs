@@ -357,3 +357,64 @@ fn empty_and_single_point_sweeps() {
     assert_eq!(swept.len(), 1);
     assert!(within(swept[0].as_ref().unwrap(), &want) <= 1.0);
 }
+
+/// `try_contacts`: a problem that could not be formed (a velocity above c_R) keeps its error, in
+/// place, across two blocks; every other point within its bounds of the one-by-one solve; and
+/// with no errors the same bits as `contacts`.
+#[test]
+fn try_contacts_keeps_each_formation_error_in_place() {
+    let moduli = Moduli::Youngs {
+        youngs_modulus: "210e9",
+        density: "7850",
+    };
+    let steel = Solid::<f64>::parse("0.3", moduli, ()).unwrap();
+    let mu = *steel.shear_modulus().unwrap();
+    let velocity = |j: usize| match j {
+        5 | 64 | 70 => "3000".to_string(),
+        _ => format!("{}", 100 + 25 * j),
+    };
+    let formed: Vec<moving_hertz::Result<ContactProblem<f64>>> = (0..80)
+        .map(|j| {
+            Ok(ContactProblem {
+                speed: steel.parse_velocity(&velocity(j))?,
+                radius_along: 0.05,
+                radius_across: 0.02,
+                loading: Loading::Load(1000.0),
+                shear_modulus: mu,
+            })
+        })
+        .collect();
+    let opts = Options::default();
+    let swept = sweep::try_contacts(&formed, &opts);
+    assert_eq!(swept.len(), 80);
+    for (j, (f, got)) in formed.iter().zip(&swept).enumerate() {
+        match (f, got) {
+            (Err(e), Err(g)) => {
+                assert!([5, 64, 70].contains(&j), "{j}");
+                assert_eq!(e.to_string(), g.to_string());
+                assert!(g.to_string().contains("c_R") && g.to_string().contains("3000"));
+            }
+            (Ok(pb), Ok(got)) => {
+                let want = pb.solve(&opts).unwrap();
+                for (g, w) in [(&got.a, &want.a), (&got.p0, &want.p0), (&got.d0, &want.d0)] {
+                    let d = (g.value / w.value - 1.0).abs();
+                    assert!(d <= g.error.to_f64() + w.error.to_f64(), "{j}: {g:?} {w:?}");
+                }
+            }
+            (f, g) => panic!("point {j}: formed {f:?}, solved {g:?}"),
+        }
+    }
+    let valid: Vec<ContactProblem<f64>> = formed.into_iter().filter_map(Result::ok).collect();
+    let wrapped: Vec<_> = valid.iter().cloned().map(Ok).collect();
+    let (by_try, by_contacts) = (
+        sweep::try_contacts(&wrapped, &opts),
+        sweep::contacts(&valid, &opts),
+    );
+    for (t, c) in by_try.iter().zip(&by_contacts) {
+        let (t, c) = (t.as_ref().unwrap(), c.as_ref().unwrap());
+        assert_eq!(
+            (t.a.value, t.p0.value, t.k().value),
+            (c.a.value, c.p0.value, c.k().value)
+        );
+    }
+}
