@@ -1124,3 +1124,134 @@ fn numbers_are_printed_one_way() {
         assert!(text.contains("central pressure p0, relative error <="));
     }
 }
+
+/// Issue 46 item 2: `sweep contact` refuses a command line it cannot honour before any work
+/// (exit code 2, nothing on standard output, one line naming the option and quoting the text):
+/// options missing or combined wrongly, a value outside its domain in any list, a modulus, a
+/// density or a μ = E/(2(1 + ν)) that the working precision does not hold, radii whose ratio
+/// overflows, a method or precision it cannot use, more points than one run solves, and the
+/// ellipse sweep's options with the subcommand.
+#[test]
+fn sweep_contact_refusals_before_any_work() {
+    let with = |swap: &[(&'static str, &'static str)], drop: &[&str]| {
+        let mut base = vec![
+            ("--nu", "0.2,0.3"),
+            ("--shear-modulus", "80e9"),
+            ("--speed", "0,0.5"),
+            ("--r-along", "0.05"),
+            ("--r-across", "0.02"),
+            ("--load", "10,1000"),
+        ];
+        base.retain(|(k, _)| !drop.contains(k));
+        for (k, v) in swap {
+            match base.iter_mut().find(|(b, _)| b == k) {
+                Some(slot) => slot.1 = v,
+                None => base.push((k, v)),
+            }
+        }
+        let mut args = vec!["sweep", "contact"];
+        for (k, v) in base {
+            args.extend([k, v]);
+        }
+        args
+    };
+    let cases: Vec<(Vec<&str>, Vec<&str>)> = vec![
+        (
+            with(&[], &["--shear-modulus"]),
+            vec!["--shear-modulus", "--youngs-modulus"],
+        ),
+        (with(&[], &["--load"]), vec!["--load", "--approach"]),
+        (
+            with(&[("--velocity", "100")], &["--speed"]),
+            vec!["--density"],
+        ),
+        (
+            with(&[("--velocity", "100"), ("--density", "7850")], &[]),
+            vec!["--speed", "--velocity"],
+        ),
+        (
+            with(&[("--approach", "1e-6")], &[]),
+            vec!["--load", "--approach"],
+        ),
+        (
+            with(&[("--nu", "0.2,0.7")], &[]),
+            vec!["'--nu'", "'0.7'", "(-1, 1/2]"],
+        ),
+        (
+            with(&[("--load", "10,-1")], &[]),
+            vec!["'--load'", "'-1'", "(0, inf)"],
+        ),
+        (
+            with(&[("--r-across", "lin:0:1:3")], &[]),
+            vec!["'--r-across'", "'0'"],
+        ),
+        (
+            with(&[("--speed", "0.5,1")], &[]),
+            vec!["'--speed'", "'1'", "[0, 1)"],
+        ),
+        (
+            with(&[("--gap", "0")], &["--speed"]),
+            vec!["'--gap'", "'0'", "(0, 1]"],
+        ),
+        (
+            with(&[("--velocity", "-1"), ("--density", "7850")], &["--speed"]),
+            vec!["'--velocity'", "'-1'", "[0, inf)"],
+        ),
+        (
+            with(&[("--velocity", "100"), ("--density", "0")], &["--speed"]),
+            vec!["'--density'", "'0'"],
+        ),
+        (
+            with(&[("--shear-modulus", "1e-400")], &[]),
+            vec!["'--shear-modulus'", "'1e-400'", "f64"],
+        ),
+        (
+            with(&[("--r-along", "1e-200"), ("--r-across", "1e200")], &[]),
+            vec!["'--r-across'", "'--r-along'", "overflows"],
+        ),
+        (
+            with(
+                &[("--nu", "-0.99999999999"), ("--youngs-modulus", "1e308")],
+                &["--shear-modulus"],
+            ),
+            vec!["'--youngs-modulus'", "'1e308'", "overflows"],
+        ),
+        (
+            with(
+                &[
+                    ("--nu", "-0.99999999999"),
+                    ("--youngs-modulus", "1e308"),
+                    ("--velocity", "1"),
+                    ("--density", "1"),
+                ],
+                &["--shear-modulus", "--speed"],
+            ),
+            vec!["'--youngs-modulus'", "'1e308'"],
+        ),
+        (
+            with(&[("--method", "series")], &[]),
+            vec!["'--method <METHOD>'", "auto, adaptive, fixed"],
+        ),
+        (
+            with(&[("--precision", "20")], &[]),
+            vec!["'20'", "[24, 32768]"],
+        ),
+        (
+            with(
+                &[("--load", "lin:1:2:5000000"), ("--r-along", "1,2,3")],
+                &[],
+            ),
+            vec!["60000000 points", "more than the 10000000"],
+        ),
+    ];
+    for (args, wants) in &cases {
+        refused(args, 2, wants);
+    }
+    refused(
+        &[
+            "sweep", "--nu", "0.2", "--speed", "0.5", "--ratio", "1", "contact",
+        ],
+        2,
+        &["contact", "cannot be used with"],
+    );
+}

@@ -131,7 +131,7 @@ pub fn run(a: &ContactArgs) -> Result<(), CliError> {
             loading,
             shear_modulus,
         };
-        ratio_fits::<T>(a, p)?;
+        ratio_fits::<T>(&a.r_across, &a.r_along, p)?;
         let opts = Options::<T> { method: a.method, ..Default::default() };
         // The ratio's range is checked by the solve before any work: a refusal (exit code 2).
         let inputs = [("method", "--method", a.method.label()), ("curvature ratio", "", "")];
@@ -143,9 +143,13 @@ pub fn run(a: &ContactArgs) -> Result<(), CliError> {
 
 /// Refuses, before any work, radii whose curvature ratio A1/B1 = R2/R1 (formed exactly from
 /// the text) overflows or underflows the working precision, saying so (not "A1/B1 = 0" or
-/// "inf is not finite" from the solve).
-fn ratio_fits<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<(), CliError> {
-    let exact = a.r_across.exact.clone() / &a.r_along.exact;
+/// "inf is not finite" from the solve); `sweep contact` checks its lists' extremes.
+pub(super) fn ratio_fits<T: Real>(
+    r_across: &Decimal,
+    r_along: &Decimal,
+    p: T::Prec,
+) -> Result<(), CliError> {
+    let exact = r_across.exact.clone() / &r_along.exact;
     let ratio = T::from_float(&rug::Float::with_val(T::bits(p) + 64, &exact), p);
     let why = if !ratio.is_finite() {
         "overflows"
@@ -158,8 +162,8 @@ fn ratio_fits<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<(), CliError> {
     Err(CliError::Input(format!(
         "invalid values '{}' for '--r-across' and '{}' for '--r-along': the curvature ratio \
          A1/B1 = R2/R1 = {shown} {why} {} (rescale, or use a wider precision)",
-        a.r_across.text,
-        a.r_along.text,
+        r_across.text,
+        r_along.text,
         Precision::of::<T>(p)
     )))
 }

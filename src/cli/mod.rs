@@ -21,6 +21,7 @@ mod progress;
 mod rayleigh;
 mod study;
 mod sweep;
+mod sweep_contact;
 mod symbolic;
 
 use clap::{CommandFactory, Parser, Subcommand};
@@ -65,8 +66,8 @@ enum Command {
     /// The contact ellipse over every (nu, speed, A1/B1) of three lists or ranges, in parallel
     /// on every core, as CSV or JSON lines written as they are solved (a progress bar on
     /// stderr past a second when it is a terminal). Exit code 1 if a point failed (its row
-    /// carries the error).
-    Sweep(sweep::SweepArgs),
+    /// carries the error). `sweep contact`: the full contact solution over lists or ranges.
+    Sweep(sweep::SweepCommand),
     /// A study of the crate's docs: runs it and writes its CSV (DIR/data), SVG (DIR/figures)
     /// and summary tables.
     Study(study::StudyArgs),
@@ -247,7 +248,7 @@ fn run(command: Command) -> Result<(), CliError> {
         Command::Ellipse(a) => ellipse::run(&a),
         Command::Contact(a) => contact::run(&a),
         Command::Study(a) => study::run(&a),
-        Command::Sweep(a) => sweep::run(&a),
+        Command::Sweep(a) => sweep::run_command(&a),
         Command::Symbolic(a) => symbolic::run(a.kind, a.n, a.format),
         Command::Completions { shell } => {
             let mut script = Vec::new();

@@ -18,18 +18,49 @@ use std::borrow::Cow;
 /// The most points one sweep solves (checked before any work).
 pub const POINT_CAP: usize = 10_000_000;
 
+/// `sweep` with the ellipse sweep's options, or `sweep contact` with its own
+/// ([`super::sweep_contact`]): a subcommand and the options exclude each other.
+#[derive(clap::Args, Debug)]
+#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
+pub struct SweepCommand {
+    #[command(subcommand)]
+    pub of: Option<SweepOf>,
+    #[command(flatten)]
+    pub ellipse: SweepArgs,
+}
+
+/// What else `sweep` sweeps.
+#[derive(clap::Subcommand, Debug)]
+pub enum SweepOf {
+    /// The full contact solution (a, b, k, e, p0, and d0 or the load, each with its bound) at
+    /// every point of lists or ranges of nu, the speed (M_R, gap or velocity V), R1, R2 and the
+    /// load or approach, for one modulus or a list, as CSV or JSON lines in input order (the
+    /// load or approach fastest), on every core as `sweep` runs. Exit code 1 if a point failed
+    /// (its row carries the error).
+    Contact(Box<super::sweep_contact::ContactSweepArgs>),
+}
+
+/// Runs `sweep` or `sweep contact`.
+pub fn run_command(c: &SweepCommand) -> Result<(), CliError> {
+    match &c.of {
+        Some(SweepOf::Contact(a)) => super::sweep_contact::run(a),
+        None => run(&c.ellipse),
+    }
+}
+
 #[derive(clap::Args, Debug)]
 pub struct SweepArgs {
     /// Poisson's ratios, -1 < NU <= 1/2: a list `0.1,0.2,1/4`, a range `lin:START:STOP:N` (N
     /// points, evenly spaced) or `log:START:STOP:N` (N points, log-spaced; positive ends).
-    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
-    pub nu: Axis,
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true,
+          required = true)]
+    pub nu: Option<Axis>,
     #[command(flatten)]
     pub speed: SpeedAxis,
     /// Curvature ratios A1/B1 = R2/R1 > 0: a list, `lin:START:STOP:N` (N points, evenly
     /// spaced) or `log:START:STOP:N` (N points, log-spaced).
-    #[arg(long, value_name = "LIST", value_parser = axis)]
-    pub ratio: Axis,
+    #[arg(long, value_name = "LIST", value_parser = axis, required = true)]
+    pub ratio: Option<Axis>,
     /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
     /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
     /// mpfr256 as the output labels it.
@@ -41,6 +72,19 @@ pub struct SweepArgs {
     /// The output: csv (a header line, then one row a point) or jsonl (one JSON object a line).
     #[arg(long, value_name = "FORMAT", default_value = "csv")]
     pub format: Format,
+}
+
+impl SweepArgs {
+    /// `--nu` and `--ratio`: clap requires both unless the subcommand is given, which leaves
+    /// them out (hence their `Option`).
+    fn nu_and_ratio(&self) -> Result<(&Axis, &Axis), CliError> {
+        match (&self.nu, &self.ratio) {
+            (Some(nu), Some(ratio)) => Ok((nu, ratio)),
+            _ => Err(CliError::Input(
+                "sweep needs --nu LIST and --ratio LIST (or the subcommand contact)".into(),
+            )),
+        }
+    }
 }
 
 /// `--speed LIST` or `--gap LIST`: exactly one.
@@ -120,7 +164,7 @@ pub fn axis(s: &str) -> Result<Axis, String> {
 }
 
 impl Axis {
-    fn len(&self) -> usize {
+    pub(super) fn len(&self) -> usize {
         match self {
             Axis::List(v) => v.len(),
             Axis::Range { n, .. } => *n,
@@ -128,7 +172,7 @@ impl Axis {
     }
 
     /// The smallest and largest exact value (a range's ends, which bound it).
-    fn extremes(&self) -> Vec<&Decimal> {
+    pub(super) fn extremes(&self) -> Vec<&Decimal> {
         match self {
             Axis::List(v) => v.iter().collect(),
             Axis::Range { start, stop, .. } => vec![start, stop],
@@ -139,7 +183,7 @@ impl Axis {
     /// at the working precision prints (a linear range's points exact before their one
     /// rounding, a log range's formed 64 bits above the working precision), formed on the
     /// pool's threads.
-    fn values<T: Real + Send>(&self, p: T::Prec) -> Vec<(String, T)> {
+    pub(super) fn values<T: Real + Send>(&self, p: T::Prec) -> Vec<(String, T)> {
         match self {
             Axis::List(v) => v
                 .iter()
@@ -163,7 +207,7 @@ impl Axis {
     /// Refuses, naming the option and its text as typed, a value that the working precision
     /// does not hold as a normal number: one that overflows, or a nonzero one that rounds to a
     /// subnormal or to 0 (a range's end of 1e-4000 at `f64`, which would have been solved as 0).
-    fn check_representable<T: Real>(
+    pub(super) fn check_representable<T: Real>(
         &self,
         option: &str,
         what: &str,
@@ -249,7 +293,7 @@ fn exact<T: Real>(q: &Rational, p: T::Prec) -> T {
 
 /// Checks every value of an option against its domain, exactly, before any work: `lower`
 /// (exclusive or not) and `upper`; refusals name the option and quote the text.
-fn check(
+pub(super) fn check(
     option: &str,
     what: &str,
     axis: &Axis,
@@ -276,11 +320,12 @@ fn check(
 
 /// The inputs' domains, checked exactly before any work, and the point count against its cap.
 fn check_inputs(a: &SweepArgs) -> Result<(), CliError> {
+    let (nu, ratio) = a.nu_and_ratio()?;
     let half = Some((Rational::from((1, 2)), true));
     check(
         "--nu",
         "nu (Poisson's ratio)",
-        &a.nu,
+        nu,
         (-1, false),
         half,
         "(-1, 1/2]",
@@ -308,7 +353,7 @@ fn check_inputs(a: &SweepArgs) -> Result<(), CliError> {
     check(
         "--ratio",
         "curvature ratio A1/B1",
-        &a.ratio,
+        ratio,
         (0, false),
         None,
         "(0, inf)",
@@ -328,7 +373,8 @@ fn point_count(a: &SweepArgs) -> u128 {
     let speeds = (a.speed.speed.as_ref())
         .or(a.speed.gap.as_ref())
         .map_or(0, Axis::len);
-    (a.nu.len() as u128) * (speeds as u128) * (a.ratio.len() as u128)
+    let len = |axis: &Option<Axis>| axis.as_ref().map_or(0, Axis::len) as u128;
+    len(&a.nu) * (speeds as u128) * len(&a.ratio)
 }
 
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
@@ -347,7 +393,7 @@ struct Grid<T> {
 
 impl<T: Real> Grid<T> {
     /// The number of points.
-    fn len(&self) -> usize {
+    pub(super) fn len(&self) -> usize {
         self.nus.len() * self.speeds.len() * self.ratios.len()
     }
 
@@ -371,34 +417,25 @@ impl<T: Real> Grid<T> {
 /// The grid of the three axes, each value with its text; a value that overflows or underflows
 /// the working precision is refused before any work.
 fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
-    let nus = a.nu.values::<T>(p);
+    let (nu_axis, ratio_axis) = a.nu_and_ratio()?;
+    let nus = nu_axis.values::<T>(p);
     let (by_gap, speeds) = match (&a.speed.speed, &a.speed.gap) {
         (Some(s), _) => (false, s.values::<T>(p)),
         (None, Some(g)) => (true, g.values::<T>(p)),
         (None, None) => (false, Vec::new()),
     };
-    let ratios = a.ratio.values::<T>(p);
+    let ratios = ratio_axis.values::<T>(p);
     let speed_axis = a.speed.speed.as_ref().or(a.speed.gap.as_ref());
     let (speed_option, speed_what) = match by_gap {
         true => ("--gap", "gap 1 - M_R"),
         false => ("--speed", "speed M_R"),
     };
-    a.nu.check_representable("--nu", "nu (Poisson's ratio)", &nus, &a.precision)?;
-    // ν > −1 exactly (checked before) may round onto −1 at the working precision, where the
-    // material is not defined: refused here by the single commands' own check, with the text.
-    if let Some((text, nu)) = nus.iter().find(|(_, nu)| *nu <= -T::one(p)) {
-        let why = Material::<T>::parse(text, p).err().map_or_else(
-            || format!("nu (Poisson's ratio) = {text} rounds to {}", short(nu)),
-            |e| e.to_string(),
-        );
-        return Err(CliError::value("--nu", text, why));
-    }
+    let nus = checked_nus(nu_axis, nus, &a.precision, p)?;
     if let Some(axis) = speed_axis {
         axis.check_representable(speed_option, speed_what, &speeds, &a.precision)?;
     }
     let what = "curvature ratio A1/B1";
-    a.ratio
-        .check_representable("--ratio", what, &ratios, &a.precision)?;
+    ratio_axis.check_representable("--ratio", what, &ratios, &a.precision)?;
     let speeds = (speeds.into_iter())
         .map(|(text, sp)| {
             let given = if by_gap {
@@ -414,6 +451,27 @@ fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError
         speeds,
         ratios,
     })
+}
+
+/// The values of `--nu` (`axis`'s `values` at `p`), refused before any work, naming the text,
+/// where one is not a normal number of the working precision or rounds onto −1.
+pub(super) fn checked_nus<T: Real>(
+    axis: &Axis,
+    nus: Vec<(String, T)>,
+    precision: &Precision,
+    p: T::Prec,
+) -> Result<Vec<(String, T)>, CliError> {
+    axis.check_representable("--nu", "nu (Poisson's ratio)", &nus, precision)?;
+    // ν > −1 exactly (checked before) may round onto −1 at the working precision, where the
+    // material is not defined: refused here by the single commands' own check, with the text.
+    if let Some((text, nu)) = nus.iter().find(|(_, nu)| *nu <= -T::one(p)) {
+        let why = Material::<T>::parse(text, p).err().map_or_else(
+            || format!("nu (Poisson's ratio) = {text} rounds to {}", short(nu)),
+            |e| e.to_string(),
+        );
+        return Err(CliError::value("--nu", text, why));
+    }
+    Ok(nus)
 }
 
 /// Solves the sweep block by block on the pool, writing the rows in input order as they are
@@ -503,6 +561,18 @@ fn push_row<T: Real>(
         "error",
     ];
     let values = t.iter().copied().chain(cells.iter().map(|c| c.as_ref()));
+    push_line(out, format, &keys, values);
+}
+
+/// Appends one line of `values` (an empty value: an empty CSV cell, a key left out of the JSON
+/// object) under `keys`, as CSV (quoted where a value holds a comma or a quote) or as one JSON
+/// object.
+pub(super) fn push_line<'v>(
+    out: &mut String,
+    format: Format,
+    keys: &[&str],
+    values: impl Iterator<Item = &'v str>,
+) {
     match format {
         Format::Csv => {
             for (i, v) in values.enumerate() {

@@ -1,0 +1,647 @@
+//! `moving-hertz sweep contact`: the full moving-punch contact solution at every point of lists
+//! or ranges of ν, the modulus, the speed, R1, R2 and the load (or approach), by the library's
+//! [`sweep::try_contacts`] (parallel blocks, shared set-ups, continuation), written as CSV or
+//! JSON lines in input order as the blocks are solved ([`pipeline::solve_in_order`]). Every
+//! input is taken exactly from its text as `contact` takes it, so that a row carries the digits
+//! of `contact --json` for the same inputs.
+
+use super::args::{self, Decimal};
+use super::contact::ratio_fits;
+use super::output::emit;
+use super::pipeline;
+use super::progress::Progress;
+use super::sweep::{axis, check, checked_nus, push_line, Axis, Format, POINT_CAP};
+use super::CliError;
+use moving_hertz::physics::solid::shear_from_youngs;
+use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
+use moving_hertz::sweep::{self, BLOCK};
+use moving_hertz::{
+    with_precision, ContactProblem, ContactSolution, Loading, Material, Method, Moduli, Options,
+    Solid, Speed,
+};
+use rayon::prelude::*;
+use rug::Rational;
+
+#[derive(clap::Args, Debug)]
+#[command(group = clap::ArgGroup::new("speed_given").required(true).args(["speed", "gap", "velocity"]))]
+#[command(group = clap::ArgGroup::new("loading").required(true).args(["load", "approach"]))]
+#[command(group = clap::ArgGroup::new("modulus").required(true).args(["shear_modulus", "youngs_modulus"]))]
+pub struct ContactSweepArgs {
+    /// Poisson's ratios, -1 < NU <= 1/2: a list `0.1,0.2,1/4`, a range `lin:START:STOP:N` (N
+    /// points, evenly spaced) or `log:START:STOP:N` (N points, log-spaced; positive ends).
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub nu: Axis,
+    /// Speeds M_R = V/c_R, 0 <= M_R < 1 (dimensionless): a list or range as for --nu, each gap
+    /// 1 - M_R formed exactly. Exactly one of --speed, --gap and --velocity.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub speed: Option<Axis>,
+    /// Speeds by their gap G = 1 - M_R, 0 < G <= 1 (dimensionless): a list or range.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub gap: Option<Axis>,
+    /// Velocities V >= 0 (m/s with SI moduli and density): a list or range; a point with V at
+    /// or above the Rayleigh wave speed c_R of its half-space is a row with its error (naming
+    /// c_R and V). Needs --density.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true,
+          requires = "density")]
+    pub velocity: Option<Axis>,
+    /// The density rho > 0 of the half-space (kg/m^3 with SI moduli), one value, for
+    /// --velocity.
+    #[arg(long, value_name = "RHO", value_parser = args::decimal, allow_hyphen_values = true,
+          requires = "velocity")]
+    pub density: Option<Decimal>,
+    /// R1: the punch's radii of curvature along the motion, > 0 (length, e.g. m): a list or
+    /// range.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub r_along: Axis,
+    /// R2: the punch's radii of curvature across the motion, > 0 (length, same unit as R1): a
+    /// list or range.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub r_across: Axis,
+    /// Loads P > 0 (force, e.g. N): a list or range. Exactly one of --load and --approach.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub load: Option<Axis>,
+    /// Approaches d0 > 0 (length, same unit as R1): a list or range.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub approach: Option<Axis>,
+    /// Shear moduli mu > 0 (pressure, e.g. Pa): one value, a list or a range. Exactly one of
+    /// --shear-modulus and --youngs-modulus.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub shear_modulus: Option<Axis>,
+    /// Young's moduli E > 0 (pressure, e.g. Pa): one value, a list or a range; mu =
+    /// E/(2(1 + nu)) is formed exactly at each nu.
+    #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
+    pub youngs_modulus: Option<Axis>,
+    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
+    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
+    /// mpfr256 as the output labels it.
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    pub precision: Precision,
+    /// How the ellipse solves evaluate the integrals: auto, adaptive or fixed.
+    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::solve_method())]
+    pub method: Method,
+    /// The output: csv (a header line, then one row a point) or jsonl (one JSON object a line).
+    #[arg(long, value_name = "FORMAT", default_value = "csv")]
+    pub format: Format,
+}
+
+/// How the speeds are given.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum SpeedKind {
+    Mr,
+    Gap,
+    Velocity,
+}
+
+impl ContactSweepArgs {
+    /// The speed axis, its kind, option and name.
+    fn speeds(&self) -> Result<(&Axis, SpeedKind, &'static str, &'static str), CliError> {
+        match (&self.speed, &self.gap, &self.velocity) {
+            (Some(s), _, _) => Ok((s, SpeedKind::Mr, "--speed", "speed M_R")),
+            (None, Some(g), _) => Ok((g, SpeedKind::Gap, "--gap", "gap 1 - M_R")),
+            (None, None, Some(v)) => Ok((v, SpeedKind::Velocity, "--velocity", "velocity V")),
+            _ => Err(required("one of --speed, --gap and --velocity")),
+        }
+    }
+
+    /// The modulus axis, whether it holds Young's moduli, and its option.
+    fn moduli(&self) -> Result<(&Axis, bool, &'static str), CliError> {
+        match (&self.shear_modulus, &self.youngs_modulus) {
+            (Some(m), _) => Ok((m, false, "--shear-modulus")),
+            (None, Some(e)) => Ok((e, true, "--youngs-modulus")),
+            _ => Err(required("one of --shear-modulus and --youngs-modulus")),
+        }
+    }
+
+    /// The load or approach axis, whether it holds loads, and its option.
+    fn sizes(&self) -> Result<(&Axis, bool, &'static str), CliError> {
+        match (&self.load, &self.approach) {
+            (Some(l), _) => Ok((l, true, "--load")),
+            (None, Some(d)) => Ok((d, false, "--approach")),
+            _ => Err(required("one of --load and --approach")),
+        }
+    }
+
+    /// The six axes in the order of the rows (the last fastest): ν, the modulus, the speed,
+    /// R1, R2, the load or approach.
+    fn axes(&self) -> Result<[&Axis; 6], CliError> {
+        Ok([
+            &self.nu,
+            self.moduli()?.0,
+            self.speeds()?.0,
+            &self.r_along,
+            &self.r_across,
+            self.sizes()?.0,
+        ])
+    }
+
+    /// The number of points (saturating: six axes of up to 10^7 values overflow a u128).
+    fn point_count(&self) -> Result<u128, CliError> {
+        let axes = self.axes()?;
+        Ok(axes
+            .iter()
+            .fold(1u128, |n, ax| n.saturating_mul(ax.len() as u128)))
+    }
+}
+
+/// The refusal of a command line without one of a group of options (clap requires each group;
+/// this is the same check where the types ask for it).
+fn required(what: &str) -> CliError {
+    CliError::Input(format!("{what} is required"))
+}
+
+/// The inputs' domains, checked exactly before any work, and the point count against its cap.
+fn check_inputs(a: &ContactSweepArgs) -> Result<(), CliError> {
+    let half = Some((Rational::from((1, 2)), true));
+    let nu_what = "nu (Poisson's ratio)";
+    check("--nu", nu_what, &a.nu, (-1, false), half, "(-1, 1/2]")?;
+    let one = || Some((Rational::from(1), false));
+    let (speeds, kind, option, what) = a.speeds()?;
+    match kind {
+        SpeedKind::Mr => check(option, what, speeds, (0, true), one(), "[0, 1)")?,
+        SpeedKind::Gap => check(
+            option,
+            what,
+            speeds,
+            (0, false),
+            one().map(|(u, _)| (u, true)),
+            "(0, 1]",
+        )?,
+        SpeedKind::Velocity => check(option, what, speeds, (0, true), None, "[0, inf)")?,
+    }
+    let positive = [
+        (Some(&a.r_along), "--r-along", "radius along the motion R1"),
+        (
+            Some(&a.r_across),
+            "--r-across",
+            "radius across the motion R2",
+        ),
+        (a.load.as_ref(), "--load", "load P"),
+        (a.approach.as_ref(), "--approach", "approach d0"),
+        (
+            a.shear_modulus.as_ref(),
+            "--shear-modulus",
+            "shear modulus mu",
+        ),
+        (
+            a.youngs_modulus.as_ref(),
+            "--youngs-modulus",
+            "Young's modulus E",
+        ),
+    ];
+    for (axis, option, what) in positive {
+        if let Some(axis) = axis {
+            check(option, what, axis, (0, false), None, "(0, inf)")?;
+        }
+    }
+    let total = a.point_count()?;
+    if total > POINT_CAP as u128 {
+        return Err(CliError::Input(format!(
+            "the sweep has {} points, more than the {POINT_CAP} one run solves",
+            if total == u128::MAX {
+                "more than 10^38".to_string()
+            } else {
+                total.to_string()
+            }
+        )));
+    }
+    Ok(())
+}
+
+pub fn run(a: &ContactSweepArgs) -> Result<(), CliError> {
+    check_inputs(a)?;
+    with_precision!(a.precision, T, p => solve_and_write::<T>(a, p))
+}
+
+/// A positive axis's values with their text, each rounded once as `contact` rounds it
+/// ([`args::positive`] of its text) and refused, naming the option, unless a normal number of
+/// the working precision.
+fn positive_values<T: Real + Send>(
+    axis: &Axis,
+    option: &str,
+    what: &str,
+    precision: &Precision,
+    p: T::Prec,
+) -> Result<Vec<(String, T)>, CliError> {
+    let values = axis.values::<T>(p);
+    axis.check_representable(option, what, &values, precision)?;
+    (values.into_par_iter())
+        .map(|(text, _)| {
+            let exact =
+                decimal_to_rational(&text).map_err(|e| CliError::value(option, &text, e))?;
+            let d = Decimal { text, exact };
+            args::positive::<T>(&d, option, what, p).map(|x| (d.text, x))
+        })
+        .collect()
+}
+
+/// The grid: each axis's values (ν and the speeds as text, the rest rounded), μ (per modulus,
+/// or per (ν, E) when E is given without a velocity), in the order of the rows.
+struct Grid<T> {
+    nus: Vec<String>,
+    moduli: Vec<String>,
+    speeds: Vec<String>,
+    along: Vec<(String, T)>,
+    across: Vec<(String, T)>,
+    sizes: Vec<(String, T)>,
+    /// μ by modulus, or by (ν, E) (index ν·|E| + E) when `mu_by_nu`; empty with --velocity.
+    mu: Vec<T>,
+    mu_by_nu: bool,
+    kind: SpeedKind,
+    youngs: bool,
+    by_load: bool,
+    density: String,
+}
+
+impl<T: Real + Send + Sync> Grid<T> {
+    /// The grid of the command line at precision `p`; every refusal before any work.
+    fn new(a: &ContactSweepArgs, p: T::Prec) -> Result<Self, CliError> {
+        let precision = &a.precision;
+        let nus: Vec<String> = checked_nus::<T>(&a.nu, a.nu.values::<T>(p), precision, p)?
+            .into_iter()
+            .map(|(t, _)| t)
+            .collect();
+        let (speed_axis, kind, speed_option, speed_what) = a.speeds()?;
+        let speed_values = speed_axis.values::<T>(p);
+        if kind != SpeedKind::Velocity {
+            speed_axis.check_representable(speed_option, speed_what, &speed_values, precision)?;
+        }
+        let (modulus_axis, youngs, modulus_option) = a.moduli()?;
+        let (size_axis, by_load, size_option) = a.sizes()?;
+        let size_what = if by_load { "load P" } else { "approach d0" };
+        let what = ["radius along the motion R1", "radius across the motion R2"];
+        let along = positive_values::<T>(&a.r_along, "--r-along", what[0], precision, p)?;
+        let across = positive_values::<T>(&a.r_across, "--r-across", what[1], precision, p)?;
+        for r2 in a.r_across.extremes() {
+            for r1 in a.r_along.extremes() {
+                ratio_fits::<T>(r2, r1, p)?;
+            }
+        }
+        let sizes = positive_values::<T>(size_axis, size_option, size_what, precision, p)?;
+        let mut grid = Grid {
+            nus,
+            moduli: Vec::new(),
+            speeds: speed_values.into_iter().map(|(t, _)| t).collect(),
+            along,
+            across,
+            sizes,
+            mu: Vec::new(),
+            mu_by_nu: false,
+            kind,
+            youngs,
+            by_load,
+            density: String::new(),
+        };
+        let what = if youngs {
+            "Young's modulus E"
+        } else {
+            "shear modulus mu"
+        };
+        let moduli = positive_values::<T>(modulus_axis, modulus_option, what, precision, p)?;
+        grid.moduli = moduli.iter().map(|(t, _)| t.clone()).collect();
+        grid.half_spaces(a, moduli, modulus_option, p)?;
+        Ok(grid)
+    }
+
+    /// Forms μ (and, with --velocity, checks every half-space) before any work: a refusal
+    /// names the option and quotes the text.
+    fn half_spaces(
+        &mut self,
+        a: &ContactSweepArgs,
+        moduli: Vec<(String, T)>,
+        option: &'static str,
+        p: T::Prec,
+    ) -> Result<(), CliError> {
+        let pairs = self.nus.len() * self.moduli.len();
+        if let Some(rho) = &a.density {
+            args::positive::<T>(rho, "--density", "density rho", p)?;
+            self.density = rho.text.clone();
+            let context = "forming the half-space's wave speeds";
+            let first_error = (0..pairs).into_par_iter().find_map_first(|j| {
+                let (nu, m) = (
+                    &self.nus[j / self.moduli.len()],
+                    &self.moduli[j % self.moduli.len()],
+                );
+                let names = [
+                    ("Young's modulus", option, m.as_str()),
+                    ("shear modulus", option, m.as_str()),
+                    ("density", "--density", rho.text.as_str()),
+                    ("nu", "--nu", nu.as_str()),
+                ];
+                self.solid(nu, m, p)
+                    .err()
+                    .map(|e| CliError::from_run(e, &names, context))
+            });
+            return first_error.map_or(Ok(()), Err);
+        }
+        if !self.youngs {
+            self.mu = moduli.into_iter().map(|(_, mu)| mu).collect();
+            return Ok(());
+        }
+        // μ = E/(2(1 + ν)) exactly at each (ν, E), rounded once, as `contact` forms it.
+        let what = "shear modulus mu = E/(2(1 + nu)) from E";
+        let mu: Vec<Result<T, CliError>> = (0..pairs)
+            .into_par_iter()
+            .map(|j| {
+                let (nu, e) = (
+                    &self.nus[j / self.moduli.len()],
+                    &self.moduli[j % self.moduli.len()],
+                );
+                let exact =
+                    |t: &str| decimal_to_rational(t).map_err(|err| CliError::value(option, t, err));
+                let mu = Decimal {
+                    text: e.clone(),
+                    exact: shear_from_youngs(&exact(e)?, &exact(nu)?),
+                };
+                args::positive_exact::<T>(&mu, option, what, p)
+            })
+            .collect();
+        self.mu = mu.into_iter().collect::<Result<_, _>>()?;
+        self.mu_by_nu = true;
+        Ok(())
+    }
+
+    /// The half-space of ν and modulus text with the density ([`Solid::parse`], as `contact`).
+    fn solid(&self, nu: &str, modulus: &str, p: T::Prec) -> moving_hertz::Result<Solid<T>> {
+        let density = self.density.as_str();
+        let moduli = match self.youngs {
+            true => Moduli::Youngs {
+                youngs_modulus: modulus,
+                density,
+            },
+            false => Moduli::Shear {
+                shear_modulus: modulus,
+                density,
+            },
+        };
+        Solid::parse(nu, moduli, p)
+    }
+
+    /// The number of points.
+    fn len(&self) -> usize {
+        [
+            self.nus.len(),
+            self.moduli.len(),
+            self.speeds.len(),
+            self.along.len(),
+            self.across.len(),
+            self.sizes.len(),
+        ]
+        .iter()
+        .product()
+    }
+
+    /// The indices of point `j` on the six axes (the last fastest).
+    fn indices(&self, mut j: usize) -> [usize; 6] {
+        let lens = [
+            self.nus.len(),
+            self.moduli.len(),
+            self.speeds.len(),
+            self.along.len(),
+            self.across.len(),
+            self.sizes.len(),
+        ];
+        let mut at = [0; 6];
+        for (i, n) in lens.iter().enumerate().rev() {
+            at[i] = j % n;
+            j /= n;
+        }
+        at
+    }
+}
+
+/// The half-space of a point: a [`Solid`] (with --velocity) or the material with μ.
+enum Half<T: Real> {
+    Solid(Solid<T>),
+    Material(Material<T>, T),
+}
+
+impl<T: Real> Half<T> {
+    fn shear_modulus(&self) -> Option<T> {
+        match self {
+            Half::Solid(s) => s.shear_modulus().cloned(),
+            Half::Material(_, mu) => Some(mu.clone()),
+        }
+    }
+
+    fn c_r(&self) -> Option<&T> {
+        match self {
+            Half::Solid(s) => Some(s.c_r()),
+            Half::Material(..) => None,
+        }
+    }
+}
+
+/// What a block formed last, at its indices: kept while consecutive points share it.
+type Cached<K, V> = Option<(K, moving_hertz::Result<V>)>;
+
+/// A point's problem as the block forms it, with c_R of its half-space (with --velocity).
+type Formed<T> = (moving_hertz::Result<ContactProblem<T>>, Option<String>);
+
+impl<T: Real + Send + Sync> Grid<T> {
+    /// The half-space of ν `iv` and modulus `im` (checked before any work).
+    fn half(&self, iv: usize, im: usize, p: T::Prec) -> moving_hertz::Result<Half<T>> {
+        let nu = &self.nus[iv];
+        if self.kind == SpeedKind::Velocity {
+            return self.solid(nu, &self.moduli[im], p).map(Half::Solid);
+        }
+        let mu = match self.mu_by_nu {
+            true => &self.mu[iv * self.moduli.len() + im],
+            false => &self.mu[im],
+        };
+        Ok(Half::Material(Material::parse(nu, p)?, mu.clone()))
+    }
+
+    /// The speed `is` in `half`, from its text exactly (as `contact` forms it).
+    fn speed(&self, half: &Half<T>, is: usize) -> moving_hertz::Result<Speed<T>> {
+        let text = &self.speeds[is];
+        match (half, self.kind) {
+            (Half::Solid(s), _) => s.parse_velocity(text),
+            (Half::Material(m, _), SpeedKind::Gap) => m.parse_gap(text),
+            (Half::Material(m, _), _) => m.parse_speed(text),
+        }
+    }
+
+    /// The problems of the points `range`, each half-space and speed formed once for the
+    /// consecutive points that share it.
+    fn problems(&self, range: std::ops::Range<usize>, p: T::Prec) -> Vec<Formed<T>> {
+        let mut half: Cached<(usize, usize), Half<T>> = None;
+        let mut speed: Cached<(usize, usize, usize), Speed<T>> = None;
+        let mut out = Vec::with_capacity(range.len());
+        for j in range {
+            let [iv, im, is, i1, i2, il] = self.indices(j);
+            let h = match &mut half {
+                Some((at, h)) if *at == (iv, im) => &*h,
+                slot => &slot.insert(((iv, im), self.half(iv, im, p))).1,
+            };
+            let sp = match &mut speed {
+                Some((at, sp)) if *at == (iv, im, is) => &*sp,
+                slot => {
+                    let sp = h
+                        .as_ref()
+                        .map_err(Clone::clone)
+                        .and_then(|h| self.speed(h, is));
+                    &slot.insert(((iv, im, is), sp)).1
+                }
+            };
+            let c_r = h.as_ref().ok().and_then(Half::c_r).map(Real::to_decimal);
+            let size = self.sizes[il].1.clone();
+            let problem = sp.clone().and_then(|speed| {
+                let h = h.as_ref().map_err(Clone::clone)?;
+                Ok(ContactProblem {
+                    speed,
+                    radius_along: self.along[i1].1.clone(),
+                    radius_across: self.across[i2].1.clone(),
+                    loading: if self.by_load {
+                        Loading::Load(size)
+                    } else {
+                        Loading::Approach(size)
+                    },
+                    shear_modulus: h.shear_modulus().unwrap_or_else(|| T::zero(p)),
+                })
+            });
+            out.push((problem, c_r));
+        }
+        out
+    }
+
+    /// The texts of point `j`'s inputs, in the order of the columns.
+    fn texts(&self, j: usize) -> [&str; 6] {
+        let [iv, im, is, i1, i2, il] = self.indices(j);
+        [
+            &self.nus[iv],
+            &self.moduli[im],
+            &self.speeds[is],
+            &self.along[i1].0,
+            &self.across[i2].0,
+            &self.sizes[il].0,
+        ]
+    }
+
+    /// The columns: the inputs, c_R and M_R with --velocity, the results, the error.
+    fn keys(&self) -> Vec<&'static str> {
+        let mut keys = vec![
+            "nu",
+            if self.youngs {
+                "youngs_modulus"
+            } else {
+                "shear_modulus"
+            },
+            match self.kind {
+                SpeedKind::Mr => "speed",
+                SpeedKind::Gap => "gap",
+                SpeedKind::Velocity => "velocity",
+            },
+            "r_along",
+            "r_across",
+            if self.by_load { "load" } else { "approach" },
+        ];
+        if self.kind == SpeedKind::Velocity {
+            keys.extend(["c_r", "mr"]);
+        }
+        keys.extend([
+            "a",
+            "a_error",
+            "b",
+            "b_error",
+            "k",
+            "k_error",
+            "e",
+            "e_error",
+            "major_axis",
+            "p0",
+            "p0_error",
+        ]);
+        keys.extend(match self.by_load {
+            true => ["d0", "d0_error"],
+            false => ["load", "load_error"],
+        });
+        keys.extend(["route", "iterations", "error"]);
+        keys
+    }
+
+    /// The result cells of one point (after its inputs): c_R and M_R with --velocity, the
+    /// values and bounds, or empty cells and the error.
+    fn cells(
+        &self,
+        r: &moving_hertz::Result<ContactSolution<T>>,
+        c_r: Option<String>,
+    ) -> Vec<String> {
+        let velocity = self.kind == SpeedKind::Velocity;
+        let s = match r {
+            Ok(s) => s,
+            Err(e) => {
+                // Every result column empty (the keys less the six inputs and the error).
+                let mut v = vec![String::new(); self.keys().len() - 7];
+                v.push(e.to_string());
+                return v;
+            }
+        };
+        let mut v = Vec::with_capacity(20);
+        if velocity {
+            v.push(c_r.unwrap_or_default());
+            v.push(s.problem().speed.mr().to_decimal());
+        }
+        let other = if self.by_load { &s.d0 } else { &s.load };
+        for x in [&s.a, &s.b, s.k(), s.e()] {
+            v.extend([x.value.to_decimal(), x.error.to_string()]);
+        }
+        v.push(s.ellipse.major.label().into());
+        for x in [&s.p0, other] {
+            v.extend([x.value.to_decimal(), x.error.to_string()]);
+        }
+        v.extend([
+            s.ellipse.integrals.route.label().into(),
+            s.ellipse.iterations.to_string(),
+            String::new(),
+        ]);
+        v
+    }
+}
+
+/// Solves the sweep block by block on the pool, writing the rows in input order as they are
+/// solved; exit code 1 when a point failed (its row carries the error).
+fn solve_and_write<T: Real + Send + Sync>(
+    a: &ContactSweepArgs,
+    p: T::Prec,
+) -> Result<(), CliError> {
+    let points = usize::try_from(a.point_count()?).unwrap_or(usize::MAX);
+    super::bind_global_pool(points, &a.precision);
+    let grid = Grid::<T>::new(a, p)?;
+    let opts = Options::<T> {
+        method: a.method,
+        ..Default::default()
+    };
+    let keys = grid.keys();
+    if a.format == Format::Csv {
+        emit(&(keys.join(",") + "\n"))?;
+    }
+    let total = grid.len();
+    let bar = Progress::new("sweep contact", total);
+    let solve = |range: std::ops::Range<usize>| {
+        let (problems, c_rs): (Vec<_>, Vec<_>) =
+            grid.problems(range.clone(), p).into_iter().unzip();
+        let mut out = String::new();
+        let mut failed = 0;
+        let solved = sweep::try_contacts(&problems, &opts);
+        for ((r, c_r), j) in solved.iter().zip(c_rs).zip(range) {
+            failed += usize::from(r.is_err());
+            let cells = grid.cells(r, c_r);
+            let values = grid
+                .texts(j)
+                .into_iter()
+                .chain(cells.iter().map(String::as_str));
+            push_line(&mut out, a.format, &keys, values);
+        }
+        bar.advance(solved.len());
+        (out, failed)
+    };
+    let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit(&rows))?;
+    bar.finish();
+    if failed > 0 {
+        return Err(CliError::Failed(format!(
+            "{failed} of {total} points failed at {}; their rows carry the error",
+            a.precision
+        )));
+    }
+    Ok(())
+}
