@@ -496,6 +496,7 @@ impl<T: Real + Send + Sync> Grid<T> {
                     } else {
                         Loading::Approach(size)
                     },
+                    // A half-space of moduli always has μ; none would be refused as 0.
                     shear_modulus: h.shear_modulus().unwrap_or_else(|| T::zero(p)),
                 })
             });
