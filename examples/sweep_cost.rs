@@ -1,12 +1,13 @@
 //! The calibration driver of the sweep (docs/calibration.md, "Sweeps"): a 1,000-point A1/B1
-//! curve (10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9, solved one point at a time
+//! curve (10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9 (or the gap 1 − M_R = GAP, the
+//! speeds of `sweep --gap`: tools/sweep_point_cost.sh), solved one point at a time
 //! (`indep`), by `sweep::ellipses` on THREADS threads (`sweep`; default 1), or neither (`none`: the fixed costs
 //! alone, after the same warm-up); prints the evaluations at the working precision. Per-point
 //! instruction counts come from running it under callgrind and subtracting `none`:
 //!
 //! `valgrind --tool=callgrind target/release/examples/sweep_cost f64 sweep -3 0`
 //!
-//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI [THREADS]`
+//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI [THREADS [GAP]]`
 //! (PRECISION f64, dd or bits; MODE indep, sweep or none).
 
 use moving_hertz::prelude::*;
@@ -20,14 +21,19 @@ fn run<T: Real + Send + Sync>(
     lo: f64,
     hi: f64,
     threads: usize,
+    gap: Option<f64>,
 ) -> Result<()> {
     let n = 1000;
     let x = |v: f64| T::from_f64(v, p);
     let ratios: Vec<T> = (0..n)
         .map(|j| x(10f64.powf(lo + (hi - lo) * j as f64 / (n - 1) as f64)))
         .collect();
-    let points = EllipsePoint::grid(&[x(0.25)], &[SpeedGiven::Mr(x(0.9))], &ratios);
-    let speed = Material::new(x(0.25))?.speed(x(0.9))?;
+    let given = gap.map_or(SpeedGiven::Mr(x(0.9)), |g| SpeedGiven::Gap(x(g)));
+    let points = EllipsePoint::grid(&[x(0.25)], &[given], &ratios);
+    let speed = match gap {
+        Some(g) => Material::new(x(0.25))?.speed_from_gap(x(g))?,
+        None => Material::new(x(0.25))?.speed(x(0.9))?,
+    };
     let opts = Options::default();
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -66,9 +72,10 @@ fn main() -> Result<()> {
     let (mode, lo, hi) = (arg(2, "sweep"), arg(3, "-3"), arg(4, "3"));
     let (lo, hi): (f64, f64) = (lo.parse().unwrap_or(-3.0), hi.parse().unwrap_or(3.0));
     let threads: usize = arg(5, "1").parse().unwrap_or(1);
+    let gap = a.get(6).and_then(|g| g.parse().ok());
     match Precision::parse(&arg(1, "f64"))? {
-        Precision::F64 => run::<f64>((), &mode, lo, hi, threads),
-        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi, threads),
-        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi, threads),
+        Precision::F64 => run::<f64>((), &mode, lo, hi, threads, gap),
+        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi, threads, gap),
+        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi, threads, gap),
     }
 }

@@ -10,12 +10,15 @@ Usage (from the repository root, after the benches have run):
     python3 tools/gen_performance.py            # writes docs/performance.md
     python3 tools/gen_performance.py --check    # prints the page instead of writing it
     python3 tools/gen_performance.py --note "load average 3-4 on 2 cores"   # conditions, in the header
+    python3 tools/gen_performance.py --section scaling   # one committed output's section alone
 
 It reads every target/criterion/**/new/benchmark.json (the group and function of a benchmark)
 with the estimates.json beside it (the median), groups the benchmarks by bench and precision
 (f64, dd, mpfrN), and writes one table per bench group with each cell's ratio to the f64 cell of
 the same row (same run), a table of the targets computed from those cells, and the scipy/mpmath
-comparison if target/baseline_solve.md exists. The measurement header names the command, the
+comparison if target/baseline_solve.md exists, and the committed outputs of DATA_SECTIONS
+(docs/data/scaling.txt of `cargo bench --bench scaling`, the sweep's cost a point, the model
+of 16 threads), each as its own section. The measurement header names the command, the
 commit (and whether the working tree differed from it in src/ or benches/), the CPU from
 /proc/cpuinfo and the dates of the oldest and newest estimate read.
 """
@@ -35,6 +38,26 @@ OUT = os.path.join(ROOT, "docs", "performance.md")
 BASELINE = os.path.join(ROOT, "target", "baseline_solve.md")
 PAIRED = os.path.join(CRIT, "sweep_paired.json")
 BENCHES = "dd_arith generic_cost precision_cost physics series fast_integrals ellipse graded sweep contact"
+
+# Committed outputs included as sections (after the bench tables): title, file under docs/data
+# (its own first lines name the command that regenerates it), what it measures. Included as
+# they are; `--section NAME` refreshes one of them in the existing page without the benches.
+DATA_SECTIONS = [
+    ("scaling", "Many cores (`benches/scaling.rs`)", "scaling.txt",
+     "Each parallel job of docs/design.md (\"Many cores\") as one process at 1, 2 and every "
+     "CPU (`RAYON_NUM_THREADS`), criterion's median wall time and its ratio to one thread. "
+     "Targets: two threads ≤ 0.55× one thread for each of the four large jobs."),
+    ("sweep_point_cost", "The sweep command's cost a point (`tools/sweep_point_cost.sh`)",
+     "sweep_point_cost.txt",
+     "`moving-hertz sweep` at f64 on a slice of a 10⁶-point grid (10,000 ratios at each speed), "
+     "instructions (callgrind) and time a point, against a warm `solve_ellipse` of the same "
+     "points. Target: ≤ 0.5× the warm solve."),
+    ("scaling_model", "A model of 16 threads from 2 cores (`tools/scaling_model.py`)",
+     "scaling_model.txt",
+     "Each parallel job's serial part, per-thread work and the imbalance at its end, counted on "
+     "this machine, and Amdahl's law with a tail at 16 threads (docs/design.md, \"Many "
+     "cores\"). Target: ≥ 13× one thread at 16 threads for each of the four large jobs."),
+]
 
 
 def bench_const(bench, name, default):
@@ -380,6 +403,8 @@ def page(data, note=None):
               "| operation | per operation | ratio to an f64 product |", "|---|---|---|"]
         for f in sorted(cells, key=natural):
             L.append(f"| {f} | {fmt(cells[f] / DD_CHAIN)} | {ratio(cells[f] / base) if base else '—'} |")
+    for name, _, _, _ in DATA_SECTIONS:
+        L += [""] + data_section(name)
     L += ["", "## Against what a user would script (`tools/baseline_solve.py`)", ""]
     if os.path.exists(BASELINE):
         with open(BASELINE) as fh:
@@ -397,11 +422,53 @@ def page(data, note=None):
     return "\n".join(L) + "\n"
 
 
+def data_section(name):
+    """The lines of the section of DATA_SECTIONS named `name`: its heading, what it measures,
+    and its committed file as a block (or a line saying how to make it)."""
+    _, title, fname, what = next(d for d in DATA_SECTIONS if d[0] == name)
+    path = os.path.join(ROOT, "docs", "data", fname)
+    L = [f"## {title}", "", what, ""]
+    if os.path.exists(path):
+        with open(path) as fh:
+            L += [f"From `docs/data/{fname}`:", "", "```text", fh.read().rstrip("\n"), "```"]
+    else:
+        L += [f"Not measured for this page: `docs/data/{fname}` is missing."]
+    return L
+
+
+def refresh_section(name):
+    """Rewrites the section `name` of the existing page from its committed file (the rest of
+    the page unchanged); appended before the last section if the page lacks it."""
+    with open(OUT) as fh:
+        lines = fh.read().rstrip("\n").split("\n")
+    heading = data_section(name)[0]
+    order = [data_section(n)[0] for n, _, _, _ in DATA_SECTIONS]
+    starts = [i for i, l in enumerate(lines) if l.startswith("## ")]
+    if heading in lines:
+        at = lines.index(heading)
+        end = next((i for i in starts if i > at), len(lines))
+    else:
+        # after the last section of DATA_SECTIONS that precedes it, else before the last one
+        before = [lines.index(h) for h in order[:order.index(heading)] if h in lines]
+        after = [i for i in starts if before and i > before[-1]]
+        at = end = (after[0] if after else starts[-1])
+    new = data_section(name) + [""]
+    lines[at:end] = new
+    with open(OUT, "w") as fh:
+        fh.write("\n".join(lines).rstrip("\n") + "\n")
+    print(f"rewrote the section '{heading[3:]}' of {os.path.relpath(OUT, ROOT)}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--check", action="store_true", help="print the page instead of writing it")
     ap.add_argument("--note", help="conditions of the run for the header, e.g. the machine's load")
+    ap.add_argument("--section", choices=[d[0] for d in DATA_SECTIONS],
+                    help="rewrite only this section of the existing page, from its docs/data file")
     args = ap.parse_args()
+    if args.section:
+        refresh_section(args.section)
+        return
     data = load()
     if not data:
         sys.exit(f"gen_performance: no criterion output under {CRIT}; run the benches first")

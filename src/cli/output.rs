@@ -130,8 +130,13 @@ pub fn print_json<S: serde::Serialize>(value: &S) -> Result<(), CliError> {
 /// closed the pipe (`| head -1`) or a full device (`> /dev/full`) is a failure (exit code 1,
 /// `writing to standard output: …`), which stops the command.
 pub fn emit(text: &str) -> Result<(), CliError> {
+    emit_bytes(text.as_bytes())
+}
+
+/// [`emit`] of text already in bytes (the `sweep` command's rows).
+pub fn emit_bytes(text: &[u8]) -> Result<(), CliError> {
     let mut out = std::io::stdout().lock();
-    out.write_all(text.as_bytes())
+    out.write_all(text)
         .and_then(|()| out.flush())
         .map_err(|e| CliError::Failed(format!("writing to standard output: {e}")))
 }

@@ -23,14 +23,14 @@ const AHEAD_PER_THREAD: usize = 4;
 /// failed items) and passes the outputs to `write` in input order. Returns the count of failed
 /// items, or the first error of `write`. A job of one block runs on the calling thread (where
 /// the solves may share their node loops among the cores); any other on the pool's threads.
-pub fn solve_in_order<S>(
+pub fn solve_in_order<S, O: Send>(
     total: usize,
     block: usize,
     solve: S,
-    mut write: impl FnMut(String) -> Result<(), CliError>,
+    mut write: impl FnMut(O) -> Result<(), CliError>,
 ) -> Result<usize, CliError>
 where
-    S: Fn(Range<usize>) -> (String, usize) + Sync,
+    S: Fn(Range<usize>) -> (O, usize) + Sync,
 {
     let blocks = total.div_ceil(block.max(1));
     let range = |b: usize| b * block..((b + 1) * block).min(total);
@@ -46,7 +46,7 @@ where
         room: Condvar::new(),
         ahead: threads * AHEAD_PER_THREAD,
     };
-    let (tx, rx) = mpsc::channel::<(usize, (String, usize))>();
+    let (tx, rx) = mpsc::channel::<(usize, (O, usize))>();
     std::thread::scope(|s| {
         let (shared, solve, range) = (&shared, &solve, &range);
         s.spawn(move || {
@@ -106,10 +106,10 @@ impl Shared {
     /// The writer: receives the solved blocks, writes each once every block before it is
     /// written, and stops the job at the first failed write (the blocks still arriving are
     /// dropped). Returns the count of failed items written, or that write's error.
-    fn write_in_order(
+    fn write_in_order<O>(
         &self,
-        rx: mpsc::Receiver<(usize, (String, usize))>,
-        write: &mut impl FnMut(String) -> Result<(), CliError>,
+        rx: mpsc::Receiver<(usize, (O, usize))>,
+        write: &mut impl FnMut(O) -> Result<(), CliError>,
     ) -> Result<usize, CliError> {
         let mut pending = BTreeMap::new();
         let (mut next, mut failed, mut result) = (0, 0, Ok(()));

@@ -4,7 +4,7 @@
 //! ([`pipeline::solve_in_order`]).
 
 use super::args::{self, Decimal};
-use super::output::emit;
+use super::output::{emit, emit_bytes};
 use super::pipeline;
 use super::progress::Progress;
 use super::CliError;
@@ -13,7 +13,6 @@ use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
 use moving_hertz::{with_precision, Ellipse, Material, Method, Options};
 use rayon::prelude::*;
 use rug::{Float, Rational};
-use std::borrow::Cow;
 
 /// The most points one sweep solves (checked before any work).
 pub const POINT_CAP: usize = 10_000_000;
@@ -392,12 +391,28 @@ struct Grid<T> {
 }
 
 impl<T: Real> Grid<T> {
+    /// The grid with each value's text as its output cell in `format`: quoted where CSV or
+    /// JSON needs it, once a value rather than once a row.
+    fn cells(self, format: Format) -> Self {
+        let cell = |text: String| {
+            let mut out = Vec::new();
+            push_cell(&mut out, format == Format::Jsonl, &text);
+            String::from_utf8_lossy(&out).into_owned()
+        };
+        Grid {
+            nus: self.nus.into_iter().map(|(t, x)| (cell(t), x)).collect(),
+            speeds: self.speeds.into_iter().map(|(t, x)| (cell(t), x)).collect(),
+            ratios: self.ratios.into_iter().map(|(t, x)| (cell(t), x)).collect(),
+        }
+    }
+
     /// The number of points.
     pub(super) fn len(&self) -> usize {
         self.nus.len() * self.speeds.len() * self.ratios.len()
     }
 
-    /// The `j`-th point (ratio fastest) and the text of its ν, speed and ratio.
+    /// The `j`-th point (ratio fastest) and the text of its ν, speed and ratio (their cells,
+    /// after [`Grid::cells`]).
     fn point(&self, j: usize) -> (EllipsePoint<T>, [&str; 3]) {
         let (nr, ns) = (self.ratios.len(), self.speeds.len());
         let (nu, speed, ratio) = (
@@ -481,7 +496,7 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         usize::try_from(point_count(a)).unwrap_or(usize::MAX),
         &a.precision,
     );
-    let grid = points::<T>(a, p)?;
+    let grid = points::<T>(a, p)?.cells(a.format);
     let opts = Options::<T> {
         method: a.method,
         ..Default::default()
@@ -502,7 +517,7 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
     // is solved, which then advances the progress bar.
     let solve = |range: std::ops::Range<usize>| {
         let (block, texts): (Vec<_>, Vec<_>) = range.map(|j| grid.point(j)).unzip();
-        let mut out = String::new();
+        let mut out = Vec::with_capacity(texts.len() * 160);
         let mut failed = 0;
         for (r, t) in sweep::ellipses(&block, &opts).iter().zip(&texts) {
             failed += usize::from(r.is_err());
@@ -511,7 +526,7 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         bar.advance(texts.len());
         (out, failed)
     };
-    let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit(&rows))?;
+    let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit_bytes(&rows))?;
     bar.finish();
     if failed > 0 {
         return Err(CliError::Failed(format!(
@@ -522,97 +537,167 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
     Ok(())
 }
 
-/// Appends one point's line: its inputs' text `t`, then the result's cells or the error.
+/// Appends one point's line: its inputs' cells `t` ([`Grid::cells`]), then the result's cells
+/// or the error, each number written straight into `out` (no string of its own).
 fn push_row<T: Real>(
-    out: &mut String,
+    out: &mut Vec<u8>,
     format: Format,
     speed_key: &str,
     t: &[&str; 3],
     r: &moving_hertz::Result<Ellipse<T>>,
 ) {
-    let cells: [Cow<str>; 8] = match r {
-        Ok(e) => [
-            e.k.value.to_decimal().into(),
-            e.k.error.to_string().into(),
-            e.e.value.to_decimal().into(),
-            e.e.error.to_string().into(),
-            e.major.label().into(),
-            e.integrals.route.label().into(),
-            e.iterations.to_string().into(),
-            "".into(),
-        ],
-        Err(err) => {
-            let mut v: [Cow<str>; 8] = Default::default();
-            v[7] = err.to_string().into();
-            v
-        }
+    let mut row = Row {
+        out,
+        json: format == Format::Jsonl,
+        first: true,
     };
-    let keys = [
-        "nu",
-        speed_key,
-        "ratio",
-        "k",
-        "k_error",
-        "e",
-        "e_error",
-        "major_axis",
-        "route",
-        "iterations",
-        "error",
-    ];
-    let values = t.iter().copied().chain(cells.iter().map(|c| c.as_ref()));
-    push_line(out, format, &keys, values);
+    if row.json {
+        row.out.push(b'{');
+    }
+    for (key, cell) in ["nu", speed_key, "ratio"].into_iter().zip(t) {
+        row.open(key);
+        row.out.extend_from_slice(cell.as_bytes());
+    }
+    match r {
+        Ok(e) => {
+            row.number("k", |o| e.k.value.push_decimal(o));
+            row.number("k_error", |o| e.k.error.push_text(o));
+            row.number("e", |o| e.e.value.push_decimal(o));
+            row.number("e_error", |o| e.e.error.push_text(o));
+            let major = e.major.label().as_bytes();
+            row.number("major_axis", |o| o.extend_from_slice(major));
+            let route = e.integrals.route.label().as_bytes();
+            row.number("route", |o| o.extend_from_slice(route));
+            row.number("iterations", |o| push_count(o, e.iterations));
+            row.text("error", "");
+        }
+        Err(err) => {
+            for key in [
+                "k",
+                "k_error",
+                "e",
+                "e_error",
+                "major_axis",
+                "route",
+                "iterations",
+            ] {
+                row.text(key, "");
+            }
+            row.text("error", &err.to_string());
+        }
+    }
+    if row.json {
+        row.out.push(b'}');
+    }
+    row.out.push(b'\n');
 }
 
-/// Appends one line of `values` (an empty value: an empty CSV cell, a key left out of the JSON
-/// object) under `keys`, as CSV (quoted where a value holds a comma or a quote) or as one JSON
-/// object.
+/// Appends one line of `values` under `keys` (an empty value: an empty CSV cell, a key left
+/// out of the JSON object), each quoted where CSV or JSON needs it ([`Row::text`]).
 pub(super) fn push_line<'v>(
-    out: &mut String,
+    out: &mut Vec<u8>,
     format: Format,
     keys: &[&str],
     values: impl Iterator<Item = &'v str>,
 ) {
-    match format {
-        Format::Csv => {
-            for (i, v) in values.enumerate() {
-                if i > 0 {
-                    out.push(',');
-                }
-                if v.contains([',', '"']) {
-                    out.push('"');
-                    out.push_str(&v.replace('"', "\"\""));
-                    out.push('"');
-                } else {
-                    out.push_str(v);
-                }
-            }
+    let mut row = Row {
+        out,
+        json: format == Format::Jsonl,
+        first: true,
+    };
+    if row.json {
+        row.out.push(b'{');
+    }
+    for (key, v) in keys.iter().zip(values) {
+        row.text(key, v);
+    }
+    if row.json {
+        row.out.push(b'}');
+    }
+    row.out.push(b'\n');
+}
+
+/// One line of the output being written: CSV cells, or a JSON object's members (an empty cell
+/// is left out of the object).
+struct Row<'a> {
+    out: &'a mut Vec<u8>,
+    json: bool,
+    first: bool,
+}
+
+impl Row<'_> {
+    /// The separator before every cell but the first, and in JSON the key.
+    fn open(&mut self, key: &str) {
+        if !self.first {
+            self.out.push(b',');
         }
-        Format::Jsonl => {
-            out.push('{');
-            let pairs = keys.iter().zip(values).filter(|(_, v)| !v.is_empty());
-            for (i, (k, v)) in pairs.enumerate() {
-                if i > 0 {
-                    out.push(',');
-                }
-                push_json(out, k);
-                out.push(':');
-                push_json(out, v);
-            }
-            out.push('}');
+        self.first = false;
+        if self.json {
+            push_json(self.out, key);
+            self.out.push(b':');
         }
     }
-    out.push('\n');
+
+    /// A cell that needs no quoting or escaping in either format (a number, a label), written
+    /// by `write` (in JSON as a string).
+    fn number(&mut self, key: &str, write: impl FnOnce(&mut Vec<u8>)) {
+        self.open(key);
+        if self.json {
+            self.out.push(b'"');
+        }
+        write(self.out);
+        if self.json {
+            self.out.push(b'"');
+        }
+    }
+
+    /// A cell of any text: quoted where CSV or JSON needs it; an empty one is left out of JSON.
+    fn text(&mut self, key: &str, v: &str) {
+        if self.json && v.is_empty() {
+            return;
+        }
+        self.open(key);
+        push_cell(self.out, self.json, v);
+    }
+}
+
+/// Appends the text `v` as a JSON string, or as a CSV cell (quoted where it holds a comma or
+/// a quote).
+fn push_cell(out: &mut Vec<u8>, json: bool, v: &str) {
+    if json {
+        push_json(out, v);
+    } else if v.bytes().any(|b| b == b',' || b == b'"') {
+        out.push(b'"');
+        out.extend_from_slice(v.replace('"', "\"\"").as_bytes());
+        out.push(b'"');
+    } else {
+        out.extend_from_slice(v.as_bytes());
+    }
+}
+
+/// Appends the decimal digits of `n`.
+fn push_count(out: &mut Vec<u8>, mut n: usize) {
+    let mut digits = [0u8; 20];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    out.extend_from_slice(&digits[at..]);
 }
 
 /// Appends `s` as a JSON string, escaped as `serde_json` escapes it.
-fn push_json(out: &mut String, s: &str) {
-    if s.contains(|c: char| c == '"' || c == '\\' || c < ' ') {
-        out.push_str(&serde_json::Value::from(s).to_string());
+fn push_json(out: &mut Vec<u8>, s: &str) {
+    if s.bytes().any(|b| b == b'"' || b == b'\\' || b < b' ') {
+        out.extend_from_slice(serde_json::Value::from(s).to_string().as_bytes());
     } else {
-        out.push('"');
-        out.push_str(s);
-        out.push('"');
+        out.push(b'"');
+        out.extend_from_slice(s.as_bytes());
+        out.push(b'"');
     }
 }
 
@@ -632,8 +717,9 @@ mod tests {
             "ν = 0.7 is outside (−1, 1/2]",
             "/",
         ] {
-            let mut out = String::new();
+            let mut out = Vec::new();
             super::push_json(&mut out, s);
+            let out = String::from_utf8(out).expect("UTF-8 in, UTF-8 out");
             assert_eq!(out, serde_json::Value::from(s).to_string(), "{s:?}");
         }
     }

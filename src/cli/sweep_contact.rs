@@ -7,7 +7,7 @@
 
 use super::args::{self, Decimal};
 use super::contact::ratio_fits;
-use super::output::emit;
+use super::output::{emit, emit_bytes};
 use super::pipeline;
 use super::progress::Progress;
 use super::sweep::{axis, check, checked_nus, push_line, Axis, Format, POINT_CAP};
@@ -621,7 +621,7 @@ fn solve_and_write<T: Real + Send + Sync>(
     let solve = |range: std::ops::Range<usize>| {
         let (problems, c_rs): (Vec<_>, Vec<_>) =
             grid.problems(range.clone(), p).into_iter().unzip();
-        let mut out = String::new();
+        let mut out = Vec::new();
         let mut failed = 0;
         let solved = sweep::try_contacts(&problems, &opts);
         for ((r, c_r), j) in solved.iter().zip(c_rs).zip(range) {
@@ -636,7 +636,7 @@ fn solve_and_write<T: Real + Send + Sync>(
         bar.advance(solved.len());
         (out, failed)
     };
-    let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit(&rows))?;
+    let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit_bytes(&rows))?;
     bar.finish();
     if failed > 0 {
         return Err(CliError::Failed(format!(

@@ -134,11 +134,15 @@ impl Real for f64 {
     fn to_decimal(&self) -> String {
         // 17 significant digits identify every f64; 24 characters hold the longest
         // ("-1.2345678901234567e-308"), so the string is allocated once.
-        let mut s = String::with_capacity(24);
-        if !push_17_digits(*self, &mut s) {
-            let _ = std::fmt::Write::write_fmt(&mut s, format_args!("{:.16e}", self));
+        let mut s = Vec::with_capacity(24);
+        self.push_decimal(&mut s);
+        String::from_utf8(s).unwrap_or_default()
+    }
+    fn push_decimal(&self, out: &mut Vec<u8>) {
+        if !push_17_digits(*self, out) {
+            // Writing to a vector never fails.
+            let _ = std::io::Write::write_fmt(out, format_args!("{:.16e}", self));
         }
-        s
     }
     fn to_float(&self, bits: u32) -> rug::Float {
         rug::Float::with_val(bits.max(53), *self)
@@ -279,7 +283,7 @@ impl Real for f64 {
 /// decimal exponent) fits in 128 bits, so one product, one shift and its remainder give the
 /// digits, without std's general algorithm (the sweeps write two decimals a point). Returns
 /// `false`, having written nothing, elsewhere; std's formatter then writes them.
-fn push_17_digits(x: f64, out: &mut String) -> bool {
+fn push_17_digits(x: f64, out: &mut Vec<u8>) -> bool {
     const LOW: f64 = 1e-6;
     const HIGH: f64 = 9_007_199_254_740_992.0; // 2^53
     let a = x.abs();
@@ -296,10 +300,10 @@ fn push_17_digits(x: f64, out: &mut String) -> bool {
     let digits = loop {
         // 0 ≤ 16 − E ≤ 22: m·10^(16−E) < 2^53·10^22 < 2^127 (the double nearest 10^-6 lies
         // below it, E = −7: there the product may not fit, and std writes the digits).
-        let Some(scaled) = u32::try_from(16 - e10)
+        let Some(scaled) = usize::try_from(16 - e10)
             .ok()
-            .and_then(|s| 10u128.checked_pow(s))
-            .and_then(|p| p.checked_mul(m))
+            .and_then(|s| POW10.get(s))
+            .map(|p| p * m)
         else {
             return false;
         };
@@ -328,30 +332,60 @@ fn push_17_digits(x: f64, out: &mut String) -> bool {
             q => break q as u64,
         }
     };
-    let mut text = [0u8; 17];
-    let mut d = digits;
-    for slot in text.iter_mut().rev() {
-        *slot = b'0' + (d % 10) as u8;
-        d /= 10;
+    // "-d.dddddddddddddddde-dd": a sign, 17 digits, a point, "e", a sign and ≤ 2 digits.
+    let mut text = [0u8; 24];
+    let mut at = usize::from(x < 0.0);
+    text[0] = b'-';
+    // The last 16 digits as two groups of 8 in 32-bit arithmetic; the first digit alone.
+    let (first, rest) = (
+        digits / 10_000_000_000_000_000,
+        digits % 10_000_000_000_000_000,
+    );
+    for (group, slots) in [(rest / 100_000_000, at + 2), (rest % 100_000_000, at + 10)] {
+        let mut d = group as u32;
+        for slot in text[slots..slots + 8].iter_mut().rev() {
+            *slot = b'0' + (d % 10) as u8;
+            d /= 10;
+        }
     }
-    if x < 0.0 {
-        out.push('-');
+    text[at] = b'0' + first as u8;
+    text[at + 1] = b'.';
+    at += 18;
+    text[at] = b'e';
+    at += 1;
+    if e10 < 0 {
+        text[at] = b'-';
+        at += 1;
     }
-    out.push(char::from(text[0]));
-    out.push('.');
-    // ASCII digits: valid UTF-8.
-    out.push_str(std::str::from_utf8(&text[1..]).unwrap_or_default());
-    let _ = std::fmt::Write::write_fmt(out, format_args!("e{e10}"));
+    let e = e10.unsigned_abs();
+    if e >= 10 {
+        text[at] = b'0' + (e / 10) as u8;
+        at += 1;
+    }
+    text[at] = b'0' + (e % 10) as u8;
+    out.extend_from_slice(&text[..at + 1]);
     true
 }
+
+/// 10^0 … 10^22, each exact in a `u128`.
+const POW10: [u128; 23] = {
+    let mut p = [1u128; 23];
+    let mut i = 1;
+    while i < 23 {
+        p[i] = p[i - 1] * 10;
+        i += 1;
+    }
+    p
+};
 
 #[cfg(test)]
 mod decimal_tests {
     use super::push_17_digits;
 
     fn check(x: f64) {
-        let mut s = String::new();
+        let mut s = Vec::new();
         if push_17_digits(x, &mut s) {
+            let s = String::from_utf8(s).expect("ASCII");
             assert_eq!(s, format!("{x:.16e}"), "{:e} (bits {:#x})", x, x.to_bits());
         } else {
             assert!(s.is_empty());

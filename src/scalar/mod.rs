@@ -225,6 +225,11 @@ pub trait Real: Field {
     fn parse(s: &str, p: Self::Prec) -> Result<Self>;
     /// Every significant digit of the working precision, in scientific notation.
     fn to_decimal(&self) -> String;
+    /// [`Real::to_decimal`]'s text (ASCII) appended to `out` (`f64` writes its digits there
+    /// without a string of their own: the `sweep` command's rows).
+    fn push_decimal(&self, out: &mut Vec<u8>) {
+        out.extend_from_slice(self.to_decimal().as_bytes());
+    }
     /// The value as an MPFR number with at least `bits` bits (exact if `bits` suffices).
     fn to_float(&self, bits: u32) -> rug::Float;
     /// The MPFR number `x` rounded to precision `p`.
