@@ -29,6 +29,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(single::precision_info, m)?)?;
     m.add_function(wrap_pyfunction!(single::rayleigh, m)?)?;
     m.add_function(wrap_pyfunction!(single::ellipse, m)?)?;
+    m.add_function(wrap_pyfunction!(single::ellipse_f64, m)?)?;
     m.add_function(wrap_pyfunction!(single::contact, m)?)?;
     m.add_function(wrap_pyfunction!(single::integrals_of, m)?)?;
     m.add_function(wrap_pyfunction!(single::symbolic, m)?)?;
