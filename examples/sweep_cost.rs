@@ -1,13 +1,14 @@
-//! The calibration driver of the sweep (docs/calibration.md, "Sweeps"): a 1,000-point A1/B1
-//! curve (10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9, solved one point at a time
+//! The calibration driver of the sweep (docs/calibration.md, "Sweeps"): an A1/B1 curve of
+//! POINTS points (default 1,000; 10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9, solved one point at a time
 //! (`indep`), by `sweep::ellipses` on THREADS threads (`sweep`; default 1), or neither (`none`: the fixed costs
 //! alone, after the same warm-up); prints the evaluations at the working precision. Per-point
 //! instruction counts come from running it under callgrind and subtracting `none`:
 //!
 //! `valgrind --tool=callgrind target/release/examples/sweep_cost f64 sweep -3 0`
 //!
-//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI [THREADS]`
-//! (PRECISION f64, dd or bits; MODE indep, sweep or none).
+//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI [THREADS [POINTS]]`
+//! (PRECISION f64, dd or bits; MODE indep, sweep or none). `tools/python_bench.py` times the
+//! Python package's sweep against `f64 sweep -3 3 2 1000000`.
 
 use moving_hertz::prelude::*;
 use moving_hertz::solve_ellipse;
@@ -20,11 +21,11 @@ fn run<T: Real + Send + Sync>(
     lo: f64,
     hi: f64,
     threads: usize,
+    n: usize,
 ) -> Result<()> {
-    let n = 1000;
     let x = |v: f64| T::from_f64(v, p);
     let ratios: Vec<T> = (0..n)
-        .map(|j| x(10f64.powf(lo + (hi - lo) * j as f64 / (n - 1) as f64)))
+        .map(|j| x(10f64.powf(lo + (hi - lo) * j as f64 / (n.max(2) - 1) as f64)))
         .collect();
     let points = EllipsePoint::grid(&[x(0.25)], &[SpeedGiven::Mr(x(0.9))], &ratios);
     let speed = Material::new(x(0.25))?.speed(x(0.9))?;
@@ -66,9 +67,10 @@ fn main() -> Result<()> {
     let (mode, lo, hi) = (arg(2, "sweep"), arg(3, "-3"), arg(4, "3"));
     let (lo, hi): (f64, f64) = (lo.parse().unwrap_or(-3.0), hi.parse().unwrap_or(3.0));
     let threads: usize = arg(5, "1").parse().unwrap_or(1);
+    let n: usize = arg(6, "1000").parse().unwrap_or(1000).max(1);
     match Precision::parse(&arg(1, "f64"))? {
-        Precision::F64 => run::<f64>((), &mode, lo, hi, threads),
-        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi, threads),
-        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi, threads),
+        Precision::F64 => run::<f64>((), &mode, lo, hi, threads, n),
+        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi, threads, n),
+        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi, threads, n),
     }
 }
