@@ -64,10 +64,20 @@ impl Col {
         }
     }
 
+    /// The place of point `i`: `i`, or 0 in a column of one value (a scalar input, which
+    /// the Python layer does not repeat).
+    fn at(&self, i: usize) -> usize {
+        if self.len() == 1 {
+            0
+        } else {
+            i
+        }
+    }
+
     fn num(&self, i: usize) -> Num {
         match self {
-            Col::F(v) => Num::F(v[i]),
-            Col::T(v) => Num::T(v[i].clone()),
+            Col::F(v) => Num::F(v[self.at(i)]),
+            Col::T(v) => Num::T(v[self.at(i)].clone()),
         }
     }
 }
@@ -227,10 +237,10 @@ fn in_chunks<I: Send + Sync, R: Send>(
 /// A chunk's points and the binding's message for each point it refused (`None`: valid).
 type Built<I> = (Vec<I>, Vec<Option<String>>);
 
-/// The columns' common length, or a refusal.
+/// The columns' common length (a column of one value stands for every point), or a refusal.
 fn common_len(cols: &[&Col]) -> Result<usize, Fail> {
-    let n = cols[0].len();
-    if cols.iter().any(|c| c.len() != n) {
+    let n = cols.iter().map(|c| c.len()).find(|&l| l != 1).unwrap_or(1);
+    if cols.iter().any(|c| c.len() != n && c.len() != 1) {
         let message =
             "the input columns differ in length (the Python layer broadcasts them)".into();
         return Err(Fail::Arg {
@@ -253,17 +263,17 @@ fn ellipse_points<T: Real>(
     for (i, slot) in range.zip(pre.iter_mut()) {
         let point = (|| -> Result<EllipsePoint<T>, Fail> {
             let nu = match nu {
-                Col::F(v) => T::from_f64(v[i], p),
-                Col::T(v) => input::material::<T>(&Num::T(v[i].clone()), p)?.nu().clone(),
+                Col::F(v) => T::from_f64(v[nu.at(i)], p),
+                Col::T(_) => input::material::<T>(&nu.num(i), p)?.nu().clone(),
             };
             let speed = match (sp, kind) {
-                (Col::F(v), SpeedKind::Mr) => SpeedGiven::Mr(T::from_f64(v[i], p)),
-                (Col::F(v), SpeedKind::Gap) => SpeedGiven::Gap(T::from_f64(v[i], p)),
-                (Col::T(v), SpeedKind::Mr) => SpeedGiven::Text(v[i].clone()),
-                (Col::T(v), SpeedKind::Gap) => SpeedGiven::Text(mr_of_gap(&v[i])?),
+                (Col::F(v), SpeedKind::Mr) => SpeedGiven::Mr(T::from_f64(v[sp.at(i)], p)),
+                (Col::F(v), SpeedKind::Gap) => SpeedGiven::Gap(T::from_f64(v[sp.at(i)], p)),
+                (Col::T(v), SpeedKind::Mr) => SpeedGiven::Text(v[sp.at(i)].clone()),
+                (Col::T(v), SpeedKind::Gap) => SpeedGiven::Text(mr_of_gap(&v[sp.at(i)])?),
             };
             let ratio = match ratio {
-                Col::F(v) => T::from_f64(v[i], p),
+                Col::F(v) => T::from_f64(v[ratio.at(i)], p),
                 Col::T(_) => input::positive(&ratio.num(i), "ratio", p)?,
             };
             Ok(EllipsePoint { nu, speed, ratio })

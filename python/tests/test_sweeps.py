@@ -279,3 +279,21 @@ def test_contact_sweep_arguments_are_checked_as_solve_contact_checks_them():
     bad = mh.sweep_contacts(0.3, velocity=100.0, density=[7850.0, -1.0],
                             youngs_modulus=210e9, **kw)
     assert bad.ok.tolist() == [True, False] and "density" in bad.messages[1]
+
+
+def test_a_scalar_input_gives_the_sweep_of_its_repeated_array():
+    # A scalar travels as one value (not repeated); the points are the same, bit for bit.
+    ratio = np.geomspace(1e-2, 1e2, 300)
+    one = mh.sweep_ellipses(0.25, gap=1e-3, ratio=ratio)
+    full = mh.sweep_ellipses(np.full(300, 0.25), gap=np.full(300, 1e-3), ratio=ratio)
+    for f in ("k", "k_error", "e", "I1", "I2"):
+        assert np.array_equal(getattr(one, f).data, getattr(full, f).data), f
+    text = mh.sweep_ellipses("0.25", gap="1e-3", ratio=ratio[:70], precision="dd", as_text=True)
+    text_full = mh.sweep_ellipses(["0.25"] * 70, gap=["1e-3"] * 70, ratio=ratio[:70],
+                                  precision="dd", as_text=True)
+    assert list(text.k) == list(text_full.k) and text.ok.all()
+    c = mh.sweep_contacts(0.3, velocity=np.array([100.0, 3000.0]), radius_along=0.05,
+                          radius_across=0.02, load=1.0, youngs_modulus=210e9, density=7850.0)
+    assert c.ok.tolist() == [True, False]
+    empty = mh.sweep_ellipses(0.25, speed=0.5, ratio=np.array([]))
+    assert empty.shape == (0,) and empty.k.size == 0
