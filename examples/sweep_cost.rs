@@ -1,14 +1,15 @@
-//! The calibration driver of the sweep (docs/calibration.md, "Sweeps"): a 1,000-point A1/B1
-//! curve (10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9 (or the gap 1 − M_R = GAP, the
-//! speeds of `sweep --gap`: tools/sweep_point_cost.sh), solved one point at a time
+//! The calibration driver of the sweep (docs/calibration.md, "Sweeps"): an A1/B1 curve of
+//! POINTS points (default 1,000; 10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9 (or the gap
+//! 1 − M_R = GAP, the speeds of `sweep --gap`: tools/sweep_point_cost.sh), solved one point at a time
 //! (`indep`), by `sweep::ellipses` on THREADS threads (`sweep`; default 1), or neither (`none`: the fixed costs
 //! alone, after the same warm-up); prints the evaluations at the working precision. Per-point
 //! instruction counts come from running it under callgrind and subtracting `none`:
 //!
 //! `valgrind --tool=callgrind target/release/examples/sweep_cost f64 sweep -3 0`
 //!
-//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI [THREADS [GAP]]`
-//! (PRECISION f64, dd or bits; MODE indep, sweep or none).
+//! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI [THREADS [POINTS [GAP]]]`
+//! (PRECISION f64, dd or bits; MODE indep, sweep or none). `tools/python_bench.py` times the
+//! Python package's sweep against `f64 sweep -3 3 2 1000000`.
 
 use moving_hertz::prelude::*;
 use moving_hertz::solve_ellipse;
@@ -21,12 +22,12 @@ fn run<T: Real + Send + Sync>(
     lo: f64,
     hi: f64,
     threads: usize,
+    n: usize,
     gap: Option<f64>,
 ) -> Result<()> {
-    let n = 1000;
     let x = |v: f64| T::from_f64(v, p);
     let ratios: Vec<T> = (0..n)
-        .map(|j| x(10f64.powf(lo + (hi - lo) * j as f64 / (n - 1) as f64)))
+        .map(|j| x(10f64.powf(lo + (hi - lo) * j as f64 / (n.max(2) - 1) as f64)))
         .collect();
     let given = gap.map_or(SpeedGiven::Mr(x(0.9)), |g| SpeedGiven::Gap(x(g)));
     let points = EllipsePoint::grid(&[x(0.25)], &[given], &ratios);
@@ -72,10 +73,11 @@ fn main() -> Result<()> {
     let (mode, lo, hi) = (arg(2, "sweep"), arg(3, "-3"), arg(4, "3"));
     let (lo, hi): (f64, f64) = (lo.parse().unwrap_or(-3.0), hi.parse().unwrap_or(3.0));
     let threads: usize = arg(5, "1").parse().unwrap_or(1);
-    let gap = a.get(6).and_then(|g| g.parse().ok());
+    let n: usize = arg(6, "1000").parse().unwrap_or(1000).max(1);
+    let gap = a.get(7).and_then(|g| g.parse().ok());
     match Precision::parse(&arg(1, "f64"))? {
-        Precision::F64 => run::<f64>((), &mode, lo, hi, threads, gap),
-        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi, threads, gap),
-        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi, threads, gap),
+        Precision::F64 => run::<f64>((), &mode, lo, hi, threads, n, gap),
+        Precision::DoubleDouble => run::<Dd>((), &mode, lo, hi, threads, n, gap),
+        Precision::Mpfr(p) => run::<Mp>(p, &mode, lo, hi, threads, n, gap),
     }
 }

@@ -3,10 +3,12 @@
 as ratios measured in one run on this machine; writes docs/data/python_bench.txt.
 
 1. One f64 solve_ellipse called from Python (call and result included) against the crate's
-   warm solve (`moving-hertz ellipse --repeat 1000`: the median of 1000 in-process solves).
-2. sweep_ellipses at f64 over 10^6 points, per point, against `sweep::ellipses` on the same
-   number of threads (examples/sweep_cost.rs, 1000 points on a warm pool), and the memory the
-   Python sweep takes beyond its output arrays (peak RSS of a fresh process).
+   warm solve (`moving-hertz ellipse --repeat 1000`: the median of 1000 in-process solves),
+   interleaved round by round, the median of each.
+2. sweep_ellipses at f64 over 10^6 points, per point, against `sweep::ellipses` over the same
+   10^6 points on the same number of threads (examples/sweep_cost.rs on a warm pool), back to
+   back round by round, and the memory the Python sweep takes beyond its output arrays (peak
+   RSS of a fresh process).
 3. The same sweep against a vectorised numpy Gauss-Legendre + Newton sweep (what a user would
    write: 96 nodes on [0, pi/2], Newton in ln k), per point, with the correct digits of each
    against the crate at 256 bits.
@@ -55,33 +57,49 @@ def median_ns(fn, n=2000):
     return sorted(times)[n // 2]
 
 
+def median(xs):
+    return sorted(xs)[len(xs) // 2]
+
+
+ROUNDS = 15
+
+
 def single_solve(lines):
-    """Five alternations of the CLI's median of 1000 warm solves and the median of 2000
-    Python calls; the least of each."""
+    """ROUNDS interleaved rounds, each the CLI's median of 1000 warm solves then the median of
+    2000 Python calls; the median of each series, and the spread of the rounds' ratios."""
     args = [str(CLI), "ellipse", "--nu", str(NU), "--speed", str(MR), "--ratio", str(RATIO),
             "--repeat", "1000", "--json"]
     rust, py = [], []
-    for _ in range(5):
+    call = lambda: mh.solve_ellipse(NU, speed=MR, ratio=RATIO)  # noqa: E731
+    median_ns(call, 2000)  # warm: the first call builds the rules
+    for _ in range(ROUNDS):
         out = subprocess.run(args, capture_output=True, text=True, check=True).stdout
         rust.append(float(json.loads(out)["median_ns"]))
-        py.append(median_ns(lambda: mh.solve_ellipse(NU, speed=MR, ratio=RATIO)))
-    rust, py = min(rust), min(py)
+        py.append(median_ns(call))
+    ratios = sorted(p / r for p, r in zip(py, rust))
+    rust, py = median(rust), median(py)
     lines.append("## 1. One f64 solve_ellipse (nu = 0.25, M_R = 0.9990234375, A1/B1 = 2)")
-    lines.append(f"rust warm solve (CLI --repeat 1000, median)      {rust:8.0f} ns")
-    lines.append(f"python solve_ellipse (median of 2000 calls)      {py:8.0f} ns")
-    lines.append(f"ratio python / rust                              {py / rust:8.2f}  (target <= 2)")
+    lines.append(f"{ROUNDS} rounds interleaved, each: the CLI's median of 1000 warm solves, then the median of 2000 Python calls")
+    lines.append(f"rust warm solve (CLI --repeat 1000), median of rounds   {rust:8.0f} ns")
+    lines.append(f"python solve_ellipse, median of rounds                  {py:8.0f} ns")
+    lines.append(f"ratio python / rust                                     {py / rust:8.2f}  (target <= 2; "
+                 f"rounds {ratios[0]:.2f} .. {ratios[-1]:.2f})")
 
 
-def rust_sweep_ns_per_point():
-    """examples/sweep_cost: 1000 points, A1/B1 = 10^-3 .. 10^3, on a warm pool."""
-    out = subprocess.run([str(SWEEP_COST), "f64", "sweep", "-3", "3", str(THREADS)],
-                         capture_output=True, text=True, check=True).stdout
+SWEEP_POINTS = 10**6
+SWEEP_ROUNDS = 3
+
+
+def rust_sweep_ns_per_point(n_points):
+    """examples/sweep_cost: n_points ratios A1/B1 = 10^-3 .. 10^3 on a warm pool of THREADS."""
+    out = subprocess.run([str(SWEEP_COST), "f64", "sweep", "-3", "3", str(THREADS),
+                          str(n_points)], capture_output=True, text=True, check=True).stdout
     ms = float(out.split(",")[-1].split()[0])
-    return ms * 1e6 / 1000
+    return ms * 1e6 / n_points
 
 
 def python_sweep(n_points, threads):
-    """The same curve as examples/sweep_cost (its ratios for 1000 points), ns per point."""
+    """The same curve as examples/sweep_cost, ns per point."""
     ratio = 10.0 ** (-3 + 6 * np.arange(n_points) / (n_points - 1))
     t = time.perf_counter()
     r = mh.sweep_ellipses(0.25, speed=0.9, ratio=ratio, threads=threads)
@@ -105,25 +123,27 @@ print(peak - base, out / 2**20)
 
 
 def sweep(lines):
-    """Short runs alternated (the least of 20 each: on a shared machine a long run measures
-    the other processes too), then one sweep of 10^6 points and its memory."""
+    """The Rust sweep and the Python sweep of the same 10^6 points, back to back,
+    SWEEP_ROUNDS times (the median of each), then the memory of the Python sweep."""
     rust, py = [], []
     python_sweep(20000, THREADS)  # warm the pool and the rules
-    for _ in range(20):
-        rust.append(rust_sweep_ns_per_point())
-        py.append(python_sweep(1000, THREADS)[0])
-    rust, py = min(rust), min(py)
-    big, r = python_sweep(10**6, THREADS)
-    assert r.ok.all()
-    peak, out = map(float, subprocess.run([sys.executable, "-c", MEMORY, str(10**6)],
+    for _ in range(SWEEP_ROUNDS):
+        rust.append(rust_sweep_ns_per_point(SWEEP_POINTS))
+        t, r = python_sweep(SWEEP_POINTS, THREADS)
+        py.append(t)
+        assert r.ok.all()
+    ratios = sorted(p / q for p, q in zip(py, rust))
+    rust, py = median(rust), median(py)
+    peak, out = map(float, subprocess.run([sys.executable, "-c", MEMORY, str(SWEEP_POINTS)],
                                           capture_output=True, text=True,
                                           check=True).stdout.split())
     lines.append("")
-    lines.append(f"## 2. sweep_ellipses at f64, nu = 0.25, M_R = 0.9, A1/B1 = 1e-3 .. 1e3, {THREADS} threads")
-    lines.append(f"rust sweep::ellipses (examples/sweep_cost, 1000 points, least of 20)  {rust:7.0f} ns/point")
-    lines.append(f"python sweep_ellipses (the same 1000 points, least of 20)            {py:7.0f} ns/point")
-    lines.append(f"ratio python / rust                                                  {py / rust:7.2f}  (target <= 1.2)")
-    lines.append(f"python sweep_ellipses, 10^6 points on the same curve, one run         {big:7.0f} ns/point")
+    lines.append(f"## 2. sweep_ellipses at f64, nu = 0.25, M_R = 0.9, A1/B1 = 1e-3 .. 1e3, 10^6 points, {THREADS} threads")
+    lines.append(f"{SWEEP_ROUNDS} rounds, each: examples/sweep_cost (sweep::ellipses), then the Python sweep of the same points")
+    lines.append(f"rust sweep::ellipses (examples/sweep_cost ... {THREADS} {SWEEP_POINTS}), median  {rust:7.0f} ns/point")
+    lines.append(f"python sweep_ellipses, median                                    {py:7.0f} ns/point")
+    lines.append(f"ratio python / rust                                              {py / rust:7.2f}  (target <= 1.2; "
+                 f"rounds {ratios[0]:.2f} .. {ratios[-1]:.2f})")
     lines.append(f"memory of the 10^6-point sweep: peak RSS {peak:.0f} MiB above the process before it, "
                  f"output arrays {out:.0f} MiB: {peak - out:.0f} MiB beyond them (target <= 100 MB)")
     return r
@@ -226,15 +246,17 @@ def dask_ratio(lines):
 
 def main():
     build()
-    load = os.getloadavg()
+    start = os.getloadavg()[0]
+    body = []
+    single_solve(body)
+    sweep(body)
+    against_numpy(body)
+    dask_ratio(body)
+    end = os.getloadavg()[0]
     lines = ["# tools/python_bench.py (the Python package against the crate; ratios in one run)",
-             f"# {os.cpu_count()} CPUs, load average {load[0]:.1f} at the start "
-             "(other processes share the cores: ratios, not absolute times, carry over)", ""]
-    single_solve(lines)
-    sweep(lines)
-    against_numpy(lines)
-    dask_ratio(lines)
-    text = "\n".join(lines) + "\n"
+             f"# {os.cpu_count()} CPUs, load average {start:.1f} at the start and {end:.1f} at the "
+             "end (other processes share the cores: ratios, not absolute times, carry over)", ""]
+    text = "\n".join(lines + body) + "\n"
     OUT.write_text(text)
     print(text, end="")
 

@@ -40,8 +40,8 @@ echo "sweep (whole process, marginal)  $sweep_ir"
 echo "sweep (whole process, 10,000 points at gap 1e-1, all counted)  $((one / 10000))"
 total=0
 for g in $GAPS; do
-  indep=$(count "$EX" f64 indep -2 2 1 "$g")
-  none=$(count "$EX" f64 none -2 2 1 "$g")
+  indep=$(count "$EX" f64 indep -2 2 1 1000 "$g")
+  none=$(count "$EX" f64 none -2 2 1 1000 "$g")
   per=$(((indep - none) / 1000))
   total=$((total + per))
   echo "warm solve_ellipse at gap $g  $per"
@@ -70,8 +70,8 @@ sweep_ns=$(((t4 - t1) * 1000 / 30000))
 echo "sweep (whole process, marginal)  $sweep_ns ns"
 sum=0
 for g in $GAPS; do
-  indep=$(cpu_us "$EX" f64 indep -2 2 1 "$g")
-  none=$(cpu_us "$EX" f64 none -2 2 1 "$g")
+  indep=$(cpu_us "$EX" f64 indep -2 2 1 1000 "$g")
+  none=$(cpu_us "$EX" f64 none -2 2 1 1000 "$g")
   ns=$(((indep - none) * 1000 / 1000))
   sum=$((sum + ns))
   echo "warm solve_ellipse at gap $g  $ns ns"

@@ -34,6 +34,7 @@ __all__ = [
 __version__ = "0.1.0"
 
 _scalar = _numbers.scalar
+_ellipse_f64 = _native.ellipse_f64
 _F = float
 
 
@@ -83,13 +84,37 @@ def solve_ellipse(nu, *, speed=None, gap=None, ratio=None, precision="f64", meth
     ``e_error`` (absolute). Raises :class:`DomainError` before any work for an input out of
     its domain, :class:`ConvergenceError` if the solve does not converge.
     """
-    if (precision == "f64" and type(nu) is _F and type(ratio) is _F and not as_text
-            and gap is None and type(speed) is _F):
-        return tuple.__new__(Ellipse, _native.ellipse("f64", nu, speed, "speed", ratio, method, False))
+    if (type(speed) is _F and type(nu) is _F and type(ratio) is _F and gap is None
+            and precision == "f64" and not as_text):  # floats: the result made natively
+        return _ellipse_f64(nu, speed, ratio, method)
     value, kind = _speed(speed, gap)
     t = _native.ellipse(_numbers.precision(precision), _scalar(nu, "nu"), _scalar(value, kind),
                         kind, _scalar(_required(ratio, "ratio"), "ratio"), method, as_text)
     return _results.build(Ellipse, t, as_text or t[0] != "f64", as_text)
+
+
+def _contact_args(speed, gap, velocity, load, approach, shear_modulus, youngs_modulus,
+                  density):
+    """``(kind, speed, loading, size, modulus_kind, modulus)`` of a contact problem: exactly
+    one speed, one size and one modulus, and a density with a velocity only."""
+    given = [(n, v) for n, v in (("speed", speed), ("gap", gap), ("velocity", velocity))
+             if v is not None]
+    if len(given) != 1:
+        raise DomainError("give exactly one of speed= (M_R), gap= (1 - M_R) and velocity= "
+                          "(V in m/s)", "speed")
+    (kind, value), = given
+    if (load is None) == (approach is None):
+        raise DomainError("give exactly one of load= (P) and approach= (d0)", "load")
+    if (shear_modulus is None) == (youngs_modulus is None):
+        raise DomainError("give exactly one of shear_modulus= (mu) and youngs_modulus= (E)",
+                          "shear_modulus")
+    if (density is None) == (kind == "velocity"):
+        raise DomainError("density= (kg/m^3) goes with velocity= (V in m/s), and only with it",
+                          "density")
+    loading, size = ("load", load) if approach is None else ("approach", approach)
+    modulus_kind, modulus = (("shear", shear_modulus) if youngs_modulus is None
+                             else ("youngs", youngs_modulus))
+    return kind, value, loading, size, modulus_kind, modulus
 
 
 def solve_contact(nu, *, speed=None, gap=None, velocity=None, radius_along=None,
@@ -111,23 +136,8 @@ def solve_contact(nu, *, speed=None, gap=None, velocity=None, radius_along=None,
     place, each within its bound. Raises :class:`DomainError` before any work for an input
     out of its domain (a velocity at or above c_R names c_R).
     """
-    given = [(n, v) for n, v in (("speed", speed), ("gap", gap), ("velocity", velocity))
-             if v is not None]
-    if len(given) != 1:
-        raise DomainError("give exactly one of speed= (M_R), gap= (1 - M_R) and velocity= "
-                          "(V in m/s)", "speed")
-    (kind, value), = given
-    if (load is None) == (approach is None):
-        raise DomainError("give exactly one of load= (P) and approach= (d0)", "load")
-    if (shear_modulus is None) == (youngs_modulus is None):
-        raise DomainError("give exactly one of shear_modulus= (mu) and youngs_modulus= (E)",
-                          "shear_modulus")
-    if (density is None) == (kind == "velocity"):
-        raise DomainError("density= (kg/m^3) goes with velocity= (V in m/s), and only with it",
-                          "density")
-    loading, size = ("load", load) if approach is None else ("approach", approach)
-    modulus_kind, modulus = (("shear", shear_modulus) if youngs_modulus is None
-                             else ("youngs", youngs_modulus))
+    kind, value, loading, size, modulus_kind, modulus = _contact_args(
+        speed, gap, velocity, load, approach, shear_modulus, youngs_modulus, density)
     t = _native.contact(
         _numbers.precision(precision), _scalar(nu, "nu"), _scalar(value, kind), kind,
         _scalar(_required(radius_along, "radius_along"), "radius_along"),
@@ -209,28 +219,35 @@ def sweep_ellipses(nu, *, speed=None, gap=None, ratio=None, precision="f64", met
     return _sweeps.result(native, shape, fields, fields, "iterations", info, as_text)
 
 
-def sweep_contacts(nu, *, speed=None, gap=None, radius_along=None, radius_across=None,
-                   load=None, approach=None, shear_modulus=None, precision="f64",
-                   method="auto", threads=None, progress=None, as_text=False):
-    """:func:`solve_contact` over arrays that broadcast together (as
-    :func:`sweep_ellipses`): ``moving_hertz::sweep::contacts``. Returns a
-    :class:`SweepResult` with ``a``, ``b``, ``k``, ``e``, ``p0``, ``d0``, ``load`` and their
-    bounds, ``iterations``, ``route``, ``ok``, ``messages``."""
-    value, kind = _speed(speed, gap)
-    if (load is None) == (approach is None):
-        raise DomainError("give exactly one of load= (P) and approach= (d0)", "load")
-    loading, size = ("load", load) if approach is None else ("approach", approach)
-    shape, cols = _sweeps.columns({
-        "nu": nu, kind: value,
-        "radius_along": _required(radius_along, "radius_along"),
-        "radius_across": _required(radius_across, "radius_across"),
-        loading: size, "shear_modulus": _required(shear_modulus, "shear_modulus")})
+def sweep_contacts(nu, *, speed=None, gap=None, velocity=None, radius_along=None,
+                   radius_across=None, load=None, approach=None, shear_modulus=None,
+                   youngs_modulus=None, density=None, precision="f64", method="auto",
+                   threads=None, progress=None, as_text=False):
+    """:func:`solve_contact` over arrays that broadcast together (as :func:`sweep_ellipses`):
+    the same inputs, each a scalar or an array — exactly one of ``speed``, ``gap`` and
+    ``velocity`` (m/s, with ``density``), one of ``shear_modulus`` and ``youngs_modulus``,
+    one of ``load`` and ``approach`` — each point made as :func:`solve_contact` makes it and
+    solved by ``moving_hertz::sweep::contacts`` (a velocity at or above c_R is a masked point
+    whose message names c_R). Returns a :class:`SweepResult` with ``a``, ``b``, ``k``, ``e``,
+    ``p0``, ``d0``, ``load`` and their bounds, ``iterations``, ``route``, ``ok``,
+    ``messages``."""
+    kind, value, loading, size, modulus_kind, modulus = _contact_args(
+        speed, gap, velocity, load, approach, shear_modulus, youngs_modulus, density)
+    named = {"nu": nu, kind: value,
+             "radius_along": _required(radius_along, "radius_along"),
+             "radius_across": _required(radius_across, "radius_across"),
+             loading: size, modulus_kind + "_modulus": modulus}
+    if density is not None:
+        named["density"] = density
+    shape, cols = _sweeps.columns(named)
     prec = _numbers.precision(precision)
     info = _native.precision_info(prec)
     cb, bar = _sweeps.progress_callback(progress)
     try:
-        native = _native.sweep_contacts(prec, cols[0], cols[1], kind, cols[2], cols[3], loading,
-                                        cols[4], cols[5], method, threads, cb, as_text)
+        native = _native.sweep_contacts(
+            prec, cols[0], cols[1], kind, cols[2], cols[3], loading, cols[4], cols[5],
+            modulus_kind, cols[6] if density is not None else None, method, threads, cb,
+            as_text)
     finally:
         if bar is not None:
             bar.close()

@@ -122,9 +122,11 @@ def sweep_ellipses(nu: ArrayIn, *, speed: Optional[ArrayIn] = ..., gap: Optional
                    method: Method = ..., threads: Optional[int] = ..., progress: Progress = ...,
                    as_text: bool = ...) -> SweepResult: ...
 def sweep_contacts(nu: ArrayIn, *, speed: Optional[ArrayIn] = ..., gap: Optional[ArrayIn] = ...,
-                   radius_along: Optional[ArrayIn] = ..., radius_across: Optional[ArrayIn] = ...,
-                   load: Optional[ArrayIn] = ..., approach: Optional[ArrayIn] = ...,
-                   shear_modulus: Optional[ArrayIn] = ..., precision: Precision = ...,
+                   velocity: Optional[ArrayIn] = ..., radius_along: Optional[ArrayIn] = ...,
+                   radius_across: Optional[ArrayIn] = ..., load: Optional[ArrayIn] = ...,
+                   approach: Optional[ArrayIn] = ..., shear_modulus: Optional[ArrayIn] = ...,
+                   youngs_modulus: Optional[ArrayIn] = ..., density: Optional[ArrayIn] = ...,
+                   precision: Precision = ...,
                    method: Method = ..., threads: Optional[int] = ..., progress: Progress = ...,
                    as_text: bool = ...) -> SweepResult: ...
 def sweep_integrals(nu: Number, *, speed: Optional[Number] = ..., gap: Optional[Number] = ...,

@@ -84,15 +84,18 @@ def _array(x, name):
 
 def columns(named):
     """Broadcasts the inputs (numpy rules) and flattens them into the native columns:
-    ``(shape, [column, ...])``, each column a contiguous float64 array or a list of texts."""
+    ``(shape, [column, ...])``, each column a contiguous float64 array or a list of texts, of
+    the broadcast size or (an input of one value) of one."""
     arrays = {name: _array(x, name) for name, x in named.items()}
     try:
         shape = np.broadcast_shapes(*(a.shape for a in arrays.values()))
     except ValueError as e:
         raise DomainError(f"the inputs do not broadcast together: {e}", None) from None
+    size = int(np.prod(shape))
     cols = []
     for name, a in arrays.items():
-        flat = np.broadcast_to(a, shape).ravel()
+        # A single value stays one value (the native sweep reads it for every point).
+        flat = a.reshape(1) if a.size == 1 and size != 1 else np.broadcast_to(a, shape).ravel()
         if a.dtype == np.float64:
             cols.append(np.ascontiguousarray(flat))
         else:

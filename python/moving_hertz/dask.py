@@ -128,26 +128,29 @@ def sweep_ellipses(nu, *, speed=None, gap=None, ratio=None, precision="f64", met
                    ("k", "e", "I1", "I2"), "iterations", precision, chunk)
 
 
-def sweep_contacts(nu, *, speed=None, gap=None, radius_along=None, radius_across=None,
-                   load=None, approach=None, shear_modulus=None, precision="f64",
-                   method="auto", chunk=None, threads=1):
-    """:func:`moving_hertz.sweep_contacts` as a lazy ``dask.array``: fields ``a``, ``b``,
-    ``k``, ``e``, ``p0``, ``d0``, ``load`` and their bounds, ``iterations``, ``route``,
-    ``ok``, ``message`` (arguments as :func:`sweep_ellipses`)."""
-    value, kind = _mh._speed(speed, gap)
-    if (load is None) == (approach is None):
-        raise _mh.DomainError("give exactly one of load= (P) and approach= (d0)", "load")
-    loading, size = ("load", load) if approach is None else ("approach", approach)
+def sweep_contacts(nu, *, speed=None, gap=None, velocity=None, radius_along=None,
+                   radius_across=None, load=None, approach=None, shear_modulus=None,
+                   youngs_modulus=None, density=None, precision="f64", method="auto",
+                   chunk=None, threads=1):
+    """:func:`moving_hertz.sweep_contacts` as a lazy ``dask.array``: the same inputs (speed,
+    gap or velocity with density; shear or Young's modulus; load or approach), fields ``a``,
+    ``b``, ``k``, ``e``, ``p0``, ``d0``, ``load`` and their bounds, ``iterations``,
+    ``route``, ``ok``, ``message`` (``chunk`` and ``threads`` as :func:`sweep_ellipses`)."""
+    kind, value, loading, size, modulus_kind, modulus = _mh._contact_args(
+        speed, gap, velocity, load, approach, shear_modulus, youngs_modulus, density)
     chunk = _chunk(chunk, precision)
+    modulus_name = modulus_kind + "_modulus"
 
-    def solve(text, n, s, r1, r2, p, mu):
-        return _mh.sweep_contacts(n, radius_along=r1, radius_across=r2, shear_modulus=mu,
-                                  precision=precision, method=method, threads=threads,
-                                  as_text=text, **{kind: s, loading: p})
+    def solve(text, n, s, r1, r2, p, m, *rho):
+        extra = {"density": rho[0]} if rho else {}
+        return _mh.sweep_contacts(n, radius_along=r1, radius_across=r2, precision=precision,
+                                  method=method, threads=threads, as_text=text,
+                                  **{kind: s, loading: p, modulus_name: m}, **extra)
 
     named = [nu, value, _mh._required(radius_along, "radius_along"),
-             _mh._required(radius_across, "radius_across"), size,
-             _mh._required(shear_modulus, "shear_modulus")]
+             _mh._required(radius_across, "radius_across"), size, modulus]
+    if density is not None:
+        named.append(density)
     return _blocks(solve, named, ("a", "b", "k", "e", "p0", "d0", "load"), "iterations",
                    precision, chunk)
 

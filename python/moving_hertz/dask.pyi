@@ -12,7 +12,9 @@ def sweep_ellipses(nu: ArrayIn, *, speed: Optional[ArrayIn] = ..., gap: Optional
                    ratio: Optional[ArrayIn] = ..., precision: Precision = ...,
                    method: Method = ..., chunk: Optional[int] = ..., threads: int = ...) -> Any: ...
 def sweep_contacts(nu: ArrayIn, *, speed: Optional[ArrayIn] = ..., gap: Optional[ArrayIn] = ...,
-                   radius_along: Optional[ArrayIn] = ..., radius_across: Optional[ArrayIn] = ...,
-                   load: Optional[ArrayIn] = ..., approach: Optional[ArrayIn] = ...,
-                   shear_modulus: Optional[ArrayIn] = ..., precision: Precision = ...,
+                   velocity: Optional[ArrayIn] = ..., radius_along: Optional[ArrayIn] = ...,
+                   radius_across: Optional[ArrayIn] = ..., load: Optional[ArrayIn] = ...,
+                   approach: Optional[ArrayIn] = ..., shear_modulus: Optional[ArrayIn] = ...,
+                   youngs_modulus: Optional[ArrayIn] = ..., density: Optional[ArrayIn] = ...,
+                   precision: Precision = ...,
                    method: Method = ..., chunk: Optional[int] = ..., threads: int = ...) -> Any: ...

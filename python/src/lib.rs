@@ -2,7 +2,8 @@
 //!
 //! The pure-Python package (`python/moving_hertz/`) is the public interface: it converts the
 //! numbers it accepts into floats or exact text, calls these entries, and builds the result
-//! objects and exceptions. Each entry parses and solves with the GIL released and never lets a
+//! objects and exceptions (but for `ellipse_f64`, the f64 ellipse of plain floats, whose
+//! result object is made here: `single::ellipse_f64`). Each entry parses and solves with the GIL released and never lets a
 //! panic unwind into the interpreter (`fail::guard`): a panic becomes `MovingHertzError`.
 //! Implements no formula of its own: every number comes from the `moving-hertz` crate.
 
@@ -29,6 +30,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(single::precision_info, m)?)?;
     m.add_function(wrap_pyfunction!(single::rayleigh, m)?)?;
     m.add_function(wrap_pyfunction!(single::ellipse, m)?)?;
+    m.add_function(wrap_pyfunction!(single::ellipse_f64, m)?)?;
     m.add_function(wrap_pyfunction!(single::contact, m)?)?;
     m.add_function(wrap_pyfunction!(single::integrals_of, m)?)?;
     m.add_function(wrap_pyfunction!(single::symbolic, m)?)?;

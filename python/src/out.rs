@@ -3,10 +3,32 @@
 //! which the Python layer turns into `mpmath.mpf` or `decimal.Decimal` at the working precision.
 
 use moving_hertz::scalar::Real;
-use moving_hertz::Estimated;
+use moving_hertz::{Estimated, MajorAxis, Precision};
 use pyo3::prelude::*;
-use pyo3::types::{PyFloat, PyString, PyTuple};
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyFloat, PyString, PyTuple, PyType};
 use pyo3::IntoPyObjectExt;
+
+/// The labels a result carries at `f64` (the precision, the routes, the major axis), made
+/// once as Python strings: a result of a few microseconds does not make them again.
+static LABELS: PyOnceLock<Vec<(&'static str, Py<PyString>)>> = PyOnceLock::new();
+
+/// The Python string of `s`: the one made once for a label of [`LABELS`], else a new one.
+fn label_str<'py>(py: Python<'py>, s: &str) -> Bound<'py, PyString> {
+    let labels = LABELS.get_or_init(py, || {
+        let routes = crate::sweeps::ROUTES.iter().map(|r| r.label());
+        let majors = [MajorAxis::Along, MajorAxis::Across].map(|m| m.label());
+        std::iter::once("f64")
+            .chain(routes)
+            .chain(majors)
+            .map(|l| (l, PyString::new(py, l).unbind()))
+            .collect()
+    });
+    match labels.iter().find(|(l, _)| *l == s) {
+        Some((_, made)) => made.bind(py).clone(),
+        None => PyString::new(py, s),
+    }
+}
 
 /// The fields of one result, in order.
 pub struct Fields<'py> {
@@ -63,8 +85,13 @@ impl<'py> Fields<'py> {
 
     /// A label.
     pub fn label(&mut self, s: &str) -> &mut Self {
-        self.items.push(PyString::new(self.py, s).into_any());
+        self.items.push(label_str(self.py, s).into_any());
         self
+    }
+
+    /// The precision's label and its bits.
+    pub fn precision(&mut self, p: &Precision) -> &mut Self {
+        self.label(&p.label()).count(p.bits() as usize)
     }
 
     /// A count.
@@ -79,5 +106,38 @@ impl<'py> Fields<'py> {
     /// The tuple.
     pub fn finish(&mut self) -> PyResult<Bound<'py, PyTuple>> {
         PyTuple::new(self.py, std::mem::take(&mut self.items))
+    }
+
+    /// An instance of the tuple subclass `cls` (a result class of `moving_hertz._results`,
+    /// a named tuple without instance attributes) holding the fields, made as
+    /// `tuple.__new__(cls, fields)` makes it — the class's allocator, then each item — without
+    /// the tuple in between.
+    pub fn instance(&mut self, cls: &Bound<'py, PyType>) -> PyResult<Bound<'py, PyAny>> {
+        let items = std::mem::take(&mut self.items);
+        let n = items.len() as pyo3::ffi::Py_ssize_t;
+        // SAFETY: `cls` is a subclass of tuple (checked), whose `tp_alloc` returns a new
+        // reference to a zeroed instance of `n` items (NULL with an exception set on failure);
+        // `PyTuple_SetItem` accepts an instance of a subclass holding its only reference and
+        // steals the reference to each item, each slot set once.
+        unsafe {
+            let ty = cls.as_type_ptr();
+            if pyo3::ffi::PyType_IsSubtype(ty, std::ptr::addr_of_mut!(pyo3::ffi::PyTuple_Type)) == 0
+            {
+                return Err(pyo3::exceptions::PyTypeError::new_err(
+                    "not a tuple subclass",
+                ));
+            }
+            let slot = pyo3::ffi::PyType_GetSlot(ty, pyo3::ffi::Py_tp_alloc);
+            let slot: Option<pyo3::ffi::allocfunc> = std::mem::transmute(slot);
+            let alloc = slot.unwrap_or(pyo3::ffi::PyType_GenericAlloc);
+            let obj = Bound::from_owned_ptr_or_err(self.py, alloc(ty, n))?;
+            for (i, item) in items.into_iter().enumerate() {
+                let i = i as pyo3::ffi::Py_ssize_t;
+                if pyo3::ffi::PyTuple_SetItem(obj.as_ptr(), i, item.into_ptr()) != 0 {
+                    return Err(PyErr::fetch(self.py));
+                }
+            }
+            Ok(obj)
+        }
     }
 }

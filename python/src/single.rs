@@ -11,7 +11,8 @@ use moving_hertz::{
     ExactInputs, IntegralOptions, Integrals, Loading, Method, Moduli, Mp, Options, RelError, Solid,
 };
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::sync::PyOnceLock;
+use pyo3::types::{PyTuple, PyType};
 
 /// The options' method, refused naming `method`.
 pub fn method(text: &str) -> Result<Method, Fail> {
@@ -93,15 +94,58 @@ pub fn ellipse<'py>(
             Ok(solve_ellipse(&speed, &ratio, &opts)?)
         }));
         let sol = to_py(py, sol)?;
-        let ig = &sol.integrals;
         let mut f = Fields::new(py, as_text(prec, text));
-        f.label(&ig.precision.label()).count(ig.precision.bits() as usize).label(ig.route.label());
-        f.est(&sol.k).est(&sol.e).label(sol.major.label()).est(&ig.i1).est(&ig.i2);
-        f.count(sol.iterations).finish()
+        ellipse_fields(&mut f, &sol);
+        f.finish()
     })
 }
 
-/// How the half-space's stiffness and the speed are given to `contact`.
+/// The `Ellipse` of `moving_hertz._results` (a named tuple), looked up once.
+static ELLIPSE: PyOnceLock<Py<PyType>> = PyOnceLock::new();
+
+/// The `Ellipse` of [`ellipse`] for float ν, M_R and A1/B1 at `f64`, the result object made
+/// here: the package's `solve_ellipse` for plain floats, where the solve takes about a
+/// microsecond and what surrounds it in Python would cost as much (the target: a
+/// Python call within twice the Rust warm solve, `tools/python_bench.py`). The same solve and
+/// fields as [`ellipse`].
+#[pyfunction]
+pub fn ellipse_f64<'py>(
+    py: Python<'py>,
+    nu: f64,
+    speed: f64,
+    ratio: f64,
+    method: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let method = to_py(py, self::method(method))?;
+    let (nu, sp, ratio) = (Num::F(nu), Num::F(speed), Num::F(ratio));
+    let sol = guard(|| {
+        let speed = input::cached_speed::<f64>(&nu, &sp, SpeedKind::Mr, ())?;
+        let ratio: f64 = input::positive(&ratio, "ratio", ())?;
+        let opts = Options::<f64> {
+            method,
+            ..Default::default()
+        };
+        Ok(solve_ellipse(&speed, &ratio, &opts)?)
+    });
+    let sol = to_py(py, sol)?;
+    let mut f = Fields::new(py, false);
+    ellipse_fields(&mut f, &sol);
+    f.instance(ELLIPSE.import(py, "moving_hertz._results", "Ellipse")?)
+}
+
+/// The fields of an `Ellipse` (`moving_hertz._results`) in order.
+fn ellipse_fields<T: Real>(f: &mut Fields<'_>, sol: &moving_hertz::Ellipse<T>) {
+    let ig = &sol.integrals;
+    f.precision(&ig.precision).label(ig.route.label());
+    f.est(&sol.k)
+        .est(&sol.e)
+        .label(sol.major.label())
+        .est(&ig.i1)
+        .est(&ig.i2);
+    f.count(sol.iterations);
+}
+
+/// How the half-space's stiffness and the speed are given.
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Units {
     /// μ and M_R (or its gap).
@@ -112,60 +156,139 @@ enum Units {
     Velocity { youngs: bool },
 }
 
-/// The speed and the shear modulus of a contact problem at precision `p`.
-fn speed_and_modulus<T: Real>(
-    [nu, sp, modulus, density]: &[Option<Num>; 4],
+/// How a contact problem is given, as the Python keywords name it (`solve_contact` and
+/// `sweep_contacts`): the speed as `speed`, `gap` or `velocity` (V in m/s, with `density`),
+/// the stiffness as `shear` or `youngs` modulus, the size as `load` or `approach`.
+#[derive(Clone, Copy)]
+pub struct ContactGiven {
     kind: SpeedKind,
     units: Units,
-    p: T::Prec,
-) -> Result<(moving_hertz::Speed<T>, T), Fail> {
-    let (Some(nu), Some(sp), Some(modulus)) = (nu, sp, modulus) else {
-        return Err(Fail::Arg {
-            argument: "nu",
-            message: "nu, the speed and a modulus are required".into(),
-        });
-    };
-    let Units::Velocity { youngs } = units else {
-        let speed = input::cached_speed::<T>(nu, sp, kind, p)?;
-        return Ok(if units == Units::Youngs {
-            let e: T = input::positive(modulus, "youngs_modulus", p)?;
-            let mu = moving_hertz::physics::solid::shear_from_youngs(&e, speed.material().nu());
-            (speed, mu)
+    by_load: bool,
+}
+
+/// ν, the speed, the modulus and the density (absent without a velocity), as given.
+pub type Given = [Option<Num>; 4];
+
+impl ContactGiven {
+    /// From the keywords: `kind` `speed`, `gap` or `velocity`; `modulus_kind` `shear` or
+    /// `youngs`; `loading` `load` or `approach`.
+    pub fn parse(kind: &str, modulus_kind: &str, loading: &str) -> ContactGiven {
+        let youngs = modulus_kind == "youngs";
+        let (units, kind) = match (kind, youngs) {
+            ("velocity", _) => (Units::Velocity { youngs }, SpeedKind::Mr),
+            (_, true) => (Units::Youngs, SpeedKind::parse(kind)),
+            _ => (Units::Shear, SpeedKind::parse(kind)),
+        };
+        ContactGiven {
+            kind,
+            units,
+            by_load: loading == "load",
+        }
+    }
+
+    /// The keyword of the speed.
+    pub fn speed_name(self) -> &'static str {
+        match self.units {
+            Units::Velocity { .. } => "velocity",
+            _ => self.kind.argument(),
+        }
+    }
+
+    /// The keyword of the size (`load` or `approach`).
+    pub fn size_name(self) -> &'static str {
+        if self.by_load {
+            "load"
         } else {
-            (speed.clone(), input::positive(modulus, "shear_modulus", p)?)
-        });
-    };
-    let Some(density) = density else {
-        return Err(Fail::Arg {
-            argument: "density",
-            message: "velocity= needs density= (kg/m^3)".into(),
-        });
-    };
-    let [nu, modulus, density, v] = [nu, modulus, density, sp].map(exact_text);
-    let moduli = if youngs {
-        Moduli::Youngs {
-            youngs_modulus: modulus.as_str(),
-            density: density.as_str(),
+            "approach"
         }
-    } else {
-        Moduli::Shear {
-            shear_modulus: modulus.as_str(),
-            density: density.as_str(),
+    }
+
+    /// The keyword of the modulus.
+    pub fn modulus_name(self) -> &'static str {
+        match self.units {
+            Units::Youngs | Units::Velocity { youngs: true } => "youngs_modulus",
+            _ => "shear_modulus",
         }
-    };
-    let solid = Solid::<T>::parse(&nu, moduli, p)?;
-    let speed = solid.parse_velocity(&v).map_err(Fail::about("velocity"))?;
-    let mu = solid
-        .shear_modulus()
-        .cloned()
-        .ok_or_else(|| Fail::Panic("a solid of given moduli without its shear modulus".into()))?;
-    Ok((speed, mu))
+    }
+
+    /// The speed and the shear modulus at precision `p`: from M_R (or its gap) with μ, or E
+    /// and μ = E/(2(1 + ν)); from a velocity by the crate's [`Solid`] (c_R from ν, the
+    /// modulus and ρ, every input exact), refused naming c_R unless 0 ≤ V < c_R.
+    pub fn speed_and_modulus<T: Real>(
+        self,
+        [nu, sp, modulus, density]: &Given,
+        p: T::Prec,
+    ) -> Result<(moving_hertz::Speed<T>, T), Fail> {
+        let (Some(nu), Some(sp), Some(modulus)) = (nu, sp, modulus) else {
+            return Err(Fail::Arg {
+                argument: "nu",
+                message: "nu, the speed and a modulus are required".into(),
+            });
+        };
+        let Units::Velocity { youngs } = self.units else {
+            let speed = input::cached_speed::<T>(nu, sp, self.kind, p)?;
+            let m: T = input::positive(modulus, self.modulus_name(), p)?;
+            return Ok(if self.units == Units::Youngs {
+                let mu = moving_hertz::physics::solid::shear_from_youngs(&m, speed.material().nu());
+                (speed, mu)
+            } else {
+                (speed, m)
+            });
+        };
+        let Some(density) = density else {
+            return Err(Fail::Arg {
+                argument: "density",
+                message: "velocity= needs density= (kg/m^3)".into(),
+            });
+        };
+        let [nu, modulus, density, v] = [nu, modulus, density, sp].map(exact_text);
+        let moduli = if youngs {
+            Moduli::Youngs {
+                youngs_modulus: modulus.as_str(),
+                density: density.as_str(),
+            }
+        } else {
+            Moduli::Shear {
+                shear_modulus: modulus.as_str(),
+                density: density.as_str(),
+            }
+        };
+        let solid = Solid::<T>::parse(&nu, moduli, p)?;
+        let speed = solid.parse_velocity(&v).map_err(Fail::about("velocity"))?;
+        let mu = solid.shear_modulus().cloned().ok_or_else(|| {
+            Fail::Panic("a solid of given moduli without its shear modulus".into())
+        })?;
+        Ok((speed, mu))
+    }
+
+    /// The problem of this speed and shear modulus with the radii R1, R2 and the load or
+    /// approach `[r1, r2, size]` as given (each checked positive).
+    pub fn problem<T: Real>(
+        self,
+        speed: moving_hertz::Speed<T>,
+        shear_modulus: T,
+        [r1, r2, size]: &[Num; 3],
+        p: T::Prec,
+    ) -> Result<ContactProblem<T>, Fail> {
+        let size: T = input::positive(size, self.size_name(), p)?;
+        Ok(ContactProblem {
+            speed,
+            radius_along: input::positive(r1, "radius_along", p)?,
+            radius_across: input::positive(r2, "radius_across", p)?,
+            loading: if self.by_load {
+                Loading::Load(size)
+            } else {
+                Loading::Approach(size)
+            },
+            shear_modulus,
+        })
+    }
 }
 
 /// `(precision, bits, route, a, a_error, b, b_error, k, k_error, e, e_error, major_axis, p0,
 /// p0_error, d0, d0_error, load, load_error)`: the contact solution of section 4. `kind` is
 /// `speed`, `gap` or `velocity` (V in m/s, with `density`); `modulus_kind` `shear` or
-/// `youngs`.
+/// `youngs` ([`ContactGiven`]).
 #[pyfunction]
 #[pyo3(signature = (precision, nu, speed, kind, radius_along, radius_across, loading, size, modulus, modulus_kind, density, method, text))]
 #[allow(clippy::too_many_arguments)]
@@ -185,53 +308,29 @@ pub fn contact<'py>(
     method: &str,
     text: bool,
 ) -> PyResult<Bound<'py, PyTuple>> {
-    let youngs = modulus_kind == "youngs";
-    let (units, kind) = match (kind, youngs) {
-        ("velocity", _) => (Units::Velocity { youngs }, SpeedKind::Mr),
-        (_, true) => (Units::Youngs, SpeedKind::parse(kind)),
-        _ => (Units::Shear, SpeedKind::parse(kind)),
-    };
-    let speed_name = if matches!(units, Units::Velocity { .. }) {
-        "velocity"
-    } else {
-        kind.argument()
-    };
-    let by_load = loading == "load";
-    let size_name = if by_load { "load" } else { "approach" };
-    let modulus_name = if youngs {
-        "youngs_modulus"
-    } else {
-        "shear_modulus"
-    };
+    let how = ContactGiven::parse(kind, modulus_kind, loading);
     let nums = (|| {
         Ok::<_, Fail>((
             [
                 Some(Num::from_py(nu, "nu")?),
-                Some(Num::from_py(speed, speed_name)?),
-                Some(Num::from_py(modulus, modulus_name)?),
+                Some(Num::from_py(speed, how.speed_name())?),
+                Some(Num::from_py(modulus, how.modulus_name())?),
                 density.map(|d| Num::from_py(d, "density")).transpose()?,
             ],
             [
                 Num::from_py(radius_along, "radius_along")?,
                 Num::from_py(radius_across, "radius_across")?,
-                Num::from_py(size, size_name)?,
+                Num::from_py(size, how.size_name())?,
             ],
         ))
     })();
-    let (given, [r1, r2, size]) = to_py(py, nums)?;
+    let (given, sizes) = to_py(py, nums)?;
     let prec = to_py(py, input::precision(precision))?;
     let method = to_py(py, self::method(method))?;
     with_precision!(prec, T, p => {
         let sol = detach_above_dd(py, prec, || guard(|| {
-            let (speed, shear_modulus) = speed_and_modulus::<T>(&given, kind, units, p)?;
-            let size: T = input::positive(&size, size_name, p)?;
-            let problem = ContactProblem {
-                speed,
-                radius_along: input::positive(&r1, "radius_along", p)?,
-                radius_across: input::positive(&r2, "radius_across", p)?,
-                loading: if by_load { Loading::Load(size) } else { Loading::Approach(size) },
-                shear_modulus,
-            };
+            let (speed, shear_modulus) = how.speed_and_modulus::<T>(&given, p)?;
+            let problem = how.problem(speed, shear_modulus, &sizes, p)?;
             Ok(problem.solve(&Options::<T> { method, ..Default::default() })?)
         }));
         let sol = to_py(py, sol)?;

@@ -12,7 +12,7 @@
 
 use crate::fail::{guard, to_py, Fail};
 use crate::input::{self, Num, SpeedKind};
-use crate::single::method;
+use crate::single::{method, ContactGiven, Given};
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
 use moving_hertz::{
@@ -64,10 +64,20 @@ impl Col {
         }
     }
 
+    /// The place of point `i`: `i`, or 0 in a column of one value (a scalar input, which
+    /// the Python layer does not repeat).
+    fn at(&self, i: usize) -> usize {
+        if self.len() == 1 {
+            0
+        } else {
+            i
+        }
+    }
+
     fn num(&self, i: usize) -> Num {
         match self {
-            Col::F(v) => Num::F(v[i]),
-            Col::T(v) => Num::T(v[i].clone()),
+            Col::F(v) => Num::F(v[self.at(i)]),
+            Col::T(v) => Num::T(v[self.at(i)].clone()),
         }
     }
 }
@@ -227,10 +237,10 @@ fn in_chunks<I: Send + Sync, R: Send>(
 /// A chunk's points and the binding's message for each point it refused (`None`: valid).
 type Built<I> = (Vec<I>, Vec<Option<String>>);
 
-/// The columns' common length, or a refusal.
+/// The columns' common length (a column of one value stands for every point), or a refusal.
 fn common_len(cols: &[&Col]) -> Result<usize, Fail> {
-    let n = cols[0].len();
-    if cols.iter().any(|c| c.len() != n) {
+    let n = cols.iter().map(|c| c.len()).find(|&l| l != 1).unwrap_or(1);
+    if cols.iter().any(|c| c.len() != n && c.len() != 1) {
         let message =
             "the input columns differ in length (the Python layer broadcasts them)".into();
         return Err(Fail::Arg {
@@ -253,17 +263,17 @@ fn ellipse_points<T: Real>(
     for (i, slot) in range.zip(pre.iter_mut()) {
         let point = (|| -> Result<EllipsePoint<T>, Fail> {
             let nu = match nu {
-                Col::F(v) => T::from_f64(v[i], p),
-                Col::T(v) => input::material::<T>(&Num::T(v[i].clone()), p)?.nu().clone(),
+                Col::F(v) => T::from_f64(v[nu.at(i)], p),
+                Col::T(_) => input::material::<T>(&nu.num(i), p)?.nu().clone(),
             };
             let speed = match (sp, kind) {
-                (Col::F(v), SpeedKind::Mr) => SpeedGiven::Mr(T::from_f64(v[i], p)),
-                (Col::F(v), SpeedKind::Gap) => SpeedGiven::Gap(T::from_f64(v[i], p)),
-                (Col::T(v), SpeedKind::Mr) => SpeedGiven::Text(v[i].clone()),
-                (Col::T(v), SpeedKind::Gap) => SpeedGiven::Text(mr_of_gap(&v[i])?),
+                (Col::F(v), SpeedKind::Mr) => SpeedGiven::Mr(T::from_f64(v[sp.at(i)], p)),
+                (Col::F(v), SpeedKind::Gap) => SpeedGiven::Gap(T::from_f64(v[sp.at(i)], p)),
+                (Col::T(v), SpeedKind::Mr) => SpeedGiven::Text(v[sp.at(i)].clone()),
+                (Col::T(v), SpeedKind::Gap) => SpeedGiven::Text(mr_of_gap(&v[sp.at(i)])?),
             };
             let ratio = match ratio {
-                Col::F(v) => T::from_f64(v[i], p),
+                Col::F(v) => T::from_f64(v[ratio.at(i)], p),
                 Col::T(_) => input::positive(&ratio.num(i), "ratio", p)?,
             };
             Ok(EllipsePoint { nu, speed, ratio })
@@ -340,46 +350,47 @@ pub fn sweep_ellipses<'py>(
     })
 }
 
-/// The contact problems at precision `p`, with the binding's message for each it refuses.
+/// A contact point's speed and shear modulus, or the message of its refusal.
+type Made<T> = Result<(Speed<T>, T), String>;
+
+/// The contact problems at precision `p`, with the binding's message for each it refuses:
+/// each point's speed and shear modulus as `solve_contact` makes them
+/// ([`ContactGiven::speed_and_modulus`]; made once for consecutive points of the same ν,
+/// speed, modulus and density).
 fn contact_problems<T: Real>(
-    cols: &[Col; 6],
-    kind: SpeedKind,
-    by_load: bool,
+    cols: &[Col],
+    how: ContactGiven,
     range: Range<usize>,
     p: T::Prec,
 ) -> Result<Built<ContactProblem<T>>, Fail> {
-    let [nu, sp, r1, r2, size, mu] = cols;
     let zero = T::zero(p);
     let fallback = Material::new(zero.clone())?.speed(zero)?;
-    let size_name = if by_load { "load" } else { "approach" };
-    let mut last: Option<(Num, Num, Speed<T>)> = None;
+    let mut last: Option<(Given, Made<T>)> = None;
     let mut problems = Vec::with_capacity(range.len());
     let mut pre = vec![None; range.len()];
     for (i, slot) in range.zip(pre.iter_mut()) {
-        let problem = (|| -> Result<ContactProblem<T>, Fail> {
-            let (nu_i, sp_i) = (nu.num(i), sp.num(i));
-            let speed = match &last {
-                Some((a, b, s)) if input::same_num(a, &nu_i) && input::same_num(b, &sp_i) => {
-                    s.clone()
-                }
-                _ => input::speed(&input::material::<T>(&nu_i, p)?, &sp_i, kind)?,
-            };
-            last = Some((nu_i, sp_i, speed.clone()));
-            let size: T = input::positive(&size.num(i), size_name, p)?;
-            Ok(ContactProblem {
-                speed,
-                radius_along: input::positive(&r1.num(i), "radius_along", p)?,
-                radius_across: input::positive(&r2.num(i), "radius_across", p)?,
-                loading: if by_load {
-                    Loading::Load(size)
-                } else {
-                    Loading::Approach(size)
-                },
-                shear_modulus: input::positive(&mu.num(i), "shear_modulus", p)?,
+        let given: Given = [0, 1, 5, 6].map(|j| cols.get(j).map(|c| c.num(i)));
+        let same = last.as_ref().is_some_and(|(g, _)| {
+            g.iter().zip(&given).all(|(a, b)| match (a, b) {
+                (Some(a), Some(b)) => input::same_num(a, b),
+                (a, b) => a.is_none() && b.is_none(),
             })
-        })();
-        problems.push(problem.unwrap_or_else(|f| {
-            *slot = Some(f.message());
+        });
+        if !same {
+            let made = how.speed_and_modulus::<T>(&given, p);
+            last = Some((given, made.map_err(|f| f.message())));
+        }
+        let problem = match last.as_ref().map(|(_, made)| made) {
+            Some(Ok((speed, mu))) => {
+                let sizes = [2, 3, 4].map(|j| cols[j].num(i));
+                how.problem(speed.clone(), mu.clone(), &sizes, p)
+                    .map_err(|f| f.message())
+            }
+            Some(Err(m)) => Err(m.clone()),
+            None => Err("a contact point without its speed".into()),
+        };
+        problems.push(problem.unwrap_or_else(|m| {
+            *slot = Some(m);
             let one = T::one(p);
             let loading = Loading::Load(one.clone());
             let nan = T::from_f64(f64::NAN, p);
@@ -396,9 +407,11 @@ fn contact_problems<T: Real>(
 }
 
 /// `sweep::contacts` over the columns: per point a, b, k, e, p0, d0, load with their bounds,
-/// iterations, route.
+/// iterations, route. The columns are given as `solve_contact` takes its arguments
+/// ([`ContactGiven`]: `kind` `speed`, `gap` or `velocity`, `modulus_kind` `shear` or
+/// `youngs`, `density` with a velocity only).
 #[pyfunction]
-#[pyo3(signature = (precision, nu, speed, kind, radius_along, radius_across, loading, size, shear_modulus, method, threads, progress, text))]
+#[pyo3(signature = (precision, nu, speed, kind, radius_along, radius_across, loading, size, modulus, modulus_kind, density, method, threads, progress, text))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep_contacts<'py>(
     py: Python<'py>,
@@ -410,23 +423,28 @@ pub fn sweep_contacts<'py>(
     radius_across: &Bound<'py, PyAny>,
     loading: &str,
     size: &Bound<'py, PyAny>,
-    shear_modulus: &Bound<'py, PyAny>,
+    modulus: &Bound<'py, PyAny>,
+    modulus_kind: &str,
+    density: Option<&Bound<'py, PyAny>>,
     method: &str,
     threads: Option<usize>,
     progress: Option<&Bound<'py, PyAny>>,
     text: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let kind = SpeedKind::parse(kind);
-    let by_load = loading == "load";
+    let how = ContactGiven::parse(kind, modulus_kind, loading);
     let cols = (|| {
-        Ok::<_, Fail>([
+        let mut cols = vec![
             Col::from_py(nu, "nu")?,
-            Col::from_py(speed, kind.argument())?,
+            Col::from_py(speed, how.speed_name())?,
             Col::from_py(radius_along, "radius_along")?,
             Col::from_py(radius_across, "radius_across")?,
-            Col::from_py(size, if by_load { "load" } else { "approach" })?,
-            Col::from_py(shear_modulus, "shear_modulus")?,
-        ])
+            Col::from_py(size, how.size_name())?,
+            Col::from_py(modulus, how.modulus_name())?,
+        ];
+        if let Some(d) = density {
+            cols.push(Col::from_py(d, "density")?);
+        }
+        Ok::<_, Fail>(cols)
     })();
     let cols = to_py(py, cols)?;
     let n = to_py(py, common_len(&cols.iter().collect::<Vec<_>>()))?;
@@ -436,7 +454,7 @@ pub fn sweep_contacts<'py>(
     with_precision!(prec, T, p => {
         let opts = Options::<T> { method, ..Default::default() };
         let mut out = Columns::new(7, n, text);
-        let build = |r| contact_problems::<T>(&cols, kind, by_load, r, p);
+        let build = |r| contact_problems::<T>(&cols, how, r, p);
         in_chunks(py, n, threads, progress, build, |c| sweep::contacts(c, &opts), |r| match r {
             Ok(s) => out.push(&[Some(&s.a), Some(&s.b), Some(s.k()), Some(s.e()), Some(&s.p0), Some(&s.d0), Some(&s.load)], s.ellipse.iterations, s.ellipse.integrals.route),
             Err(m) => out.fail(m),

@@ -62,3 +62,23 @@ def test_local_cluster_of_two_processes_equals_in_process():
     values = mhd.numbers(got_hi, 256)
     in_process = mh.sweep_contacts("0.3", **kw)
     assert all(x._mpf_ == y._mpf_ for x, y in zip(values["a"].ravel(), in_process.a.ravel()))
+
+
+def test_velocity_contact_sweep_equals_in_process():
+    velocity = np.linspace(0.0, 3100.0, 150)  # c_R = 2974.82 m/s: the last points fail
+    kw = dict(velocity=velocity, radius_along=0.05, radius_across=np.array([[0.02], [0.1]]),
+              load=1000.0, youngs_modulus=210e9, density=7850.0)
+    lazy = mhd.sweep_contacts(0.3, chunk=64, **kw)
+    assert lazy.shape == (2, 150) and lazy.numblocks != (1,)
+    got = lazy.compute()
+    in_process = mh.sweep_contacts(0.3, **kw)
+    assert not in_process.ok.all() and in_process.ok[:, :100].all()
+    _equal(got, in_process)
+    hi = mhd.sweep_contacts("0.3", velocity=["2000", "2960.6", "2960.7"], radius_along="0.05",
+                           radius_across="0.02", load="1000", shear_modulus="80e9",
+                           density="7850", precision=256).compute()
+    _equal(hi, mh.sweep_contacts("0.3", velocity=["2000", "2960.6", "2960.7"],
+                                 radius_along="0.05", radius_across="0.02", load="1000",
+                                 shear_modulus="80e9", density="7850", precision=256,
+                                 as_text=True))
+    assert hi["ok"].tolist() == [True, True, False] and "c_R" in hi["message"][2]

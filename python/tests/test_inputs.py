@@ -138,3 +138,28 @@ def test_results_are_immutable_with_repr_and_dict():
                          shear_modulus=80e9)
     assert c.to_dict()["load"] == c.load
     assert abs(c.load - 1000.0) <= 1000.0 * c.load_error
+
+
+def test_plain_floats_give_the_result_of_the_general_path():
+    # Plain floats take the native fast path (the result object made in Rust); numpy float64
+    # scalars, the same binary values, take the general one: the same result, field by field.
+    for nu, speed, ratio, method in ((0.25, 0.9990234375, 2.0, "auto"),
+                                     (0.3, 0.5, 1e-3, "adaptive"), (-0.5, 0.0, 7.0, "fixed")):
+        fast = mh.solve_ellipse(nu, speed=speed, ratio=ratio, method=method)
+        general = mh.solve_ellipse(np.float64(nu), speed=np.float64(speed),
+                                   ratio=np.float64(ratio), method=method)
+        assert type(fast) is mh.Ellipse and isinstance(fast, tuple)
+        assert fast.to_dict() == general.to_dict() and repr(fast) == repr(general)
+        assert fast._fields == general._fields and fast == general
+        assert all(type(a) is type(b) for a, b in zip(fast, general))
+    assert mh.solve_ellipse(0.3, speed=0.5, ratio=1e-3, method="adaptive").route == "adaptive"
+    with pytest.raises(AttributeError):
+        fast.k = 1.0
+    with pytest.raises(mh.DomainError, match="ratio") as e:
+        mh.solve_ellipse(0.25, speed=0.5, ratio=-1.0)
+    assert e.value.argument == "ratio"
+    with pytest.raises(mh.DomainError, match="nope") as e:
+        mh.solve_ellipse(0.25, speed=0.5, ratio=1.0, method="nope")
+    assert e.value.argument == "method"
+    with pytest.raises(mh.DomainError):
+        mh.solve_ellipse(0.25, speed=math.nan, ratio=1.0)

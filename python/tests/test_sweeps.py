@@ -202,3 +202,98 @@ def test_single_solves_release_the_gil():
     meanwhile."""
     assert _runs_beside(lambda: mh.solve_ellipse(0.25, speed="0.999", ratio=2,
                                                  precision=4096)) >= 5
+
+
+STEEL = dict(youngs_modulus=210e9, density=7850.0)  # c_R = 2974.82 m/s at nu = 0.3
+
+
+def test_velocity_sweep_equals_solve_contact_point_by_point():
+    v = np.array([0.0, 800.0, 2000.0, 2974.0, 2974.9, 3500.0])
+    r2 = np.array([0.02, 0.1])[:, None]
+    c = mh.sweep_contacts(0.3, velocity=v, radius_along=0.05, radius_across=r2, load=1000.0,
+                          **STEEL)
+    assert c.shape == (2, 6)
+    assert c.ok.tolist() == [[True] * 4 + [False] * 2] * 2
+    for i, j in np.ndindex(c.shape):
+        if not c.ok[i, j]:
+            assert "c_R" in c.messages[i, j] and c.route[i, j] == -1, c.messages[i, j]
+            with pytest.raises(mh.DomainError, match="c_R"):
+                mh.solve_contact(0.3, velocity=v[j], radius_along=0.05,
+                                 radius_across=r2[i, 0], load=1000.0, **STEEL)
+            continue
+        s = mh.solve_contact(0.3, velocity=v[j], radius_along=0.05, radius_across=r2[i, 0],
+                             load=1000.0, **STEEL)
+        for f in ("a", "b", "p0", "d0", "load"):
+            got, err = getattr(c, f)[i, j], getattr(c, f + "_error")[i, j]
+            want, want_err = getattr(s, f), getattr(s, f + "_error")
+            assert abs(got - want) <= (err + want_err) * want, (f, i, j)
+        assert abs(c.e[i, j] - s.e) <= c.e_error[i, j] + s.e_error
+    # The speed changes the shape: a at 2974 m/s against a static punch.
+    assert c.a[0, 3] != c.a[0, 0]
+
+
+def test_velocity_sweep_in_text_at_double_double():
+    c = mh.sweep_contacts("0.3", velocity=["2960.6", "2960.7"], radius_along="0.05",
+                          radius_across="0.02", approach="1e-5", shear_modulus="80e9",
+                          density="7850", precision="dd", as_text=True)
+    s = mh.solve_contact("0.3", velocity="2960.6", radius_along="0.05", radius_across="0.02",
+                         approach="1e-5", shear_modulus="80e9", density="7850",
+                         precision="dd", as_text=True)
+    assert c.ok.tolist() == [True, False] and "c_R" in c.messages[1]
+    with mpmath.workprec(106):
+        a, want = mpmath.mpf(c.a[0]), mpmath.mpf(s.a)
+        assert abs(a - want) <= (mpmath.mpf(c.a_error[0]) + mpmath.mpf(s.a_error)) * want
+
+
+def test_youngs_and_shear_moduli_give_the_same_sweep():
+    # E = 2(1 + nu) mu exactly (nu = 0.25): mu = E/(2(1 + nu)) is mu again, bit for bit.
+    mu, e = 1e9, 2.5e9
+    speeds = dict(speed=np.array([0.0, 0.5, 0.99]))
+    velocities = dict(velocity=np.array([100.0, 500.0, 570.0]), density=1000.0)
+    for given in (speeds, velocities):
+        kw = dict(radius_along=0.05, radius_across=np.array([[0.02], [0.2]]), load=10.0,
+                  **given)
+        by_mu = mh.sweep_contacts(0.25, shear_modulus=mu, **kw)
+        by_e = mh.sweep_contacts(0.25, youngs_modulus=e, **kw)
+        assert by_mu.ok.all()
+        for f in by_mu.fields:
+            assert np.array_equal(getattr(by_mu, f).data, getattr(by_e, f).data), f
+    # A Young's modulus is not a shear modulus: E taken as mu gives another contact.
+    wrong = mh.sweep_contacts(0.25, shear_modulus=e, **kw)
+    assert not np.array_equal(wrong.a.data, by_mu.a.data)
+
+
+def test_contact_sweep_arguments_are_checked_as_solve_contact_checks_them():
+    kw = dict(radius_along=0.05, radius_across=0.02, load=1000.0)
+    with pytest.raises(mh.DomainError, match="density"):
+        mh.sweep_contacts(0.3, velocity=[100.0], youngs_modulus=210e9, **kw)
+    with pytest.raises(mh.DomainError, match="density"):
+        mh.sweep_contacts(0.3, speed=[0.5], shear_modulus=80e9, density=7850.0, **kw)
+    with pytest.raises(mh.DomainError, match="exactly one of shear_modulus"):
+        mh.sweep_contacts(0.3, speed=[0.5], shear_modulus=80e9, youngs_modulus=210e9, **kw)
+    with pytest.raises(mh.DomainError, match="exactly one of speed"):
+        mh.sweep_contacts(0.3, speed=[0.5], velocity=[1.0], shear_modulus=80e9, **kw)
+    bad = mh.sweep_contacts(0.3, velocity=[100.0, -1.0], density=[7850.0, 7850.0],
+                            youngs_modulus=[210e9, 210e9], **kw)
+    assert bad.ok.tolist() == [True, False] and "velocity" in bad.messages[1]
+    bad = mh.sweep_contacts(0.3, velocity=100.0, density=[7850.0, -1.0],
+                            youngs_modulus=210e9, **kw)
+    assert bad.ok.tolist() == [True, False] and "density" in bad.messages[1]
+
+
+def test_a_scalar_input_gives_the_sweep_of_its_repeated_array():
+    # A scalar travels as one value (not repeated); the points are the same, bit for bit.
+    ratio = np.geomspace(1e-2, 1e2, 300)
+    one = mh.sweep_ellipses(0.25, gap=1e-3, ratio=ratio)
+    full = mh.sweep_ellipses(np.full(300, 0.25), gap=np.full(300, 1e-3), ratio=ratio)
+    for f in ("k", "k_error", "e", "I1", "I2"):
+        assert np.array_equal(getattr(one, f).data, getattr(full, f).data), f
+    text = mh.sweep_ellipses("0.25", gap="1e-3", ratio=ratio[:70], precision="dd", as_text=True)
+    text_full = mh.sweep_ellipses(["0.25"] * 70, gap=["1e-3"] * 70, ratio=ratio[:70],
+                                  precision="dd", as_text=True)
+    assert list(text.k) == list(text_full.k) and text.ok.all()
+    c = mh.sweep_contacts(0.3, velocity=np.array([100.0, 3000.0]), radius_along=0.05,
+                          radius_across=0.02, load=1.0, youngs_modulus=210e9, density=7850.0)
+    assert c.ok.tolist() == [True, False]
+    empty = mh.sweep_ellipses(0.25, speed=0.5, ratio=np.array([]))
+    assert empty.shape == (0,) and empty.k.size == 0
