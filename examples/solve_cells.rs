@@ -2,7 +2,7 @@
 //! M_R ∈ {0.5, 0.99, 0.999, 0.9999} × A1/B1 ∈ {0.01, 0.5, 2}) at `f64`, double-double or
 //! MPFR 256 bits: prints each cell's k, its bound and the evaluations, or runs one cell's warm
 //! solve `REPEAT` times inside `measured`, for an instruction count by callgrind
-//! (docs/performance.md, "The ellipse solve's instruction count"). Warm: the speed is made once,
+//! (docs/calibration.md, docs/data/solve_cells_instructions.txt). Warm: the speed is made once,
 //! so that its fixed-rule set-up (kept with the speed) is built by the first solve, outside
 //! `measured`; precision `f64-fresh` makes the speed anew for each solve (a single solve at a
 //! new speed, set-up included):
