@@ -7,7 +7,14 @@
 //! (k ≈ 10⁵¹, the graded rule), beside A1/B1 = 0.5, at M_R = 0.5 and 1 − 10⁻¹⁰: what a solve at
 //! an extreme input costs against a normal one.
 //!
+//! Group `ellipse_cells/f64`: the 12 cells of the cost target (ν = 0.25,
+//! M_R ∈ {0.5, 0.99, 0.999, 0.9999} × A1/B1 ∈ {0.01, 0.5, 2}, the cells of
+//! `examples/solve_cells.rs`), the warm solve (the speed made once, its fixed-rule set-up kept
+//! with it); `ellipse_cells_fresh/f64` the same with the speed made anew in each iteration (its
+//! set-up built again: a single solve at a new speed).
+//!
 //! Run: `cargo bench --bench ellipse -- --warm-up-time 1 --measurement-time 3`
+//! (`-- ellipse_cells` for the cells only).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
@@ -55,7 +62,37 @@ fn extreme<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
     g.finish();
 }
 
+fn cells(c: &mut Criterion) {
+    let mat = Material::new(0.25f64).expect("material");
+    for fresh in [false, true] {
+        let name = if fresh {
+            "ellipse_cells_fresh"
+        } else {
+            "ellipse_cells"
+        };
+        let mut g = c.benchmark_group(format!("{name}/f64"));
+        for mr in ["0.5", "0.99", "0.999", "0.9999"] {
+            let sp = mat.parse_speed(mr).expect("speed");
+            for ratio in [0.01, 0.5, 2.0] {
+                let opts = Options::default();
+                g.bench_function(format!("M={mr}_ratio={ratio}"), |b| {
+                    if fresh {
+                        b.iter(|| {
+                            let sp = mat.speed_from_gap(black_box(*sp.gap())).expect("speed");
+                            solve_ellipse(&sp, black_box(&ratio), &opts)
+                        })
+                    } else {
+                        b.iter(|| solve_ellipse(black_box(&sp), black_box(&ratio), &opts))
+                    }
+                });
+            }
+        }
+        g.finish();
+    }
+}
+
 fn bench(c: &mut Criterion) {
+    cells(c);
     let both = [Method::Fixed, Method::Adaptive];
     run::<f64>(c, "f64", (), &both);
     run::<Dd>(c, "dd", (), &both);

@@ -66,10 +66,10 @@ fn no_allocation_per_call_at_f64_and_double_double() {
     no_allocation::<Dd>(());
 }
 
-/// A warm ellipse solve (33) allocates its fixed-rule set-ups and nothing per evaluation or for
-/// publishing its result: one box at `f64`; at double-double one box per stage of the precision
-/// ladder (f64, double-double), the double-double set-up's four tables and one small
-/// allocation of the ladder (48 bytes).
+/// A warm ellipse solve (33) allocates nothing per evaluation or for publishing its result, and
+/// no fixed-rule set-up at its working precision (the speed keeps the one its first solve
+/// built): nothing at `f64`; at double-double the `f64` stage of the precision ladder (a speed
+/// made for it, with its set-up) and the ladder's small allocations.
 #[test]
 fn a_warm_ellipse_solve_allocates_only_its_set_ups() {
     fn count<T: Real>(p: T::Prec) -> usize {
@@ -83,6 +83,8 @@ fn a_warm_ellipse_solve_allocates_only_its_set_ups() {
         moving_hertz::solve_ellipse(&speed, &ratio, &opts).unwrap();
         allocations() - before
     }
-    assert_eq!(count::<f64>(()), 1);
-    assert!(count::<Dd>(()) <= 7);
+    assert_eq!(count::<f64>(()), 0);
+    let dd = count::<Dd>(());
+    println!("allocations of a warm double-double solve: {dd}");
+    assert!(dd <= 7);
 }

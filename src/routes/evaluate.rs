@@ -21,7 +21,7 @@
 //! route give no derivatives, the subtracted one and the fixed rules have a range of k, and no
 //! route goes below [`FLOOR_EPS`]·ε of the working precision.
 
-use super::fast::{self, FastSetup};
+use super::fast;
 use super::graded::{self, GradedSetup};
 use super::series::{self, SeriesOptions};
 use super::{direct, j0_from_pair, AxisRatio, Evaluation, Integrals, Method, Route};
@@ -29,7 +29,7 @@ use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::physics::Speed;
 use crate::scalar::{short, Precision, Real};
-use std::cell::{OnceCell, RefCell};
+use std::cell::RefCell;
 
 /// Options of [`integrals`] and [`Evaluator`]; every field has a default.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -51,8 +51,9 @@ pub struct IntegralOptions {
 pub const FLOOR_EPS: u32 = 12;
 
 /// Evaluates I1, I2 at many axis ratios for one speed: the fixed rules' k-independent part
-/// (G at every node) is built on first use and kept, so that a further k costs a square root and
-/// a division a node. The evaluator keeps its own copy of the speed.
+/// (G at every node) is built on first use and kept with the speed (shared by its clones, so that
+/// every evaluator and ellipse solve at that speed reuses it), so that a further k costs a square
+/// root and a division a node. The evaluator keeps its own copy of the speed.
 ///
 /// ```
 /// use moving_hertz::{Evaluator, IntegralOptions, Material};
@@ -69,9 +70,6 @@ pub struct Evaluator<T: Real + 'static> {
     opts: IntegralOptions,
     /// The tolerance at the working precision (`None`: its floor).
     tol: Option<T>,
-    /// Boxed: the set-up holds its tables inline (no allocation per table at `f64` and
-    /// double-double), and the evaluator is moved by value.
-    fast: OnceCell<Result<Box<FastSetup<T>>>>,
     graded: RefCell<Option<GradedSetup<T>>>,
 }
 
@@ -123,7 +121,6 @@ impl<T: Real> Evaluator<T> {
             speed: speed.clone(),
             opts,
             tol,
-            fast: OnceCell::new(),
             graded: RefCell::new(None),
         })
     }
@@ -134,7 +131,7 @@ impl<T: Real> Evaluator<T> {
     pub fn at(&self, k: &T) -> Result<Integrals<T>> {
         let axes = AxisRatio::new(k.clone())?;
         let route = self.route_for(&axes, self.opts.derivatives)?;
-        let r = self.run(route, &axes, self.opts.derivatives, false)?;
+        let r = self.run(route, &axes, self.opts.derivatives)?;
         self.check_tolerance(&r)?;
         self.with_j0(r, &axes).publish()
     }
@@ -210,16 +207,9 @@ impl<T: Real> Evaluator<T> {
         }
     }
 
-    /// Runs `route` at `axes`, with k-derivatives when `dk` asks for them; `probe`: see
-    /// [`Evaluator::fixed`].
+    /// Runs `route` at `axes`, with k-derivatives when `dk` asks for them.
     #[inline]
-    fn run(
-        &self,
-        route: Route,
-        axes: &AxisRatio<T>,
-        dk: bool,
-        probe: bool,
-    ) -> Result<Evaluation<T>> {
+    fn run(&self, route: Route, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         let sp = &self.speed;
         let p = axes.k.prec();
         // The adaptive routes aim at half the tolerance (their estimate must meet it).
@@ -228,7 +218,7 @@ impl<T: Real> Evaluator<T> {
             .clone()
             .map_or_else(|| T::zero(p), |t| t.mul_pow2(-1));
         match route {
-            Route::FixedRule => self.fixed(axes, dk, probe),
+            Route::FixedRule => self.fixed(axes, dk),
             Route::GradedRule => self.graded(axes, dk),
             Route::Adaptive if dk => direct::contact_integrals(sp, axes, &tol),
             Route::Adaptive => direct::quadrature(sp, axes, &tol),
@@ -259,19 +249,11 @@ impl<T: Real> Evaluator<T> {
         }
     }
 
-    /// The fixed rule at k ≤ 1. A `probe` runs it once without building the k-independent
-    /// part (the ellipse solve's first evaluation at k = 1, which may be its only one below 1).
+    /// The fixed rule at k ≤ 1 from the speed's k-independent part, built on first use and kept
+    /// with the speed ([`Speed`]'s set-up cache, shared by its clones).
     #[inline]
-    pub(crate) fn fixed(
-        &self,
-        axes: &AxisRatio<T>,
-        dk: bool,
-        probe: bool,
-    ) -> Result<Evaluation<T>> {
-        if probe && self.fast.get().is_none() {
-            return fast::integrals_with_dk(&self.speed, axes);
-        }
-        match self.fast.get_or_init(|| FastSetup::boxed(&self.speed)) {
+    pub(crate) fn fixed(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
+        match self.speed.fast_setup() {
             Ok(f) if dk => f.integrals_with_dk(axes),
             Ok(f) => f.integrals(axes),
             Err(e) => Err(e.clone()),
@@ -302,16 +284,11 @@ impl<T: Real> Evaluator<T> {
     /// The ellipse solve's evaluation at a Newton iterate: I1, I2 and, with `dk`, their
     /// k-derivatives, by the route [`Evaluator::route_for`] gives (an error of that route is
     /// returned). The adaptive route forms the k-derivatives from the same evaluation of G as
-    /// the integrals, and gives them always. `probe`: see [`Evaluator::fixed`].
+    /// the integrals, and gives them always.
     #[inline]
-    pub(crate) fn for_newton(
-        &self,
-        axes: &AxisRatio<T>,
-        dk: bool,
-        probe: bool,
-    ) -> Result<Evaluation<T>> {
+    pub(crate) fn for_newton(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         let route = self.route_for(axes, dk)?;
-        self.run(route, axes, dk || route == Route::Adaptive, probe)
+        self.run(route, axes, dk || route == Route::Adaptive)
     }
 
     /// The method the options name.

@@ -21,7 +21,9 @@ fn run_route<T: Real>(route: Route, (s, a): &Prepared<T>) -> moving_hertz::Resul
         Route::Series => series::integrals(s, a, &SeriesOptions::default()),
         Route::Adaptive => direct::quadrature(s, a, &zero),
         Route::AdaptiveSubtracted => direct::subtracted(s, a, &zero),
-        Route::FixedRule => fast::integrals(s, a),
+        // A set-up of its own each time (`fast::integrals` keeps one with the speed): the cost
+        // of one call at a new speed, as the other routes'.
+        Route::FixedRule => fast::FastSetup::new(s).and_then(|f| f.integrals(a)),
         Route::GradedRule => moving_hertz::routes::graded::integrals(s, a),
     }
 }

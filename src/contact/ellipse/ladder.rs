@@ -142,7 +142,7 @@ impl<T: Real> Newton<'_, T> {
     #[inline]
     pub(super) fn halley_step(&mut self, c: &Chord<T>) -> Result<Option<Shape<T>>> {
         let lam = self.lam.clone();
-        let (f, df, ci) = self.eval(&lam, None, false)?;
+        let (f, df, ci) = self.eval(&lam, None)?;
         self.spent += 1;
         let scale = lam.clone().abs().max_of(T::one(self.prec()));
         if let Some((root, err, ints)) = halley_from_f64(&lam, &f, &df, &ci, c, &self.eps, &scale) {

@@ -17,18 +17,17 @@ pub(super) type Handed<T> = Result<(Shape<T>, Option<Chord<T>>)>;
 
 /// F and F′ = k(I2′/I2 − I1′/I1) at λ, with the integrals. With `chord` (the derivatives
 /// kept from an earlier iterate) the derivatives are not evaluated again: a chord step instead
-/// of a Newton step. `probe`: see [`Evaluator::for_newton`].
+/// of a Newton step.
 #[inline(always)]
 pub(super) fn residual<T: Real>(
     ev: &Evaluator<T>,
     ratio: &T,
     lam: &T,
     chord: Option<&Chord<T>>,
-    probe: bool,
 ) -> Result<(T, T, Evaluation<T>)> {
     let p = ratio.prec();
     let ax = AxisRatio::new(lam.clone().exp())?;
-    let mut ci = ev.for_newton(&ax, chord.is_none(), probe)?;
+    let mut ci = ev.for_newton(&ax, chord.is_none())?;
     let f = shape_residual(&ci, ratio);
     let df = match chord {
         Some(c) => {
@@ -48,7 +47,7 @@ pub(super) fn residual<T: Real>(
 /// secant's partner, or the hand-off of a stage whose last step was a chord step; `None` if
 /// that evaluation fails.
 pub(super) fn slope_at<S: Real>(ev: &Evaluator<S>, ratio: &S, lam: S) -> Option<Chord<S>> {
-    let (_, df, ci) = residual(ev, ratio, &lam, None, false).ok()?;
+    let (_, df, ci) = residual(ev, ratio, &lam, None).ok()?;
     Some(Chord {
         di1: ci.di1_dk(),
         di2: ci.di2_dk(),
@@ -192,13 +191,8 @@ impl<'a, T: Real> Newton<'a, T> {
 
     /// F, F′ and the integrals at λ ([`residual`]).
     #[inline(always)]
-    pub(super) fn eval(
-        &self,
-        lam: &T,
-        chord: Option<&Chord<T>>,
-        probe: bool,
-    ) -> Result<(T, T, Evaluation<T>)> {
-        residual(self.evaluator, self.ratio, lam, chord, probe)
+    pub(super) fn eval(&self, lam: &T, chord: Option<&Chord<T>>) -> Result<(T, T, Evaluation<T>)> {
+        residual(self.evaluator, self.ratio, lam, chord)
     }
 
     /// The hand-off from a lower precision: its derivatives `c` (relative error r) and a bound
@@ -228,7 +222,7 @@ impl<'a, T: Real> Newton<'a, T> {
         let p = self.prec();
         while self.spent < self.budget {
             let lam = self.lam.clone();
-            let (f, df, ci) = self.eval(&lam, self.chord.as_ref(), false)?;
+            let (f, df, ci) = self.eval(&lam, self.chord.as_ref())?;
             self.spent += 1;
             if f.is_zero() {
                 let shape = finish(lam.clone(), &lam, ci, self.ratio, T::zero(p), self.spent);

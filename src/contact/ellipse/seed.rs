@@ -86,10 +86,10 @@ impl<T: Real> Newton<'_, T> {
     /// The k = 1 probe: an unseeded start above k = 1 with A1/B1 below [`PROBE_BELOW_RATIO`]
     /// (or with the static seed's k0·ε_R below [`PROBE_BELOW_SEED_K_EPS`], near the Rayleigh
     /// speed): the root may lie below k = 1, where the fast route applies, while iterates above
-    /// it pay graded layouts. One evaluation at k = 1 (the one-shot fast route) tells the side
-    /// and starts Newton from there with the bracket's end at λ = 0: from above 1, not above the
-    /// static seed (speed lowers k) nor, away from the Rayleigh speed, more than a factor e²
-    /// below it; from below, at most a factor e² below 1.
+    /// it pay graded layouts. One evaluation at k = 1 (the fast route, whose set-up the iterates
+    /// below 1 reuse) tells the side and starts Newton from there with the bracket's end at
+    /// λ = 0: from above 1, not above the static seed (speed lowers k) nor, away from the
+    /// Rayleigh speed, more than a factor e² below it; from below, at most a factor e² below 1.
     #[inline]
     pub(super) fn probe_k_one(&mut self) -> Result<()> {
         // k0·ε_R in the working type: ε_R = √(1 − M_R²) may lie below the f64 range at MPFR.
@@ -101,7 +101,7 @@ impl<T: Real> Newton<'_, T> {
             return Ok(());
         }
         let (zero, two) = (T::zero(p), T::from_i64(2, p));
-        let (f, df, _) = self.eval(&zero, None, true)?;
+        let (f, df, _) = self.eval(&zero, None)?;
         self.spent += 1;
         let newton = (df.is_positive() && df.is_finite()).then(|| -(f.clone() / &df));
         if f.is_negative() {

@@ -1,7 +1,8 @@
 //! The fast route: I1, I2 of (34) (normalisation of (37)) and their derivatives with respect to
 //! the axis ratio k, by fixed Gauss–Legendre rules after the two near singularities of (46)–(47)
 //! have been taken out in closed form. No adaptivity, no trigonometric function at a node, node
-//! counts fixed by the working precision; at `f64` and double-double no allocation per call.
+//! counts fixed by the working precision; at `f64` and double-double no allocation per call
+//! once the speed's set-up is built.
 //!
 //! **Variables.** As in [`crate::routes::direct`]: the quarter α ∈ [0, π/2] is split at π/4,
 //! the left half written in w = tan α, s = w², the right half in v = cot α, σ = v². With
@@ -103,7 +104,9 @@
 //! so that at `f64` the compiler vectorises them (two nodes per SSE2 instruction).
 //!
 //! **Many k.** [`FastSetup`] keeps the k-independent part (G at every node, the Taylor
-//! coefficients): each further k costs one square root and one division per node.
+//! coefficients): each further k costs one square root and one division per node. Each speed
+//! keeps one, built on first use and shared by its clones, which every evaluation at that speed
+//! runs (the route's one integrand).
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 0 < k ≤ 1 (every k that [`AxisRatio`] admits: at
 //! `f64` down to 1.2·10⁻⁷⁷, where k⁴ is still a normal number). As k → 0 nothing in the route
@@ -346,86 +349,6 @@ fn combine<T: Real>(
     )
 }
 
-// ---------------------------------------------------------------------------------------------
-// One-shot evaluation: every node quantity computed once, k included. The loops carry no
-// dependence from one node to the next (sums are taken afterwards), so that at f64 they compile
-// to straight-line code the processor overlaps (and the compiler may vectorise).
-
-/// Left node values R = (a(s) − a0)/(s + ε²) and, when `dk`, R' = (s a(s)/u + ε² a0/u0)/(s + ε²),
-/// with a(s) = (2/m1) D' √((p − γc)u)/(Q' u²) (module docs): two square roots and one
-/// division per node.
-fn left_values<T: Real>(
-    h: &Half<T>,
-    sc: &SpeedConsts<T>,
-    kc: &KConsts<T>,
-    out: &mut [T],
-    out_dk: &mut [T],
-) {
-    let one = T::one(sc.c.prec());
-    let nodes = h.nodes();
-    // N = (2/m1) D' √(e1 u), Q'u², h = s + ε².
-    let node = |s: &T, pp: &T, twop: &T, fourp: &T| {
-        let (e1, dd, qq) = sc.left_node(s, pp, twop, fourp);
-        let u = one.clone() + kc.k2.clone() * s;
-        let nn = sc.two_over_m1.clone() * dd * (e1 * &u).sqrt();
-        let hh = s.clone() + &sc.eps2;
-        let qu2 = qq * &u * &u;
-        (nn, qu2, u, hh)
-    };
-    if out_dk.is_empty() {
-        for ((s, pp, twop, fourp), r) in nodes.zip(out.iter_mut()) {
-            let (nn, qu2, _, hh) = node(s, pp, twop, fourp);
-            *r = (nn - kc.a0.clone() * &qu2) / (qu2 * hh);
-        }
-    } else {
-        for (((s, pp, twop, fourp), r), dr) in nodes.zip(out.iter_mut()).zip(out_dk.iter_mut()) {
-            let (nn, qu2, u, hh) = node(s, pp, twop, fourp);
-            // inv = 1/(Q' u³ h): A/u = N h inv, R = (N − a0 Q'u²) u inv, 1/h = Q'u³ inv.
-            let qu3 = qu2.clone() * &u;
-            let inv = (qu3.clone() * &hh).recip();
-            *r = (nn.clone() - kc.a0.clone() * &qu2) * &u * &inv;
-            let au = nn * hh * &inv;
-            *dr = (s.clone() * au + &kc.e0) * qu3 * inv;
-        }
-    }
-}
-
-/// Right node values r W3 = (b(σ) − Σ_{j<J} b_j σ^j)(σ + k²)^{−3/2} and, when `dk`,
-/// r W5 = r W3/(σ + k²), with b(σ) = (2/m1)√(1 + (1 − γc)σ) D'/(Q'(1 + ε²σ)) (module docs).
-/// `out` must hold the Taylor polynomial at the nodes on entry.
-fn right_values<T: Real>(
-    h: &Half<T>,
-    sc: &SpeedConsts<T>,
-    kc: &KConsts<T>,
-    out: &mut [T],
-    out_dk: &mut [T],
-) {
-    let one = T::one(sc.c.prec());
-    let nodes = h.nodes();
-    // b(σ) = N_b/E, W3 = 1/(hq √hq): r W3 = (N_b − poly·E)/(E hq √hq), 1/hq = E √hq inv.
-    let node = |sg: &T, pp: &T, twop: &T, fourp: &T| {
-        let (f1, dd, e) = sc.right_node(sg, pp, twop, fourp, &one);
-        let nb = sc.two_over_m1.clone() * f1.sqrt() * dd;
-        let hq = sg.clone() + &kc.k2;
-        let sh = hq.clone().sqrt();
-        let inv = (e.clone() * &hq * &sh).recip();
-        (nb, e, sh, inv)
-    };
-    if out_dk.is_empty() {
-        for ((sg, pp, twop, fourp), r) in nodes.zip(out.iter_mut()) {
-            let (nb, e, _, inv) = node(sg, pp, twop, fourp);
-            *r = (nb - r.clone() * &e) * inv;
-        }
-    } else {
-        for (((sg, pp, twop, fourp), r), dr) in nodes.zip(out.iter_mut()).zip(out_dk.iter_mut()) {
-            let (nb, e, sh, inv) = node(sg, pp, twop, fourp);
-            let rw3 = (nb - r.clone() * &e) * &inv;
-            *dr = rw3.clone() * inv * e * sh;
-            *r = rw3;
-        }
-    }
-}
-
 /// The Taylor polynomial Σ_{j<J} b_j σ^j at every node (Horner, one pass per coefficient so that
 /// the inner loop runs over the nodes).
 fn taylor_poly<T: Real>(b: &[T], s: &[T], out: &mut [T]) {
@@ -442,69 +365,24 @@ fn taylor_poly<T: Real>(b: &[T], s: &[T], out: &mut [T]) {
     }
 }
 
-fn one_shot<T: Real, const N: usize>(
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-    rule: &FastRule<T>,
-    dk: bool,
-    sinh: bool,
-) -> Result<Evaluation<T>> {
-    check_axes(axes)?;
-    let p = rule.prec;
-    let sc = SpeedConsts::new(speed);
-    let kc = KConsts::new(&sc, axes);
-    let nl = rule.left.len();
-    let mut left = Buf::<T, N>::zeros(nl, p);
-    let mut left_dk = Buf::<T, N>::zeros(if dk { nl } else { 0 }, p);
-    left_values(&rule.left, &sc, &kc, &mut left, &mut left_dk);
-    let lp = left_parts(&rule.left, &sc, &kc, &left, &left_dk, dk);
-    if let Some(j) = sinh_octave(rule, &axes.k).filter(|_| sinh) {
-        let rs = RightSinh::new(&sc, p, j)?;
-        return combine(lp, rs.parts(&kc, dk), &kc, dk, nl + rs.len());
-    }
-    let r = rule.right_half()?;
-    let nr = r.len();
-    let mut b = Buf::<T, N>::zeros(rule.sizes.taylor, p);
-    taylor_b(&sc, rule, &mut b);
-    let mut right = Buf::<T, N>::zeros(nr, p);
-    let mut right_dk = Buf::<T, N>::zeros(if dk { nr } else { 0 }, p);
-    taylor_poly(&b, &r.s, &mut right);
-    right_values(r, &sc, &kc, &mut right, &mut right_dk);
-    let rp = taylor_right_parts::<T, N>(rule, r, &kc, &b, &right, &right_dk, dk);
-    combine(lp, rp, &kc, dk, rule.sizes.nodes())
-}
-
-/// [`one_shot`] with inline buffers sized for the rule: 24 values at `f64`, 48 at
-/// double-double (heap buffers beyond, and for MPFR). `sinh`: the right half may take the
-/// sinh-mapped panels ([`sinh_octave`]; not for a rule of explicit sizes).
-fn run<T: Real>(
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-    rule: &FastRule<T>,
-    dk: bool,
-    sinh: bool,
-) -> Result<Evaluation<T>> {
-    let z = rule.sizes;
-    let n = z.left.max(z.right).max(3 * z.taylor + 1);
-    if n <= 32 {
-        one_shot::<T, 32>(speed, axes, rule, dk, sinh)
-    } else {
-        one_shot::<T, 48>(speed, axes, rule, dk, sinh)
-    }
-}
-
 /// I1, I2 of (34) in the normalisation of (37) by the fast route (see the module docs), with
 /// the default rule of the working precision.
 ///
 /// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 0 < k ≤ 1, else [`Error::Domain`]. Accuracy: relative
 /// error of I1 and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate` (at
 /// `f64` 3.6e-15). Work: [`RuleSizes::nodes`] evaluations of G (32 at `f64`, 70 at
-/// double-double; timings in docs/performance.md), no allocation at `f64` and double-double once the rule
-/// is built; above double-double the right half's sinh-mapped panels where they are cheaper
-/// (module docs). The route reported is [`Route::FixedRule`].
+/// double-double; timings in docs/performance.md) for the speed's [`FastSetup`], built on the
+/// speed's first call and kept with it, then a square root and a division a node; no allocation
+/// at `f64` and double-double once the rule and the set-up are built; above double-double the
+/// right half's sinh-mapped panels where they are cheaper (module docs). The route reported is
+/// [`Route::FixedRule`].
 pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-    let rule = FastRule::<T>::get(axes.k.prec())?;
-    run(speed, axes, &rule, false, true)
+    check_axes(axes)?;
+    speed
+        .fast_setup()
+        .as_ref()
+        .map_err(Clone::clone)?
+        .run(axes, false)
 }
 
 /// I1, I2 (as [`integrals`]) and dI1/dk, dI2/dk, differentiated under the integral sign on the
@@ -512,8 +390,12 @@ pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evalu
 /// reported estimate (which is for I1, I2): it is below [`DK_BOUND_EPS`]·ε = 128ε. Cost: the same nodes as [`integrals`] and a few products more a node.
 /// Implements (46)–(47) and their k-derivatives.
 pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-    let rule = FastRule::<T>::get(axes.k.prec())?;
-    run(speed, axes, &rule, true, true)
+    check_axes(axes)?;
+    speed
+        .fast_setup()
+        .as_ref()
+        .map_err(Clone::clone)?
+        .run(axes, true)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -523,8 +405,8 @@ pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Resu
 /// speed: G at every node (as the factors below), the Taylor coefficients of b and the right
 /// remainders. Each further k then costs one square root and one division per node and the
 /// closed forms (one logarithm): the evaluation Newton's method on the ellipse equation (33)
-/// repeats. Results agree with [`integrals_with_dk`] to a few ε (the same rule, the factors
-/// grouped differently) and carry the same error bound.
+/// repeats. [`integrals`] and [`integrals_with_dk`] run the one the speed keeps: the route has
+/// one integrand, this one.
 #[derive(Debug)]
 pub struct FastSetup<T: Real + 'static> {
     rule: RuleRef<T>,
@@ -537,6 +419,35 @@ pub struct FastSetup<T: Real + 'static> {
     taylor: TaylorCell<T>,
     /// The right half on sinh-mapped panels, per octave of k (above double-double; empty below).
     sinh: Vec<OnceLock<Result<RightSinh<T>>>>,
+}
+
+/// The fixed rule's k-independent part for one speed ([`FastSetup`]), built on first use and
+/// shared by the speed's clones: every evaluator and ellipse solve at that speed reuses it, so
+/// that a solve at a speed met before costs its evaluations only.
+#[derive(Clone)]
+pub(crate) struct SetupCache<T: Real + 'static>(Arc<OnceLock<Result<Box<FastSetup<T>>>>>);
+
+impl<T: Real> SetupCache<T> {
+    /// An empty cache.
+    pub(crate) fn new() -> Self {
+        SetupCache(Arc::new(OnceLock::new()))
+    }
+
+    /// The set-up for `speed` (the speed that holds this cache), built on first use.
+    pub(crate) fn get(&self, speed: &Speed<T>) -> &Result<Box<FastSetup<T>>> {
+        self.0.get_or_init(|| FastSetup::boxed(speed))
+    }
+}
+
+impl<T: Real> std::fmt::Debug for SetupCache<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let state = if self.0.get().is_some() {
+            "built"
+        } else {
+            "empty"
+        };
+        write!(f, "SetupCache({state})")
+    }
 }
 
 /// The Taylor subtraction's tables of a [`FastSetup`]: built with it, in place, at `f64` and
@@ -614,12 +525,17 @@ impl<T: Real> FastSetup<T> {
     }
 
     /// [`FastSetup::new`] built in its box: the inline tables are filled where they stay,
-    /// not moved (an evaluator keeps its set-up boxed).
+    /// not moved (a speed keeps its set-up boxed, [`SetupCache`]).
     pub(crate) fn boxed(speed: &Speed<T>) -> Result<Box<Self>> {
+        Self::with_rule(speed, FastRule::<T>::get(speed.mr().prec())?, true)
+    }
+
+    /// [`FastSetup::boxed`] on `rule`; `sinh`: whether the right half may take the sinh-mapped
+    /// panels above double-double ([`sinh_octave`]; not for a rule of explicit sizes).
+    fn with_rule(speed: &Speed<T>, rule: RuleRef<T>, sinh: bool) -> Result<Box<Self>> {
         let p = speed.mr().prec();
-        let rule = FastRule::<T>::get(p)?;
         let n = rule.left.len();
-        let eager = T::bits(p) <= 106;
+        let eager = T::bits(p) <= 106 || !sinh;
         let (taylor, sinh) = if eager {
             (TaylorCell::Built(TaylorRight::zeros(&rule)), Vec::new())
         } else {
@@ -731,7 +647,8 @@ impl<T: Real> FastSetup<T> {
             },
         );
         let lp = left_parts(&rule.left, &self.sc, &kc, &left, &left_dk, dk);
-        if let Some(j) = sinh_octave(rule, &axes.k) {
+        // No octaves kept: a set-up built without the sinh-mapped panels.
+        if let Some(j) = sinh_octave(rule, &axes.k).filter(|_| !self.sinh.is_empty()) {
             let rs = self.sinh[j]
                 .get_or_init(|| RightSinh::new(&self.sc, p, j))
                 .as_ref()
@@ -839,8 +756,8 @@ mod tests {
             let sinh = RuleSizes::for_bits(bits);
             assert!(sinh.left_sinh && sinh.left == left_sinh_nodes(bits) && sinh.left < plain.left);
             let (a, b) = (
-                FastRule::build(plain, p).unwrap(),
-                FastRule::build(sinh, p).unwrap(),
+                Arc::new(FastRule::build(plain, p).unwrap()),
+                Arc::new(FastRule::build(sinh, p).unwrap()),
             );
             let eps = Mp::epsilon(p);
             let rel = |y: &Mp, x: &Mp| ((y.clone() - x) / x).abs().to_f64() / eps.to_f64();
@@ -851,8 +768,11 @@ mod tests {
                         let mat = Material::new(Mp::from_f64(nu, p)).unwrap();
                         let sp = mat.speed(Mp::from_f64(mr, p)).unwrap();
                         let ax = AxisRatio::new(Mp::from_f64(k, p)).unwrap();
-                        let x = run(&sp, &ax, &a, true, false).unwrap();
-                        let y = run(&sp, &ax, &b, true, false).unwrap();
+                        let setup = |r: &Arc<FastRule<Mp>>| {
+                            FastSetup::with_rule(&sp, RuleRef::Shared(r.clone()), false).unwrap()
+                        };
+                        let x = setup(&a).run(&ax, true).unwrap();
+                        let y = setup(&b).run(&ax, true).unwrap();
                         let e = [
                             rel(&y.i1, &x.i1),
                             rel(&y.i2, &x.i2),
