@@ -6,6 +6,7 @@ pub mod roots;
 pub mod tanh_sinh;
 
 use moving_hertz::scalar::{mixed_precision_events, FieldOps, MpPrec, Real};
+use moving_hertz::scalar::Field as _;
 use rug::Float;
 
 /// Bits used to hold reference values.
@@ -290,26 +291,49 @@ impl MpmathCase {
 // ---------------------------------------------------------------------------------------------
 // Sweeps
 
+use moving_hertz::physics::{Moduli, Solid};
 use moving_hertz::sweep::{EllipsePoint, SpeedGiven};
 use moving_hertz::{solve_ellipse, Ellipse, Options};
 
-/// The same sweep point solved on its own (`solve_ellipse` with default options).
-pub fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellipse<T>> {
-    let mat = Material::new(pt.nu.clone())?;
-    let speed = match &pt.speed {
-        SpeedGiven::Mr(m) => mat.speed(m.clone())?,
-        SpeedGiven::Gap(g) => mat.speed_from_gap(g.clone())?,
-        SpeedGiven::Text(m) => mat.parse_speed(m)?,
-        SpeedGiven::Velocity { velocity, moduli } => {
-            moving_hertz::physics::Solid::new(&mat, moduli.clone())?
-                .speed_from_velocity(velocity.clone())?
-        }
-    };
-    solve_ellipse(&speed, &pt.ratio, &Options::default())
+/// Bits above the working precision at which [`independent`] solves a point.
+pub const INDEPENDENT_GUARD: u32 = 64;
+
+/// A value of any precision as an MPFR number of `p` bits, exactly (`p` ≥ its bits).
+pub fn up<T: Real>(x: &T, p: MpPrec) -> Mp {
+    Mp::from_float(&x.to_float(T::bits(x.prec())), p)
 }
 
-/// |k − k_ref|/k_ref over the sum of both bounds (≤ 1: within the bounds).
-pub fn within<T: Real>(got: &Ellipse<T>, want: &Ellipse<T>) -> f64 {
-    let d = ((got.k.value.clone() - &want.k.value) / &want.k.value).abs();
+/// The same sweep point solved on its own, by `solve_ellipse` with default options, at
+/// [`INDEPENDENT_GUARD`] bits above the point's precision (MPFR), its inputs converted exactly:
+/// a reference that shares neither the sweep's seeds and continuation nor its roundings.
+pub fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellipse<Mp>> {
+    let p = MpPrec::new(u64::from(T::bits(pt.nu.prec()) + INDEPENDENT_GUARD)).unwrap();
+    let mat = Material::new(up(&pt.nu, p))?;
+    let speed = match &pt.speed {
+        SpeedGiven::Mr(m) => mat.speed(up(m, p))?,
+        SpeedGiven::Gap(g) => mat.speed_from_gap(up(g, p))?,
+        SpeedGiven::Text(m) => mat.parse_speed(m)?,
+        SpeedGiven::Velocity { velocity, moduli } => {
+            let moduli = match moduli {
+                Moduli::Youngs { youngs_modulus, density } => Moduli::Youngs {
+                    youngs_modulus: up(youngs_modulus, p),
+                    density: up(density, p),
+                },
+                Moduli::Shear { shear_modulus, density } => Moduli::Shear {
+                    shear_modulus: up(shear_modulus, p),
+                    density: up(density, p),
+                },
+            };
+            Solid::new(&mat, moduli)?.speed_from_velocity(up(velocity, p))?
+        }
+    };
+    solve_ellipse(&speed, &up(&pt.ratio, p), &Options::default())
+}
+
+/// |k − k_ref|/k_ref over the sum of both bounds (≤ 1: within the bounds), `want` from
+/// [`independent`].
+pub fn within<T: Real>(got: &Ellipse<T>, want: &Ellipse<Mp>) -> f64 {
+    let k = up(&got.k.value, want.k.value.prec());
+    let d = ((k - &want.k.value) / &want.k.value).abs();
     d.to_f64() / (got.k.error.to_f64() + want.k.error.to_f64())
 }
