@@ -69,8 +69,16 @@ fn agree<T: Real>(adaptive: &Integrals<T>, fixed: &Integrals<T>, at: &str) {
     let pairs = [
         ("I1", &a.i1, &f.i1),
         ("I2", &a.i2, &f.i2),
-        ("dI1/dk", a.di1_dk.as_ref().unwrap(), f.di1_dk.as_ref().unwrap()),
-        ("dI2/dk", a.di2_dk.as_ref().unwrap(), f.di2_dk.as_ref().unwrap()),
+        (
+            "dI1/dk",
+            a.di1_dk.as_ref().unwrap(),
+            f.di1_dk.as_ref().unwrap(),
+        ),
+        (
+            "dI2/dk",
+            a.di2_dk.as_ref().unwrap(),
+            f.di2_dk.as_ref().unwrap(),
+        ),
     ];
     for (name, x, y) in pairs {
         let p = x.value.prec();

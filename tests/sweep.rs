@@ -108,7 +108,12 @@ fn velocity_points_within_their_bounds_and_refused_above_rayleigh() {
                 assert!(velocity < c_r, "{pt:?} solved above c_R = {c_r}");
                 // The same inputs, exactly, 64 bits above f64.
                 let want = independent(pt).unwrap();
-                assert!(within(got, &want) <= 1.0, "{pt:?}: k {:?} vs {:?}", got.k, want.k);
+                assert!(
+                    within(got, &want) <= 1.0,
+                    "{pt:?}: k {:?} vs {:?}",
+                    got.k,
+                    want.k
+                );
                 solved += 1;
             }
             Err(e) => {

@@ -5,8 +5,8 @@
 pub mod roots;
 pub mod tanh_sinh;
 
-use moving_hertz::scalar::{mixed_precision_events, FieldOps, MpPrec, Real};
 use moving_hertz::scalar::Field as _;
+use moving_hertz::scalar::{mixed_precision_events, FieldOps, MpPrec, Real};
 use rug::Float;
 
 /// Bits used to hold reference values.
@@ -315,11 +315,17 @@ pub fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellips
         SpeedGiven::Text(m) => mat.parse_speed(m)?,
         SpeedGiven::Velocity { velocity, moduli } => {
             let moduli = match moduli {
-                Moduli::Youngs { youngs_modulus, density } => Moduli::Youngs {
+                Moduli::Youngs {
+                    youngs_modulus,
+                    density,
+                } => Moduli::Youngs {
                     youngs_modulus: up(youngs_modulus, p),
                     density: up(density, p),
                 },
-                Moduli::Shear { shear_modulus, density } => Moduli::Shear {
+                Moduli::Shear {
+                    shear_modulus,
+                    density,
+                } => Moduli::Shear {
                     shear_modulus: up(shear_modulus, p),
                     density: up(density, p),
                 },
