@@ -528,7 +528,7 @@ fn left_pair_without_pole<T: Real>(
     tol: &T,
     lim: Limits,
 ) -> Result<[Quadrature<T>; 2]> {
-    use crate::numerics::vquad::integrate_vec_plus;
+    use crate::numerics::quadrature::integrate_vec_plus;
     let f = |w: &T| {
         let [d0, d1, ..] = s.left_divided(pole, w);
         [d0, d1]
@@ -617,7 +617,7 @@ pub fn contact_integrals<T: Real>(
     axes: &AxisRatio<T>,
     tol: &T,
 ) -> Result<Evaluation<T>> {
-    use crate::numerics::vquad::{integrate_vec, integrate_vec_plus};
+    use crate::numerics::quadrature::{integrate_vec, integrate_vec_plus};
     let s = DirectSetup::new(speed, axes);
     let p = tol.prec();
     let lim = limits(tol);
