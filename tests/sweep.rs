@@ -59,7 +59,7 @@ fn single_solve<T: Real>(pt: &EllipsePoint<T>) -> Ellipse<T> {
         SpeedGiven::Mr(m) => mat.speed(m.clone()),
         SpeedGiven::Gap(g) => mat.speed_from_gap(g.clone()),
         SpeedGiven::Text(m) => mat.parse_speed(m),
-        SpeedGiven::Velocity { .. } => unreachable!("the grids of this check have no velocities"),
+        _ => unreachable!("the grids of this check have no velocities"),
     };
     solve_ellipse(&speed.unwrap(), &pt.ratio, &Options::default()).unwrap()
 }
@@ -143,7 +143,7 @@ fn double_double_sweep_against_256_bits() {
                 SpeedGiven::Mr(m) => SpeedGiven::Mr(up(m)),
                 SpeedGiven::Gap(g) => SpeedGiven::Gap(up(g)),
                 SpeedGiven::Text(m) => SpeedGiven::Text(m.clone()),
-                SpeedGiven::Velocity { .. } => unreachable!("the grid has no velocities"),
+                _ => unreachable!("the grid has no velocities"),
             },
             ratio: up(&pt.ratio),
         };

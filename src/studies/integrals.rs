@@ -23,6 +23,11 @@ fn run_route<T: Real>(route: Route, (s, a): &Prepared<T>) -> moving_hertz::Resul
         Route::AdaptiveSubtracted => direct::subtracted(s, a, &zero),
         Route::FixedRule => fast::integrals(s, a),
         Route::GradedRule => moving_hertz::routes::graded::integrals(s, a),
+        other => Err(moving_hertz::Error::Domain {
+            name: "route",
+            value: other.label().into(),
+            bound: "series, adaptive, adaptive-subtracted, fixed-rule or graded-rule",
+        }),
     }
 }
 

@@ -332,9 +332,11 @@ pub fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellips
                     shear_modulus: up(shear_modulus, p),
                     density: up(density, p),
                 },
+                other => panic!("moduli this test does not convert: {other:?}"),
             };
             Solid::new(&mat, moduli)?.speed_from_velocity(up(velocity, p))?
         }
+        other => panic!("a speed this test does not convert: {other:?}"),
     };
     solve_ellipse(&speed, &up(&pt.ratio, p), &Options::default())
 }
