@@ -408,6 +408,7 @@ fn push_digits(text: &mut [u8; 40], at: usize, mut n: u64) -> usize {
 
 /// What the bound of an [`Estimated`] value measures.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum BoundKind {
     /// |value − exact|/|exact|: every quantity except the eccentricity.
     #[default]
@@ -415,6 +416,16 @@ pub enum BoundKind {
     /// |value − exact|: the eccentricity e, which vanishes for a circular contact (where a
     /// relative bound would be unbounded); e < 1, so it also bounds the error relative to 1.
     Absolute,
+}
+
+impl BoundKind {
+    /// `"relative"` or `"absolute"`, as the command-line tool and the Python package print it.
+    pub fn label(&self) -> &'static str {
+        match self {
+            BoundKind::Relative => "relative",
+            BoundKind::Absolute => "absolute",
+        }
+    }
 }
 
 /// A value with a bound on its error: relative, except where [`Estimated::kind`] says absolute

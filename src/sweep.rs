@@ -65,6 +65,7 @@ pub const BLOCK: usize = 64;
 
 /// How a point's speed is given.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum SpeedGiven<T> {
     /// M_R = V/c_R ∈ [0, 1) ([`Material::speed`]).
     Mr(T),

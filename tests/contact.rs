@@ -758,6 +758,7 @@ fn extreme_scales_solve_or_name_the_input() {
             loading: match load {
                 Loading::Load(v) => Loading::Load(x(v)),
                 Loading::Approach(v) => Loading::Approach(x(v)),
+                other => panic!("a loading this test does not convert: {other:?}"),
             },
             shear_modulus: x(r[2]),
         }

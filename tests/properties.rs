@@ -4,7 +4,8 @@
 //! every method and option, `integrals_to_tolerance`, `solve_ellipse` with every method, seeds
 //! and tolerances, `ContactProblem::solve` with a load or an approach, and `sweep::ellipses`.
 //! Asserted: no panic; every `Ok` holds finite values with finite bounds below 1 (at least one
-//! correct digit); every `Err` is an `Error` with a message.
+//! correct digit); every `Err` is an `Error` with a message, and a non-finite number in it is an
+//! input or a derived quantity refused by name, never an iteration's internal value.
 //!
 //! Counts: 10⁶ random input sets at `f64` (every set through the constructors, a quarter through
 //! `integrals`, one in 20 through the ellipse solve, fewer through the costlier entries), 10⁴ at
@@ -17,7 +18,7 @@ use common::SplitMix;
 use moving_hertz::prelude::*;
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven};
 use moving_hertz::{
-    integrals, integrals_to_tolerance, solve_ellipse, ExactInputs, Integrals, Method,
+    integrals, integrals_to_tolerance, solve_ellipse, Error, ExactInputs, Integrals, Method,
 };
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -35,11 +36,18 @@ fn finite<T: Real>(what: &str, values: &[&T], bounds: &[RelError]) {
     }
 }
 
-fn typed(what: &str, e: &moving_hertz::Error) {
-    assert!(
-        !e.to_string().is_empty(),
-        "{what}: an error without a message"
-    );
+/// An `Err` is a typed error with a message that says what happened: a non-finite number in
+/// it is the input as the user gave it ([`Error::NotFinite`]) or a derived quantity refused by
+/// name ([`Error::Domain`]), never an iteration's internal value (a non-finite integrand or
+/// estimate reported as [`Error::NoConvergence`] or [`Error::TermCap`] is a bug: the domain
+/// checks before the work must have refused it).
+fn typed(what: &str, e: &Error) {
+    let m = e.to_string();
+    assert!(!m.is_empty(), "{what}: an error without a message");
+    if let Error::NoConvergence { reached, .. } | Error::TermCap { reached, .. } = e {
+        let internal = ["inf", "NaN"].iter().any(|w| reached.contains(w));
+        assert!(!internal, "{what}: an internal non-finite value: {m}");
+    }
 }
 
 fn check_integrals<T: Real>(what: &str, r: &moving_hertz::Result<Integrals<T>>) {

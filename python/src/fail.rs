@@ -118,6 +118,8 @@ pub fn class_of(e: &Error) -> &'static str {
         Error::Parse { .. } => "DomainError",
         Error::NoConvergence { .. } | Error::TermCap { .. } => "ConvergenceError",
         Error::Unreachable { .. } => "ToleranceError",
+        // A variant this package does not know yet: the base class of them all.
+        _ => "MovingHertzError",
     }
 }
 

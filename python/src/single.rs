@@ -7,8 +7,8 @@ use crate::input::{self, Num, SpeedKind};
 use crate::out::Fields;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{
-    integrals, integrals_to_tolerance, solve_ellipse, with_precision, ContactProblem, Estimated,
-    ExactInputs, IntegralOptions, Integrals, Loading, Method, Moduli, Mp, Options, RelError, Solid,
+    integrals, integrals_to_tolerance, solve_ellipse, with_precision, ContactProblem, ExactInputs,
+    IntegralOptions, Integrals, Loading, Method, Moduli, Mp, Options, RelError, Solid,
 };
 use pyo3::prelude::*;
 use pyo3::sync::PyOnceLock;
@@ -402,7 +402,7 @@ pub fn integrals_of<'py>(
         let r = py.detach(|| guard(|| to_tolerance(&nu, &sp, kind, &k, &req)));
         let r = to_py(py, r)?;
         let text = text || r.precision != Precision::F64;
-        return with_precision!(r.precision, T, p => report(py, &narrow::<T>(r, p), text));
+        return with_precision!(r.precision, T, p => report(py, &r.narrow::<T>(p), text));
     };
     with_precision!(prec, T, p => {
         let r = detach_above_dd(py, prec, || guard(|| {
@@ -442,24 +442,6 @@ fn exact_text(x: &Num) -> String {
             .to_rational()
             .map_or_else(|| format!("{f:?}"), |r| r.to_string()),
         Num::F(f) => format!("{f:?}"),
-    }
-}
-
-/// A result of [`integrals_to_tolerance`] (MPFR numbers carrying the working precision's
-/// values exactly) at the precision that ran, as the command-line tool prints it.
-fn narrow<T: Real>(r: Integrals<Mp>, p: T::Prec) -> Integrals<T> {
-    let bits = T::bits(p) + 64;
-    let down =
-        |e: Estimated<Mp>| Estimated::new(T::from_float(&e.value.to_float(bits), p), e.error);
-    Integrals {
-        i1: down(r.i1),
-        i2: down(r.i2),
-        di1_dk: r.di1_dk.map(down),
-        di2_dk: r.di2_dk.map(down),
-        j0: r.j0.map(down),
-        route: r.route,
-        precision: r.precision,
-        work: r.work,
     }
 }
 

@@ -8,7 +8,7 @@ use super::CliError;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{
     integrals, integrals_to_tolerance, with_precision, Estimated, ExactInputs, IntegralOptions,
-    Integrals, Method, Mp, RelError,
+    Integrals, Method, RelError,
 };
 use serde::Serialize;
 
@@ -203,25 +203,7 @@ fn to_tolerance(a: &IntegralsArgs, tol: &Tol) -> Result<(), CliError> {
         )
     })?;
     let r = integrals_to_tolerance(&inputs, tol.rel, a.method).map_err(|e| run_error(a, e))?;
-    with_precision!(r.precision, T, p => report(a, &narrow::<T>(r, p)))
-}
-
-/// A result of [`integrals_to_tolerance`] (MPFR numbers carrying the working precision's
-/// values exactly) back at the precision that ran.
-fn narrow<T: Real>(r: Integrals<Mp>, p: T::Prec) -> Integrals<T> {
-    let bits = T::bits(p) + 64;
-    let down =
-        |e: Estimated<Mp>| Estimated::new(T::from_float(&e.value.to_float(bits), p), e.error);
-    Integrals {
-        i1: down(r.i1),
-        i2: down(r.i2),
-        di1_dk: r.di1_dk.map(down),
-        di2_dk: r.di2_dk.map(down),
-        j0: r.j0.map(down),
-        route: r.route,
-        precision: r.precision,
-        work: r.work,
-    }
+    with_precision!(r.precision, T, p => report(a, &r.narrow::<T>(p)))
 }
 
 fn report<T: Real>(a: &IntegralsArgs, r: &Integrals<T>) -> Result<(), CliError> {

@@ -5,7 +5,7 @@
 
 use super::CliError;
 use moving_hertz::scalar::Real;
-use moving_hertz::{BoundKind, Estimated, RelError};
+use moving_hertz::{Estimated, RelError};
 use std::io::Write;
 
 /// `--json` and `--digits N`: the output options of the commands that compute a result.
@@ -49,10 +49,7 @@ impl Text {
     /// A result: `label, relative error <= bound:` (or `absolute error`, as the value's
     /// [`BoundKind`] says) on one line, the value on the next.
     pub fn result<T: Real>(&mut self, label: &str, x: &Estimated<T>) {
-        let kind = match x.kind {
-            BoundKind::Relative => "relative",
-            BoundKind::Absolute => "absolute",
-        };
+        let kind = x.kind.label();
         self.line(format!("{label}, {kind} error <= {}:", x.error));
         self.line(format!("  {}", self.value(&x.value)));
     }

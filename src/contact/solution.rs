@@ -49,6 +49,7 @@ use crate::scalar::{check_finite, check_positive, short, Real};
 
 /// What fixes the size of the contact: the load P or the approach d0 (both positive).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Loading<T> {
     /// The total load P (31).
     Load(T),
@@ -92,6 +93,7 @@ pub struct ContactProblem<T: Real> {
 /// The solved contact: the ellipse, its size, the central pressure, the approach and the load,
 /// each with a bound on its relative error, and the pressure and displacement fields.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct ContactSolution<T: Real> {
     /// The ellipse's shape: k, e, the integrals.
     pub ellipse: Ellipse<T>,

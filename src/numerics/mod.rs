@@ -9,4 +9,3 @@ pub mod quadrature;
 pub mod series;
 pub(crate) mod shares;
 mod sum;
-pub mod vquad;

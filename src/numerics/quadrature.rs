@@ -4,7 +4,7 @@
 //!   precision by [`super::gauss_legendre`] and rounded once), cached per (type, n, precision).
 //! * [`integrate`] — adaptive Gauss–Legendre with breakpoints: each panel is compared with its two
 //!   halves and the panel with the largest discrepancy is split until the total is below the
-//!   tolerance.
+//!   tolerance; [`integrate_vec`] the same for `N` integrands that share one call a node.
 //!
 //! Tolerances are relative; each driver also stops at the rounding floor `≈ ε·∫|f|` (a request
 //! below it is met as well as the precision allows, and the error estimate says how well). Work
@@ -23,9 +23,8 @@ use super::sum::CompSum;
 use crate::error::{Error, Result};
 use crate::scalar::{short, Dd, Real};
 use std::any::{Any, TypeId};
-use std::cmp::Ordering;
 use std::collections::hash_map::DefaultHasher;
-use std::collections::{BinaryHeap, HashMap};
+use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 use std::sync::{Arc, Mutex, OnceLock};
 
@@ -397,46 +396,39 @@ fn not_finite<T: Real>(v: &T) -> Error {
     }
 }
 
-/// `err / |value|` for reports (or `err` itself when the value is zero).
-fn relative<T: Real>(err: &T, value: &T) -> String {
-    if value.is_zero() {
-        short(err)
-    } else {
-        short(&(err.clone() / &value.clone().abs()))
-    }
-}
-
 // ---------------------------------------------------------------------------------------------
 // Adaptive Gauss–Legendre
 
-struct Panel<T> {
-    a: T,
-    b: T,
-    /// Left-half and right-half rule values; the panel's value is their sum.
-    left: T,
-    right: T,
-    value: T,
-    /// `|G(a,b) − (G(a,m) + G(m,b))|`: the error of the one-panel rule, a (very) conservative
-    /// bound for the error of the two-half value.
-    err: T,
+/// Values and error estimates of `N` integrals from [`integrate_vec`].
+#[derive(Clone, Debug)]
+pub struct VecQuadrature<T, const N: usize> {
+    /// The integrals.
+    pub values: [T; N],
+    /// Absolute error estimates (panel discrepancies plus a rounding allowance ε·Σ|panel|).
+    pub errors: [T; N],
+    /// Calls of `f`.
+    pub evaluations: usize,
 }
 
-impl<T: PartialOrd> PartialEq for Panel<T> {
-    fn eq(&self, other: &Self) -> bool {
-        self.err == other.err
+/// A panel [a, b]: the rule on its two halves and, per component, the discrepancy with the
+/// one-panel rule, `|G(a,b) − G(a,m) − G(m,b)|`, a (very) conservative bound for the error of
+/// the two-half value.
+struct Panel<T, const N: usize> {
+    a: T,
+    b: T,
+    left: [T; N],
+    right: [T; N],
+    err: [T; N],
+}
+
+impl<T: Real, const N: usize> Panel<T, N> {
+    fn value(&self, c: usize) -> T {
+        self.left[c].clone() + &self.right[c]
     }
 }
-impl<T: PartialOrd> Eq for Panel<T> {}
-impl<T: PartialOrd> PartialOrd for Panel<T> {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl<T: PartialOrd> Ord for Panel<T> {
-    fn cmp(&self, other: &Self) -> Ordering {
-        self.err.partial_cmp(&other.err).unwrap_or(Ordering::Equal)
-    }
-}
+
+/// A panel too narrow to halve, kept for good: its value and error per component.
+type Frozen<T, const N: usize> = ([T; N], [T; N]);
 
 /// Midpoint of `[a, b]`, or `None` when it is not strictly inside (the panel is as narrow as the
 /// precision allows).
@@ -447,7 +439,8 @@ fn midpoint<T: Real>(a: &T, b: &T) -> Option<T> {
 
 /// Adaptive Gauss–Legendre quadrature of `f` over the breakpoints `points` (endpoints plus any
 /// interior kinks or peaks, strictly monotone; decreasing points give the negated integral) to
-/// relative tolerance `tol`. The working precision is `tol`'s; `points` must share it.
+/// relative tolerance `tol`: [`integrate_vec`] with one component. The working precision is
+/// `tol`'s; `points` must share it.
 ///
 /// Each panel `[a, b]` is integrated by the n-point rule ([`Limits::gauss_nodes`]) on its two
 /// halves; its error estimate is the discrepancy with the one-panel rule,
@@ -461,8 +454,9 @@ fn midpoint<T: Real>(a: &T, b: &T) -> Option<T> {
 /// orders of magnitude. At an endpoint singularity `x^α` (−1 < α) the refinement is geometric
 /// (about `bits` levels for `ln x`) and the estimate is no longer conservative: it equals the
 /// true error for `ln x`, and underestimates it by `2^(−1−α)/(1 − 2^(−1−α))` for `α < 0`
-/// (×2.4 for `x^(−1/2)`) — a double-exponential rule suits such integrands better. Measured (tests): ≤ 4ε for
-/// `∫₀¹ ln x` and ≤ 1.3ε for the smooth and peaked test integrals, from `f64` to 1024 bits.
+/// (×2.4 for `x^(−1/2)`) — a double-exponential rule suits such integrands better. Measured
+/// (tests/quadrature.rs): ≤ 4ε for `∫₀¹ ln x` and ≤ 1.3ε for the smooth and peaked test
+/// integrals, from `f64` to 1024 bits.
 /// Work: at most `limits.max_evals` evaluations of `f`, plus `O(panels)` bookkeeping per split.
 ///
 /// Errors: [`Error::Domain`] for fewer than two or non-monotone breakpoints or a negative `tol`;
@@ -491,20 +485,48 @@ pub fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
     tol: &T,
     limits: Limits,
 ) -> Result<Quadrature<T>> {
+    let q = integrate_vec_plus(|x: &T| [f(x)], points, &[offset.clone()], tol, limits)?;
+    let ([value], [error]) = (q.values, q.errors);
+    Ok(Quadrature {
+        value,
+        error,
+        evaluations: q.evaluations,
+    })
+}
+
+/// [`integrate`] of the `N` components of `f` at once, for integrands that share their
+/// expensive part (several integrals of the same Green's function against different weights):
+/// one call of `f` a node returns all `N` values. Each component meets its own threshold
+/// `max(tol·|I_c|, 4ε·Σ|I_c,panel|) + min_positive`; the panel split next is the one whose
+/// worst component, relative to its threshold, is largest. Accuracy, work and errors as
+/// [`integrate`].
+pub fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
+    f: F,
+    points: &[T],
+    tol: &T,
+    limits: Limits,
+) -> Result<VecQuadrature<T, N>> {
+    let zero = std::array::from_fn(|_| T::zero(tol.prec()));
+    integrate_vec_plus(f, points, &zero, tol, limits)
+}
+
+/// `c_c + ∫f_c` for each component by [`integrate_vec`], each threshold judged against the
+/// sum, `max(tol·|c_c + I_c|, 4ε·(|c_c| + Σ|I_c,panel|)) + min_positive` (as [`integrate_plus`]).
+/// The returned values include the `c_c`, the errors are the quadrature's.
+pub fn integrate_vec_plus<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
+    mut f: F,
+    points: &[T],
+    offsets: &[T; N],
+    tol: &T,
+    limits: Limits,
+) -> Result<VecQuadrature<T, N>> {
     let (iv, reversed) = setup(points, tol)?;
     let p = tol.prec();
     let n = limits.gauss_order(T::bits(p));
     let rule = GaussLegendre::<T>::get(n, p)?;
-    let eps = T::epsilon(p);
-    let tiny = T::min_positive(p);
     let mut evals = 0usize;
-    let mut make = |a: T, b: T, whole: Option<T>, evals: &mut usize| {
-        make_panel(&rule, &mut f, a, b, whole, evals)
-    };
-
-    let mut heap = BinaryHeap::new();
-    // Panels too narrow to split, for good: (value, error).
-    let mut frozen: Vec<(T, T)> = Vec::new();
+    let mut panels: Vec<Panel<T, N>> = Vec::new();
+    let mut frozen: Vec<Frozen<T, N>> = Vec::new();
     for (a, b) in iv {
         if evals + 3 * n > limits.max_evals {
             return Err(Error::NoConvergence {
@@ -513,44 +535,23 @@ pub fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
                 reached: "1".into(),
             });
         }
-        match make(a, b, None, &mut evals)? {
-            Ok(panel) => heap.push(panel),
+        match make_panel(&rule, &mut f, a, b, None, &mut evals)? {
+            Ok(panel) => panels.push(panel),
             Err(vf) => frozen.push(vf),
         }
     }
-    let totals = |heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)]| panel_totals(heap, frozen, p);
-    let signed = |v: &T| if reversed { -v.clone() } else { v.clone() };
-    let off_abs = offset.clone().abs();
-    let threshold = |v: &T, l1: &T| {
-        let whole = (offset.clone() + &signed(v)).abs();
-        (tol.clone() * &whole).max_of((l1.clone() + &off_abs).mul_i64(4) * &eps) + &tiny
-    };
-    let (mut value, mut err, mut l1) = totals(&heap, &frozen);
-    let mut frozen_err = T::zero(p);
-    for (_, e) in &frozen {
-        frozen_err += e;
-    }
+    let mut totals = Totals::of(&panels, &frozen, offsets, reversed, tol);
     loop {
-        if err <= threshold(&value, &l1) {
+        if totals.converged() {
             // Running totals drift by rounding; confirm with an exact recount.
-            (value, err, l1) = totals(&heap, &frozen);
-            if err <= threshold(&value, &l1) {
-                // Rounding allowance: the panel discrepancies do not see the rounding common
-                // to both rules (about ε per panel value), nor that of the final sum.
-                let error = err + &(l1 * &eps);
-                let value = offset.clone() + &signed(&value);
-                return Ok(Quadrature {
-                    value,
-                    error,
-                    evaluations: evals,
-                });
+            totals = Totals::of(&panels, &frozen, offsets, reversed, tol);
+            if totals.converged() {
+                return Ok(totals.result(evals));
             }
         }
-        let stalled = frozen_err > threshold(&value, &l1);
-        let Some(q) = heap
-            .pop()
-            .filter(|_| !stalled && evals + 4 * n <= limits.max_evals)
-        else {
+        let stalled = totals.stalled();
+        let pick = totals.worst(&panels);
+        let Some(idx) = pick.filter(|_| !stalled && evals + 4 * n <= limits.max_evals) else {
             return Err(Error::NoConvergence {
                 what: if stalled {
                     "adaptive Gauss-Legendre quadrature (panel at rounding width)"
@@ -558,88 +559,238 @@ pub fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
                     "adaptive Gauss-Legendre quadrature"
                 },
                 iterations: evals,
-                reached: relative(&err, &(offset.clone() + &signed(&value))),
+                reached: totals.reached(),
             });
         };
+        let q = panels.swap_remove(idx);
         let m = (q.a.clone() + &q.b).mul_pow2(-1);
-        let lo = make(q.a.clone(), m.clone(), Some(q.left.clone()), &mut evals)?;
-        let hi = make(m, q.b.clone(), Some(q.right.clone()), &mut evals)?;
+        let lo = make_panel(
+            &rule,
+            &mut f,
+            q.a.clone(),
+            m.clone(),
+            Some(q.left.clone()),
+            &mut evals,
+        )?;
+        let hi = make_panel(
+            &rule,
+            &mut f,
+            m,
+            q.b.clone(),
+            Some(q.right.clone()),
+            &mut evals,
+        )?;
         if let (Ok(lo), Ok(hi)) = (lo, hi) {
-            value -= &q.value;
-            err -= &q.err;
-            l1 -= &q.value.clone().abs();
-            for c in [lo, hi] {
-                value += &c.value;
-                err += &c.err;
-                l1 += &c.value.clone().abs();
-                heap.push(c);
-            }
+            totals.replace(&q, [&lo, &hi]);
+            panels.extend([lo, hi]);
         } else {
             // A half is too narrow to halve: keep the panel as it is (its totals stay counted).
-            frozen_err += &q.err;
-            frozen.push((q.value, q.err));
+            totals.freeze(&q.err);
+            frozen.push((std::array::from_fn(|c| q.value(c)), q.err));
         }
     }
 }
 
-/// The n-point `rule` on [a, b], counted, refused when not finite.
-fn rule_on<T: Real, F: FnMut(&T) -> T>(
+/// Running totals of [`integrate_vec_plus`] per component: the panels' value (unsigned, offsets
+/// apart), estimated error and Σ|value|, and the frozen panels' error.
+struct Totals<'a, T: Real, const N: usize> {
+    value: [T; N],
+    err: [T; N],
+    l1: [T; N],
+    frozen_err: [T; N],
+    offsets: &'a [T; N],
+    reversed: bool,
+    tol: &'a T,
+}
+
+impl<'a, T: Real, const N: usize> Totals<'a, T, N> {
+    /// Exact totals over all panels, compensated.
+    fn of(
+        panels: &[Panel<T, N>],
+        frozen: &[Frozen<T, N>],
+        offsets: &'a [T; N],
+        reversed: bool,
+        tol: &'a T,
+    ) -> Self {
+        let p = tol.prec();
+        let sums = || -> [CompSum<T>; N] { std::array::from_fn(|_| CompSum::new(p)) };
+        let (mut v, mut e, mut l1, mut fe) = (sums(), sums(), sums(), sums());
+        let live = panels
+            .iter()
+            .map(|q| (std::array::from_fn(|c| q.value(c)), &q.err));
+        for (val, err) in live.chain(frozen.iter().map(|(a, b)| (a.clone(), b))) {
+            for c in 0..N {
+                v[c].add(val[c].clone());
+                e[c].add(err[c].clone());
+                l1[c].add(val[c].clone().abs());
+            }
+        }
+        for (_, err) in frozen {
+            for c in 0..N {
+                fe[c].add(err[c].clone());
+            }
+        }
+        let total = |s: [CompSum<T>; N]| s.map(|x| x.total());
+        Totals {
+            value: total(v),
+            err: total(e),
+            l1: total(l1),
+            frozen_err: total(fe),
+            offsets,
+            reversed,
+            tol,
+        }
+    }
+
+    /// The integral of component `c`, its offset included.
+    fn whole(&self, c: usize) -> T {
+        let v = &self.value[c];
+        self.offsets[c].clone() + &(if self.reversed { -v.clone() } else { v.clone() })
+    }
+
+    /// `max(tol·|c + I|, 4ε·(Σ|I_panel| + |c|)) + min_positive` for component `c`.
+    fn threshold(&self, c: usize) -> T {
+        let p = self.tol.prec();
+        let floor =
+            (self.l1[c].clone() + &self.offsets[c].clone().abs()).mul_i64(4) * &T::epsilon(p);
+        (self.tol.clone() * &self.whole(c).abs()).max_of(floor) + &T::min_positive(p)
+    }
+
+    fn converged(&self) -> bool {
+        (0..N).all(|c| self.err[c] <= self.threshold(c))
+    }
+
+    /// The frozen panels alone break a threshold: splitting cannot help.
+    fn stalled(&self) -> bool {
+        (0..N).any(|c| self.frozen_err[c] > self.threshold(c))
+    }
+
+    /// The panel whose worst component, relative to its threshold, is largest.
+    fn worst(&self, panels: &[Panel<T, N>]) -> Option<usize> {
+        let inv: [T; N] = std::array::from_fn(|c| self.threshold(c).recip());
+        let score = |q: &Panel<T, N>| {
+            (1..N).fold(q.err[0].clone() * &inv[0], |m, c| {
+                m.max_of(q.err[c].clone() * &inv[c])
+            })
+        };
+        let mut best: Option<(usize, T)> = None;
+        for (i, q) in panels.iter().enumerate() {
+            let s = score(q);
+            if best.as_ref().is_none_or(|(_, b)| s > *b) {
+                best = Some((i, s));
+            }
+        }
+        best.map(|(i, _)| i)
+    }
+
+    /// Panel `q` split into `halves`.
+    fn replace(&mut self, q: &Panel<T, N>, halves: [&Panel<T, N>; 2]) {
+        for c in 0..N {
+            let v = q.value(c);
+            self.value[c] -= &v;
+            self.err[c] -= &q.err[c];
+            self.l1[c] -= &v.abs();
+            for h in halves {
+                let v = h.value(c);
+                self.value[c] += &v;
+                self.err[c] += &h.err[c];
+                self.l1[c] += &v.abs();
+            }
+        }
+    }
+
+    /// A panel of these errors frozen (its totals stay counted).
+    fn freeze(&mut self, err: &[T; N]) {
+        for c in 0..N {
+            self.frozen_err[c] += &err[c];
+        }
+    }
+
+    /// The estimate reached, relative to the worst component's integral, for reports.
+    fn reached(&self) -> String {
+        let p = self.tol.prec();
+        let worst = (0..N)
+            .map(|c| self.err[c].clone() / &(self.whole(c).abs() + &T::min_positive(p)))
+            .fold(T::zero(p), |m, x| m.max_of(x));
+        short(&worst)
+    }
+
+    /// The result: values with offsets, errors with the rounding allowance ε·Σ|I_panel| (the
+    /// panel discrepancies do not see the rounding common to both rules, about ε per panel
+    /// value, nor that of the final sum).
+    fn result(self, evaluations: usize) -> VecQuadrature<T, N> {
+        let eps = T::epsilon(self.tol.prec());
+        VecQuadrature {
+            values: std::array::from_fn(|c| self.whole(c)),
+            errors: std::array::from_fn(|c| self.err[c].clone() + &(self.l1[c].clone() * &eps)),
+            evaluations,
+        }
+    }
+}
+
+/// The n-point `rule` on [a, b] for every component, counted, refused when not finite.
+fn rule_on<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
     rule: &GaussLegendre<T>,
     f: &mut F,
     a: &T,
     b: &T,
     evals: &mut usize,
-) -> Result<T> {
+) -> Result<[T; N]> {
     *evals += rule.n;
-    let v = rule.integrate(f, a, b);
-    if v.is_finite() {
-        Ok(v)
-    } else {
-        Err(not_finite(&v))
+    let p = a.prec();
+    let half = (b.clone() - a).mul_pow2(-1);
+    let mid = (b.clone() + a).mul_pow2(-1);
+    let mut acc: [T; N] = std::array::from_fn(|_| T::zero(p));
+    for (x, w) in rule.nodes().iter().zip(rule.weights()) {
+        let mut add = |v: [T; N]| {
+            for (s, vi) in acc.iter_mut().zip(v) {
+                *s += vi * w;
+            }
+        };
+        if x.is_zero() {
+            add(f(&mid));
+        } else {
+            let dx = half.clone() * x;
+            add(f(&(mid.clone() - &dx)));
+            add(f(&(mid.clone() + &dx)));
+        }
     }
+    for s in acc.iter_mut() {
+        *s *= &half;
+        if !s.is_finite() {
+            return Err(not_finite(s));
+        }
+    }
+    Ok(acc)
 }
 
-/// The panel [a, b] of [`integrate`] given its one-panel value `whole` (computed here if
-/// `None`): the rule on both halves and the discrepancy. `Err` holds `(value, error)` of a
-/// panel too narrow to halve.
-fn make_panel<T: Real, F: FnMut(&T) -> T>(
+/// The panel [a, b] given its one-panel value `whole` (computed here if `None`): the rule on
+/// both halves and the discrepancy. `Err` holds the value and error of a panel too narrow to
+/// halve.
+fn make_panel<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
     rule: &GaussLegendre<T>,
     f: &mut F,
     a: T,
     b: T,
-    whole: Option<T>,
+    whole: Option<[T; N]>,
     evals: &mut usize,
-) -> Result<std::result::Result<Panel<T>, (T, T)>> {
+) -> Result<std::result::Result<Panel<T, N>, Frozen<T, N>>> {
     let whole = match whole {
         Some(w) => w,
         None => rule_on(rule, f, &a, &b, evals)?,
     };
     let Some(m) = midpoint(&a, &b) else {
-        let e = whole.clone().abs();
+        let e = whole.clone().map(|w| w.abs());
         return Ok(Err((whole, e)));
     };
     let left = rule_on(rule, f, &a, &m, evals)?;
     let right = rule_on(rule, f, &m, &b, evals)?;
-    let value = left.clone() + &right;
-    let err = (whole - &value).abs();
+    let err = std::array::from_fn(|c| (whole[c].clone() - &left[c] - &right[c]).abs());
     Ok(Ok(Panel {
         a,
         b,
         left,
         right,
-        value,
         err,
     }))
-}
-
-/// Exact totals (value, error, Σ|value|) over all panels of [`integrate`], compensated.
-fn panel_totals<T: Real>(heap: &BinaryHeap<Panel<T>>, frozen: &[(T, T)], p: T::Prec) -> (T, T, T) {
-    let (mut v, mut e, mut l1) = (CompSum::new(p), CompSum::new(p), CompSum::new(p));
-    let all = heap.iter().map(|q| (&q.value, &q.err));
-    for (val, err) in all.chain(frozen.iter().map(|(a, b)| (a, b))) {
-        v.add(val.clone());
-        e.add(err.clone());
-        l1.add(val.clone().abs());
-    }
-    (v.total(), e.total(), l1.total())
 }

@@ -417,10 +417,6 @@ impl<T: Real> Speed<T> {
     pub fn m2(&self) -> T {
         self.m2sq.clone().sqrt()
     }
-    /// M1 = V/c1 ((5)); within a few ε.
-    pub fn m1(&self) -> T {
-        self.m1sq.clone().sqrt()
-    }
 
     /// This speed (and its material) at another precision `q`, the gap rounded on its own: the
     /// precision ladder's lower stages and the guarded precision of the series route.

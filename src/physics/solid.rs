@@ -35,6 +35,7 @@ const GUARD: u32 = 64;
 /// shear modulus, with the density. `T` is a number of the working type, or `&str` decimal
 /// text ([`Solid::parse`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum Moduli<T> {
     /// Young's modulus E > 0 (Pa) and the density ρ > 0 (kg/m³).
     Youngs {

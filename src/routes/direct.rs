@@ -53,7 +53,9 @@ use super::{AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
 use crate::numerics::elliptic::{ellipd_mc, heuman_lambda_c_mc};
-use crate::numerics::quadrature::{integrate, integrate_plus, Limits, Quadrature};
+use crate::numerics::quadrature::{
+    integrate, integrate_plus, integrate_vec, integrate_vec_plus, Limits, VecQuadrature,
+};
 use crate::physics::{GreenFunction, Speed};
 use crate::scalar::{short, Real};
 
@@ -447,8 +449,8 @@ pub fn quadrature<T: Real>(
     integrate_halves(&s, false, tol, Route::Adaptive, None)
 }
 
-/// The four half-range integrals, optionally with G(M_R²) subtracted from I2's integrand and
-/// `extra_i2` added to I2.
+/// I1 and I2 as two half-range vector quadratures, each evaluating G once a node for both
+/// integrands, optionally with G(M_R²) subtracted from I2's integrand and `extra_i2` added to I2.
 fn integrate_halves<T: Real>(
     s: &DirectSetup<T>,
     subtract: bool,
@@ -458,37 +460,51 @@ fn integrate_halves<T: Real>(
 ) -> Result<Evaluation<T>> {
     let p = tol.prec();
     let lim = limits(tol);
-    // The left half's panels about ε only where the pole stays in the integrand.
-    let lp = || s.breakpoints(&s.left_scales(false), lim);
-    let rp = s.breakpoints(&s.right_scales(), lim)?;
     // Each of the four pieces to tol/4 relative to itself; pieces are positive except the
-    // subtracted one, whose accuracy is judged against the whole I2 below.
-    let q = |f: &dyn Fn(&T) -> T, pts: &[T]| integrate(f, pts, &tol.clone().div_i64(4), lim);
-    let i1r = q(&|v: &T| s.right(v), &rp)?;
-    let (i1l, i2l, i2r) = match (subtract, s.left_pole()) {
-        (true, _) => {
-            let lp = lp()?;
-            (
-                q(&|w: &T| s.left(w) * w.square(), &lp)?,
-                q(&|w: &T| s.left_subtracted(w), &lp)?,
-                q(&|v: &T| s.right_subtracted(v), &rp)?,
-            )
-        }
-        (false, Some(pole)) => {
-            let [i1l, i2l] = left_pair_without_pole(s, &pole, &tol.clone().div_i64(4), lim)?;
-            (i1l, i2l, q(&|v: &T| v.square() * s.right(v), &rp)?)
-        }
-        (false, None) => {
-            let lp = lp()?;
-            (
-                q(&|w: &T| s.left(w) * w.square(), &lp)?,
-                q(&|w: &T| s.left(w), &lp)?,
-                q(&|v: &T| v.square() * s.right(v), &rp)?,
-            )
+    // subtracted ones, whose accuracy is judged against the whole I2 below.
+    let t4 = tol.clone().div_i64(4);
+    let rp = s.breakpoints(&s.right_scales(), lim)?;
+    let right = if subtract {
+        integrate_vec(|v: &T| [s.right(v), s.right_subtracted(v)], &rp, &t4, lim)?
+    } else {
+        integrate_vec(
+            |v: &T| {
+                let r = s.right(v);
+                [r.clone(), v.square() * r]
+            },
+            &rp,
+            &t4,
+            lim,
+        )?
+    };
+    let pole = if subtract { None } else { s.left_pole() };
+    let left = match pole {
+        Some(pole) => left_pair_without_pole(s, &pole, &t4, lim)?,
+        None => {
+            // The left half's panels about ε only where the pole stays in the integrand.
+            let lp = s.breakpoints(&s.left_scales(false), lim)?;
+            if subtract {
+                integrate_vec(
+                    |w: &T| [s.left(w) * w.square(), s.left_subtracted(w)],
+                    &lp,
+                    &t4,
+                    lim,
+                )?
+            } else {
+                integrate_vec(
+                    |w: &T| {
+                        let l = s.left(w);
+                        [l.clone() * w.square(), l]
+                    },
+                    &lp,
+                    &t4,
+                    lim,
+                )?
+            }
         }
     };
-    let i1 = i1l.value.clone() + &i1r.value;
-    let mut i2 = i2l.value.clone() + &i2r.value;
+    let i1 = left.values[0].clone() + &right.values[0];
+    let mut i2 = left.values[1].clone() + &right.values[1];
     if let Some(x) = extra_i2 {
         i2 += &x;
     }
@@ -505,11 +521,11 @@ fn integrate_halves<T: Real>(
             });
         }
     }
-    let e1 = (i1l.error.clone() + &i1r.error) / &i1;
-    let e2 = (i2l.error.clone() + &i2r.error) / &i2;
+    let e1 = (left.errors[0].clone() + &right.errors[0]) / &i1;
+    let e2 = (left.errors[1].clone() + &right.errors[1]) / &i2;
     // Rounding floor of the integrands themselves (a few ε per evaluation of G and the weights).
     let floor = T::epsilon(p).mul_i64(8);
-    let work = i1l.evaluations + i1r.evaluations + i2l.evaluations + i2r.evaluations;
+    let work = left.evaluations + right.evaluations;
     Ok(Evaluation::pair(
         i1,
         i2,
@@ -527,28 +543,14 @@ fn left_pair_without_pole<T: Real>(
     pole: &LeftPole<T>,
     tol: &T,
     lim: Limits,
-) -> Result<[Quadrature<T>; 2]> {
-    use crate::numerics::vquad::integrate_vec_plus;
+) -> Result<VecQuadrature<T, 2>> {
     let f = |w: &T| {
         let [d0, d1, ..] = s.left_divided(pole, w);
         [d0, d1]
     };
     let parts = [pole.parts[0].clone(), pole.parts[1].clone()];
     let pts = s.breakpoints(&s.left_scales(true), lim)?;
-    let v = integrate_vec_plus(f, &pts, &parts, tol, lim)?;
-    let ([v0, v1], [e0, e1]) = (v.values, v.errors);
-    Ok([
-        Quadrature {
-            value: v0,
-            error: e0,
-            evaluations: v.evaluations,
-        },
-        Quadrature {
-            value: v1,
-            error: e1,
-            evaluations: 0,
-        },
-    ])
+    integrate_vec_plus(f, &pts, &parts, tol, lim)
 }
 
 /// S of (49) by the closed form (53):
@@ -617,7 +619,6 @@ pub fn contact_integrals<T: Real>(
     axes: &AxisRatio<T>,
     tol: &T,
 ) -> Result<Evaluation<T>> {
-    use crate::numerics::vquad::{integrate_vec, integrate_vec_plus};
     let s = DirectSetup::new(speed, axes);
     let p = tol.prec();
     let lim = limits(tol);

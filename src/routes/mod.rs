@@ -85,6 +85,7 @@ impl<T: Real> AxisRatio<T> {
 /// The route that actually ran to produce a pair of integrals: the five ways the crate evaluates
 /// I1, I2 of (34).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Route {
     /// The series (37) with the moments L_n, M_n by (39)–(42): section 5 of the paper.
     Series,
@@ -124,6 +125,7 @@ impl std::fmt::Display for Route {
 /// meets the request: the fixed rules where they apply and their bound meets the tolerance, the
 /// adaptive quadratures otherwise.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Method {
     /// The cheapest route that meets the request, by a rule on k, the tolerance and the
     /// derivatives asked for: the table in [`crate::routes::evaluate`]'s docs.
@@ -208,6 +210,28 @@ pub struct Evaluation<T: Real> {
     pub route: Route,
     /// Work done: series terms or integrand evaluations.
     pub work: usize,
+}
+
+impl Integrals<crate::scalar::Mp> {
+    /// A result of [`integrals_to_tolerance`] (MPFR numbers holding the values of the precision
+    /// that ran) as numbers of that precision, `T` and `p` naming [`Integrals::precision`]:
+    /// exact (each value is representable in `T`), the bounds unchanged.
+    pub fn narrow<T: Real>(self, p: T::Prec) -> Integrals<T> {
+        let bits = T::bits(p) + 64;
+        let down = |e: Estimated<crate::scalar::Mp>| {
+            Estimated::new(T::from_float(&e.value.to_float(bits), p), e.error)
+        };
+        Integrals {
+            i1: down(self.i1),
+            i2: down(self.i2),
+            di1_dk: self.di1_dk.map(down),
+            di2_dk: self.di2_dk.map(down),
+            j0: self.j0.map(down),
+            route: self.route,
+            precision: self.precision,
+            work: self.work,
+        }
+    }
 }
 
 impl<T: Real> Evaluation<T> {
@@ -425,6 +449,7 @@ pub(crate) fn j0_from_pair<T: Real>(k: &T, i1: &T, i2: &T, pair_error: RelError)
 /// relative error, optionally with ∂I1/∂k, ∂I2/∂k and J0 (of (32)), and the route that ran.
 /// Returned by [`integrals`] and [`Evaluator::at`].
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Integrals<T: Real> {
     /// I1 (the cos² integral, (46)).
     pub i1: Estimated<T>,

@@ -25,6 +25,11 @@ fn run_route<T: Real>(route: Route, (s, a): &Prepared<T>) -> moving_hertz::Resul
         // of one call at a new speed, as the other routes'.
         Route::FixedRule => fast::FastSetup::new(s).and_then(|f| f.integrals(a)),
         Route::GradedRule => moving_hertz::routes::graded::integrals(s, a),
+        other => Err(moving_hertz::Error::Domain {
+            name: "route",
+            value: other.label().into(),
+            bound: "series, adaptive, adaptive-subtracted, fixed-rule or graded-rule",
+        }),
     }
 }
 

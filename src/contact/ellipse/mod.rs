@@ -48,6 +48,7 @@ use crate::scalar::{check_finite, check_positive, short, Real};
 
 /// Which axis of the contact ellipse is the longer one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum MajorAxis {
     /// The semi-axis a, along the motion (k ≤ 1).
     Along,
@@ -105,6 +106,7 @@ impl<T> Default for Options<T> {
 
 /// The solved shape of the contact ellipse (33), each quantity with a bound on its error.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Ellipse<T: Real> {
     /// k = b/a (b across the motion, a along it), with a bound on its relative error for the
     /// inputs as represented at the working precision (see [`solve_ellipse`] for the speed's
