@@ -485,7 +485,13 @@ pub fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
     tol: &T,
     limits: Limits,
 ) -> Result<Quadrature<T>> {
-    let q = integrate_vec_plus(|x: &T| [f(x)], points, &[offset.clone()], tol, limits)?;
+    let q = integrate_vec_plus(
+        |x: &T| [f(x)],
+        points,
+        std::array::from_ref(offset),
+        tol,
+        limits,
+    )?;
     let ([value], [error]) = (q.values, q.errors);
     Ok(Quadrature {
         value,
@@ -701,8 +707,8 @@ impl<'a, T: Real, const N: usize> Totals<'a, T, N> {
 
     /// A panel of these errors frozen (its totals stay counted).
     fn freeze(&mut self, err: &[T; N]) {
-        for c in 0..N {
-            self.frozen_err[c] += &err[c];
+        for (total, e) in self.frozen_err.iter_mut().zip(err) {
+            *total += e;
         }
     }
 

@@ -424,7 +424,6 @@ fn limits<T: Real>(tol: &T) -> Limits {
     Limits {
         max_evals: 2_000_000,
         gauss_nodes: ((bits / 4.0) as usize + 8).min(1024),
-        ..Limits::default()
     }
 }
 
