@@ -5,7 +5,8 @@
 //! point's result is bit for bit the one of the whole sweep in one call: a point's result
 //! depends only on its block, `moving_hertz::sweep`); between chunks the GIL is taken back to
 //! call the progress callback and to let Ctrl-C through. A chunk's results are copied into
-//! the output columns at once, so that the memory beyond the output arrays is one chunk's.
+//! the output columns while the next chunk is solved, so that the memory beyond the output
+//! arrays is about three chunks'.
 //! A point whose input the binding refuses (text that does not parse, a ratio that is not
 //! positive) is handed to the library as a point it refuses too (ν = NaN), so that the blocks
 //! are the same whatever the inputs, and carries the binding's message.
@@ -25,8 +26,8 @@ use pyo3::types::{PyDict, PyList};
 use std::ops::Range;
 use std::sync::{Arc, Mutex};
 
-/// Points per chunk: 256 blocks.
-const CHUNK: usize = BLOCK * 256;
+/// Points per chunk: 64 blocks.
+const CHUNK: usize = BLOCK * 64;
 
 /// The route codes of the `route` column, in this order (−1: the point failed).
 pub const ROUTES: [Route; 5] = [
@@ -197,7 +198,9 @@ fn pool(threads: Option<usize>) -> Result<Option<Arc<rayon::ThreadPool>>, Fail> 
 /// Builds and solves the points `0..n` chunk by chunk with the GIL released (on `pool`, if
 /// any): `build` makes a chunk's points with the binding's message for each point it refuses,
 /// `solve` runs the library's sweep, `collect` takes each result or message in order; calls
-/// `progress(done, n)` between chunks. Only one chunk's points and results are held at once.
+/// `progress(done, n)` between chunks. The calling thread's share overlaps the pool's: while
+/// chunk k is solved, chunk k − 1's results are collected and chunk k + 1 is built (one
+/// `rayon::join`). At most three chunks' points and results are held at once.
 fn in_chunks<I: Send + Sync, R: Send>(
     py: Python<'_>,
     n: usize,
@@ -208,30 +211,61 @@ fn in_chunks<I: Send + Sync, R: Send>(
     mut collect: impl FnMut(Result<R, String>) + Send,
 ) -> PyResult<()> {
     let pool = to_py(py, pool(threads))?;
-    let mut done = 0;
+    let chunk = |start: usize| start.min(n)..(start + CHUNK).min(n);
+    let mut built: Option<Built<I>> = None;
+    let mut solved: Option<Solved<R>> = None;
+    let (mut start, mut done) = (0, 0);
     while done < n {
-        let range = done..(done + CHUNK).min(n);
+        let (now, after) = (chunk(start), chunk(start + CHUNK));
         let r = py.detach(|| {
             guard(|| {
-                let (items, pre) = build(range.clone())?;
-                let out = match &pool {
-                    Some(p) => p.install(|| solve(&items)),
-                    None => solve(&items),
+                let items = match built.take() {
+                    Some(b) => b,
+                    None => build(now.clone())?,
                 };
-                for (r, pre) in out.into_iter().zip(pre) {
-                    collect(r.map_err(|e| pre.unwrap_or_else(|| e.to_string())));
-                }
-                Ok(())
+                let (mut waiting, collect) = (solved.take(), &mut collect);
+                let mut step = || {
+                    rayon::join(
+                        || solve(&items.0),
+                        || {
+                            let got = waiting.take().map_or(0, |w| w.collect_into(collect));
+                            let next = (!after.is_empty()).then(|| build(after.clone()));
+                            (got, next.transpose())
+                        },
+                    )
+                };
+                let (out, (got, next)) = match &pool {
+                    Some(p) => p.install(step),
+                    None => step(),
+                };
+                built = next?;
+                solved = Some(Solved(out, items.1));
+                Ok(got)
             })
         });
-        to_py(py, r)?;
-        done = range.end;
+        done += to_py(py, r)?;
+        start = now.end;
         py.check_signals()?;
-        if let Some(cb) = progress {
+        if let (Some(cb), true) = (progress, done > 0) {
             cb.call1((done, n))?;
         }
     }
     Ok(())
+}
+
+/// A chunk's results and the binding's messages, waiting to be collected.
+struct Solved<R>(Vec<moving_hertz::Result<R>>, Vec<Option<String>>);
+
+impl<R> Solved<R> {
+    /// Hands each result (or the binding's message, else the library's) to `collect`, in order;
+    /// returns how many.
+    fn collect_into(self, collect: &mut impl FnMut(Result<R, String>)) -> usize {
+        let count = self.0.len();
+        for (r, pre) in self.0.into_iter().zip(self.1) {
+            collect(r.map_err(|e| pre.unwrap_or_else(|| e.to_string())));
+        }
+        count
+    }
 }
 
 /// A chunk's points and the binding's message for each point it refused (`None`: valid).
