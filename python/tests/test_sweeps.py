@@ -166,6 +166,7 @@ def test_sweeps_release_the_gil():
     h.start()
     try:
         mh.sweep_ellipses(0.25, gap=1e-9, ratio=np.geomspace(0.01, 100, 3 * 4096), threads=1,
+                          precision="dd",
                           progress=lambda done, total: marks.append(time.perf_counter()))
     finally:
         stop.set()
@@ -298,3 +299,34 @@ def test_a_scalar_input_gives_the_sweep_of_its_repeated_array():
     assert c.ok.tolist() == [True, False]
     empty = mh.sweep_ellipses(0.25, speed=0.5, ratio=np.array([]))
     assert empty.shape == (0,) and empty.k.size == 0
+
+
+def test_progress_true_draws_a_tqdm_bar(monkeypatch):
+    """``progress=True`` drives a ``tqdm.auto.tqdm`` bar to the sweep's total (a stand-in
+    module records what the package asks of it), and without tqdm it is refused by name."""
+    import sys
+    import types
+
+    bars = []
+
+    class Bar:
+        def __init__(self, total, unit):
+            self.total, self.n, self.unit, self.closed = total, 0, unit, False
+            bars.append(self)
+
+        def update(self, k):
+            self.n += k
+
+        def close(self):
+            self.closed = True
+
+    fake = types.ModuleType("tqdm.auto")
+    fake.tqdm = Bar
+    monkeypatch.setitem(sys.modules, "tqdm", types.ModuleType("tqdm"))
+    monkeypatch.setitem(sys.modules, "tqdm.auto", fake)
+    r = mh.sweep_ellipses(0.25, speed=0.9, ratio=np.geomspace(0.1, 10, 9000), progress=True)
+    assert r.ok.all() and len(bars) == 1
+    assert (bars[0].n, bars[0].total, bars[0].unit, bars[0].closed) == (9000, 9000, "pt", True)
+    monkeypatch.setitem(sys.modules, "tqdm.auto", None)
+    with pytest.raises(mh.DomainError, match="tqdm"):
+        mh.sweep_ellipses(0.25, speed=0.9, ratio=[0.5, 2.0], progress=True)
