@@ -526,12 +526,23 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
         bar.advance(texts.len());
         (out, failed)
     };
+    write_in_order(total, solve, &bar, &a.precision)
+}
+
+/// Solves the rows of `0..total` block by block on every thread and writes them in order
+/// ([`pipeline::solve_in_order`]); then the bar's end, and [`CliError::Failed`] counting the
+/// points whose rows carry an error.
+pub(super) fn write_in_order(
+    total: usize,
+    solve: impl Fn(std::ops::Range<usize>) -> (Vec<u8>, usize) + Sync,
+    bar: &Progress,
+    precision: &impl std::fmt::Display,
+) -> Result<(), CliError> {
     let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit_bytes(&rows))?;
     bar.finish();
     if failed > 0 {
         return Err(CliError::Failed(format!(
-            "{failed} of {total} points failed at {}; their rows carry the error",
-            a.precision
+            "{failed} of {total} points failed at {precision}; their rows carry the error"
         )));
     }
     Ok(())

@@ -7,14 +7,13 @@
 
 use super::args::{self, Decimal};
 use super::contact::ratio_fits;
-use super::output::{emit, emit_bytes};
-use super::pipeline;
+use super::output::emit;
 use super::progress::Progress;
-use super::sweep::{axis, check, checked_nus, push_line, Axis, Format, POINT_CAP};
+use super::sweep::{axis, check, checked_nus, push_line, write_in_order, Axis, Format, POINT_CAP};
 use super::CliError;
 use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
-use moving_hertz::sweep::{self, BLOCK};
+use moving_hertz::sweep;
 use moving_hertz::{
     with_precision, ContactProblem, ContactSolution, Loading, Material, Method, Moduli, Options,
     Solid, Speed,
@@ -636,13 +635,5 @@ fn solve_and_write<T: Real + Send + Sync>(
         bar.advance(solved.len());
         (out, failed)
     };
-    let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit_bytes(&rows))?;
-    bar.finish();
-    if failed > 0 {
-        return Err(CliError::Failed(format!(
-            "{failed} of {total} points failed at {}; their rows carry the error",
-            a.precision
-        )));
-    }
-    Ok(())
+    write_in_order(total, solve, &bar, &a.precision)
 }
