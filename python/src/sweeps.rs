@@ -271,6 +271,24 @@ impl<R> Solved<R> {
 /// A chunk's points and the binding's message for each point it refused (`None`: valid).
 type Built<I> = (Vec<I>, Vec<Option<String>>);
 
+/// What a sweep over `cols` asks for: the points' count ([`common_len`]), the precision, the
+/// method, and whether values come as text (asked for, or any precision above `f64`).
+fn request(
+    cols: &[Col],
+    precision: &str,
+    method: &str,
+    text: bool,
+) -> Result<(usize, Precision, moving_hertz::Method, bool), Fail> {
+    let n = common_len(&cols.iter().collect::<Vec<_>>())?;
+    let prec = input::precision(precision)?;
+    Ok((
+        n,
+        prec,
+        self::method(method)?,
+        text || prec != Precision::F64,
+    ))
+}
+
 /// The columns' common length (a column of one value stands for every point), or a refusal.
 fn common_len(cols: &[&Col]) -> Result<usize, Fail> {
     let n = cols.iter().map(|c| c.len()).find(|&l| l != 1).unwrap_or(1);
@@ -368,10 +386,7 @@ pub fn sweep_ellipses<'py>(
         ])
     })();
     let cols = to_py(py, cols)?;
-    let n = to_py(py, common_len(&cols.iter().collect::<Vec<_>>()))?;
-    let prec = to_py(py, input::precision(precision))?;
-    let method = to_py(py, self::method(method))?;
-    let text = text || prec != Precision::F64;
+    let (n, prec, method, text) = to_py(py, request(&cols, precision, method, text))?;
     with_precision!(prec, T, p => {
         let opts = Options::<T> { method, ..Default::default() };
         let mut out = Columns::new(4, n, text);
@@ -481,10 +496,7 @@ pub fn sweep_contacts<'py>(
         Ok::<_, Fail>(cols)
     })();
     let cols = to_py(py, cols)?;
-    let n = to_py(py, common_len(&cols.iter().collect::<Vec<_>>()))?;
-    let prec = to_py(py, input::precision(precision))?;
-    let method = to_py(py, self::method(method))?;
-    let text = text || prec != Precision::F64;
+    let (n, prec, method, text) = to_py(py, request(&cols, precision, method, text))?;
     with_precision!(prec, T, p => {
         let opts = Options::<T> { method, ..Default::default() };
         let mut out = Columns::new(7, n, text);
