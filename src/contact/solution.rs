@@ -324,7 +324,12 @@ impl<T: Real> Sizes<T> {
         let w1 = sh.w1;
         let w2 = 1.0 - w1;
         // (A, B, C) of each quantity's error A t1 + B t2 + C δ (module docs) and its roundings
-        // (in ε: those of the separate bounds, a's entering b, p0, d0 as a's value does).
+        // in ε, one an operation as in the separate bounds: a's own (ra) enters each quantity
+        // with the power of the computed ã in its formula, once each. Under a load b = k ã
+        // (ra and its own 1), p0 = 3P/(2π ã b̃) (2ra, b̃'s 1, its own 5), and
+        // d0 = p0 b̃ J0/(4μ) = 3P J0/(8π μ ã): ã once, b̃'s rounding cancels, p0's 5, its own
+        // 3 and J0's 4. Under an approach p0 = 4μ ã B1/(k I1) (ra and its own 5) and
+        // P = (2/3)π p0 ã b̃ (3ra, b̃'s 1, p0's 5 and its own 5).
         let rows: [(&mut Estimated<T>, [f64; 3], f64); 4] = match &pb.loading {
             Loading::Load(_) => {
                 let ra = 8.0 / 3.0 + 4.0;
@@ -332,7 +337,7 @@ impl<T: Real> Sizes<T> {
                     (&mut s.a, [1.0 / 3.0, 0.0, 0.0], ra),
                     (&mut s.b, [1.0 / 3.0, 0.0, 1.0], ra + 1.0),
                     (&mut s.p0, [-2.0 / 3.0, 0.0, -1.0], 2.0 * ra + 6.0),
-                    (&mut s.d0, [w1 - 1.0 / 3.0, w2, 2.0 * w1], 3.0 * ra + 16.0),
+                    (&mut s.d0, [w1 - 1.0 / 3.0, w2, 2.0 * w1], ra + 12.0),
                 ]
             }
             Loading::Approach(_) => {
