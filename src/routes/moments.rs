@@ -88,6 +88,7 @@ pub(crate) const MAX_TOP_TERMS: usize = 20_000_000;
 
 /// How the moment table is computed; see the module docs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum MomentMethod {
     /// The paper's forward recursion (40) from the starting values (42) (via cel).
     /// Stable for e² > 1/2 only.
