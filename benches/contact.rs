@@ -50,9 +50,10 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, gaps: &[&str]) {
     let k = problem
         .solve(&Options::default())
         .expect("solve")
-        .ellipse
-        .k
-        .value;
+        .ellipse()
+        .k()
+        .value
+        .clone();
     let axes = AxisRatio::new(k).expect("k");
     let zero = T::zero(p);
     g.bench_function("j0_gap=1e-4/approach_integral", |b| {

@@ -7,11 +7,11 @@
 //!
 //! * `scaling_integrals/{warm,cold}/<precision>`: `moving_hertz::integrals` (the fixed rule);
 //! * `scaling_ellipse/{warm,cold}/<precision>`: `solve_ellipse` (the precision ladder);
-//! * `gl_rule/{short_point,newton}/n=<n>,bits=<bits>`: one n-point Gauss–Legendre rule, by the
-//!   construction the routes use and by Newton on the three-term recurrence at the guard
-//!   precision (`numerics::gauss_legendre::reference_rule`), n the rule of a 2-unit sinh-mapped
-//!   panel (`routes::graded::left_nodes(bits, 2)`: 914 nodes at 4096 bits), the largest rule a
-//!   first solve at k < 1 builds above 512 bits;
+//! * `gl_rule/short_point/n=<n>,bits=<bits>`: one n-point Gauss–Legendre rule
+//!   (`GaussLegendre::get`, built cold), n the rule of a 2-unit sinh-mapped panel
+//!   (`routes::graded::left_nodes(bits, 2)`: 914 nodes at 4096 bits), the largest rule a first
+//!   solve at k < 1 builds above 512 bits (the construction it replaced, Newton on the
+//!   three-term recurrence, is the reference of the unit test in `numerics/gauss_legendre.rs`);
 //! * `node_loops/{cores,one_thread}/<bits>`: the warm `solve_ellipse` called from the bench's
 //!   thread, whose node loops run on every core above
 //!   `numerics::shares::PARALLEL_ABOVE_BITS` (448), and inside a one-thread `rayon` pool, where
@@ -29,7 +29,6 @@
 //! `-- warm` or `-- /4096` runs a part.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
-use moving_hertz::numerics::gauss_legendre::reference_rule;
 use moving_hertz::numerics::quadrature::{clear_rule_caches, GaussLegendre};
 use moving_hertz::routes::graded::left_nodes;
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
@@ -112,11 +111,6 @@ fn gl_rules(c: &mut Criterion) {
                 })
             })
         });
-        if bits <= 2048 {
-            g.bench_function(BenchmarkId::new("newton", &id), |b| {
-                b.iter(|| black_box(reference_rule(n, bits).expect("rule")))
-            });
-        }
     }
     g.finish();
 }

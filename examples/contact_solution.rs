@@ -24,18 +24,18 @@ fn solve<T: Real>(p: T::Prec) -> Result<ContactSolution<T>> {
 pub fn main() -> Result<()> {
     let lo = solve::<f64>(())?;
     let hi = solve::<Mp>(MpPrec::new(256)?)?;
-    println!("semi-axis along the motion  a  = {} m", lo.a);
-    println!("                            a  = {} m", hi.a);
-    println!("semi-axis across it         b  = {} m", lo.b);
+    println!("semi-axis along the motion  a  = {} m", lo.a());
+    println!("                            a  = {} m", hi.a());
+    println!("semi-axis across it         b  = {} m", lo.b());
     println!("axis ratio              k = b/a = {}", lo.k());
     // The eccentricity's bound is absolute (e vanishes for a circle): `BoundKind::Absolute`.
     println!("eccentricity                e  = {}", lo.e());
-    println!("major axis {} the motion", lo.ellipse.major.label());
-    println!("central pressure            p0 = {} Pa", lo.p0);
-    println!("approach                    d0 = {} m", lo.d0);
+    println!("major axis {} the motion", lo.ellipse().major().label());
+    println!("central pressure            p0 = {} Pa", lo.p0());
+    println!("approach                    d0 = {} m", lo.d0());
     // The pressure field (9) at a point of the contact, (x along the motion, y across it); its
     // bound is relative to p0 (the pressure vanishes on the edge of the contact).
-    let (x, y) = (0.2 * lo.a.value, 0.1 * lo.b.value);
+    let (x, y) = (0.2 * lo.a().value, 0.1 * lo.b().value);
     let p = lo.pressure(&x, &y)?;
     println!(
         "pressure at ({x:.3e}, {y:.3e}) = {} (error <= {} relative to p0) Pa",

@@ -11,13 +11,13 @@ use moving_hertz::solve_ellipse;
 fn solve<T: Real>(label: &str, p: T::Prec) -> Result<()> {
     let speed = Material::<T>::parse("0.2", p)?.parse_speed("0.99")?;
     let shape = solve_ellipse(&speed, &T::parse("0.5", p)?, &Options::default())?;
-    println!("{label:>9}: k = {}", shape.k.to_decimal());
+    println!("{label:>9}: k = {}", shape.k().to_decimal());
     println!(
         "{:>9}  e = {}  (k's relative error <= {}, {} evaluations at this precision)",
         "",
-        shape.e.to_decimal(),
-        shape.k.error,
-        shape.iterations
+        shape.e().to_decimal(),
+        shape.k().error,
+        shape.iterations()
     );
     Ok(())
 }

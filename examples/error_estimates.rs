@@ -18,13 +18,15 @@ fn true_error<T: Real>(x: &T, reference: &Mp) -> RelError {
 pub fn main() -> Result<()> {
     let p256 = MpPrec::new(256)?;
     let ratio = "0.5"; // A1/B1
-    let reference =
-        |speed: Speed<Mp>| solve_ellipse(&speed, &Mp::parse(ratio, p256)?, &Options::default());
+    let k_of = |speed: Speed<Mp>| {
+        solve_ellipse(&speed, &Mp::parse(ratio, p256)?, &Options::default()).map(|s| s.k().clone())
+    };
 
     // 1. The speed typed as text: the gap 1 - M_R is formed exactly, so k is good to the decimal.
     let mat = Material::<f64>::parse("0.2", ())?;
-    let k_text = solve_ellipse(&mat.parse_speed("0.99999")?, &0.5, &Options::default())?.k;
-    let k_ref = reference(Material::<Mp>::parse("0.2", p256)?.parse_speed("0.99999")?)?.k;
+    let solved = solve_ellipse(&mat.parse_speed("0.99999")?, &0.5, &Options::default())?;
+    let k_text = solved.k();
+    let k_ref = k_of(Material::<Mp>::parse("0.2", p256)?.parse_speed("0.99999")?)?;
     println!("M_R = 0.99999 from text: k = {}", k_text);
     println!(
         "   true error against 256 bits: {}",
@@ -33,9 +35,10 @@ pub fn main() -> Result<()> {
 
     // 2. The speed as an f64 number: 0.99999 is not representable, and k's condition number in
     //    M_R is ~M_R/(4(1 - M_R)) = 25000 here. The bound is for the speed as represented.
-    let k_f64 = solve_ellipse(&mat.speed(0.99999)?, &0.5, &Options::default())?.k;
+    let solved_f64 = solve_ellipse(&mat.speed(0.99999)?, &0.5, &Options::default())?;
+    let k_f64 = solved_f64.k();
     let exact_f64 = format!("{:.60}", rug::Float::with_val(53, 0.99999f64)); // exact
-    let k_ref_f64 = reference(Material::<Mp>::parse("0.2", p256)?.parse_speed(&exact_f64)?)?.k;
+    let k_ref_f64 = k_of(Material::<Mp>::parse("0.2", p256)?.parse_speed(&exact_f64)?)?;
     println!("M_R = 0.99999 as an f64: k = {}", k_f64);
     println!(
         "   true error against the decimal 0.99999: {}",

@@ -16,7 +16,7 @@ fn time_solve<T: Real>(p: T::Prec) -> Result<(Duration, Duration, String)> {
     let ratio = T::parse("0.5", p)?;
     let opts = Options::default();
     let t0 = Instant::now();
-    let k = solve_ellipse(&speed, &ratio, &opts)?.k.to_decimal();
+    let k = solve_ellipse(&speed, &ratio, &opts)?.k().to_decimal();
     let first = t0.elapsed();
     let mut warm = Vec::new();
     let start = Instant::now();

@@ -35,7 +35,7 @@ fn measured<T: Real>(speed: &Speed<T>, ratio: &T, n: usize, fresh: bool) -> usiz
         let made = if fresh { new_speed().ok() } else { None };
         let speed = made.as_ref().unwrap_or(speed);
         let e = solve_ellipse(std::hint::black_box(speed), ratio, &Options::default());
-        iterations += e.map_or(0, |e| e.iterations);
+        iterations += e.map_or(0, |e| e.iterations());
     }
     iterations
 }
@@ -52,9 +52,9 @@ fn run<T: Real>(p: T::Prec, which: Option<usize>, repeat: usize, fresh: bool) ->
             "M_R = {:>6}, A1/B1 = {:>4}: k = {} (bound {}, {} evaluations)",
             SPEEDS[i / RATIOS.len()],
             RATIOS[i % RATIOS.len()],
-            e.k.value.to_float(T::bits(p)).to_string_radix(16, None),
-            e.k.error,
-            e.iterations
+            e.k().value.to_float(T::bits(p)).to_string_radix(16, None),
+            e.k().error,
+            e.iterations()
         );
         if which.is_some() {
             measured(&speed, &ratio, repeat, fresh);

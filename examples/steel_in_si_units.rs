@@ -37,11 +37,11 @@ pub fn main() -> Result<()> {
         steel.c_r()
     );
     println!("speed        M_R = V/c_R = {}", lo.problem().speed.mr());
-    println!("semi-axes    a = {} m", lo.a);
-    println!("             a = {} m", hi.a);
-    println!("             b = {} m", lo.b);
-    println!("pressure     p0 = {} Pa", lo.p0);
-    println!("approach     d0 = {} m", lo.d0);
+    println!("semi-axes    a = {} m", lo.a());
+    println!("             a = {} m", hi.a());
+    println!("             b = {} m", lo.b());
+    println!("pressure     p0 = {} Pa", lo.p0());
+    println!("approach     d0 = {} m", lo.d0());
     // Above c_R: a typed error naming V and c_R.
     println!("{}", steel.parse_velocity("3000").unwrap_err());
     Ok(())

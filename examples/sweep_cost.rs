@@ -50,12 +50,12 @@ fn run<T: Real + Send + Sync>(
     match mode {
         "indep" => {
             for r in &ratios {
-                evaluations += solve_ellipse(&speed, r, &opts)?.iterations;
+                evaluations += solve_ellipse(&speed, r, &opts)?.iterations();
             }
         }
         "sweep" => {
             for r in pool.install(|| sweep::ellipses(&points, &opts)) {
-                evaluations += r?.iterations;
+                evaluations += r?.iterations();
             }
         }
         _ => {}

@@ -23,13 +23,13 @@ pub fn main() -> Result<()> {
         for j in [0, 500, 999] {
             let (pt, r) = (&points[curve * 1000 + j], &solved[curve * 1000 + j]);
             let k = r.as_ref().map_err(Clone::clone)?;
-            println!("  A1/B1 = {:<10.4e} k = {}", pt.ratio.to_f64(), k.k);
+            println!("  A1/B1 = {:<10.4e} k = {}", pt.ratio.to_f64(), k.k());
         }
     }
     let worst = solved
         .iter()
         .filter_map(|r| r.as_ref().ok())
-        .map(|e| e.k.error)
+        .map(|e| e.k().error)
         .fold(RelError::ZERO, RelError::max);
     let failed: Vec<String> = solved
         .iter()

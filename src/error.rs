@@ -14,7 +14,10 @@ pub type Result<T> = std::result::Result<T, Error>;
 #[derive(Debug, Clone, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum Error {
-    /// An argument lies outside its mathematical or physical domain.
+    /// An argument lies outside its mathematical or physical domain, or outside the domain of
+    /// the method or precision that serves it (an axis ratio k above 1 for the adaptive
+    /// subtracted route; a k whose integrals leave the working type's exponent range). Returned
+    /// before any work where the inputs decide it.
     Domain {
         /// Name of the argument, as in the API (`"nu"`, `"m"`, `"speed M_R"`, ...).
         name: &'static str,
@@ -39,12 +42,13 @@ pub enum Error {
         /// The largest supported precision in bits.
         max: u32,
     },
-    /// An iteration did not reach its tolerance within its work bound.
+    /// An iteration did not reach its tolerance within its work bound (after it ran: a refusal
+    /// before any work is [`Error::Domain`], [`Error::Unsupported`] or [`Error::Unreachable`]).
     NoConvergence {
         /// What was being computed.
         what: &'static str,
-        /// Iterations (or function evaluations) spent; 0 for a refusal before any (then not
-        /// printed).
+        /// Iterations (or function evaluations) spent; 0 where the count is not known (then
+        /// not printed).
         iterations: usize,
         /// The best error estimate reached, relative, printed in short form (empty: none, not
         /// printed).
@@ -68,7 +72,25 @@ pub enum Error {
         /// Why it was rejected.
         reason: &'static str,
     },
-    /// The requested accuracy cannot be reached by any method and precision on offer.
+    /// A method asked for something it cannot give (k-derivatives of I1, I2 from the series or
+    /// the adaptive subtracted route, which the ellipse solve needs): returned before any work.
+    Unsupported {
+        /// What was asked for.
+        what: &'static str,
+        /// The method, by its label ([`crate::Method::label`]).
+        method: &'static str,
+        /// Which methods give it.
+        reason: &'static str,
+    },
+    /// A state the crate's logic rules out was reached (a result slot left unwritten, a
+    /// Gauss–Legendre node at a zero of P_n′): a bug, to be reported with the inputs. No input
+    /// is known to lead here.
+    Internal {
+        /// What went wrong.
+        what: &'static str,
+    },
+    /// The requested accuracy cannot be reached by any method and precision on offer, or a
+    /// result's error bound is not finite (no correct digit can be promised).
     Unreachable {
         /// What was requested.
         what: &'static str,
@@ -127,6 +149,14 @@ impl fmt::Display for Error {
                 ),
             },
             Error::Parse { text, reason } => write!(f, "cannot parse {text:?}: {reason}"),
+            Error::Unsupported {
+                what,
+                method,
+                reason,
+            } => write!(f, "method {method} cannot give {what}: {reason}"),
+            Error::Internal { what } => {
+                write!(f, "internal error (a bug in moving-hertz, please report it): {what}")
+            }
             Error::Unreachable {
                 what,
                 tolerance,
@@ -162,5 +192,83 @@ mod tests {
             "x did not converge (error estimate unbounded)"
         );
         assert_eq!(e(0, ""), "x did not converge");
+    }
+
+    /// A method that cannot give the k-derivatives is [`Error::Unsupported`] naming it, before
+    /// any work: from `integrals` asking for them and from the ellipse solve, which needs them.
+    #[test]
+    fn a_method_without_derivatives_is_unsupported() {
+        use crate::{integrals, solve_ellipse, IntegralOptions, Material, Method, Options};
+        let sp = Material::new(0.25).unwrap().speed(0.5).unwrap();
+        for method in [Method::Series, Method::AdaptiveSubtracted] {
+            let opts = IntegralOptions {
+                method,
+                derivatives: true,
+                ..Default::default()
+            };
+            let solve = Options {
+                method,
+                ..Default::default()
+            };
+            for r in [
+                integrals(&sp, &0.5, &opts).map(|_| ()),
+                solve_ellipse(&sp, &2.0, &solve).map(|_| ()),
+            ] {
+                match r {
+                    Err(e @ Error::Unsupported { method: m, .. }) => {
+                        assert_eq!(m, method.label());
+                        assert!(e
+                            .to_string()
+                            .starts_with(&format!("method {m} cannot give")));
+                    }
+                    other => panic!("{method}: {other:?}"),
+                }
+            }
+        }
+    }
+
+    /// A k at or beyond the ends of the `f64` exponent range, on every route that admits it
+    /// and near the Rayleigh speed, is refused as [`Error::Domain`] naming k as given: before
+    /// any work where k⁴ or 1/k⁴ is not a normal number, after it where a value of the route
+    /// overflows or vanishes; never as an internal non-finite value ("integrand = -inf is not
+    /// finite") nor as a non-convergence. (Without the k⁴ check the routes meet such values;
+    /// the count of those refusals is printed.)
+    #[test]
+    fn an_integrand_beyond_the_exponent_range_names_k() {
+        use crate::{integrals, IntegralOptions, Material, Method};
+        let mut refused = 0;
+        for nu in [0.25, -0.9] {
+            let mat = Material::new(nu).unwrap();
+            for mr in [0.5, 0.999999, 1.0 - 1e-12] {
+                let sp = mat.speed(mr).unwrap();
+                for k in [
+                    1e-100, 1e-80, 1e-77, 1e-76, 1e-70, 1e70, 1e76, 1e77, 1e80, 1e100,
+                ] {
+                    for (method, derivatives) in [
+                        (Method::Adaptive, true),
+                        (Method::Adaptive, false),
+                        (Method::AdaptiveSubtracted, false),
+                        (Method::Auto, true),
+                    ] {
+                        let opts = IntegralOptions {
+                            method,
+                            derivatives,
+                            j0: true,
+                            ..Default::default()
+                        };
+                        let what = format!("nu {nu} M_R {mr} k {k:e} {method} {derivatives}");
+                        match integrals(&sp, &k, &opts) {
+                            Ok(_) => {}
+                            Err(Error::Domain { name, bound, .. }) => {
+                                assert!(name.starts_with("axis ratio k"), "{what}: {name}");
+                                refused += usize::from(bound.contains("exponent range"));
+                            }
+                            Err(e) => panic!("{what}: {e:?}"),
+                        }
+                    }
+                }
+            }
+        }
+        println!("{refused} refusals after the work for the exponent range");
     }
 }

@@ -465,8 +465,8 @@ impl<T: Real> Estimated<T> {
         self.value.to_decimal()
     }
 
-    /// [`Error::NotFinite`] naming `what` unless the value and its bound are finite: the check
-    /// every public function makes before returning a result.
+    /// [`Error::NotFinite`] naming `what` unless the value is finite, [`Error::Unreachable`]
+    /// unless its bound is: the check every public function makes before returning a result.
     pub fn checked(self, what: &'static str) -> Result<Self> {
         if !self.value.is_finite() {
             return Err(Error::NotFinite {
@@ -475,10 +475,10 @@ impl<T: Real> Estimated<T> {
             });
         }
         if !self.error.is_finite() {
-            return Err(Error::NoConvergence {
+            return Err(Error::Unreachable {
                 what,
-                iterations: 0,
-                reached: "unbounded".into(),
+                tolerance: "1 (one correct digit)".into(),
+                reason: "its error bound is not finite".into(),
             });
         }
         Ok(self)

@@ -43,7 +43,7 @@
 //! let points = EllipsePoint::grid(&[0.25, 0.7], &[SpeedGiven::Mr(0.9)], &ratios);
 //! let solved = sweep::ellipses(&points, &Options::default());
 //! assert_eq!(solved.len(), 200);
-//! assert!(solved[..100].iter().all(|r| r.as_ref().is_ok_and(|e| e.k.error.to_f64() < 1e-13)));
+//! assert!(solved[..100].iter().all(|r| r.as_ref().is_ok_and(|e| e.k().error.to_f64() < 1e-13)));
 //! assert!(solved[100..].iter().all(|r| r.is_err())); // ν = 0.7 is outside (-1, 1/2]
 //! # Ok::<(), moving_hertz::Error>(())
 //! ```
@@ -195,7 +195,7 @@ where
 ///     })
 ///     .collect();
 /// let solved = sweep::try_contacts(&problems, &Options::default());
-/// assert!(solved[0].as_ref().is_ok_and(|s| s.p0.error.to_f64() < 1e-13));
+/// assert!(solved[0].as_ref().is_ok_and(|s| s.p0().error.to_f64() < 1e-13));
 /// assert!(solved[1].as_ref().is_err_and(|e| e.to_string().contains("c_R")));
 /// # Ok::<(), moving_hertz::Error>(())
 /// ```
@@ -365,10 +365,8 @@ pub fn bind_to_cpu(index: usize) -> bool {
 /// The placeholder of a result before its block writes it (every block writes each of its
 /// slots; cheap to make: no allocation).
 fn unsolved() -> Error {
-    Error::NoConvergence {
-        what: "a sweep point (not solved)",
-        iterations: 0,
-        reached: String::new(),
+    Error::Internal {
+        what: "a sweep point left unsolved",
     }
 }
 

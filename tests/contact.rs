@@ -46,7 +46,7 @@ fn ellipse_by<T: Real>(sp: &Speed<T>, ratio: &T, method: Method) -> Ellipse<T> {
 
 /// k's error estimate in units of ε.
 fn est_eps<T: Real>(s: &Ellipse<T>, p: T::Prec) -> f64 {
-    s.k.error.to_f64() / T::epsilon(p).to_f64()
+    s.k().error.to_f64() / T::epsilon(p).to_f64()
 }
 
 /// Johnson §4.2 for a > b (x along a): with e² = 1 − b²/a²,
@@ -91,17 +91,24 @@ fn static_limit<T: Real>(p: T::Prec, label: &str) {
         let estar = mu.clone().mul_i64(2) / mat.one_minus_nu();
         let (a, b, p0, d0) = johnson(p, &load, &r1, &r2, &estar);
         for (name, got, want) in [
-            ("a", &sol.a.value, &a),
-            ("b", &sol.b.value, &b),
-            ("p0", &sol.p0.value, &p0),
-            ("d0", &sol.d0.value, &d0),
+            ("a", &sol.a().value, &a),
+            ("b", &sol.b().value, &b),
+            ("p0", &sol.p0().value, &p0),
+            ("d0", &sol.d0().value, &d0),
         ] {
             let e = rel_eps(got, &want.to_float(400));
             assert!(e <= 64.0, "{label} nu={nu}: {name} off by {e} eps");
         }
         // And the approach-driven solve gives back the load.
-        let sol2 = contact(&sp, &r1, &r2, Loading::Approach(sol.d0.value.clone()), &mu).unwrap();
-        let e = rel_eps(&sol2.load.value, &load.to_float(400));
+        let sol2 = contact(
+            &sp,
+            &r1,
+            &r2,
+            Loading::Approach(sol.d0().value.clone()),
+            &mu,
+        )
+        .unwrap();
+        let e = rel_eps(&sol2.load().value, &load.to_float(400));
         assert!(e <= 64.0, "{label} nu={nu}: load from d0 off by {e} eps");
     }
 }
@@ -127,7 +134,7 @@ fn convolution_reproduces_the_punch_and_signorini_holds() {
         let mat = Material::new(nu).unwrap();
         let sp = mat.speed(mr).unwrap();
         let sol = contact(&sp, &r1, &r2, Loading::Load(2.0), &1.5).unwrap();
-        let (a, b) = (sol.a.value, sol.b.value);
+        let (a, b) = (sol.a().value, sol.b().value);
         let tol = |t: f64| RelError::from_f64(t);
         let inside = [
             (0.0, 0.0),
@@ -140,7 +147,7 @@ fn convolution_reproduces_the_punch_and_signorini_holds() {
             assert!(sol.inside(&x, &y) && sol.pressure(&x, &y).unwrap().value > 0.0);
             let u = sol.convolution(&x, &y, &tol(1e-13)).unwrap().value;
             let poly = sol.displacement(&x, &y, &tol(1e-13)).unwrap().value;
-            let rel = ((u - poly) / sol.d0.value).abs();
+            let rel = ((u - poly) / sol.d0().value).abs();
             worst = worst.max(rel);
             assert!(
                 rel <= 1e-10,
@@ -158,7 +165,7 @@ fn convolution_reproduces_the_punch_and_signorini_holds() {
         for (x, y) in outside {
             assert!(!sol.inside(&x, &y) && sol.pressure(&x, &y).unwrap().value == 0.0);
             let u = sol.displacement(&x, &y, &tol(1e-12)).unwrap().value;
-            let punch = sol.d0.value - sol.a1() * x * x - sol.b1() * y * y;
+            let punch = sol.d0().value - sol.a1() * x * x - sol.b1() * y * y;
             assert!(
                 u - punch > 0.0,
                 "nu={nu} M_R={mr} at ({x},{y}): gap {} is not positive",
@@ -180,12 +187,12 @@ fn ellipse_is_unique_and_lengthens_with_speed() {
             for mr in [0.0, 0.3, 0.6, 0.9, 0.99, 0.9999] {
                 let sp = mat.speed(mr).unwrap();
                 let s = ellipse(&sp, &ratio);
-                let k = s.k.value;
+                let k = s.k().value;
                 assert!(
                     k < prev_k,
                     "nu={nu} ratio={ratio} M_R={mr}: k {k} did not fall below {prev_k}"
                 );
-                let ci = &s.integrals;
+                let ci = s.integrals();
                 let (d1, d2) = (ci.di1_dk.as_ref().unwrap(), ci.di2_dk.as_ref().unwrap());
                 assert!(
                     d2.value / ci.i2.value - d1.value / ci.i1.value > 0.0,
@@ -196,7 +203,7 @@ fn ellipse_is_unique_and_lengthens_with_speed() {
                 } else {
                     MajorAxis::Across
                 };
-                assert_eq!(s.major, expect);
+                assert_eq!(s.major(), expect);
                 prev_k = k;
             }
         }
@@ -216,7 +223,7 @@ fn ladder<T: Real>(p: T::Prec, label: &str) {
             &mat64.speed(mr.parse::<f64>().unwrap()).unwrap(),
             &ratio.parse::<f64>().unwrap(),
         )
-        .k
+        .k()
         .value;
         let mat = Material::new(T::parse(nu, p).unwrap()).unwrap();
         let sp = mat.speed(T::parse(mr, p).unwrap()).unwrap();
@@ -227,13 +234,13 @@ fn ladder<T: Real>(p: T::Prec, label: &str) {
         };
         let s = solve_ellipse(&sp, &r, &seeded).unwrap();
         assert!(
-            s.iterations <= 4,
+            s.iterations() <= 4,
             "{label}: {} iterations from the f64 seed",
-            s.iterations
+            s.iterations()
         );
         // The default solve: the ladder (a double-double stage above 106 bits, chord steps).
         let cold = ellipse(&sp, &r);
-        let e = rel_eps(&s.k.value, &cold.k.value.to_float(T::bits(p) + 64));
+        let e = rel_eps(&s.k().value, &cold.k().value.to_float(T::bits(p) + 64));
         assert!(
             e <= 16.0,
             "{label}: seeded and ladder roots differ by {e} eps"
@@ -267,7 +274,7 @@ fn ladder_accuracy<T: Real>(p: T::Prec, label: &str) {
         let matq = Material::new(up(&nu)).unwrap();
         let spq = matq.speed(up(&mr)).unwrap();
         let want = ellipse_by(&spq, &up(&ratio), Method::Adaptive);
-        let e = rel_eps(&s.k.value, &want.k.value.to_float(320));
+        let e = rel_eps(&s.k().value, &want.k().value.to_float(320));
         assert!(e <= 10.0, "{label}: k off by {e:.2} eps");
         let est = est_eps(&s, p);
         assert!(
@@ -275,13 +282,13 @@ fn ladder_accuracy<T: Real>(p: T::Prec, label: &str) {
             "{label}: error {e:.2} eps above its estimate {est:.2} eps"
         );
         // The returned integrals, carried to the returned k (first or second order).
-        let (si, wi) = (&s.integrals, &want.integrals);
+        let (si, wi) = (s.integrals(), want.integrals());
         let ei = rel_eps(&si.i1.value, &wi.i1.value.to_float(320))
             .max(rel_eps(&si.i2.value, &wi.i2.value.to_float(320)));
         assert!(ei <= 16.0, "{label}: I1, I2 off by {ei:.2} eps");
         println!(
             "{label}: k {e:.2} eps (estimate {est:.2}), I1, I2 {ei:.2} eps, {} evaluations",
-            s.iterations
+            s.iterations()
         );
     }
 }
@@ -332,8 +339,8 @@ fn j0_against_its_quadrature<T: Real>(p: T::Prec, label: &str) {
                     .unwrap()
                     .value
                     .to_float(bits + 64);
-                let err = rel_eps(&sol.j0.value, &want);
-                let bound = sol.j0.error.to_f64() / T::epsilon(p).to_f64();
+                let err = rel_eps(&sol.j0().value, &want);
+                let bound = sol.j0().error.to_f64() / T::epsilon(p).to_f64();
                 assert!(
                     err <= bound,
                     "{at}: J0 off by {err:.2} eps, bound {bound:.2} eps"
@@ -400,7 +407,7 @@ fn ratio_above_one_agrees_with_quadrature_and_uses_the_fast_route_below_k1() {
             for ratio in [1.0, 1.5, 2.0, 10.0, 1e3] {
                 let auto = ellipse_by(&sp, &ratio, Method::Auto);
                 let quad = ellipse_by(&sp, &ratio, Method::Adaptive);
-                let (ka, kq) = (auto.k.value, quad.k.value);
+                let (ka, kq) = (auto.k().value, quad.k().value);
                 let rel = (ka / kq - 1.0).abs();
                 assert!(
                     rel <= 64.0 * f64::EPSILON,
@@ -408,11 +415,11 @@ fn ratio_above_one_agrees_with_quadrature_and_uses_the_fast_route_below_k1() {
                 );
                 if ka < 1.0 - 1e-12 {
                     assert_eq!(
-                        auto.integrals.route,
+                        auto.integrals().route,
                         Route::FixedRule,
                         "nu={nu} M_R={mr} A1/B1={ratio}: k = {ka} < 1 not by the fast route"
                     );
-                    assert!(auto.iterations <= 8, "{} iterations", auto.iterations);
+                    assert!(auto.iterations() <= 8, "{} iterations", auto.iterations());
                 }
             }
         }
@@ -433,11 +440,12 @@ fn the_solve_routes_as_a_user_evaluation_does() {
                 derivatives: true,
                 ..Default::default()
             };
-            let user = integrals(&sp, &s.k.value, &opts).unwrap();
+            let user = integrals(&sp, &s.k().value, &opts).unwrap();
             assert_eq!(
-                s.integrals.route, user.route,
+                s.integrals().route,
+                user.route,
                 "{method:?} A1/B1 = {ratio}: the solve's route at k = {}",
-                s.k.value
+                s.k().value
             );
         }
     }
@@ -456,7 +464,7 @@ fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
     for nu in [-0.5, 0.2, 0.5] {
         let mat = Material::new(nu).unwrap();
         let matd = Material::new(Dd::from_f64(nu, ())).unwrap();
-        let ok = |s: &Ellipse<f64>| (s.k.value, s.k.error.to_f64());
+        let ok = |s: &Ellipse<f64>| (s.k().value, s.k().error.to_f64());
         for mr in [0.0, 0.5, 0.9, 0.99, 0.9999] {
             let sp = mat.speed(mr).unwrap();
             let spd = matd.speed(Dd::from_f64(mr, ())).unwrap();
@@ -475,7 +483,7 @@ fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
                     resid <= allowed,
                     "{at}: k = {k} leaves ln(I2/I1/ratio) = {resid:e} (allowed {allowed:e})"
                 );
-                let (s1, s2) = (s.integrals.i1.value, s.integrals.i2.value);
+                let (s1, s2) = (s.integrals().i1.value, s.integrals().i2.value);
                 let e = (s1 / i1 - 1.0).abs().max((s2 / i2 - 1.0).abs()) / f64::EPSILON;
                 assert!(e <= 16.0, "{at}: returned I1, I2 off by {e:.1} eps");
                 worst = worst.max(resid / f64::EPSILON);
@@ -511,19 +519,19 @@ fn dd_ladder_agrees_with_256_bits_on_a_wide_grid() {
                 let matq = Material::new(up(matd.nu())).unwrap();
                 let spq = matq.speed(up(spd.mr())).unwrap();
                 let want = ellipse(&spq, &up(&Dd::parse(ratio, ()).unwrap()));
-                let e = rel_eps(&s.k.value, &want.k.value.to_float(256));
+                let e = rel_eps(&s.k().value, &want.k().value.to_float(256));
                 let est = est_eps(&s, ());
                 assert!(
                     e <= 10.0 && e <= est,
                     "{at}: k off by {e:.2} eps (estimate {est:.2})"
                 );
-                let (si, wi) = (&s.integrals, &want.integrals);
+                let (si, wi) = (s.integrals(), want.integrals());
                 let ei = rel_eps(&si.i1.value, &wi.i1.value.to_float(256))
                     .max(rel_eps(&si.i2.value, &wi.i2.value.to_float(256)));
                 assert!(ei <= 16.0, "{at}: I1, I2 off by {ei:.2} eps");
                 worst_k = worst_k.max(e);
                 worst_i = worst_i.max(ei);
-                one_step += usize::from(s.iterations == 1);
+                one_step += usize::from(s.iterations() == 1);
                 n += 1;
             }
         }
@@ -547,32 +555,32 @@ fn the_eccentricity_bound_is_absolute_and_labelled() {
             .and_then(|m| m.speed(Mp::from_f64(mr, p)))
             .and_then(|sp| solve_ellipse(&sp, &Mp::from_f64(ratio, p), &Options::default()))
             .unwrap();
-        let e_ref = hi.e.value.to_f64();
+        let e_ref = hi.e().value.to_f64();
         let lo = ellipse(&Material::new(0.25).unwrap().speed(mr).unwrap(), &ratio);
-        assert_eq!(lo.e.kind, BoundKind::Absolute);
-        assert_eq!(lo.k.kind, BoundKind::Relative);
-        assert_eq!(lo.integrals.i1.kind, BoundKind::Relative);
+        assert_eq!(lo.e().kind, BoundKind::Absolute);
+        assert_eq!(lo.k().kind, BoundKind::Relative);
+        assert_eq!(lo.integrals().i1.kind, BoundKind::Relative);
         assert!(
-            format!("{}", lo.e).contains("(absolute error <= "),
+            format!("{}", lo.e()).contains("(absolute error <= "),
             "{}",
-            lo.e
+            lo.e()
         );
         assert!(
-            format!("{}", lo.k).contains("(relative error <= "),
+            format!("{}", lo.k()).contains("(relative error <= "),
             "{}",
-            lo.k
+            lo.k()
         );
-        let err = (lo.e.value - e_ref).abs();
+        let err = (lo.e().value - e_ref).abs();
         assert!(
-            err <= lo.e.error.to_f64(),
+            err <= lo.e().error.to_f64(),
             "M_R = {mr}, A1/B1 = {ratio}: |e - e_ref| = {err:e} above the bound {}",
-            lo.e.error
+            lo.e().error
         );
     }
     let sp = Material::new(0.25).unwrap().speed(0.9).unwrap();
     let sol = contact(&sp, &0.05, &0.02, Loading::Load(1000.0), &80e9).unwrap();
     assert_eq!(sol.e().kind, BoundKind::Absolute);
-    for q in [&sol.a, &sol.b, &sol.p0, &sol.d0] {
+    for q in [sol.a(), sol.b(), sol.p0(), sol.d0()] {
         assert_eq!(q.kind, BoundKind::Relative);
     }
 }
@@ -616,19 +624,19 @@ fn every_bound_holds_at_any_tolerance() {
                         ..Default::default()
                     };
                     let s = solve_ellipse(&sp, &ratio, &opts).unwrap();
-                    let ints =
-                        integrals(&spd, &Dd::from_f64(s.k.value, ()), &Default::default()).unwrap();
+                    let ints = integrals(&spd, &Dd::from_f64(s.k().value, ()), &Default::default())
+                        .unwrap();
                     for (name, err, bound) in [
-                        ("k", rel(s.k.value, &want.k.value), s.k.error),
+                        ("k", rel(s.k().value, &want.k().value), s.k().error),
                         (
                             "I1",
-                            rel(s.integrals.i1.value, &ints.i1.value),
-                            s.integrals.i1.error,
+                            rel(s.integrals().i1.value, &ints.i1.value),
+                            s.integrals().i1.error,
                         ),
                         (
                             "I2",
-                            rel(s.integrals.i2.value, &ints.i2.value),
-                            s.integrals.i2.error,
+                            rel(s.integrals().i2.value, &ints.i2.value),
+                            s.integrals().i2.error,
                         ),
                     ] {
                         assert!(
@@ -639,9 +647,9 @@ fn every_bound_holds_at_any_tolerance() {
                     }
                     if let Some(t) = tol {
                         assert!(
-                            s.k.error <= t.min(RelError::pow2(-20)),
+                            s.k().error <= t.min(RelError::pow2(-20)),
                             "{at}: k's bound {} misses the tolerance",
-                            s.k.error
+                            s.k().error
                         );
                     }
                 }
@@ -672,7 +680,7 @@ fn the_pressure_field_is_finite_everywhere() {
         .unwrap();
     let sp = Material::new(0.25).unwrap().speed(0.9).unwrap();
     let lo = contact(&sp, &2.0, &1.0, Loading::Load(2.0), &1.5).unwrap();
-    let (a, b, p0) = (lo.a.value, lo.b.value, lo.p0.value);
+    let (a, b, p0) = (lo.a().value, lo.b().value, lo.p0().value);
     let mut worst = 0.0f64;
     for s in [
         0.0,
@@ -772,11 +780,11 @@ fn extreme_scales_solve_or_name_the_input() {
             .solve(&Options::default())
             .unwrap();
         for (name, g, w) in [
-            ("a", &got.a, &want.a),
-            ("b", &got.b, &want.b),
-            ("p0", &got.p0, &want.p0),
-            ("d0", &got.d0, &want.d0),
-            ("load", &got.load, &want.load),
+            ("a", got.a(), want.a()),
+            ("b", got.b(), want.b()),
+            ("p0", got.p0(), want.p0()),
+            ("d0", got.d0(), want.d0()),
+            ("load", got.load(), want.load()),
         ] {
             let e = rel_eps(&g.value, &w.value.to_float(256)) * T::epsilon(p).to_f64();
             assert!(
@@ -843,7 +851,7 @@ fn displacement_holds_its_bound_near_and_far() {
         let lo: ContactSolution<f64> = far_problem((), nu, mr, r1);
         let dd: ContactSolution<Dd> = far_problem((), nu, mr, r1);
         let hi: ContactSolution<Mp> = far_problem(q, nu, mr, r1);
-        let (a, b) = (lo.a.value, lo.b.value);
+        let (a, b) = (lo.a().value, lo.b().value);
         let mut pts = vec![
             (0.3 * a, 1.5 * b),
             (0.99 * a, 0.2 * b),
@@ -868,7 +876,7 @@ fn displacement_holds_its_bound_near_and_far() {
                     &RelError::from_f64(1e-40),
                 )
                 .unwrap();
-            let d0 = lo.d0.value;
+            let d0 = lo.d0().value;
             let got = lo.displacement(&x, &y, &tol).unwrap();
             let err = (got.value - truth.value.to_f64()).abs() / d0;
             let r = err / got.error.to_f64();

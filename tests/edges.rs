@@ -68,12 +68,18 @@ fn the_ends_of_the_range_have_honest_bounds() {
     for (nu, gap, ratio) in [("0.2", "1e-10", "1e-100"), ("0.5", "8.47e-22", "1e100")] {
         let sp = speed::<f64>(nu, gap, ());
         let r = ratio.parse::<f64>().unwrap();
-        let got = solve_ellipse(&sp, &r, &Options::default()).unwrap().k;
+        let got = solve_ellipse(&sp, &r, &Options::default())
+            .unwrap()
+            .k()
+            .clone();
         let up = |x: &f64| x.to_float(256);
         check_against_256(&got, [up(sp.material().nu()), up(sp.gap()), up(&r)], "f64");
         let sp = speed::<Dd>(nu, gap, ());
         let r = Dd::parse(ratio, ()).unwrap();
-        let got = solve_ellipse(&sp, &r, &Options::default()).unwrap().k;
+        let got = solve_ellipse(&sp, &r, &Options::default())
+            .unwrap()
+            .k()
+            .clone();
         let up = |x: &Dd| x.to_float(256);
         check_against_256(&got, [up(sp.material().nu()), up(sp.gap()), up(&r)], "dd");
     }
@@ -86,7 +92,7 @@ fn check_against_256<T: Real>(got: &Estimated<T>, inputs: [rug::Float; 3], label
     let sp = Material::new(nu).unwrap().speed_from_gap(gap).unwrap();
     let want = solve_ellipse(&sp, &ratio, &Options::default())
         .unwrap()
-        .k
+        .k()
         .value
         .to_float(256);
     let err = rug::Float::with_val(256, (got.value.to_float(256) - &want) / &want)
@@ -110,7 +116,10 @@ fn k_is_within_a_few_eps_where_ln_k_is_large() {
         let bits = T::bits(p);
         let sp = speed::<T>(nu, gap, p);
         let r = T::parse(ratio, p).unwrap();
-        let got = solve_ellipse(&sp, &r, &Options::default()).unwrap().k;
+        let got = solve_ellipse(&sp, &r, &Options::default())
+            .unwrap()
+            .k()
+            .clone();
         let hp = MpPrec::new(u64::from(bits) + 64).unwrap();
         let up = |x: &T| Mp::from_float(&x.to_float(bits), hp);
         let sp_hi = Material::new(up(sp.material().nu()))
@@ -118,8 +127,9 @@ fn k_is_within_a_few_eps_where_ln_k_is_large() {
             .unwrap();
         let want = solve_ellipse(&sp_hi, &up(&r), &Options::default())
             .unwrap()
-            .k
-            .value;
+            .k()
+            .value
+            .clone();
         let want = want.to_float(bits + 64);
         let err = rug::Float::with_val(bits + 64, (got.value.to_float(bits + 64) - &want) / &want)
             .abs()
@@ -253,13 +263,13 @@ fn roots_far_below_the_seed_near_the_rayleigh_speed() {
         let sp = speed::<Mp>("0.25", gap, p);
         let s = solve_ellipse(&sp, &Mp::from_i64(2, p), &Options::default()).unwrap();
         assert!(
-            s.iterations <= 40,
+            s.iterations() <= 40,
             "gap {gap}: {} evaluations",
-            s.iterations
+            s.iterations()
         );
         let g = Mp::parse(gap, p).unwrap();
-        let c = s.k.value.clone() / g.sqrt().sqrt();
-        (c.to_float(256), s.k.error.to_f64())
+        let c = s.k().value.clone() / g.sqrt().sqrt();
+        (c.to_float(256), s.k().error.to_f64())
     };
     let (c0, e0) = scaled("1e-300");
     for gap in ["1e-1000", "1e-5000", "1e-100000"] {
@@ -275,12 +285,12 @@ fn roots_far_below_the_seed_near_the_rayleigh_speed() {
         let r = ratio.parse::<f64>().unwrap();
         let s = solve_ellipse(&sp, &r, &Options::default()).unwrap();
         assert!(
-            s.iterations <= 20,
+            s.iterations() <= 20,
             "f64 A1/B1 = {ratio}: {} evaluations",
-            s.iterations
+            s.iterations()
         );
         let up = |x: &f64| x.to_float(256);
-        check_against_256(&s.k, [up(sp.material().nu()), up(sp.gap()), up(&r)], "f64");
+        check_against_256(s.k(), [up(sp.material().nu()), up(sp.gap()), up(&r)], "f64");
     }
 }
 
@@ -313,10 +323,10 @@ fn contact_at_gap(gap: &str) {
     };
     let (lo, hi) = (solve(256), solve(320));
     for (name, got, want) in [
-        ("a", &lo.a, &hi.a),
-        ("b", &lo.b, &hi.b),
-        ("p0", &lo.p0, &hi.p0),
-        ("d0", &lo.d0, &hi.d0),
+        ("a", lo.a(), hi.a()),
+        ("b", lo.b(), hi.b()),
+        ("p0", lo.p0(), hi.p0()),
+        ("d0", lo.d0(), hi.d0()),
     ] {
         let w = want.value.to_float(320);
         let err = rug::Float::with_val(320, (got.value.to_float(320) - &w) / &w)

@@ -107,9 +107,9 @@ fn the_solve_agrees_with_the_solve_on_the_adaptive_route_at_f64() {
         };
         let (fast, generic) = (solve(Method::Auto), solve(Method::Adaptive));
         for (a, b, what) in [
-            (&fast.k, &generic.k, "k"),
-            (&fast.integrals.i1, &generic.integrals.i1, "I1"),
-            (&fast.integrals.i2, &generic.integrals.i2, "I2"),
+            (fast.k(), generic.k(), "k"),
+            (&fast.integrals().i1, &generic.integrals().i1, "I1"),
+            (&fast.integrals().i2, &generic.integrals().i2, "I2"),
         ] {
             let r = over_bounds(a, b);
             let at = format!("{what} nu={nu} M_R={mr} A1/B1={ratio:e}");

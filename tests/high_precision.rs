@@ -54,16 +54,17 @@ fn check(bits: u32) {
     let ratio = Mp::from_f64(2.0, p);
     let s = solve_ellipse(&sp, &ratio, &Options::default()).unwrap();
     let t = solve_ellipse(&spq, &up(&ratio), &Options::default()).unwrap();
-    let err = rel(&s.k.value, &t.k.value, bits + 256);
+    let err = rel(&s.k().value, &t.k().value, bits + 256);
     assert!(
-        err <= s.k.error,
+        err <= s.k().error,
         "{bits}: k error {err} > bound {}",
-        s.k.error
+        s.k().error
     );
-    assert!(s.k.error >= eps && s.k.error.is_finite());
+    assert!(s.k().error >= eps && s.k().error.is_finite());
     println!(
         "{bits} bits: I1 bound {}, k error {err}, bound {}",
-        r.i1.error, s.k.error
+        r.i1.error,
+        s.k().error
     );
 }
 
@@ -114,20 +115,20 @@ fn half_precision_stage_over_a_grid() {
         let ratio = Mp::from_f64(a, p);
         let s = solve_ellipse(&sp, &ratio, &Options::default()).unwrap();
         let t = solve_ellipse(&spq, &up(&ratio), &Options::default()).unwrap();
-        let err = rel(&s.k.value, &t.k.value, bits + 256);
+        let err = rel(&s.k().value, &t.k().value, bits + 256);
         println!(
             "nu {nu}, M_R {mr}, A1/B1 {a:e}: k error {err}, bound {}, {} evaluations at {bits} bits",
-            s.k.error, s.iterations
+            s.k().error, s.iterations()
         );
         assert!(
-            err <= s.k.error && s.k.error.is_finite(),
+            err <= s.k().error && s.k().error.is_finite(),
             "{nu} {mr} {a}: k error {err} > bound {}",
-            s.k.error
+            s.k().error
         );
         assert!(
-            s.iterations <= 2,
+            s.iterations() <= 2,
             "{nu} {mr} {a}: {} evaluations",
-            s.iterations
+            s.iterations()
         );
     }
 }
@@ -158,10 +159,10 @@ fn node_loops_on_threads_give_the_same_bits() {
             let ratio = Mp::from_f64(ratio, p);
             let solve = || solve_ellipse(&sp, &ratio, &Options::default()).unwrap();
             let (cores, one) = (solve(), pool.install(solve));
-            assert_eq!(show(&cores.k.value), show(&one.k.value), "{bits} bits");
-            assert_eq!(show(&cores.e.value), show(&one.e.value), "{bits} bits");
-            assert_eq!(cores.k.error.to_string(), one.k.error.to_string());
-            assert_eq!(cores.iterations, one.iterations);
+            assert_eq!(show(&cores.k().value), show(&one.k().value), "{bits} bits");
+            assert_eq!(show(&cores.e().value), show(&one.e().value), "{bits} bits");
+            assert_eq!(cores.k().error.to_string(), one.k().error.to_string());
+            assert_eq!(cores.iterations(), one.iterations());
         }
         for k in [0.05, 0.5, 3.0] {
             let k = Mp::from_f64(k, p);
@@ -200,7 +201,7 @@ fn concurrent_first_calls_finish_with_the_same_bits() {
         show(
             &solve_ellipse(&sp, &x(3.0), &Options::default())
                 .unwrap()
-                .k
+                .k()
                 .value,
         )
     };
@@ -218,6 +219,6 @@ fn concurrent_first_calls_finish_with_the_same_bits() {
     let want = solve();
     assert!(alone.iter().all(|k| *k == want), "{alone:?} against {want}");
     for r in &swept {
-        assert_eq!(show(&r.as_ref().unwrap().k.value), want);
+        assert_eq!(show(&r.as_ref().unwrap().k().value), want);
     }
 }

@@ -158,7 +158,7 @@ fn derivative_and_j0_identities_hold_within_the_bounds() {
 fn approach_residual<T: Real>(sol: &ContactSolution<T>, r1: &T, r2: &T) -> (f64, f64) {
     let p = r1.prec();
     let eps = T::epsilon(p);
-    let (a, b, d0) = (&sol.a, &sol.b, &sol.d0);
+    let (a, b, d0) = (sol.a(), sol.b(), sol.d0());
     let along = a.value.clone() * &a.value / &r1.clone().mul_pow2(1);
     let across = b.value.clone() * &b.value / &r2.clone().mul_pow2(1);
     let rel = |e: RelError| e.to_real::<T>(p);

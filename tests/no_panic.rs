@@ -48,7 +48,7 @@ fn random_inputs_never_panic_nor_return_nan() {
             finite_or_err(
                 "ellipse",
                 solve_ellipse(&sp, &ratio, &Options::default()),
-                |s| vec![s.k.value, s.e.value, s.k.error.to_f64()],
+                |s| vec![s.k().value, s.e().value, s.k().error.to_f64()],
             );
             let problem = ContactProblem {
                 speed: sp.clone(),
@@ -58,7 +58,13 @@ fn random_inputs_never_panic_nor_return_nan() {
                 shear_modulus: mu,
             };
             finite_or_err("contact", problem.solve(&Options::default()), |s| {
-                vec![s.a.value, s.b.value, s.p0.value, s.d0.value, s.load.value]
+                vec![
+                    s.a().value,
+                    s.b().value,
+                    s.p0().value,
+                    s.d0().value,
+                    s.load().value,
+                ]
             });
             1
         });

@@ -39,14 +39,42 @@ fn finite<T: Real>(what: &str, values: &[&T], bounds: &[RelError]) {
 /// An `Err` is a typed error with a message that says what happened: a non-finite number in
 /// it is the input as the user gave it ([`Error::NotFinite`]) or a derived quantity refused by
 /// name ([`Error::Domain`]), never an iteration's internal value (a non-finite integrand or
-/// estimate reported as [`Error::NoConvergence`] or [`Error::TermCap`] is a bug: the domain
-/// checks before the work must have refused it).
+/// estimate reported as [`Error::NotFinite`], [`Error::NoConvergence`] or [`Error::TermCap`] is
+/// a bug: the domain checks before the work must have refused it); a non-convergence says how
+/// many iterations ran (a refusal before any is another variant); no internal error.
 fn typed(what: &str, e: &Error) {
     let m = e.to_string();
     assert!(!m.is_empty(), "{what}: an error without a message");
-    if let Error::NoConvergence { reached, .. } | Error::TermCap { reached, .. } = e {
-        let internal = ["inf", "NaN"].iter().any(|w| reached.contains(w));
-        assert!(!internal, "{what}: an internal non-finite value: {m}");
+    let non_finite = |s: &str| ["inf", "NaN"].iter().any(|w| s.contains(w));
+    match e {
+        Error::NoConvergence {
+            reached,
+            iterations,
+            ..
+        } => {
+            assert!(
+                !non_finite(reached),
+                "{what}: an internal non-finite value: {m}"
+            );
+            assert!(
+                *iterations > 0,
+                "{what}: a refusal as a non-convergence: {m}"
+            );
+        }
+        Error::TermCap { reached, .. } => {
+            assert!(
+                !non_finite(reached),
+                "{what}: an internal non-finite value: {m}"
+            );
+        }
+        Error::NotFinite { name, .. } => {
+            assert!(
+                !name.contains("integrand"),
+                "{what}: an internal value: {m}"
+            );
+        }
+        Error::Internal { .. } => panic!("{what}: {m}"),
+        _ => {}
     }
 }
 
@@ -68,8 +96,12 @@ fn check_integrals<T: Real>(what: &str, r: &moving_hertz::Result<Integrals<T>>) 
 fn check_ellipse<T: Real>(what: &str, r: &moving_hertz::Result<moving_hertz::Ellipse<T>>) {
     match r {
         Ok(s) => {
-            finite(what, &[&s.k.value, &s.e.value], &[s.k.error, s.e.error]);
-            check_integrals(what, &Ok(s.integrals.clone()));
+            finite(
+                what,
+                &[&s.k().value, &s.e().value],
+                &[s.k().error, s.e().error],
+            );
+            check_integrals(what, &Ok(s.integrals().clone()));
         }
         Err(e) => typed(what, e),
     }
@@ -197,13 +229,19 @@ fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Sh
             Ok(s) => finite(
                 "contact",
                 &[
-                    &s.a.value,
-                    &s.b.value,
-                    &s.p0.value,
-                    &s.d0.value,
-                    &s.load.value,
+                    &s.a().value,
+                    &s.b().value,
+                    &s.p0().value,
+                    &s.d0().value,
+                    &s.load().value,
                 ],
-                &[s.a.error, s.b.error, s.p0.error, s.d0.error, s.load.error],
+                &[
+                    s.a().error,
+                    s.b().error,
+                    s.p0().error,
+                    s.d0().error,
+                    s.load().error,
+                ],
             ),
             Err(e) => typed("contact", &e),
         }

@@ -91,21 +91,21 @@ fn results<T: Real>(row: &Row, p: T::Prec) -> Vec<Estimated<T>> {
     };
     let l = solve(Loading::Load(x(row.load)));
     let d = solve(Loading::Approach(x(row.approach)));
-    let i = &el.integrals;
+    let i = el.integrals();
     vec![
-        el.k.clone(),
-        el.e.clone(),
+        el.k().clone(),
+        el.e().clone(),
         i.i1.clone(),
         i.i2.clone(),
-        l.j0.clone(),
-        l.a.clone(),
-        l.b.clone(),
-        l.p0.clone(),
-        l.d0.clone(),
-        d.a.clone(),
-        d.b.clone(),
-        d.p0.clone(),
-        d.load.clone(),
+        l.j0().clone(),
+        l.a().clone(),
+        l.b().clone(),
+        l.p0().clone(),
+        l.d0().clone(),
+        d.a().clone(),
+        d.b().clone(),
+        d.p0().clone(),
+        d.load().clone(),
     ]
 }
 

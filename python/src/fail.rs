@@ -2,9 +2,10 @@
 //!
 //! Every entry computes a `Result<_, Fail>` without the GIL and turns a failure into an
 //! exception of `moving_hertz._errors` once it holds the GIL again: the crate's [`Error`]
-//! variants map onto `DomainError` (inputs), `ConvergenceError` (an iteration or series cap),
-//! `ToleranceError` (an accuracy no precision on offer reaches); a Rust panic, caught by
-//! [`guard`] before it can unwind into the interpreter, onto `MovingHertzError`.
+//! variants map onto `DomainError` (inputs, and a method that cannot give what was asked for),
+//! `ConvergenceError` (an iteration or series cap), `ToleranceError` (an accuracy no precision
+//! on offer reaches); an internal error (a bug) and a Rust panic, caught by [`guard`] before it
+//! can unwind into the interpreter, onto `MovingHertzError`.
 
 use moving_hertz::Error;
 use pyo3::prelude::*;
@@ -83,6 +84,8 @@ impl From<Error> for Fail {
             // A precision the quadrature rules are not built for is refused by the solve.
             Error::Precision { .. } => Some("precision"),
             Error::Domain { name, .. } | Error::NotFinite { name, .. } => argument_of(name),
+            // A method that cannot give what was asked for.
+            Error::Unsupported { .. } => Some("method"),
             // Only a tolerance asked for can be unreachable.
             Error::Unreachable { .. } => Some("tol"),
             _ => None,
@@ -115,9 +118,11 @@ fn argument_of(name: &str) -> Option<&'static str> {
 pub fn class_of(e: &Error) -> &'static str {
     match e {
         Error::Domain { .. } | Error::NotFinite { .. } | Error::Precision { .. } => "DomainError",
-        Error::Parse { .. } => "DomainError",
+        Error::Parse { .. } | Error::Unsupported { .. } => "DomainError",
         Error::NoConvergence { .. } | Error::TermCap { .. } => "ConvergenceError",
         Error::Unreachable { .. } => "ToleranceError",
+        // A bug: the base class, as for a panic.
+        Error::Internal { .. } => "MovingHertzError",
         // A variant this package does not know yet: the base class of them all.
         _ => "MovingHertzError",
     }

@@ -135,14 +135,14 @@ pub fn ellipse_f64<'py>(
 
 /// The fields of an `Ellipse` (`moving_hertz._results`) in order.
 fn ellipse_fields<T: Real>(f: &mut Fields<'_>, sol: &moving_hertz::Ellipse<T>) {
-    let ig = &sol.integrals;
+    let ig = sol.integrals();
     f.precision(&ig.precision).label(ig.route.label());
-    f.est(&sol.k)
-        .est(&sol.e)
-        .label(sol.major.label())
+    f.est(sol.k())
+        .est(sol.e())
+        .label(sol.major().label())
         .est(&ig.i1)
         .est(&ig.i2);
-    f.count(sol.iterations);
+    f.count(sol.iterations());
 }
 
 /// How the half-space's stiffness and the speed are given.
@@ -334,11 +334,11 @@ pub fn contact<'py>(
             Ok(problem.solve(&Options::<T> { method, ..Default::default() })?)
         }));
         let sol = to_py(py, sol)?;
-        let ig = &sol.ellipse.integrals;
+        let ig = sol.ellipse().integrals();
         let mut f = Fields::new(py, as_text(prec, text));
         f.label(&ig.precision.label()).count(ig.precision.bits() as usize).label(ig.route.label());
-        f.est(&sol.a).est(&sol.b).est(sol.k()).est(sol.e()).label(sol.ellipse.major.label());
-        f.est(&sol.p0).est(&sol.d0).est(&sol.load).finish()
+        f.est(sol.a()).est(sol.b()).est(sol.k()).est(sol.e()).label(sol.ellipse().major().label());
+        f.est(sol.p0()).est(sol.d0()).est(sol.load()).finish()
     })
 }
 

@@ -392,7 +392,7 @@ pub fn sweep_ellipses<'py>(
         let mut out = Columns::new(4, n, text);
         let build = |r| ellipse_points::<T>(&cols, kind, r, p);
         in_chunks(py, n, threads, progress, build, |c| sweep::ellipses(c, &opts), |r| match r {
-            Ok(s) => out.push(&[Some(&s.k), Some(&s.e), Some(&s.integrals.i1), Some(&s.integrals.i2)], s.iterations, s.integrals.route),
+            Ok(s) => out.push(&[Some(s.k()), Some(s.e()), Some(&s.integrals().i1), Some(&s.integrals().i2)], s.iterations(), s.integrals().route),
             Err(m) => out.fail(m),
         })?;
         out.into_py(py)
@@ -502,7 +502,7 @@ pub fn sweep_contacts<'py>(
         let mut out = Columns::new(7, n, text);
         let build = |r| contact_problems::<T>(&cols, how, r, p);
         in_chunks(py, n, threads, progress, build, |c| sweep::contacts(c, &opts), |r| match r {
-            Ok(s) => out.push(&[Some(&s.a), Some(&s.b), Some(s.k()), Some(s.e()), Some(&s.p0), Some(&s.d0), Some(&s.load)], s.ellipse.iterations, s.ellipse.integrals.route),
+            Ok(s) => out.push(&[Some(s.a()), Some(s.b()), Some(s.k()), Some(s.e()), Some(s.p0()), Some(s.d0()), Some(s.load())], s.ellipse().iterations(), s.ellipse().integrals().route),
             Err(m) => out.fail(m),
         })?;
         out.into_py(py)

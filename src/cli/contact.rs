@@ -270,27 +270,27 @@ fn report_json<T: Real>(
     sol: &ContactSolution<T>,
     solid: Option<&Solid<T>>,
 ) -> Result<(), CliError> {
-    let ig = &sol.ellipse.integrals;
+    let ig = sol.ellipse().integrals();
     let prec = ig.precision;
     fn text(d: &Option<Decimal>) -> Option<&str> {
         d.as_ref().map(|d| d.text.as_str())
     }
     let mr = sol.problem().speed.mr();
-    let (av, a_error) = json_pair(&sol.a);
-    let (b, b_error) = json_pair(&sol.b);
+    let (av, a_error) = json_pair(sol.a());
+    let (b, b_error) = json_pair(sol.b());
     let (k, k_error) = json_pair(sol.k());
     let (e, e_error) = json_pair(sol.e());
-    let (p0, p0_error) = json_pair(&sol.p0);
-    let (d0, d0_error) = json_pair(&sol.d0);
-    let (load, load_error) = json_pair(&sol.load);
+    let (p0, p0_error) = json_pair(sol.p0());
+    let (d0, d0_error) = json_pair(sol.d0());
+    let (load, load_error) = json_pair(sol.load());
     let bounds = [
-        sol.a.error,
-        sol.b.error,
+        sol.a().error,
+        sol.b().error,
         sol.k().error,
         sol.e().error,
-        sol.p0.error,
-        sol.d0.error,
-        sol.load.error,
+        sol.p0().error,
+        sol.d0().error,
+        sol.load().error,
     ];
     print_json(&Json {
         command: "contact",
@@ -322,7 +322,7 @@ fn report_json<T: Real>(
         k_error,
         e,
         e_error,
-        major_axis: sol.ellipse.major.label(),
+        major_axis: sol.ellipse().major().label(),
         p0,
         p0_error,
         d0,
@@ -339,7 +339,7 @@ fn report_text<T: Real>(
     sol: &ContactSolution<T>,
     solid: Option<&Solid<T>>,
 ) -> Result<(), CliError> {
-    let ig = &sol.ellipse.integrals;
+    let ig = sol.ellipse().integrals();
     let prec = ig.precision;
     let mr = sol.problem().speed.mr();
     let mut t = Text::new(a.output.digits);
@@ -373,16 +373,16 @@ fn report_text<T: Real>(
         t.plain("Rayleigh wave speed c_R (m/s)", solid.c_r());
         t.plain("speed M_R = V/c_R", mr);
     }
-    t.result("semi-axis along the motion a", &sol.a);
-    t.result("semi-axis across the motion b", &sol.b);
+    t.result("semi-axis along the motion a", sol.a());
+    t.result("semi-axis across the motion b", sol.b());
     t.result("axis ratio k = b/a", sol.k());
     let major = format!(
         "eccentricity e (major axis {} the motion)",
-        sol.ellipse.major.label()
+        sol.ellipse().major().label()
     );
     t.result(&major, sol.e());
-    t.result("central pressure p0", &sol.p0);
-    t.result("approach d0", &sol.d0);
-    t.result("load P", &sol.load);
+    t.result("central pressure p0", sol.p0());
+    t.result("approach d0", sol.d0());
+    t.result("load P", sol.load());
     t.print()
 }

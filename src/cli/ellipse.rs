@@ -107,14 +107,14 @@ pub fn time(n: u64, mut f: impl FnMut() -> bool) -> Vec<f64> {
 }
 
 fn report<T: Real>(a: &EllipseArgs, sol: &Ellipse<T>, times: &[f64]) -> Result<(), CliError> {
-    let ig = &sol.integrals;
+    let ig = sol.integrals();
     let prec = ig.precision;
     let (speed_kind, speed_text) = a.input.given();
     let median = (!times.is_empty()).then(|| format!("{:.0}", times[times.len() / 2]));
     let min = times.first().map(|t| format!("{t:.0}"));
     if a.output.json {
-        let (k, k_error) = json_pair(&sol.k);
-        let (e, e_error) = json_pair(&sol.e);
+        let (k, k_error) = json_pair(sol.k());
+        let (e, e_error) = json_pair(sol.e());
         let (i1, i1_error) = json_pair(&ig.i1);
         let (i2, i2_error) = json_pair(&ig.i2);
         return print_json(&Json {
@@ -134,13 +134,13 @@ fn report<T: Real>(a: &EllipseArgs, sol: &Ellipse<T>, times: &[f64]) -> Result<(
             k_error,
             e,
             e_error,
-            major_axis: sol.major.label(),
+            major_axis: sol.major().label(),
             i1,
             i1_error,
             i2,
             i2_error,
-            iterations: sol.iterations.to_string(),
-            error_estimate: largest(&[sol.k.error, sol.e.error, ig.i1.error, ig.i2.error]),
+            iterations: sol.iterations().to_string(),
+            error_estimate: largest(&[sol.k().error, sol.e().error, ig.i1.error, ig.i2.error]),
             repeat: (!times.is_empty()).then(|| times.len().to_string()),
             median_ns: median,
             min_ns: min,
@@ -159,14 +159,14 @@ fn report<T: Real>(a: &EllipseArgs, sol: &Ellipse<T>, times: &[f64]) -> Result<(
         prec.bits(),
         a.method,
         ig.route,
-        sol.iterations
+        sol.iterations()
     ));
-    t.result("k = b/a (across/along the motion)", &sol.k);
+    t.result("k = b/a (across/along the motion)", sol.k());
     let major = format!(
         "eccentricity e (major axis {} the motion)",
-        sol.major.label()
+        sol.major().label()
     );
-    t.result(&major, &sol.e);
+    t.result(&major, sol.e());
     t.result("I1 (normalisation of (37))", &ig.i1);
     t.result("I2 (normalisation of (37))", &ig.i2);
     if let (Some(med), Some(min)) = (median, min) {

@@ -122,6 +122,7 @@ impl CliError {
         use moving_hertz::Error as E;
         let name = match &e {
             E::Domain { name, .. } | E::NotFinite { name, .. } => Some(*name),
+            E::Unsupported { .. } => Some("method"),
             _ => None,
         };
         let hit = name.and_then(|n| inputs.iter().find(|(lib, _, _)| n.starts_with(lib)));

@@ -571,15 +571,15 @@ fn push_row<T: Real>(
     }
     match r {
         Ok(e) => {
-            row.number("k", |o| e.k.value.push_decimal(o));
-            row.number("k_error", |o| e.k.error.push_text(o));
-            row.number("e", |o| e.e.value.push_decimal(o));
-            row.number("e_error", |o| e.e.error.push_text(o));
-            let major = e.major.label().as_bytes();
+            row.number("k", |o| e.k().value.push_decimal(o));
+            row.number("k_error", |o| e.k().error.push_text(o));
+            row.number("e", |o| e.e().value.push_decimal(o));
+            row.number("e_error", |o| e.e().error.push_text(o));
+            let major = e.major().label().as_bytes();
             row.number("major_axis", |o| o.extend_from_slice(major));
-            let route = e.integrals.route.label().as_bytes();
+            let route = e.integrals().route.label().as_bytes();
             row.number("route", |o| o.extend_from_slice(route));
-            row.number("iterations", |o| push_count(o, e.iterations));
+            row.number("iterations", |o| push_count(o, e.iterations()));
             row.text("error", "");
         }
         Err(err) => {

@@ -581,17 +581,17 @@ impl<T: Real + Send + Sync> Grid<T> {
             v.push(c_r.unwrap_or_default());
             v.push(s.problem().speed.mr().to_decimal());
         }
-        let other = if self.by_load { &s.d0 } else { &s.load };
-        for x in [&s.a, &s.b, s.k(), s.e()] {
+        let other = if self.by_load { s.d0() } else { s.load() };
+        for x in [s.a(), s.b(), s.k(), s.e()] {
             v.extend([x.value.to_decimal(), x.error.to_string()]);
         }
-        v.push(s.ellipse.major.label().into());
-        for x in [&s.p0, other] {
+        v.push(s.ellipse().major().label().into());
+        for x in [s.p0(), other] {
             v.extend([x.value.to_decimal(), x.error.to_string()]);
         }
         v.extend([
-            s.ellipse.integrals.route.label().into(),
-            s.ellipse.iterations.to_string(),
+            s.ellipse().integrals().route.label().into(),
+            s.ellipse().iterations().to_string(),
             String::new(),
         ]);
         v

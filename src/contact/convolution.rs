@@ -31,7 +31,7 @@
 
 use super::solution::ContactSolution;
 use crate::error::{Error, Result};
-use crate::numerics::quadrature::{integrate, Limits, Quadrature};
+use crate::numerics::quadrature::{integrate, name_the_input, Limits, Quadrature};
 use crate::physics::GreenFunction;
 use crate::scalar::Real;
 
@@ -102,7 +102,8 @@ impl<T: Real> Scaled<T> {
 /// quadrature's estimate of its absolute error. Works inside and outside the contact.
 ///
 /// Errors: [`Error::Domain`] for a point farther than 2^(bits + [`FAR_LIMIT_LOG2`])·max(a, b)
-/// from the centre; the quadrature's.
+/// from the centre, or one whose integrand leaves the working type's exponent range; the
+/// quadrature's.
 pub fn displacement<T: Real>(
     sol: &ContactSolution<T>,
     x: &T,
@@ -126,10 +127,13 @@ pub fn displacement<T: Real>(
     }
     let q = if rho > T::one(p) {
         let unresolved = "tangent rays whose angles are normal numbers of the working type";
-        far(sol, &sc, &rho, tol).ok_or_else(|| refuse(unresolved))??
+        far(sol, &sc, &rho, tol).ok_or_else(|| refuse(unresolved))?
     } else {
-        near(sol, &sc, x, y, tol)?
+        near(sol, &sc, x, y, tol)
     };
+    let overflow =
+        "a point whose convolution integrand stays within the working type's exponent range";
+    let q = q.map_err(|e| name_the_input(e, || refuse(overflow)))?;
     let pi = T::pi(p);
     let scale = sol.p0.value.clone() * &sc.m / &(pi.mul_pow2(1) * &sol.problem().shear_modulus);
     Ok(Quadrature {

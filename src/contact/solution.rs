@@ -73,7 +73,7 @@ pub enum Loading<T> {
 ///     shear_modulus: 80e9,
 /// }
 /// .solve(&Options::default())?;
-/// assert!(sol.a.value > sol.b.value && sol.a.error.to_f64() < 1e-14);
+/// assert!(sol.a().value > sol.b().value && sol.a().error.to_f64() < 1e-14);
 /// # Ok::<(), moving_hertz::Error>(())
 /// ```
 #[derive(Clone, Debug)]
@@ -91,24 +91,19 @@ pub struct ContactProblem<T: Real> {
 }
 
 /// The solved contact: the ellipse, its size, the central pressure, the approach and the load,
-/// each with a bound on its relative error, and the pressure and displacement fields.
+/// each with a bound on its relative error, and the pressure and displacement fields. Every
+/// quantity is read through a method of its name; the fields stay private so that the fields'
+/// functions ([`ContactSolution::pressure`], …) always see the solved values.
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct ContactSolution<T: Real> {
-    /// The ellipse's shape: k, e, the integrals.
-    pub ellipse: Ellipse<T>,
-    /// Semi-axis a along the motion.
-    pub a: Estimated<T>,
-    /// Semi-axis b across the motion.
-    pub b: Estimated<T>,
-    /// Central pressure p0 of (9) (m = 1).
-    pub p0: Estimated<T>,
-    /// Approach d0 (32).
-    pub d0: Estimated<T>,
-    /// Load P (31).
-    pub load: Estimated<T>,
-    /// J0 of (32) at the solved k.
-    pub j0: Estimated<T>,
+    pub(crate) ellipse: Ellipse<T>,
+    pub(crate) a: Estimated<T>,
+    pub(crate) b: Estimated<T>,
+    pub(crate) p0: Estimated<T>,
+    pub(crate) d0: Estimated<T>,
+    pub(crate) load: Estimated<T>,
+    pub(crate) j0: Estimated<T>,
     problem: ContactProblem<T>,
     a1: T,
     b1: T,
@@ -433,6 +428,38 @@ impl<T: Real> ContactSolution<T> {
     /// The inputs of (26)–(33) as given; no rounding.
     pub fn problem(&self) -> &ContactProblem<T> {
         &self.problem
+    }
+    /// The ellipse's shape (33): k, e, the integrals I1, I2 at the root.
+    pub fn ellipse(&self) -> &Ellipse<T> {
+        &self.ellipse
+    }
+    /// The semi-axis a along the motion (m), from (31) given the load or (32) given the
+    /// approach (module docs), with a bound on its relative error.
+    pub fn a(&self) -> &Estimated<T> {
+        &self.a
+    }
+    /// The semi-axis b = k a across the motion (m), with a bound on its relative error.
+    pub fn b(&self) -> &Estimated<T> {
+        &self.b
+    }
+    /// The central pressure p0 of (9) (m = 1) (Pa), with a bound on its relative error.
+    pub fn p0(&self) -> &Estimated<T> {
+        &self.p0
+    }
+    /// The approach d0 of (32) (m; the given one, exact, when [`Loading::Approach`] fixed
+    /// the size), with a bound on its relative error.
+    pub fn d0(&self) -> &Estimated<T> {
+        &self.d0
+    }
+    /// The load P of (31) (N; the given one, exact, when [`Loading::Load`] fixed the size),
+    /// with a bound on its relative error.
+    pub fn load(&self) -> &Estimated<T> {
+        &self.load
+    }
+    /// J0 of (32) at the solved k (normalisation of (37)), as k² I1 + I2, with a bound on its
+    /// relative error as a value at the exact root.
+    pub fn j0(&self) -> &Estimated<T> {
+        &self.j0
     }
     /// k = b/a with its bound (the ellipse's).
     /// The root of (33); its bound as in [`Ellipse::k`].

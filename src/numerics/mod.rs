@@ -1,11 +1,14 @@
-//! Generic numerical building blocks: elliptic integrals, quadrature and the
-//! series driver. Every routine is written once over [`crate::scalar::Real`], takes its
+//! Generic numerical building blocks, public for their own use: the complete and incomplete
+//! elliptic integrals at any precision ([`elliptic`]: K, E, B, D of the static limit (43) and
+//! the subtraction (53)), and Gauss–Legendre quadrature with rules built at the working
+//! precision ([`quadrature`]). Inside the crate they also hold the series driver and the
+//! rules' construction. Every routine is written once over [`crate::scalar::Real`], takes its
 //! tolerance from the working precision, bounds its work and returns a typed error when it does
 //! not converge.
 
 pub mod elliptic;
-pub mod gauss_legendre;
+pub(crate) mod gauss_legendre;
 pub mod quadrature;
-pub mod series;
+pub(crate) mod series;
 pub(crate) mod shares;
 mod sum;

@@ -1,10 +1,12 @@
 //! Quadrature at the working precision.
 //!
 //! * [`GaussLegendre`] — n-point Gauss–Legendre rules (built 32 bits beyond the working
-//!   precision by [`super::gauss_legendre`] and rounded once), cached per (type, n, precision).
+//!   precision by the short-point construction and rounded once), cached per (type, n,
+//!   precision).
 //! * [`integrate`] — adaptive Gauss–Legendre with breakpoints: each panel is compared with its two
 //!   halves and the panel with the largest discrepancy is split until the total is below the
-//!   tolerance; [`integrate_vec`] the same for `N` integrands that share one call a node.
+//!   tolerance (inside the crate, `integrate_vec` does the same for `N` integrands that share one
+//!   call a node).
 //!
 //! Tolerances are relative; each driver also stops at the rounding floor `≈ ε·∫|f|` (a request
 //! below it is met as well as the precision allows, and the error estimate says how well). Work
@@ -124,8 +126,8 @@ pub(crate) use fixed_slot;
 
 /// Forgets every rule of the shared cache and every Gauss–Legendre rule built above 53 bits, so
 /// that the next request builds them again (for measuring first-use costs in one process; the
-/// rules of `f64` and double-double stay in their slots). Rules already handed out stay valid.
-#[doc(hidden)]
+/// rules of `f64` and double-double stay in their slots), or for giving back the memory of
+/// rules built at a high precision that is no longer used. Rules already handed out stay valid.
 pub fn clear_rule_caches() {
     cache().lock().unwrap_or_else(|e| e.into_inner()).clear();
     gauss_legendre::clear_store();
@@ -168,7 +170,7 @@ pub fn check_rule_bits(bits: u32) -> Result<()> {
 ///
 /// Work: the first request for (n, precision) builds the rule — for `f64` by Newton on the
 /// three-term recurrence in double-double (`n` steps an evaluation, one or two passes a node),
-/// above by the short-point construction of [`super::gauss_legendre`] (one fixed-point pass of
+/// above by the short-point construction of `numerics/gauss_legendre.rs` (one fixed-point pass of
 /// the recurrence a node, each step `O(bits/64)` word operations: about n²·bits/128 in all);
 /// later requests are a cache lookup, or round down a rule of the same n built at a higher
 /// precision.
@@ -389,10 +391,24 @@ fn setup<T: Real>(points: &[T], tol: &T) -> Result<(Vec<(T, T)>, bool)> {
     Ok((iv, reversed))
 }
 
+/// The name of a non-finite integrand value in [`Error::NotFinite`]: a value internal to the
+/// caller, which [`name_the_input`] replaces by the caller's refusal of the input that led there.
+const INTEGRAND: &str = "integrand";
+
 fn not_finite<T: Real>(v: &T) -> Error {
     Error::NotFinite {
-        name: "integrand",
+        name: INTEGRAND,
         value: crate::scalar::short(v),
+    }
+}
+
+/// `e`, or `refusal()` where `e` is a quadrature's refusal of a non-finite integrand value: an
+/// internal value means nothing to a user, so each public caller names the input that led
+/// there (the axis ratio k for the routes to I1, I2, the field point for the convolution).
+pub(crate) fn name_the_input(e: Error, refusal: impl FnOnce() -> Error) -> Error {
+    match e {
+        Error::NotFinite { name, .. } if name == INTEGRAND => refusal(),
+        e => e,
     }
 }
 
@@ -401,7 +417,7 @@ fn not_finite<T: Real>(v: &T) -> Error {
 
 /// Values and error estimates of `N` integrals from [`integrate_vec`].
 #[derive(Clone, Debug)]
-pub struct VecQuadrature<T, const N: usize> {
+pub(crate) struct VecQuadrature<T, const N: usize> {
     /// The integrals.
     pub values: [T; N],
     /// Absolute error estimates (panel discrepancies plus a rounding allowance ε·Σ|panel|).
@@ -439,7 +455,7 @@ fn midpoint<T: Real>(a: &T, b: &T) -> Option<T> {
 
 /// Adaptive Gauss–Legendre quadrature of `f` over the breakpoints `points` (endpoints plus any
 /// interior kinks or peaks, strictly monotone; decreasing points give the negated integral) to
-/// relative tolerance `tol`: [`integrate_vec`] with one component. The working precision is
+/// relative tolerance `tol` (the vector driver `integrate_vec` with one component). The working precision is
 /// `tol`'s; `points` must share it.
 ///
 /// Each panel `[a, b]` is integrated by the n-point rule ([`Limits::gauss_nodes`]) on its two
@@ -478,7 +494,7 @@ pub fn integrate<T: Real, F: FnMut(&T) -> T>(
 /// accuracy matters relative to the whole, and its rounding (a few ε of the terms it was formed
 /// from) need not reach a few ε of itself. The returned error is that of the quadrature
 /// (`c`'s rounding is the caller's). Accuracy and errors as [`integrate`].
-pub fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
+pub(crate) fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
     mut f: F,
     points: &[T],
     offset: &T,
@@ -506,7 +522,7 @@ pub fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
 /// `max(tol·|I_c|, 4ε·Σ|I_c,panel|) + min_positive`; the panel split next is the one whose
 /// worst component, relative to its threshold, is largest. Accuracy, work and errors as
 /// [`integrate`].
-pub fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
+pub(crate) fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
     f: F,
     points: &[T],
     tol: &T,
@@ -519,7 +535,7 @@ pub fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
 /// `c_c + ∫f_c` for each component by [`integrate_vec`], each threshold judged against the
 /// sum, `max(tol·|c_c + I_c|, 4ε·(|c_c| + Σ|I_c,panel|)) + min_positive` (as [`integrate_plus`]).
 /// The returned values include the `c_c`, the errors are the quadrature's.
-pub fn integrate_vec_plus<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
+pub(crate) fn integrate_vec_plus<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
     mut f: F,
     points: &[T],
     offsets: &[T; N],

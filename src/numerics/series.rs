@@ -106,3 +106,7 @@ where
         reached: short(&last_rel),
     })
 }
+
+#[cfg(test)]
+#[path = "series_tests.rs"]
+mod tests;

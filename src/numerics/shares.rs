@@ -53,10 +53,8 @@ fn cores() -> usize {
 /// job takes shares until none is left, and nothing in the work given to [`map_on_threads`]
 /// panics).
 fn stopped() -> Error {
-    Error::NoConvergence {
-        what: "work on every core (a share without a result)",
-        iterations: 0,
-        reached: "none".into(),
+    Error::Internal {
+        what: "work on every core left a share without a result",
     }
 }
 

@@ -23,7 +23,7 @@
 //! inputs (tested against computations at higher precision in `tests/choose.rs`).
 
 use super::evaluate::{IntegralOptions, FLOOR_EPS};
-use super::{fast, AxisRatio, Integrals, Method};
+use super::{fast, AxisRatio, Integrals, Method, BEYOND_EXPONENT_RANGE};
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
 use crate::numerics::quadrature::check_rule_bits;
@@ -236,6 +236,10 @@ pub fn integrals_to_tolerance(
         match attempt {
             Ok(r) if r.i1.error <= tol && r.i2.error <= tol => return Ok(r),
             Ok(r) => last = format!("estimate {} at {}", r.i1.error.max(r.i2.error), prec),
+            // A value beyond the exponent range: the next precision may hold it (MPFR's does).
+            Err(e @ Error::Domain { bound, .. }) if bound == BEYOND_EXPONENT_RANGE => {
+                last = e.to_string()
+            }
             Err(e @ (Error::Domain { .. } | Error::NotFinite { .. })) => return Err(e),
             Err(e @ Error::Precision { .. }) => return Err(unreachable(tol, e.to_string())),
             Err(e) => last = e.to_string(),

@@ -49,7 +49,7 @@
 //! they are small:
 //! J0 at 256 bits takes the same nodes at 1 − M_R = 10⁻³⁰ and 10⁻¹⁰⁰⁰⁰⁰ (`tests/direct.rs`).
 
-use super::{AxisRatio, Evaluation, Route};
+use super::{beyond_exponent_range, AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
 use crate::numerics::elliptic::{ellipd_mc, heuman_lambda_c_mc};
@@ -507,18 +507,8 @@ fn integrate_halves<T: Real>(
     if let Some(x) = extra_i2 {
         i2 += &x;
     }
-    for (name, v) in [("I1", &i1), ("I2", &i2)] {
-        if !v.is_finite() || !v.is_positive() {
-            return Err(Error::NoConvergence {
-                what: if name == "I1" {
-                    "direct quadrature of I1"
-                } else {
-                    "direct quadrature of I2"
-                },
-                iterations: 0,
-                reached: short(v),
-            });
-        }
+    if !(i1.is_finite() && i1.is_positive() && i2.is_finite() && i2.is_positive()) {
+        return Err(beyond_exponent_range(&s.k));
     }
     let e1 = (left.errors[0].clone() + &right.errors[0]) / &i1;
     let e2 = (left.errors[1].clone() + &right.errors[1]) / &i2;
@@ -660,11 +650,7 @@ pub fn contact_integrals<T: Real>(
     }
     for (c, x) in v.iter().enumerate() {
         if !x.is_finite() || (c < 3 && !x.is_positive()) {
-            return Err(Error::NoConvergence {
-                what: "contact integrals",
-                iterations: l.evaluations + r.evaluations,
-                reached: short(x),
-            });
+            return Err(beyond_exponent_range(&s.k));
         }
     }
     let [i1, i2, j0, di1_dk, di2_dk] = v;
@@ -745,11 +731,7 @@ pub fn approach_integral<T: Real>(
     };
     let j0 = left.value + &right.value;
     if !j0.is_finite() || !j0.is_positive() {
-        return Err(Error::NoConvergence {
-            what: "J0 of (32)",
-            iterations: left.evaluations + right.evaluations,
-            reached: short(&j0),
-        });
+        return Err(beyond_exponent_range(&s.k));
     }
     let rel = (left.error + &right.error) / &j0 + &T::epsilon(p).mul_i64(8);
     Ok(Estimated::new(j0, RelError::of(&rel)))

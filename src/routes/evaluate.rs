@@ -24,9 +24,12 @@
 use super::fast;
 use super::graded::{self, GradedSetup};
 use super::series::{self, SeriesOptions};
-use super::{direct, j0_from_pair, AxisRatio, Evaluation, Integrals, Method, Route};
+use super::{
+    beyond_exponent_range, direct, j0_from_pair, AxisRatio, Evaluation, Integrals, Method, Route,
+};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
+use crate::numerics::quadrature::name_the_input;
 use crate::physics::Speed;
 use crate::scalar::{short, Precision, Real};
 use std::cell::RefCell;
@@ -95,7 +98,7 @@ pub fn integrals<T: Real>(speed: &Speed<T>, k: &T, opts: &IntegralOptions) -> Re
 
 impl<T: Real> Evaluator<T> {
     /// The evaluator for `speed` with `opts`; [`Error::Unreachable`] for a tolerance below
-    /// [`FLOOR_EPS`]·ε, [`Error::Domain`] for a method that cannot give what `opts` asks for.
+    /// [`FLOOR_EPS`]·ε, [`Error::Unsupported`] for a method that cannot give what `opts` asks for.
     /// Evaluates (34) (normalisation of (37)) by the routes of the module docs.
     pub fn new(speed: &Speed<T>, opts: IntegralOptions) -> Result<Self> {
         let p = speed.mr().prec();
@@ -133,7 +136,7 @@ impl<T: Real> Evaluator<T> {
         let route = self.route_for(&axes, self.opts.derivatives)?;
         let r = self.run(route, &axes, self.opts.derivatives)?;
         self.check_tolerance(&r)?;
-        self.with_j0(r, &axes).publish()
+        self.with_j0(r, &axes).publish(&axes.k)
     }
 
     /// J0 of (32) added to a route's result that lacks it, when asked for: k² I1 + I2 from the
@@ -217,7 +220,7 @@ impl<T: Real> Evaluator<T> {
             .tol
             .clone()
             .map_or_else(|| T::zero(p), |t| t.mul_pow2(-1));
-        match route {
+        let r = match route {
             Route::FixedRule => self.fixed(axes, dk),
             Route::GradedRule => self.graded(axes, dk),
             Route::Adaptive if dk => direct::contact_integrals(sp, axes, &tol),
@@ -230,7 +233,9 @@ impl<T: Real> Evaluator<T> {
                 };
                 series::integrals(sp, axes, &opts)
             }
-        }
+        };
+        // An integrand that left the exponent range: the refusal of k, as the user gave it.
+        r.map_err(|e| name_the_input(e, || beyond_exponent_range(&axes.k)))
     }
 
     /// [`Error::Unreachable`] when a result's estimate misses the tolerance asked for.
@@ -318,18 +323,15 @@ fn domain<T: Real>(axes: &AxisRatio<T>, bound: &'static str) -> Error {
 }
 
 /// What each method can give: the series and the adaptive subtracted route no derivatives
-/// (every method gives J0: [`Evaluator::with_j0`]).
+/// ([`Error::Unsupported`]; every method gives J0: [`Evaluator::with_j0`]).
 fn check_method(opts: &IntegralOptions) -> Result<()> {
-    let refuse = |bound| {
-        Err(Error::Domain {
-            name: "method",
-            value: opts.method.label().into(),
-            bound,
-        })
-    };
     match opts.method {
         Method::Series | Method::AdaptiveSubtracted if opts.derivatives => {
-            refuse("auto, adaptive or fixed (this route gives no k-derivatives)")
+            Err(Error::Unsupported {
+                what: "the k-derivatives of I1, I2",
+                method: opts.method.label(),
+                reason: "auto, adaptive and fixed give them",
+            })
         }
         _ => Ok(()),
     }

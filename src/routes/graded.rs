@@ -682,7 +682,7 @@ impl<T: Real> GradedSetup<T> {
             [(d1l + &d1r) * &m3k, (d2l + &d2r) * &m3k]
         });
         Evaluation::from_rule(
-            "graded route: I1 and I2 (finite, positive)",
+            &axes.k,
             [i1, i2],
             dks,
             [BOUND_EPS, BOUND_EPS],

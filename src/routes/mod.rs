@@ -17,7 +17,6 @@
 //! [`series`] (I1, I2 by (37) with truncation control); findings in `docs/series.md`.
 
 pub mod choose;
-#[doc(hidden)]
 pub mod coefficients;
 #[doc(hidden)]
 pub mod direct;
@@ -27,9 +26,7 @@ pub mod fast;
 #[doc(hidden)]
 pub mod graded;
 mod guard;
-#[doc(hidden)]
 pub mod moments;
-#[doc(hidden)]
 pub mod series;
 mod speed_consts;
 
@@ -251,26 +248,21 @@ impl<T: Real> Evaluation<T> {
         }
     }
 
-    /// The result of a fixed rule ([`fast`] or [`graded`]): I1 and I2 checked finite and
-    /// positive (else [`Error::NoConvergence`] naming `what`), the a-priori bounds
-    /// `bounds[0]`·ε on I1, I2 and `bounds[1]`·ε on the k-derivatives, the route and the nodes.
+    /// The result of a fixed rule ([`fast`] or [`graded`]) at the axis ratio `k`: I1 and I2
+    /// checked finite and positive (else [`beyond_exponent_range`] naming k), the a-priori
+    /// bounds `bounds[0]`·ε on I1, I2 and `bounds[1]`·ε on the k-derivatives, the route and
+    /// the nodes.
     #[inline]
     pub(crate) fn from_rule(
-        what: &'static str,
+        k: &T,
         [i1, i2]: [T; 2],
         dk: Option<[T; 2]>,
         bounds: [i64; 2],
         route: Route,
         work: usize,
     ) -> Result<Self> {
-        for x in [&i1, &i2] {
-            if !x.is_finite() || !x.is_positive() {
-                return Err(Error::NoConvergence {
-                    what,
-                    iterations: 0,
-                    reached: short(x),
-                });
-            }
+        if !(i1.is_finite() && i1.is_positive() && i2.is_finite() && i2.is_positive()) {
+            return Err(beyond_exponent_range(k));
         }
         let eps = T::epsilon(i1.prec());
         let extra = if dk.is_some() {
@@ -318,10 +310,11 @@ impl<T: Real> Evaluation<T> {
         self
     }
 
-    /// The public result: every value finite and every estimate finite and below 1 (else a
-    /// typed error naming the route), estimates as [`RelError`].
+    /// The public result at the axis ratio `k`: every value finite and normal and every
+    /// estimate finite and below 1 (else a typed error naming k: [`Error::Domain`],
+    /// or [`Error::Unreachable`] naming the bounds), estimates as [`RelError`].
     /// I1, I2 of (34) (normalisation of (37)); the estimates are the route's, rounded upwards.
-    pub fn publish(self) -> Result<Integrals<T>> {
+    pub fn publish(self, k: &T) -> Result<Integrals<T>> {
         let dk_finite = self
             .dk
             .as_ref()
@@ -332,15 +325,8 @@ impl<T: Real> Evaluation<T> {
             && self.j0.as_ref().is_none_or(|j| j.is_finite())
             && self.error_estimate.is_finite()
             && self.extra_error.is_finite();
-        if !finite {
-            return Err(self.not_finite());
-        }
-        if let Some((name, value)) = self.underflowed() {
-            return Err(Error::Domain {
-                name,
-                value,
-                bound: "|x| >= the smallest normal number of the working precision (it underflowed: an axis ratio k this far from 1 needs MPFR's exponent range)",
-            });
+        if !finite || self.underflowed() {
+            return Err(beyond_exponent_range(k));
         }
         let one = T::one(self.i1.prec());
         if self.error_estimate >= one || self.extra_error >= one {
@@ -376,49 +362,36 @@ impl<T: Real> Evaluation<T> {
         })
     }
 
-    /// The first returned value that lies below the smallest normal number of the working
-    /// precision (I1, I2, J0 > 0 and the k-derivatives < 0 never vanish: such a value has lost
-    /// its relative accuracy, e.g. dI1/dk ~ k⁻⁴ at k ≳ 10⁸⁰ in `f64`).
-    fn underflowed(&self) -> Option<(&'static str, String)> {
+    /// Whether a returned value lies below the smallest normal number of the working precision
+    /// (I1, I2, J0 > 0 and the k-derivatives < 0 never vanish: such a value has lost its
+    /// relative accuracy, e.g. dI1/dk ~ k⁻⁴ at k ≳ 10⁸⁰ in `f64`).
+    fn underflowed(&self) -> bool {
         let tiny = T::min_positive(self.i1.prec());
-        self.named_values()
-            .find(|(_, v)| (*v).clone().abs() < tiny)
-            .map(|(name, v)| (name, short(v)))
-    }
-
-    /// The returned values with their names: I1, I2, then the k-derivatives and J0 when
-    /// present (without allocating: it is called for every evaluation that is published).
-    fn named_values(&self) -> impl Iterator<Item = (&'static str, &T)> {
-        let dk = self.dk.as_ref();
-        [
-            ("I1", Some(&self.i1)),
-            ("I2", Some(&self.i2)),
-            ("dI1/dk", dk.map(|d| &d[0])),
-            ("dI2/dk", dk.map(|d| &d[1])),
-            ("J0", self.j0.as_ref()),
-        ]
-        .into_iter()
-        .filter_map(|(name, v)| Some((name, v?)))
-    }
-
-    /// The typed error for a value or estimate that is not finite.
-    #[cold]
-    fn not_finite(&self) -> Error {
-        let what = self.route.label();
-        match self.named_values().find(|(_, v)| !v.is_finite()) {
-            Some((name, v)) => Error::NoConvergence {
-                what,
-                iterations: self.work,
-                reached: format!("{name} = {}", short(v)),
-            },
-            None => Error::NoConvergence {
-                what,
-                iterations: self.work,
-                reached: "an unbounded error estimate".into(),
-            },
-        }
+        let dk = self.dk.iter().flatten();
+        [&self.i1, &self.i2]
+            .into_iter()
+            .chain(dk)
+            .chain(self.j0.as_ref())
+            .any(|v| v.clone().abs() < tiny)
     }
 }
+
+/// The typed refusal for a route whose values at the axis ratio `k` left the working type's
+/// exponent range (an integrand, I1, I2, a k-derivative or an estimate that overflowed or
+/// vanished): k, as the user gave it, lies outside the domain the route serves at this speed
+/// and precision ([`Error::Domain`]); MPFR's exponent range holds it.
+#[cold]
+pub(crate) fn beyond_exponent_range<T: Real>(k: &T) -> Error {
+    Error::Domain {
+        name: "axis ratio k = b/a",
+        value: short(k),
+        bound: BEYOND_EXPONENT_RANGE,
+    }
+}
+
+/// The bound [`beyond_exponent_range`] names: a refusal that a wider exponent range lifts
+/// ([`integrals_to_tolerance`] tries the next precision on it).
+pub(crate) const BEYOND_EXPONENT_RANGE: &str = "a k whose integrals stay within the working type's exponent range at this speed (a value overflowed or vanished; MPFR's exponent range is wider)";
 
 /// J0 of (32) from I1 and I2 of (34) at the same axis ratio k (normalisation of (37)): the
 /// integrands of I1 and I2 weighted by k² and 1 add up to J0's, since

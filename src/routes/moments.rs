@@ -82,12 +82,13 @@ use rug::float::Constant;
 use rug::{Float, Integer};
 
 /// Largest table index accepted (n_max ≤ 10⁶).
-pub const MAX_INDEX: usize = 1_000_000;
+pub(crate) const MAX_INDEX: usize = 1_000_000;
 /// Cap on the terms of a top-value series ([`Error::TermCap`] beyond).
-pub const MAX_TOP_TERMS: usize = 20_000_000;
+pub(crate) const MAX_TOP_TERMS: usize = 20_000_000;
 
 /// How the moment table is computed; see the module docs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum MomentMethod {
     /// The paper's forward recursion (40) from the starting values (42) (via cel).
     /// Stable for e² > 1/2 only.
@@ -251,9 +252,9 @@ fn check_inputs<T: Real>(mc: &T, n_max: usize) -> Result<()> {
 /// precision (module docs: the measured accuracy, and the method chosen by [`plan`]).
 ///
 /// Work: O(n_max) operations at the working precision plus the guard bits of the plan, plus the
-/// top-value series (at most [`MAX_TOP_TERMS`] terms), plus one cel.
+/// top-value series (at most 2·10⁷ terms), plus one cel.
 ///
-/// Errors: [`Error::Domain`] for k² ≤ 0 or n_max > [`MAX_INDEX`], [`Error::NotFinite`],
+/// Errors: [`Error::Domain`] for k² ≤ 0 or n_max > 10⁶, [`Error::NotFinite`],
 /// [`Error::TermCap`] if a top-value series exceeds its cap, [`Error::Precision`] if the
 /// guard bits exceed the MPFR maximum; errors of the elliptic integrals.
 /// Implements (38)–(42) (recursion (40) from (42), or backwards from series top values).

@@ -159,14 +159,14 @@ fn solve_block<T: Real + Send + Sync>(
         *q = Point {
             mr,
             ratio,
-            e_f64: s.e.value.to_f64(),
-            k_f64: s.k.value.to_f64(),
-            error_estimate: s.k.error.to_f64(),
+            e_f64: s.e().value.to_f64(),
+            k_f64: s.k().value.to_f64(),
+            error_estimate: s.k().error.to_f64(),
         };
         push_decimal(rows, decimals, mr);
         rows.push(',');
         push_decimal(rows, decimals, ratio);
-        let (k, e) = (s.k.value.to_decimal(), s.e.value.to_decimal());
+        let (k, e) = (s.k().value.to_decimal(), s.e().value.to_decimal());
         let _ = writeln!(rows, ",{k},{e},{:.2e}", q.error_estimate);
         if i == 0 {
             // Room for the block's rows at once (the first row's length a row, and a margin),

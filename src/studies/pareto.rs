@@ -76,16 +76,16 @@ fn measure<T: Real>(case: &Case<'_>, p: T::Prec, label: Precision) -> Row {
     match solve_ellipse(&sp, &r, &opts) {
         Ok(s) => {
             let bits = 1600;
-            let err = Float::with_val(bits, &s.k.value.to_float(bits) - reference) / reference;
+            let err = Float::with_val(bits, &s.k().value.to_float(bits) - reference) / reference;
             let time_ns = median_ns(budget_ms, || {
-                solve_ellipse(&sp, &r, &opts).map(|s| s.iterations)
+                solve_ellipse(&sp, &r, &opts).map(|s| s.iterations())
             });
             Row {
                 mr,
                 method,
                 precision: label,
                 error: err.abs().to_f64(),
-                estimate: s.k.error.to_f64(),
+                estimate: s.k().error.to_f64(),
                 time_ns,
                 failure: None,
             }
@@ -109,7 +109,7 @@ pub fn run(
         let mat = Material::new(Mp::from_f64(nu, pr))?;
         let sp = mat.speed(Mp::from_f64(mr, pr))?;
         let reference = solve_ellipse(&sp, &Mp::from_f64(ratio, pr), &Options::default())?
-            .k
+            .k()
             .value
             .to_float(1600);
         for &method in methods {

@@ -82,7 +82,7 @@ pub fn run(mut tick: impl FnMut()) -> moving_hertz::Result<Vec<Point>> {
                 ratio,
                 e: s.e().value,
                 k: s.k().value,
-                a: s.a.value,
+                a: s.a().value,
                 a_rel: f64::NAN,
             });
             tick();

@@ -344,7 +344,7 @@ pub fn independent<T: Real>(pt: &EllipsePoint<T>) -> moving_hertz::Result<Ellips
 /// |k − k_ref|/k_ref over the sum of both bounds (≤ 1: within the bounds), `want` from
 /// [`independent`].
 pub fn within<T: Real>(got: &Ellipse<T>, want: &Ellipse<Mp>) -> f64 {
-    let k = up(&got.k.value, want.k.value.prec());
-    let d = ((k - &want.k.value) / &want.k.value).abs();
-    d.to_f64() / (got.k.error.to_f64() + want.k.error.to_f64())
+    let k = up(&got.k().value, want.k().value.prec());
+    let d = ((k - &want.k().value) / &want.k().value).abs();
+    d.to_f64() / (got.k().error.to_f64() + want.k().error.to_f64())
 }

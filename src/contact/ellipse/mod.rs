@@ -104,28 +104,53 @@ impl<T> Default for Options<T> {
     }
 }
 
-/// The solved shape of the contact ellipse (33), each quantity with a bound on its error.
+/// The solved shape of the contact ellipse (33), each quantity with a bound on its error, read
+/// through methods of the same names (the fields are the solve's, so that they stay consistent
+/// with each other).
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct Ellipse<T: Real> {
-    /// k = b/a (b across the motion, a along it), with a bound on its relative error for the
-    /// inputs as represented at the working precision (see [`solve_ellipse`] for the speed's
-    /// rounding).
-    pub k: Estimated<T>,
+    pub(crate) k: Estimated<T>,
+    pub(crate) e: Estimated<T>,
+    pub(crate) major: MajorAxis,
+    pub(crate) integrals: Integrals<T>,
+    pub(crate) iterations: usize,
+}
+
+impl<T: Real> Ellipse<T> {
+    /// k = b/a (b across the motion, a along it), the root of (33), with a bound on its relative
+    /// error for the inputs as represented at the working precision (see [`solve_ellipse`] for
+    /// the speed's rounding).
+    pub fn k(&self) -> &Estimated<T> {
+        &self.k
+    }
+
     /// The eccentricity √(1 − (minor/major)²) ∈ [0, 1). Its bound is on the *absolute* error
     /// |ẽ − e| (e vanishes for a circular contact, where δe ≈ δk/e: a relative bound would be
     /// unbounded there); since e < 1 it also bounds e's error relative to 1.
-    pub e: Estimated<T>,
-    /// Which axis is the major one.
-    pub major: MajorAxis,
-    /// I1, I2 at the solution (normalisation of (37)) with their k-derivatives (when known to
-    /// at least one digit) and the route of the last evaluation.
-    pub integrals: Integrals<T>,
+    pub fn e(&self) -> &Estimated<T> {
+        &self.e
+    }
+
+    /// Which axis is the major one: along the motion for k ≤ 1, across it for k > 1; exact.
+    pub fn major(&self) -> MajorAxis {
+        self.major
+    }
+
+    /// I1, I2 of (34) at the solution (normalisation of (37)) with their k-derivatives (when
+    /// known to at least one digit) and the route of the last evaluation, each with the bound
+    /// of the solve (which includes the carry from the last evaluation to the root).
+    pub fn integrals(&self) -> &Integrals<T> {
+        &self.integrals
+    }
+
     /// Evaluations of the integrals at the working precision (above `f64` the precision
     /// ladder's lower stages come on top: an evaluation at `f64` or double-double costs a small
     /// fraction of one at the working precision, one at the half-precision stage above 1024
     /// bits about a fifth).
-    pub iterations: usize,
+    pub fn iterations(&self) -> usize {
+        self.iterations
+    }
 }
 
 /// The solve's internal result: k, the integrals at k, the error estimate of k, the work.
@@ -169,11 +194,12 @@ impl<T: Real> Shape<T> {
                 ),
             });
         }
+        let integrals = self.integrals.without_poor_extras().publish(&self.k)?;
         Ok(Ellipse {
             k: Estimated::new(self.k, RelError::of(&self.error_estimate)),
             e: Estimated::absolute(e, RelError::of(&e_err)),
             major,
-            integrals: self.integrals.without_poor_extras().publish()?,
+            integrals,
             iterations: self.iterations,
         })
     }
@@ -224,8 +250,9 @@ pub const RATIO_RANGE: (f64, f64) = (1e-100, 1e100);
 /// 1 − M_R, which a speed made by [`crate::physics::Material::parse_speed`] or
 /// [`crate::physics::Material::speed_from_gap`] carries to within ε.
 ///
-/// Errors: [`Error::Domain`] for a ratio that is not positive and finite, for the series or the
-/// adaptive subtracted method (no k-derivatives); [`Error::Precision`] above 32,768 bits (the
+/// Errors: [`Error::Domain`] for a ratio that is not positive and finite;
+/// [`Error::Unsupported`] for the series or the adaptive subtracted method (no
+/// k-derivatives); [`Error::Precision`] above 32,768 bits (the
 /// rules' limit), before any work; [`Error::Unreachable`] for a tolerance below 4ε;
 /// [`Error::NoConvergence`] if Newton's method fails (not observed).
 pub fn solve_ellipse<T: Real>(
@@ -251,10 +278,10 @@ pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<
         check_positive("seed for the axis ratio k", seed)?;
     }
     if matches!(opts.method, Method::Series | Method::AdaptiveSubtracted) {
-        return Err(Error::Domain {
-            name: "method for the ellipse solve",
-            value: opts.method.label().into(),
-            bound: "auto, adaptive or fixed (the series and adaptive-subtracted routes give no k-derivatives)",
+        return Err(Error::Unsupported {
+            what: "the k-derivatives of I1, I2 that the ellipse solve needs",
+            method: opts.method.label(),
+            reason: "auto, adaptive and fixed give them",
         });
     }
     if let Some(t) = opts.tolerance {

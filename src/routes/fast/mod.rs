@@ -340,7 +340,7 @@ fn combine<T: Real>(
         [d1l - &(s1 * &three_k), d2l - &(s2 * &three_k)]
     });
     Evaluation::from_rule(
-        "fast route: I1 and I2 (finite, positive)",
+        &kc.k,
         [i1, i2],
         dks,
         [BOUND_EPS, DK_BOUND_EPS],

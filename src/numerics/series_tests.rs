@@ -1,11 +1,9 @@
-//! The series driver at f64, double-double and MPFR 128/256/1024 bits: e = Σ 1/n!, e^-1
+//! Unit tests of the series driver ([`super::sum_series_with_tail`]) at f64, double-double and MPFR 128/256/1024 bits: e = Σ 1/n!, e^-1
 //! (alternating) and ln 2 with their tail bounds, ζ(2) hitting the term cap, and the typed errors.
 
-mod common;
-
-use moving_hertz::numerics::series::sum_series_with_tail;
-use moving_hertz::scalar::{FieldOps, Mp, MpPrec, Real};
-use moving_hertz::Error;
+use super::sum_series_with_tail;
+use crate::scalar::{FieldOps, Mp, MpPrec, Real};
+use crate::Error;
 
 fn err_vs<T: Real>(got: &T, want: &Mp) -> f64 {
     let bits = want.0.prec();
@@ -102,7 +100,12 @@ fn series_case<T: Real>(p: T::Prec, label: &str) {
 
 #[test]
 fn series_at_every_precision() {
-    at_all_precisions!(series_case);
+    series_case::<f64>((), "f64");
+    series_case::<crate::scalar::Dd>((), "dd");
+    for bits in [128, 256, 1024] {
+        let p = MpPrec::new(bits).expect("precision");
+        series_case::<Mp>(p, &format!("mpfr{bits}"));
+    }
 }
 
 #[test]
@@ -158,5 +161,4 @@ fn typed_errors_no_panics() {
             &Mp::from_i64(2, MpPrec::new(400).expect("precision"))
         ) <= 2.0
     );
-    common::assert_no_mixing();
 }
