@@ -140,7 +140,7 @@ fn study_rayleigh(out: &Path) -> Result<(), CliError> {
             .chain(rayleigh::closeups(&rows)),
     )?;
     let mut md = String::from("| precision | method |");
-    for r in rayleigh::SUMMARY_REGIONS {
+    for (r, _) in rayleigh::REGIONS {
         md.push_str(&format!(" {r}: m1 / m2,m3 (ε) |"));
     }
     md.push_str("\n|---|---|---|---|---|---|\n");
@@ -554,10 +554,10 @@ fn study_stability(out: &Path) -> Result<(), CliError> {
             "x,y,digits",
             &m.rows(),
         )?;
-        charts(out, [(format!("{}.svg", m.name), m.to_svg())])?;
-        let all: Vec<f64> = m.z.iter().flatten().cloned().collect();
+        charts(out, [(format!("{}.svg", m.name), m.map.to_svg())])?;
+        let all: Vec<f64> = m.map.z.iter().flatten().cloned().collect();
         let min = all.iter().cloned().fold(f64::INFINITY, f64::min);
-        let full = all.iter().filter(|&&d| d >= m.full - 1.0).count();
+        let full = all.iter().filter(|&&d| d >= m.full() - 1.0).count();
         let refused = all.iter().filter(|d| d.is_nan()).count();
         say!(
             "{}: min {:.1} digits, {} of {} cells within a digit of full ({:.1}), {refused} refused",
@@ -565,7 +565,7 @@ fn study_stability(out: &Path) -> Result<(), CliError> {
             min,
             full,
             all.len(),
-            m.full
+            m.full()
         );
     }
     Ok(())
