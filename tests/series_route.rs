@@ -183,7 +183,6 @@ fn series_equals_pi_times_quadrature_of_34() {
         got.i2.to_decimal()
     );
     let mat = Material::new(Mp::parse("0.25", r).unwrap()).unwrap();
-    let green = GreenFunction::new(&mat);
     let (mr_r, k2) = (Mp::parse("0.5", r).unwrap(), Mp::parse("0.25", r).unwrap());
     let pi = Mp::pi(r);
     let pts = [Mp::zero(r), pi.clone().mul_pow2(-1), pi.clone()];
@@ -192,7 +191,7 @@ fn series_equals_pi_times_quadrature_of_34() {
         let f = |phi: &Mp| {
             let (s, c) = phi.clone().sin_cos();
             let v = mat.speed(mr_r.clone() * &s).unwrap();
-            let gamma = green.gamma_direct(&v);
+            let gamma = common::printed::gamma(&mat, &v);
             let den = k2.clone() * c.square() + s.square();
             let w = if cos2 { c.square() } else { s.square() };
             -(gamma * w / (den.clone() * den.sqrt()))

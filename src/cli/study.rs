@@ -6,6 +6,7 @@ use super::progress::Progress;
 use super::CliError;
 use crate::studies::{self, integrals, pareto, poisson, rayleigh, series, stability};
 use moving_hertz::Method;
+use std::path::{Path, PathBuf};
 
 /// `println!` through [`super::output::emit`]: a closed or full standard output stops the
 /// study with exit code 1 and one line, as in every command (the studies print as they go).
@@ -71,7 +72,7 @@ pub fn run(a: &StudyArgs) -> Result<(), CliError> {
     super::bind_global_pool(usize::MAX, &moving_hertz::Precision::F64);
     match a.name {
         Study::Integrals if a.redraw => draw_integrals(out),
-        Study::Pareto if a.redraw => draw_pareto(out, &PARETO_METHODS),
+        Study::Pareto if a.redraw => draw_pareto(out),
         Study::Series if a.redraw => draw_series(out),
         Study::Rayleigh => study_rayleigh(out),
         Study::Integrals => study_integrals(out),
@@ -87,14 +88,34 @@ fn io(e: std::io::Error) -> CliError {
     CliError::Failed(format!("writing study output: {e}"))
 }
 
-fn study_rayleigh(out: &std::path::Path) -> Result<(), CliError> {
+/// Writes `rows` under `header` (comma-separated column names) to `out/file`; returns the path.
+fn csv(out: &Path, file: &str, header: &str, rows: &[Vec<String>]) -> Result<PathBuf, CliError> {
+    let path = out.join(file);
+    studies::write_csv(&path, header, rows).map_err(io)?;
+    Ok(path)
+}
+
+/// Writes `text` (a Markdown summary) to `out/file`.
+fn text(out: &Path, file: &str, text: &str) -> Result<(), CliError> {
+    studies::write_text(&out.join(file), text).map_err(io)
+}
+
+/// Writes each (name, SVG) chart under `out/figures`.
+fn charts(out: &Path, charts: impl IntoIterator<Item = (String, String)>) -> Result<(), CliError> {
+    for (name, svg) in charts {
+        text(out, &format!("figures/{name}"), &svg)?;
+    }
+    Ok(())
+}
+
+fn study_rayleigh(out: &Path) -> Result<(), CliError> {
     let nus = rayleigh::nu_grid();
     note!(
         "rayleigh roots: {} values of nu at 4 precisions ...",
         nus.len()
     );
     let rows = rayleigh::run(&nus);
-    let csv: Vec<Vec<String>> = rows
+    let table: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
             vec![
@@ -106,28 +127,27 @@ fn study_rayleigh(out: &std::path::Path) -> Result<(), CliError> {
             ]
         })
         .collect();
-    let data = out.join("data/rayleigh_stability.csv");
-    studies::write_csv(
-        &data,
-        &["nu", "precision", "method", "err_m1_eps", "err_m23_eps"],
-        &csv,
-    )
-    .map_err(io)?;
-    for (name, svg) in rayleigh::charts(&rows)
-        .into_iter()
-        .chain(rayleigh::closeups(&rows))
-    {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
+    let data = csv(
+        out,
+        "data/rayleigh_stability.csv",
+        "nu,precision,method,err_m1_eps,err_m23_eps",
+        &table,
+    )?;
+    charts(
+        out,
+        rayleigh::charts(&rows)
+            .into_iter()
+            .chain(rayleigh::closeups(&rows)),
+    )?;
     let mut md = String::from("| precision | method |");
-    for r in rayleigh::SUMMARY_REGIONS {
+    for (r, _) in rayleigh::REGIONS {
         md.push_str(&format!(" {r}: m1 / m2,m3 (ε) |"));
     }
     md.push_str("\n|---|---|---|---|---|---|\n");
     for row in rayleigh::summary(&rows) {
         md.push_str(&format!("| {} |\n", row.join(" | ")));
     }
-    studies::write_text(&out.join("data/rayleigh_summary.md"), &md).map_err(io)?;
+    text(out, "data/rayleigh_summary.md", &md)?;
     say!("{md}");
     say!(
         "wrote {} and charts under {}",
@@ -137,11 +157,11 @@ fn study_rayleigh(out: &std::path::Path) -> Result<(), CliError> {
     Ok(())
 }
 
-fn study_integrals(out: &std::path::Path) -> Result<(), CliError> {
+fn study_integrals(out: &Path) -> Result<(), CliError> {
     let (nu, k) = ("0.2", "0.3");
     let rows = integrals::run(nu, k, 60.0, |mr| note!("integrals: M_R = {mr} ..."))
         .map_err(CliError::lib)?;
-    let csv: Vec<Vec<String>> = rows
+    let table: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
             vec![
@@ -156,22 +176,12 @@ fn study_integrals(out: &std::path::Path) -> Result<(), CliError> {
             ]
         })
         .collect();
-    let data = out.join("data/integrals_study.csv");
-    studies::write_csv(
-        &data,
-        &[
-            "mr",
-            "method",
-            "precision",
-            "rel_error",
-            "error_estimate",
-            "time_ns",
-            "work",
-            "failure",
-        ],
-        &csv,
-    )
-    .map_err(io)?;
+    let data = csv(
+        out,
+        INTEGRALS_CSV,
+        "mr,method,precision,rel_error,error_estimate,time_ns,work,failure",
+        &table,
+    )?;
     draw_integrals(out)?;
     say!("| M_R | method | precision | rel. error | estimate | time | work |");
     say!("|---|---|---|---|---|---|---|");
@@ -204,45 +214,50 @@ fn study_integrals(out: &std::path::Path) -> Result<(), CliError> {
     Ok(())
 }
 
-/// The integrals study's charts, drawn from its CSV data under `out`.
-fn draw_integrals(out: &std::path::Path) -> Result<(), CliError> {
-    let table = studies::Table::read(&out.join("data/integrals_study.csv")).map_err(io)?;
-    let rows = integrals::rows_from_csv(&table).map_err(CliError::Failed)?;
-    for (name, svg) in integrals::charts(&rows) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
-    Ok(())
+/// A timing study's charts, drawn by `draw` from the rows `read` takes from its CSV data
+/// `out/file` (the study draws them so from the CSV it has just written; `--redraw` alone).
+fn redraw<R>(
+    out: &Path,
+    file: &str,
+    read: fn(&studies::Table) -> Result<Vec<R>, String>,
+    draw: impl Fn(&[R]) -> Vec<(String, String)>,
+) -> Result<(), CliError> {
+    let table = studies::Table::read(&out.join(file)).map_err(io)?;
+    charts(out, draw(&read(&table).map_err(CliError::Failed)?))
 }
 
-/// The pareto study's charts for `methods`, drawn from its CSV data under `out`.
-fn draw_pareto(out: &std::path::Path, methods: &[Method]) -> Result<(), CliError> {
-    let table = studies::Table::read(&out.join("data/pareto_ellipse.csv")).map_err(io)?;
-    let rows = pareto::rows_from_csv(&table).map_err(CliError::Failed)?;
-    for (name, svg) in pareto::charts(&rows, methods) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
-    Ok(())
+fn draw_integrals(out: &Path) -> Result<(), CliError> {
+    redraw(
+        out,
+        INTEGRALS_CSV,
+        integrals::rows_from_csv,
+        integrals::charts,
+    )
 }
 
-/// The series study's charts, drawn from its CSV data under `out`.
-fn draw_series(out: &std::path::Path) -> Result<(), CliError> {
-    let table = studies::Table::read(&out.join("data/series_terms.csv")).map_err(io)?;
-    let rows = series::rows_from_csv(&table).map_err(CliError::Failed)?;
-    for (name, svg) in series::terms_charts(&rows) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
-    Ok(())
+fn draw_pareto(out: &Path) -> Result<(), CliError> {
+    let draw = |rows: &[pareto::Row]| pareto::charts(rows, &PARETO_METHODS);
+    redraw(out, PARETO_CSV, pareto::rows_from_csv, draw)
 }
+
+fn draw_series(out: &Path) -> Result<(), CliError> {
+    redraw(out, SERIES_CSV, series::rows_from_csv, series::terms_charts)
+}
+
+/// The timing studies' data, which their charts are drawn from.
+const INTEGRALS_CSV: &str = "data/integrals_study.csv";
+const PARETO_CSV: &str = "data/pareto_ellipse.csv";
+const SERIES_CSV: &str = "data/series_terms.csv";
 
 /// The methods the pareto study compares.
 const PARETO_METHODS: [Method; 2] = [Method::Fixed, Method::Adaptive];
 
-fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
+fn study_poisson(out: &Path) -> Result<(), CliError> {
     let total = poisson::nu_grid().len() * poisson::SPEEDS.len() * poisson::ratio_grid().len();
     let bar = Progress::new("poisson", total);
     let pts = poisson::run(|| bar.advance(1)).map_err(CliError::lib)?;
     bar.finish();
-    let csv: Vec<Vec<String>> = pts
+    let table: Vec<Vec<String>> = pts
         .iter()
         .map(|q| {
             vec![
@@ -256,24 +271,13 @@ fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
             ]
         })
         .collect();
-    let data = out.join("data/poisson_study.csv");
-    studies::write_csv(
-        &data,
-        &[
-            "nu",
-            "M_R",
-            "A1_over_B1",
-            "e",
-            "k",
-            "a_for_P_mu_R1_1",
-            "a_over_static_a",
-        ],
-        &csv,
-    )
-    .map_err(io)?;
-    for (name, svg) in poisson::charts(&pts) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
+    let data = csv(
+        out,
+        "data/poisson_study.csv",
+        "nu,M_R,A1_over_B1,e,k,a_for_P_mu_R1_1,a_over_static_a",
+        &table,
+    )?;
+    charts(out, poisson::charts(&pts))?;
     say!("Largest deviation from nu = 0.2 (max over A1/B1 in [0.01, 1]), in %: e absolute (x100),");
     say!("k and a(M_R)/a(0) relative:");
     say!("| M_R | e, 0<=nu<=1/2 | e, all nu | k, 0<=nu<=1/2 | k, all nu | a/a0, 0<=nu<=1/2 | a/a0, all nu |");
@@ -310,11 +314,10 @@ fn study_poisson(out: &std::path::Path) -> Result<(), CliError> {
     Ok(())
 }
 
-fn study_pareto(out: &std::path::Path) -> Result<(), CliError> {
-    let methods = PARETO_METHODS;
-    let rows =
-        pareto::run(&methods, 200.0, |what| note!("pareto: {what} ...")).map_err(CliError::lib)?;
-    let csv: Vec<Vec<String>> = rows
+fn study_pareto(out: &Path) -> Result<(), CliError> {
+    let rows = pareto::run(&PARETO_METHODS, 200.0, |what| note!("pareto: {what} ..."))
+        .map_err(CliError::lib)?;
+    let table: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
             vec![
@@ -329,23 +332,13 @@ fn study_pareto(out: &std::path::Path) -> Result<(), CliError> {
             ]
         })
         .collect();
-    let data = out.join("data/pareto_ellipse.csv");
-    studies::write_csv(
-        &data,
-        &[
-            "mr",
-            "method",
-            "precision",
-            "bits",
-            "k_rel_error",
-            "error_estimate",
-            "time_ns",
-            "failure",
-        ],
-        &csv,
-    )
-    .map_err(io)?;
-    draw_pareto(out, &methods)?;
+    let data = csv(
+        out,
+        PARETO_CSV,
+        "mr,method,precision,bits,k_rel_error,error_estimate,time_ns,failure",
+        &table,
+    )?;
+    draw_pareto(out)?;
     say!("| M_R | method | precision | error of k | estimate | time per solve |");
     say!("|---|---|---|---|---|---|");
     for r in &rows {
@@ -371,7 +364,7 @@ fn study_pareto(out: &std::path::Path) -> Result<(), CliError> {
     Ok(())
 }
 
-fn study_series(out: &std::path::Path) -> Result<(), CliError> {
+fn study_series(out: &Path) -> Result<(), CliError> {
     let speeds = series::speed_grid();
     note!(
         "series (37): terms and time at {} speeds x {} targets (about a minute) ...",
@@ -379,7 +372,7 @@ fn study_series(out: &std::path::Path) -> Result<(), CliError> {
         series::targets().len()
     );
     let rows = series::terms_study(&speeds, 20.0).map_err(CliError::lib)?;
-    let csv: Vec<Vec<String>> = rows
+    let table: Vec<Vec<String>> = rows
         .iter()
         .map(|r| {
             vec![
@@ -394,22 +387,12 @@ fn study_series(out: &std::path::Path) -> Result<(), CliError> {
             ]
         })
         .collect();
-    let data = out.join("data/series_terms.csv");
-    studies::write_csv(
-        &data,
-        &[
-            "M_R",
-            "target",
-            "precision",
-            "terms",
-            "terms_estimate",
-            "time_ns",
-            "error",
-            "error_estimate",
-        ],
-        &csv,
-    )
-    .map_err(io)?;
+    let data = csv(
+        out,
+        SERIES_CSV,
+        "M_R,target,precision,terms,terms_estimate,time_ns,error,error_estimate",
+        &table,
+    )?;
     draw_series(out)?;
     let mut md = String::from(
         "| M_R | target | precision | terms | estimate | time | error reached | error estimate |\n|---|---|---|---|---|---|---|---|\n",
@@ -434,7 +417,7 @@ fn study_series(out: &std::path::Path) -> Result<(), CliError> {
             r.error_estimate
         ));
     }
-    studies::write_text(&out.join("data/series_summary.md"), &md).map_err(io)?;
+    text(out, "data/series_summary.md", &md)?;
     say!("{md}");
     say!(
         "wrote {} and charts under {}",
@@ -444,10 +427,10 @@ fn study_series(out: &std::path::Path) -> Result<(), CliError> {
     Ok(())
 }
 
-fn study_recursion(out: &std::path::Path) -> Result<(), CliError> {
+fn study_recursion(out: &Path) -> Result<(), CliError> {
     note!("forward recursion (40) against the exact form at 4 precisions ...");
     let (points, growth) = series::forward_study().map_err(CliError::lib)?;
-    let csv: Vec<Vec<String>> = points
+    let table: Vec<Vec<String>> = points
         .iter()
         .map(|p| {
             vec![
@@ -459,34 +442,17 @@ fn study_recursion(out: &std::path::Path) -> Result<(), CliError> {
             ]
         })
         .collect();
-    studies::write_csv(
-        &out.join("data/recursion_forward.csv"),
-        &["k2", "precision", "n", "rel_err_L", "rel_err_M"],
-        &csv,
-    )
-    .map_err(io)?;
+    csv(
+        out,
+        "data/recursion_forward.csv",
+        "k2,precision,n,rel_err_L,rel_err_M",
+        &table,
+    )?;
     let (md, gcsv) = growth_table(&growth);
-    studies::write_csv(
-        &out.join("data/recursion_growth.csv"),
-        &[
-            "k2",
-            "precision",
-            "predicted_bits_per_step",
-            "measured_L",
-            "measured_M",
-            "total_loss_n",
-            "predicted_total_loss_n",
-            "worst_err_eps",
-            "n_max",
-        ],
-        &gcsv,
-    )
-    .map_err(io)?;
-    for (name, svg) in series::forward_charts(&points, &growth) {
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
-    }
+    csv(out, "data/recursion_growth.csv", "k2,precision,predicted_bits_per_step,measured_L,measured_M,total_loss_n,predicted_total_loss_n,worst_err_eps,n_max", &gcsv)?;
+    charts(out, series::forward_charts(&points, &growth))?;
     write_condition_maps(out)?;
-    studies::write_text(&out.join("data/recursion_summary.md"), &md).map_err(io)?;
+    text(out, "data/recursion_summary.md", &md)?;
     say!("{md}");
     say!(
         "wrote CSV under {} and charts under {}",
@@ -551,7 +517,7 @@ fn growth_table(growth: &[series::Growth]) -> (String, Vec<Vec<String>>) {
 }
 
 /// The bits lost in the K, E basis over (n, e) and (n, k): CSV and charts.
-fn write_condition_maps(out: &std::path::Path) -> Result<(), CliError> {
+fn write_condition_maps(out: &Path) -> Result<(), CliError> {
     note!("bits lost in the K, E basis over (n, e) and (n, k) ...");
     for k_side in [false, true] {
         let map = series::condition_map(k_side).map_err(CliError::lib)?;
@@ -571,30 +537,27 @@ fn write_condition_maps(out: &std::path::Path) -> Result<(), CliError> {
         } else {
             ("e", "data/recursion_bits_lost_e.csv")
         };
-        studies::write_csv(&out.join(file), &[param, "n", "bits_L", "bits_M"], &rows)
-            .map_err(io)?;
-        let (name, svg) = series::condition_chart(&map, k_side);
-        studies::write_text(&out.join("figures").join(name), &svg).map_err(io)?;
+        csv(out, file, &format!("{param},n,bits_L,bits_M"), &rows)?;
+        charts(out, [series::condition_chart(&map, k_side)])?;
     }
     Ok(())
 }
 
-fn study_stability(out: &std::path::Path) -> Result<(), CliError> {
+fn study_stability(out: &Path) -> Result<(), CliError> {
     let bar = Progress::new("stability maps", stability::cells());
     let maps = stability::run(|| bar.advance(1));
     bar.finish();
     for m in &maps {
-        studies::write_csv(
-            &out.join(format!("data/{}.csv", m.name)),
-            &["x", "y", "digits"],
+        csv(
+            out,
+            &format!("data/{}.csv", m.name),
+            "x,y,digits",
             &m.rows(),
-        )
-        .map_err(io)?;
-        studies::write_text(&out.join(format!("figures/{}.svg", m.name)), &m.to_svg())
-            .map_err(io)?;
-        let all: Vec<f64> = m.z.iter().flatten().cloned().collect();
+        )?;
+        charts(out, [(format!("{}.svg", m.name), m.map.to_svg())])?;
+        let all: Vec<f64> = m.map.z.iter().flatten().cloned().collect();
         let min = all.iter().cloned().fold(f64::INFINITY, f64::min);
-        let full = all.iter().filter(|&&d| d >= m.full - 1.0).count();
+        let full = all.iter().filter(|&&d| d >= m.full() - 1.0).count();
         let refused = all.iter().filter(|d| d.is_nan()).count();
         say!(
             "{}: min {:.1} digits, {} of {} cells within a digit of full ({:.1}), {refused} refused",
@@ -602,7 +565,7 @@ fn study_stability(out: &std::path::Path) -> Result<(), CliError> {
             min,
             full,
             all.len(),
-            m.full
+            m.full()
         );
     }
     Ok(())

@@ -74,13 +74,20 @@ pub struct SweepArgs {
 }
 
 impl SweepArgs {
-    /// `--nu` and `--ratio`: clap requires both unless the subcommand is given, which leaves
-    /// them out (hence their `Option`).
-    fn nu_and_ratio(&self) -> Result<(&Axis, &Axis), CliError> {
-        match (&self.nu, &self.ratio) {
-            (Some(nu), Some(ratio)) => Ok((nu, ratio)),
+    /// `--nu`, `--speed` or `--gap`, and `--ratio`, each with its checks: clap requires them
+    /// unless the subcommand is given, which leaves them out (hence their `Option`).
+    fn axes(&self) -> Result<[(&Axis, &'static Checked); 3], CliError> {
+        let speed = (self.speed.speed.as_ref().map(|s| (s, &SPEED))).or(self
+            .speed
+            .gap
+            .as_ref()
+            .map(|g| (g, &GAP)));
+        match (&self.nu, speed, &self.ratio) {
+            (Some(nu), Some(speed), Some(ratio)) => Ok([(nu, &NU), speed, (ratio, &RATIO)]),
             _ => Err(CliError::Input(
-                "sweep needs --nu LIST and --ratio LIST (or the subcommand contact)".into(),
+                "sweep needs --nu LIST, --speed or --gap LIST and --ratio LIST (or the \
+                 subcommand contact)"
+                    .into(),
             )),
         }
     }
@@ -290,90 +297,105 @@ fn exact<T: Real>(q: &Rational, p: T::Prec) -> T {
     T::from_float(&Float::with_val(T::bits(p) + 64, q), p)
 }
 
-/// Checks every value of an option against its domain, exactly, before any work: `lower`
-/// (exclusive or not) and `upper`; refusals name the option and quote the text.
-pub(super) fn check(
-    option: &str,
-    what: &str,
-    axis: &Axis,
-    lower: (i64, bool),
-    upper: Option<(Rational, bool)>,
-    bound: &str,
-) -> Result<(), CliError> {
-    for d in axis.extremes() {
-        let low_ok = if lower.1 {
-            d.exact >= lower.0
-        } else {
-            d.exact > lower.0
-        };
-        let up_ok = upper
-            .as_ref()
-            .is_none_or(|(u, incl)| if *incl { d.exact <= *u } else { d.exact < *u });
-        if !(low_ok && up_ok) {
-            let why = format!("{what} = {} is outside its domain {bound}", d.text);
-            return Err(CliError::value(option, &d.text, why));
+/// An option a sweep checks before any work: its flag, what messages call it, and its domain
+/// as messages write it (`(-1, 1/2]`: the brackets say whether an end is included, `inf` is no
+/// bound), from which the check reads its ends.
+pub(super) struct Checked {
+    pub option: &'static str,
+    pub what: &'static str,
+    domain: &'static str,
+}
+
+const fn checked(option: &'static str, what: &'static str, domain: &'static str) -> Checked {
+    Checked {
+        option,
+        what,
+        domain,
+    }
+}
+
+pub(super) const NU: Checked = checked("--nu", "nu (Poisson's ratio)", "(-1, 1/2]");
+pub(super) const SPEED: Checked = checked("--speed", "speed M_R", "[0, 1)");
+pub(super) const GAP: Checked = checked("--gap", "gap 1 - M_R", "(0, 1]");
+pub(super) const VELOCITY: Checked = checked("--velocity", "velocity V", "[0, inf)");
+const RATIO: Checked = checked("--ratio", "curvature ratio A1/B1", "(0, inf)");
+pub(super) const R_ALONG: Checked = checked("--r-along", "radius along the motion R1", "(0, inf)");
+pub(super) const R_ACROSS: Checked =
+    checked("--r-across", "radius across the motion R2", "(0, inf)");
+pub(super) const LOAD: Checked = checked("--load", "load P", "(0, inf)");
+pub(super) const APPROACH: Checked = checked("--approach", "approach d0", "(0, inf)");
+pub(super) const SHEAR: Checked = checked("--shear-modulus", "shear modulus mu", "(0, inf)");
+pub(super) const YOUNGS: Checked = checked("--youngs-modulus", "Young's modulus E", "(0, inf)");
+
+impl Checked {
+    /// Whether `x` lies in the domain, exactly.
+    fn holds(&self, x: &Rational) -> bool {
+        let d = self.domain;
+        let (low, high) = d[1..d.len() - 1].split_once(", ").unwrap_or(("inf", "inf"));
+        let end = |t: &str| t.parse::<Rational>().ok();
+        let low_ok = end(low).is_none_or(|b| if d.starts_with('[') { *x >= b } else { *x > b });
+        let high_ok = end(high).is_none_or(|b| if d.ends_with(']') { *x <= b } else { *x < b });
+        low_ok && high_ok
+    }
+
+    /// Checks every value of `axis` against the domain, exactly (a range by its ends); a
+    /// refusal names the option and quotes the text.
+    pub(super) fn check(&self, axis: &Axis) -> Result<(), CliError> {
+        match axis.extremes().into_iter().find(|d| !self.holds(&d.exact)) {
+            Some(d) => {
+                let why = format!(
+                    "{} = {} is outside its domain {}",
+                    self.what, d.text, self.domain
+                );
+                Err(CliError::value(self.option, &d.text, why))
+            }
+            None => Ok(()),
         }
     }
-    Ok(())
+
+    /// The values of `axis` at precision `p` ([`Axis::values`]), refused unless each is a
+    /// normal number of the working precision ([`Axis::check_representable`]).
+    pub(super) fn values<T: Real + Send>(
+        &self,
+        axis: &Axis,
+        precision: &Precision,
+        p: T::Prec,
+    ) -> Result<Vec<(String, T)>, CliError> {
+        let values = axis.values::<T>(p);
+        axis.check_representable(self.option, self.what, &values, precision)?;
+        Ok(values)
+    }
+}
+
+/// Refuses a sweep of more than [`POINT_CAP`] points (`total` saturated at `u128::MAX`).
+pub(super) fn check_count(total: u128) -> Result<(), CliError> {
+    if total <= POINT_CAP as u128 {
+        return Ok(());
+    }
+    let total = match total {
+        u128::MAX => "more than 10^38".to_string(),
+        n => n.to_string(),
+    };
+    Err(CliError::Input(format!(
+        "the sweep has {total} points, more than the {POINT_CAP} one run solves"
+    )))
 }
 
 /// The inputs' domains, checked exactly before any work, and the point count against its cap.
 fn check_inputs(a: &SweepArgs) -> Result<(), CliError> {
-    let (nu, ratio) = a.nu_and_ratio()?;
-    let half = Some((Rational::from((1, 2)), true));
-    check(
-        "--nu",
-        "nu (Poisson's ratio)",
-        nu,
-        (-1, false),
-        half,
-        "(-1, 1/2]",
-    )?;
-    if let Some(s) = &a.speed.speed {
-        check(
-            "--speed",
-            "speed M_R",
-            s,
-            (0, true),
-            Some((Rational::from(1), false)),
-            "[0, 1)",
-        )?;
+    for (axis, checked) in a.axes()? {
+        checked.check(axis)?;
     }
-    if let Some(g) = &a.speed.gap {
-        check(
-            "--gap",
-            "gap 1 - M_R",
-            g,
-            (0, false),
-            Some((Rational::from(1), true)),
-            "(0, 1]",
-        )?;
-    }
-    check(
-        "--ratio",
-        "curvature ratio A1/B1",
-        ratio,
-        (0, false),
-        None,
-        "(0, inf)",
-    )?;
-    let total = point_count(a);
-    if total > POINT_CAP as u128 {
-        return Err(CliError::Input(format!(
-            "the sweep has {total} points, more than the {POINT_CAP} one run solves"
-        )));
-    }
-    Ok(())
+    check_count(point_count(a)?)
 }
 
 /// The number of points of the grid: each axis holds at most POINT_CAP values or one per
 /// character typed, so the product is exact in a u128, whatever was typed.
-fn point_count(a: &SweepArgs) -> u128 {
-    let speeds = (a.speed.speed.as_ref())
-        .or(a.speed.gap.as_ref())
-        .map_or(0, Axis::len);
-    let len = |axis: &Option<Axis>| axis.as_ref().map_or(0, Axis::len) as u128;
-    len(&a.nu) * (speeds as u128) * len(&a.ratio)
+fn point_count(a: &SweepArgs) -> Result<u128, CliError> {
+    Ok(a.axes()?
+        .iter()
+        .map(|(axis, _)| axis.len() as u128)
+        .product())
 }
 
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
@@ -432,31 +454,16 @@ impl<T: Real> Grid<T> {
 /// The grid of the three axes, each value with its text; a value that overflows or underflows
 /// the working precision is refused before any work.
 fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
-    let (nu_axis, ratio_axis) = a.nu_and_ratio()?;
-    let nus = nu_axis.values::<T>(p);
-    let (by_gap, speeds) = match (&a.speed.speed, &a.speed.gap) {
-        (Some(s), _) => (false, s.values::<T>(p)),
-        (None, Some(g)) => (true, g.values::<T>(p)),
-        (None, None) => (false, Vec::new()),
-    };
-    let ratios = ratio_axis.values::<T>(p);
-    let speed_axis = a.speed.speed.as_ref().or(a.speed.gap.as_ref());
-    let (speed_option, speed_what) = match by_gap {
-        true => ("--gap", "gap 1 - M_R"),
-        false => ("--speed", "speed M_R"),
-    };
-    let nus = checked_nus(nu_axis, nus, &a.precision, p)?;
-    if let Some(axis) = speed_axis {
-        axis.check_representable(speed_option, speed_what, &speeds, &a.precision)?;
-    }
-    let what = "curvature ratio A1/B1";
-    ratio_axis.check_representable("--ratio", what, &ratios, &a.precision)?;
+    let [(nu, _), (speed, speed_checked), (ratio, _)] = a.axes()?;
+    let nus = checked_nus(nu, &a.precision, p)?;
+    let speeds = speed_checked.values::<T>(speed, &a.precision, p)?;
+    let ratios = RATIO.values::<T>(ratio, &a.precision, p)?;
+    let by_gap = std::ptr::eq(speed_checked, &GAP);
     let speeds = (speeds.into_iter())
         .map(|(text, sp)| {
-            let given = if by_gap {
-                SpeedGiven::Gap(sp)
-            } else {
-                SpeedGiven::Text(text.clone())
+            let given = match by_gap {
+                true => SpeedGiven::Gap(sp),
+                false => SpeedGiven::Text(text.clone()),
             };
             (text, given)
         })
@@ -468,15 +475,14 @@ fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError
     })
 }
 
-/// The values of `--nu` (`axis`'s `values` at `p`), refused before any work, naming the text,
+/// The values of `--nu` at `p`, refused before any work, naming the text,
 /// where one is not a normal number of the working precision or rounds onto −1.
-pub(super) fn checked_nus<T: Real>(
+pub(super) fn checked_nus<T: Real + Send>(
     axis: &Axis,
-    nus: Vec<(String, T)>,
     precision: &Precision,
     p: T::Prec,
 ) -> Result<Vec<(String, T)>, CliError> {
-    axis.check_representable("--nu", "nu (Poisson's ratio)", &nus, precision)?;
+    let nus = NU.values::<T>(axis, precision, p)?;
     // ν > −1 exactly (checked before) may round onto −1 at the working precision, where the
     // material is not defined: refused here by the single commands' own check, with the text.
     if let Some((text, nu)) = nus.iter().find(|(_, nu)| *nu <= -T::one(p)) {
@@ -492,10 +498,8 @@ pub(super) fn checked_nus<T: Real>(
 /// Solves the sweep block by block on the pool, writing the rows in input order as they are
 /// solved; exit code 1 when a point failed (its row carries the error).
 fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(), CliError> {
-    super::bind_global_pool(
-        usize::try_from(point_count(a)).unwrap_or(usize::MAX),
-        &a.precision,
-    );
+    let count = usize::try_from(point_count(a)?).unwrap_or(usize::MAX);
+    super::bind_global_pool(count, &a.precision);
     let grid = points::<T>(a, p)?.cells(a.format);
     let opts = Options::<T> {
         method: a.method,
@@ -714,6 +718,26 @@ fn push_json(out: &mut Vec<u8>, s: &str) {
 
 #[cfg(test)]
 mod tests {
+    /// Each option's domain is read from its text: both ends, whether each is included, `inf`
+    /// as no bound.
+    #[test]
+    fn domains_are_read_from_their_text() {
+        use rug::Rational;
+        let q = |n: i64, d: i64| Rational::from((n, d));
+        for (c, inside, outside) in [
+            (&super::NU, q(1, 2), [q(-1, 1), q(1, 2) + q(1, 1 << 40)]),
+            (&super::SPEED, q(0, 1), [q(1, 1), q(-1, 1 << 40)]),
+            (&super::GAP, q(1, 1), [q(0, 1), q(3, 2)]),
+            (&super::VELOCITY, q(0, 1), [q(-1, 1 << 40), q(-1, 1)]),
+            (&super::LOAD, q(1 << 62, 1), [q(0, 1), q(-1, 3)]),
+        ] {
+            assert!(c.holds(&inside), "{} holds {inside}", c.domain);
+            for x in outside {
+                assert!(!c.holds(&x), "{} refuses {x}", c.domain);
+            }
+        }
+    }
+
     /// `push_json` writes each string as `serde_json` writes it: plain text, quotes,
     /// backslashes, control characters and text beyond ASCII.
     #[test]

@@ -9,7 +9,10 @@ use super::args::{self, Decimal};
 use super::contact::ratio_fits;
 use super::output::emit;
 use super::progress::Progress;
-use super::sweep::{axis, check, checked_nus, push_line, write_in_order, Axis, Format, POINT_CAP};
+use super::sweep::{
+    axis, check_count, checked_nus, push_line, write_in_order, Axis, Checked, Format, APPROACH,
+    GAP, LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
+};
 use super::CliError;
 use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
@@ -19,7 +22,6 @@ use moving_hertz::{
     Solid, Speed,
 };
 use rayon::prelude::*;
-use rug::Rational;
 
 #[derive(clap::Args, Debug)]
 #[command(group = clap::ArgGroup::new("speed_given").required(true).args(["speed", "gap", "velocity"]))]
@@ -92,30 +94,30 @@ enum SpeedKind {
 }
 
 impl ContactSweepArgs {
-    /// The speed axis, its kind, option and name.
-    fn speeds(&self) -> Result<(&Axis, SpeedKind, &'static str, &'static str), CliError> {
+    /// The speed axis, its kind and its checks.
+    fn speeds(&self) -> Result<(&Axis, SpeedKind, &'static Checked), CliError> {
         match (&self.speed, &self.gap, &self.velocity) {
-            (Some(s), _, _) => Ok((s, SpeedKind::Mr, "--speed", "speed M_R")),
-            (None, Some(g), _) => Ok((g, SpeedKind::Gap, "--gap", "gap 1 - M_R")),
-            (None, None, Some(v)) => Ok((v, SpeedKind::Velocity, "--velocity", "velocity V")),
+            (Some(s), _, _) => Ok((s, SpeedKind::Mr, &SPEED)),
+            (None, Some(g), _) => Ok((g, SpeedKind::Gap, &GAP)),
+            (None, None, Some(v)) => Ok((v, SpeedKind::Velocity, &VELOCITY)),
             _ => Err(required("one of --speed, --gap and --velocity")),
         }
     }
 
-    /// The modulus axis, whether it holds Young's moduli, and its option.
-    fn moduli(&self) -> Result<(&Axis, bool, &'static str), CliError> {
+    /// The modulus axis, whether it holds Young's moduli, and its checks.
+    fn moduli(&self) -> Result<(&Axis, bool, &'static Checked), CliError> {
         match (&self.shear_modulus, &self.youngs_modulus) {
-            (Some(m), _) => Ok((m, false, "--shear-modulus")),
-            (None, Some(e)) => Ok((e, true, "--youngs-modulus")),
+            (Some(m), _) => Ok((m, false, &SHEAR)),
+            (None, Some(e)) => Ok((e, true, &YOUNGS)),
             _ => Err(required("one of --shear-modulus and --youngs-modulus")),
         }
     }
 
-    /// The load or approach axis, whether it holds loads, and its option.
-    fn sizes(&self) -> Result<(&Axis, bool, &'static str), CliError> {
+    /// The load or approach axis, whether it holds loads, and its checks.
+    fn sizes(&self) -> Result<(&Axis, bool, &'static Checked), CliError> {
         match (&self.load, &self.approach) {
-            (Some(l), _) => Ok((l, true, "--load")),
-            (None, Some(d)) => Ok((d, false, "--approach")),
+            (Some(l), _) => Ok((l, true, &LOAD)),
+            (None, Some(d)) => Ok((d, false, &APPROACH)),
             _ => Err(required("one of --load and --approach")),
         }
     }
@@ -150,60 +152,21 @@ fn required(what: &str) -> CliError {
 
 /// The inputs' domains, checked exactly before any work, and the point count against its cap.
 fn check_inputs(a: &ContactSweepArgs) -> Result<(), CliError> {
-    let half = Some((Rational::from((1, 2)), true));
-    let nu_what = "nu (Poisson's ratio)";
-    check("--nu", nu_what, &a.nu, (-1, false), half, "(-1, 1/2]")?;
-    let one = || Some((Rational::from(1), false));
-    let (speeds, kind, option, what) = a.speeds()?;
-    match kind {
-        SpeedKind::Mr => check(option, what, speeds, (0, true), one(), "[0, 1)")?,
-        SpeedKind::Gap => check(
-            option,
-            what,
-            speeds,
-            (0, false),
-            one().map(|(u, _)| (u, true)),
-            "(0, 1]",
-        )?,
-        SpeedKind::Velocity => check(option, what, speeds, (0, true), None, "[0, inf)")?,
-    }
-    let positive = [
-        (Some(&a.r_along), "--r-along", "radius along the motion R1"),
-        (
-            Some(&a.r_across),
-            "--r-across",
-            "radius across the motion R2",
-        ),
-        (a.load.as_ref(), "--load", "load P"),
-        (a.approach.as_ref(), "--approach", "approach d0"),
-        (
-            a.shear_modulus.as_ref(),
-            "--shear-modulus",
-            "shear modulus mu",
-        ),
-        (
-            a.youngs_modulus.as_ref(),
-            "--youngs-modulus",
-            "Young's modulus E",
-        ),
+    let (speeds, _, speed) = a.speeds()?;
+    let (sizes, _, size) = a.sizes()?;
+    let (moduli, _, modulus) = a.moduli()?;
+    let checks = [
+        (&a.nu, &NU),
+        (speeds, speed),
+        (&a.r_along, &R_ALONG),
+        (&a.r_across, &R_ACROSS),
+        (sizes, size),
+        (moduli, modulus),
     ];
-    for (axis, option, what) in positive {
-        if let Some(axis) = axis {
-            check(option, what, axis, (0, false), None, "(0, inf)")?;
-        }
+    for (axis, checked) in checks {
+        checked.check(axis)?;
     }
-    let total = a.point_count()?;
-    if total > POINT_CAP as u128 {
-        return Err(CliError::Input(format!(
-            "the sweep has {} points, more than the {POINT_CAP} one run solves",
-            if total == u128::MAX {
-                "more than 10^38".to_string()
-            } else {
-                total.to_string()
-            }
-        )));
-    }
-    Ok(())
+    check_count(a.point_count()?)
 }
 
 pub fn run(a: &ContactSweepArgs) -> Result<(), CliError> {
@@ -216,14 +179,12 @@ pub fn run(a: &ContactSweepArgs) -> Result<(), CliError> {
 /// the working precision.
 fn positive_values<T: Real + Send>(
     axis: &Axis,
-    option: &str,
-    what: &str,
+    checked: &Checked,
     precision: &Precision,
     p: T::Prec,
 ) -> Result<Vec<(String, T)>, CliError> {
-    let values = axis.values::<T>(p);
-    axis.check_representable(option, what, &values, precision)?;
-    (values.into_par_iter())
+    let (option, what) = (checked.option, checked.what);
+    (checked.values::<T>(axis, precision, p)?.into_par_iter())
         .map(|(text, _)| {
             let exact =
                 decimal_to_rational(&text).map_err(|e| CliError::value(option, &text, e))?;
@@ -255,31 +216,27 @@ impl<T: Real + Send + Sync> Grid<T> {
     /// The grid of the command line at precision `p`; every refusal before any work.
     fn new(a: &ContactSweepArgs, p: T::Prec) -> Result<Self, CliError> {
         let precision = &a.precision;
-        let nus: Vec<String> = checked_nus::<T>(&a.nu, a.nu.values::<T>(p), precision, p)?
-            .into_iter()
-            .map(|(t, _)| t)
-            .collect();
-        let (speed_axis, kind, speed_option, speed_what) = a.speeds()?;
-        let speed_values = speed_axis.values::<T>(p);
-        if kind != SpeedKind::Velocity {
-            speed_axis.check_representable(speed_option, speed_what, &speed_values, precision)?;
-        }
-        let (modulus_axis, youngs, modulus_option) = a.moduli()?;
-        let (size_axis, by_load, size_option) = a.sizes()?;
-        let size_what = if by_load { "load P" } else { "approach d0" };
-        let what = ["radius along the motion R1", "radius across the motion R2"];
-        let along = positive_values::<T>(&a.r_along, "--r-along", what[0], precision, p)?;
-        let across = positive_values::<T>(&a.r_across, "--r-across", what[1], precision, p)?;
+        let nus = checked_nus::<T>(&a.nu, precision, p)?;
+        let (speed_axis, kind, speed) = a.speeds()?;
+        let speeds = match kind {
+            SpeedKind::Velocity => speed_axis.values::<T>(p),
+            _ => speed.values::<T>(speed_axis, precision, p)?,
+        };
+        let (modulus_axis, youngs, modulus) = a.moduli()?;
+        let (size_axis, by_load, size) = a.sizes()?;
+        let along = positive_values::<T>(&a.r_along, &R_ALONG, precision, p)?;
+        let across = positive_values::<T>(&a.r_across, &R_ACROSS, precision, p)?;
         for r2 in a.r_across.extremes() {
             for r1 in a.r_along.extremes() {
                 ratio_fits::<T>(r2, r1, p)?;
             }
         }
-        let sizes = positive_values::<T>(size_axis, size_option, size_what, precision, p)?;
+        let sizes = positive_values::<T>(size_axis, size, precision, p)?;
+        let texts = |values: Vec<(String, T)>| values.into_iter().map(|(t, _)| t).collect();
         let mut grid = Grid {
-            nus,
+            nus: texts(nus),
             moduli: Vec::new(),
-            speeds: speed_values.into_iter().map(|(t, _)| t).collect(),
+            speeds: texts(speeds),
             along,
             across,
             sizes,
@@ -290,14 +247,9 @@ impl<T: Real + Send + Sync> Grid<T> {
             by_load,
             density: String::new(),
         };
-        let what = if youngs {
-            "Young's modulus E"
-        } else {
-            "shear modulus mu"
-        };
-        let moduli = positive_values::<T>(modulus_axis, modulus_option, what, precision, p)?;
+        let moduli = positive_values::<T>(modulus_axis, modulus, precision, p)?;
         grid.moduli = moduli.iter().map(|(t, _)| t.clone()).collect();
-        grid.half_spaces(a, moduli, modulus_option, p)?;
+        grid.half_spaces(a, moduli, modulus.option, p)?;
         Ok(grid)
     }
 
@@ -375,8 +327,8 @@ impl<T: Real + Send + Sync> Grid<T> {
         Solid::parse(nu, moduli, p)
     }
 
-    /// The number of points.
-    fn len(&self) -> usize {
+    /// The lengths of the six axes, in the order of the rows.
+    fn lens(&self) -> [usize; 6] {
         [
             self.nus.len(),
             self.moduli.len(),
@@ -385,22 +337,17 @@ impl<T: Real + Send + Sync> Grid<T> {
             self.across.len(),
             self.sizes.len(),
         ]
-        .iter()
-        .product()
+    }
+
+    /// The number of points.
+    fn len(&self) -> usize {
+        self.lens().iter().product()
     }
 
     /// The indices of point `j` on the six axes (the last fastest).
     fn indices(&self, mut j: usize) -> [usize; 6] {
-        let lens = [
-            self.nus.len(),
-            self.moduli.len(),
-            self.speeds.len(),
-            self.along.len(),
-            self.across.len(),
-            self.sizes.len(),
-        ];
         let mut at = [0; 6];
-        for (i, n) in lens.iter().enumerate().rev() {
+        for (i, n) in self.lens().iter().enumerate().rev() {
             at[i] = j % n;
             j /= n;
         }

@@ -14,7 +14,6 @@
 //! accuracy: a few ε for every 0 ≤ M_R < 1 (tests/green.rs).
 
 use super::material::{Material, Speed};
-use super::rayleigh::rayleigh_function_direct;
 use crate::scalar::Real;
 
 /// Constants of Γ and G for one material, precomputed at the working precision.
@@ -27,7 +26,6 @@ pub struct GreenFunction<T: Real> {
     /// 1/(π m1).
     inv_pi_m1: T,
     pi: T,
-    one_minus_nu: T,
 }
 
 impl<T: Real> GreenFunction<T> {
@@ -44,7 +42,6 @@ impl<T: Real> GreenFunction<T> {
             q: r.prod23.clone(),
             inv_pi_m1: (pi.clone() * &r.m1).recip(),
             pi,
-            one_minus_nu: mat.one_minus_nu().clone(),
         }
     }
 
@@ -107,19 +104,6 @@ impl<T: Real> GreenFunction<T> {
     #[inline]
     pub fn g_normalised(&self, t: &T, one_minus_t: &T) -> T {
         self.g_regular(t) * &self.pi / one_minus_t
-    }
-
-    /// Γ by (5)–(6) exactly as printed: M2²√(1 − M1²)/(π R). For comparison only: as V → 0
-    /// it divides two vanishing quantities and loses all digits; at V = 0 it is 0/0.
-    pub fn gamma_direct(&self, v: &Speed<T>) -> T {
-        let p = v.mr().prec();
-        let r = rayleigh_function_direct(&self.gamma, v.m2sq());
-        v.m2sq().clone() * (T::one(p) - v.m1sq()).sqrt() / (self.pi.clone() * r)
-    }
-
-    /// The static value Γ(0) = −(1 − ν)/π.
-    pub fn gamma_static(&self) -> T {
-        -(self.one_minus_nu.clone() / &self.pi)
     }
 
     /// π at the working precision (shared with callers that normalise by it).

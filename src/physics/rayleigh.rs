@@ -93,16 +93,6 @@ pub fn cardano_discriminant<T: Real>(nu: &T) -> T {
     qq.mul_pow2(-1).square() + pp.div_i64(3).powi(3)
 }
 
-/// R of (6) as printed: (2 − x)² − 4√((1 − γx)(1 − x)), x = M2² ≤ 1. Loses all relative
-/// accuracy as x → 0 (both terms tend to 4); see [`crate::physics::rayleigh_function`] for the stable form.
-pub fn rayleigh_function_direct<T: Real>(gamma: &T, x: &T) -> T {
-    let p = x.prec();
-    let one = T::one(p);
-    let a = one.clone() - gamma.clone() * x;
-    let b = one - x;
-    (T::from_i64(2, p) - x).square() - (a * b).sqrt().mul_i64(4)
-}
-
 impl<T: Real> RayleighRoots<T> {
     /// The default: an `f64` seed, Halley polish of m1 in `T::Wide`, deflation, one rounding.
     /// Accuracy ≤ 4 ε (checked over a dense ν grid in `tests/rayleigh.rs`).

@@ -53,6 +53,28 @@ pub enum Moduli<T> {
     },
 }
 
+impl<X> Moduli<X> {
+    /// Each modulus and the density as `given` takes them with their names.
+    fn given(self, given: impl Fn(&'static str, X) -> Result<Given>) -> Result<Moduli<Given>> {
+        Ok(match self {
+            Moduli::Youngs {
+                youngs_modulus,
+                density,
+            } => Moduli::Youngs {
+                youngs_modulus: given(E_NAME, youngs_modulus)?,
+                density: given(RHO_NAME, density)?,
+            },
+            Moduli::Shear {
+                shear_modulus,
+                density,
+            } => Moduli::Shear {
+                shear_modulus: given(MU_NAME, shear_modulus)?,
+                density: given(RHO_NAME, density)?,
+            },
+        })
+    }
+}
+
 /// μ = E/(2(1 + ν)): the shear modulus of an isotropic solid from Young's modulus and
 /// Poisson's ratio; exact over [`rug::Rational`], a few ε otherwise.
 pub fn shear_from_youngs<F: Field>(youngs_modulus: &F, nu: &F) -> F {
@@ -184,22 +206,7 @@ impl<T: Real> Solid<T> {
     /// working precision; [`Error::NotFinite`] for NaN or ∞. μ is correctly rounded, c1, c2
     /// within 1 ε, c_R within 2 ε.
     pub fn new(material: &Material<T>, moduli: Moduli<T>) -> Result<Solid<T>> {
-        let moduli = match moduli {
-            Moduli::Youngs {
-                youngs_modulus,
-                density,
-            } => Moduli::Youngs {
-                youngs_modulus: Given::value(E_NAME, &youngs_modulus)?,
-                density: Given::value(RHO_NAME, &density)?,
-            },
-            Moduli::Shear {
-                shear_modulus,
-                density,
-            } => Moduli::Shear {
-                shear_modulus: Given::value(MU_NAME, &shear_modulus)?,
-                density: Given::value(RHO_NAME, &density)?,
-            },
-        };
+        let moduli = moduli.given(|name, x| Given::value(name, &x))?;
         Solid::from_moduli(material.clone(), exact_value(material.nu()), moduli)
     }
 
@@ -209,22 +216,7 @@ impl<T: Real> Solid<T> {
     /// c_R within 2 ε of the values of the exact inputs.
     pub fn parse(nu: &str, moduli: Moduli<&str>, p: T::Prec) -> Result<Solid<T>> {
         let material = Material::parse(nu, p)?;
-        let moduli = match moduli {
-            Moduli::Youngs {
-                youngs_modulus,
-                density,
-            } => Moduli::Youngs {
-                youngs_modulus: Given::text(E_NAME, youngs_modulus)?,
-                density: Given::text(RHO_NAME, density)?,
-            },
-            Moduli::Shear {
-                shear_modulus,
-                density,
-            } => Moduli::Shear {
-                shear_modulus: Given::text(MU_NAME, shear_modulus)?,
-                density: Given::text(RHO_NAME, density)?,
-            },
-        };
+        let moduli = moduli.given(Given::text)?;
         Solid::from_moduli(material, decimal_to_rational(nu)?, moduli)
     }
 

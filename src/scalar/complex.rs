@@ -35,14 +35,6 @@ impl<T: Real> Complex<T> {
     pub fn zero(p: T::Prec) -> Self {
         Complex::new(T::zero(p), T::zero(p))
     }
-    /// Complex conjugate.
-    pub fn conj(self) -> Self {
-        Complex::new(self.re, -self.im)
-    }
-    /// |z|², exact up to two roundings.
-    pub fn norm_sqr(&self) -> T {
-        self.re.square() + self.im.square()
-    }
     /// |z| without undue overflow.
     pub fn abs(&self) -> T {
         self.re.clone().hypot(&self.im)

@@ -54,11 +54,6 @@ impl MpPrec {
     }
     /// The wide precision guarding double-double: 2·106 + 32 bits.
     pub(super) const DD_WIDE: MpPrec = MpPrec(2 * 106 + 32);
-
-    /// This precision plus `g` guard bits (saturating at the maximum).
-    pub fn with_guard(self, g: u32) -> MpPrec {
-        MpPrec((self.0 + g).min(Self::MAX_BITS))
-    }
 }
 
 static MIXED: AtomicU64 = AtomicU64::new(0);

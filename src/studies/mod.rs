@@ -30,12 +30,13 @@ fn create(path: &Path) -> std::io::Result<std::fs::File> {
     std::fs::File::create(path)
 }
 
-/// Writes `rows` under a header line as CSV to `path`, creating parent directories; an error
-/// names the file. Implements no equation; writes the values as given.
-pub fn write_csv(path: &Path, header: &[&str], rows: &[Vec<String>]) -> std::io::Result<()> {
+/// Writes `rows` under the header line `header` (the column names, comma-separated) as CSV to
+/// `path`, creating parent directories; an error names the file. Implements no equation;
+/// writes the values as given.
+pub fn write_csv(path: &Path, header: &str, rows: &[Vec<String>]) -> std::io::Result<()> {
     let write = || {
         let mut f = std::io::BufWriter::new(create(path)?);
-        writeln!(f, "{}", header.join(","))?;
+        writeln!(f, "{header}")?;
         for r in rows {
             writeln!(f, "{}", r.join(","))?;
         }

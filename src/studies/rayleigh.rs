@@ -30,10 +30,9 @@ pub struct RootError {
 /// The ν of the Rayleigh cubic (6); exact dyadic values.
 pub fn nu_grid() -> Vec<f64> {
     let mut v: Vec<f64> = (1..=300).map(|j| -1.0 + 1.5 * j as f64 / 300.0).collect();
-    let nu_star = 0.263_082_064_883_363_6;
     for k in 1..=40 {
         let d = 10f64.powf(-(k as f64) * 0.35);
-        for c in [nu_star, 0.4] {
+        for c in [NU_STAR, 0.4] {
             v.push(c + d);
             v.push(c - d);
         }
@@ -115,13 +114,7 @@ pub fn run(nus: &[f64]) -> Vec<RootError> {
 /// Charts: one per precision, error (ε, log scale) against ν, for each method and root group.
 /// Draws the errors of the roots of (6); no arithmetic beyond plotting.
 pub fn charts(rows: &[RootError]) -> Vec<(String, String)> {
-    let mut precs: Vec<Precision> = Vec::new();
-    for r in rows {
-        if !precs.contains(&r.precision) {
-            precs.push(r.precision);
-        }
-    }
-    precs
+    precisions(rows)
         .into_iter()
         .map(|prec| {
             let mut chart = Chart::new(
@@ -160,7 +153,6 @@ pub fn charts(rows: &[RootError]) -> Vec<(String, String)> {
 /// (real-branch closed form against the default), and m1 near ν = 2/5 (complex Cardano).
 /// Draws the errors of the roots of (6) near its special points; no arithmetic beyond plotting.
 pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
-    let nu_star = 0.263_082_064_883_363_6;
     let mut merge = Chart::new(
         "m2, m3 near the merge point ν* ≈ 0.26308 (real-branch closed form vs default)",
         "|ν − ν*|",
@@ -173,12 +165,7 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
         "relative error of m1 / ε",
     )
     .log(true, true);
-    let mut precs: Vec<Precision> = Vec::new();
-    for r in rows {
-        if !precs.contains(&r.precision) {
-            precs.push(r.precision);
-        }
-    }
+    let precs = precisions(rows);
     // The errors of one method near the point c, against |ν − c|, sorted.
     let near = |prec: Precision, c: f64, method: &str, pick_m1: bool| -> Vec<(f64, f64)> {
         let mut v: Vec<(f64, f64)> = rows
@@ -198,7 +185,7 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
         let l = prec.label();
         merge.push(Series::new(
             format!("real-branches {l}"),
-            near(prec, nu_star, "real-branches", false),
+            near(prec, NU_STAR, "real-branches", false),
             Style::LineMarkers,
         ));
         p0.push(Series::new(
@@ -211,7 +198,7 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
         let l = prec.label();
         merge.push(Series::new(
             format!("default {l}"),
-            near(prec, nu_star, "default", false),
+            near(prec, NU_STAR, "default", false),
             Style::Dashed,
         ));
         p0.push(Series::new(
@@ -229,25 +216,8 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
 /// The worst error per (precision, method, root group, ν region), as Markdown table rows.
 /// Tabulates the errors of the roots of (6) as measured.
 pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
-    // (name, whether a ν lies in it)
-    type Region = (&'static str, fn(f64) -> bool);
-    let regions: [Region; 4] = [
-        ("whole range", |_| true),
-        ("dist(ν, ν*) < 1e-3", |nu| {
-            (nu - 0.263_082_064_883_363_6).abs() < 1e-3
-        }),
-        ("dist(ν, 0.4) < 1e-3", |nu| (nu - 0.4).abs() < 1e-3),
-        ("ν < −0.99 or ν > 0.499", |nu| {
-            !(-0.99..=0.499).contains(&nu)
-        }),
-    ];
     let mut out = Vec::new();
-    let mut precs: Vec<Precision> = Vec::new();
-    for r in rows {
-        if !precs.contains(&r.precision) {
-            precs.push(r.precision);
-        }
-    }
+    let precs = precisions(rows);
     for prec in precs {
         for method in ["complex-cardano", "real-branches", "default"] {
             let mut cells = [
@@ -258,7 +228,7 @@ pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
                 String::new(),
                 String::new(),
             ];
-            for (k, (_, inside)) in regions.iter().enumerate() {
+            for (k, (_, inside)) in REGIONS.iter().enumerate() {
                 let sel: Vec<&RootError> = rows
                     .iter()
                     .filter(|r| r.precision == prec && r.method == method && inside(r.nu))
@@ -273,13 +243,32 @@ pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
     out
 }
 
-/// Region names for [`summary`]'s columns 3–6.
-pub const SUMMARY_REGIONS: [&str; 4] = [
-    "whole range",
-    "dist(ν, ν*) < 1e-3",
-    "dist(ν, 0.4) < 1e-3",
-    "ν < −0.99 or ν > 0.499",
+/// ν ≈ 0.26308, where the roots m2 and m3 of (6) merge.
+const NU_STAR: f64 = 0.263_082_064_883_363_6;
+
+/// A region of ν: its name and whether a ν lies in it.
+pub type Region = (&'static str, fn(f64) -> bool);
+
+/// The ν regions of [`summary`]'s columns 3–6.
+pub const REGIONS: [Region; 4] = [
+    ("whole range", |_| true),
+    ("dist(ν, ν*) < 1e-3", |nu| (nu - NU_STAR).abs() < 1e-3),
+    ("dist(ν, 0.4) < 1e-3", |nu| (nu - 0.4).abs() < 1e-3),
+    ("ν < −0.99 or ν > 0.499", |nu| {
+        !(-0.99..=0.499).contains(&nu)
+    }),
 ];
+
+/// The precisions of `rows`, in their order of first appearance.
+fn precisions(rows: &[RootError]) -> Vec<Precision> {
+    let mut precs: Vec<Precision> = Vec::new();
+    for r in rows {
+        if !precs.contains(&r.precision) {
+            precs.push(r.precision);
+        }
+    }
+    precs
+}
 
 fn fmt_eps(e: f64) -> String {
     if e < 10.0 {

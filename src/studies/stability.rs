@@ -22,56 +22,58 @@ use rug::Float;
 pub struct DigitMap {
     /// File stem, e.g. `stability_series_f64`.
     pub name: String,
-    /// Chart title.
-    pub title: String,
-    /// Axis labels.
-    pub x_label: String,
-    /// Axis labels.
-    pub y_label: String,
-    /// Cell centres.
-    pub xs: Vec<f64>,
-    /// Cell centres.
-    pub ys: Vec<f64>,
-    /// Log axes.
-    pub log: (bool, bool),
-    /// Digits, `z[j][i]` at `(xs[i], ys[j])`; NaN where the method refused (a typed error).
-    pub z: Vec<Vec<f64>>,
-    /// The precision's full digit count (colour scale top).
-    pub full: f64,
+    /// The digits as a heat map: `z[j][i]` at `(xs[i], ys[j])`, NaN where the method refused
+    /// (a typed error), coloured from 0 to the precision's full digit count.
+    pub map: Heatmap,
 }
 
 impl DigitMap {
-    /// The map as an SVG heat map.
-    /// Draws the digits each method of (6), (37), (40) delivers; no arithmetic beyond plotting.
-    pub fn to_svg(&self) -> String {
-        Heatmap {
-            title: self.title.clone(),
-            x_label: self.x_label.clone(),
-            y_label: self.y_label.clone(),
+    /// The map `name` of the digits `z` over the grid `xs`, `ys` (log axes where `log` says),
+    /// titled `title` with the axis labels `labels`, coloured from 0 to `full` digits.
+    fn new(
+        name: String,
+        title: String,
+        labels: [&str; 2],
+        (xs, ys): (Vec<f64>, Vec<f64>),
+        log: (bool, bool),
+        z: Vec<Vec<f64>>,
+        full: f64,
+    ) -> DigitMap {
+        let map = Heatmap {
+            title,
+            x_label: labels[0].into(),
+            y_label: labels[1].into(),
             z_label: "correct decimal digits".into(),
-            xs: self.xs.clone(),
-            ys: self.ys.clone(),
-            z: self.z.clone(),
-            x_log: self.log.0,
-            y_log: self.log.1,
-            z_range: (0.0, self.full),
+            xs,
+            ys,
+            z,
+            x_log: log.0,
+            y_log: log.1,
+            z_range: (0.0, full),
             missing: "refused".into(),
-        }
-        .to_svg()
+        };
+        DigitMap { name, map }
     }
+
+    /// The precision's full digit count (the colour scale's top).
+    pub fn full(&self) -> f64 {
+        self.map.z_range.1
+    }
+
     /// CSV rows (x, y, digits; `refused` where the method refused).
     /// The digits each method of (6), (37), (40) delivers, as measured.
     pub fn rows(&self) -> Vec<Vec<String>> {
         let mut out = Vec::new();
-        for (j, y) in self.ys.iter().enumerate() {
-            for (i, x) in self.xs.iter().enumerate() {
+        let m = &self.map;
+        for (j, y) in m.ys.iter().enumerate() {
+            for (i, x) in m.xs.iter().enumerate() {
                 out.push(vec![
                     format!("{x:e}"),
                     format!("{y:e}"),
-                    if self.z[j][i].is_nan() {
+                    if m.z[j][i].is_nan() {
                         "refused".to_string()
                     } else {
-                        format!("{:.2}", self.z[j][i])
+                        format!("{:.2}", m.z[j][i])
                     },
                 ]);
             }
@@ -212,20 +214,18 @@ fn integral_map(
                 .collect()
         })
         .collect();
-    DigitMap {
-        name: format!("stability_{name}_{}", label.label()),
-        title: format!(
+    DigitMap::new(
+        format!("stability_{name}_{}", label.label()),
+        format!(
             "{what} at {}: correct digits of I1, I2 (ν = 0.2)",
             label.label()
         ),
-        x_label: "1 − M_R".into(),
-        y_label: "axis ratio k".into(),
-        xs,
-        ys,
-        log: (true, true),
+        ["1 − M_R", "axis ratio k"],
+        (xs, ys),
+        (true, true),
         z,
         full,
-    }
+    )
 }
 
 /// Digits of L_n by the paper's forward recursion over (n, e²), against the stable default at
@@ -261,20 +261,18 @@ fn recursion_map<T: Real>(p: T::Prec, label: Precision, tick: &mut impl FnMut())
                 .collect()
         })
         .collect();
-    DigitMap {
-        name: format!("stability_recursion_{}", label.label()),
-        title: format!(
+    DigitMap::new(
+        format!("stability_recursion_{}", label.label()),
+        format!(
             "Forward recursion (40) for L_n at {}: correct digits",
             label.label()
         ),
-        x_label: "n".into(),
-        y_label: "e² = 1 − k²".into(),
-        xs: ns.iter().map(|&n| n.max(1) as f64).collect(),
-        ys: e2s,
-        log: (true, false),
+        ["n", "e² = 1 − k²"],
+        (ns.iter().map(|&n| n.max(1) as f64).collect(), e2s),
+        (true, false),
         z,
         full,
-    }
+    )
 }
 
 /// All maps at f64 and double-double; `tick` is called after each cell.

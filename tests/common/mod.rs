@@ -2,6 +2,7 @@
 //! macro running a generic check at every precision.
 #![allow(dead_code)]
 
+pub mod printed;
 pub mod roots;
 pub mod tanh_sinh;
 
