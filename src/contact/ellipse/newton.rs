@@ -213,16 +213,19 @@ impl<'a, T: Real> Newton<'a, T> {
                 df,
                 ints: ci.clone(),
             });
-            if let Some(done) = self.hermite_stop(here.as_ref(), was_newton, &scale) {
-                return Ok(done);
-            }
-            if let Some(h) = here {
-                self.hand_on(&h);
-                self.prev = Some(h);
+            if let Some(h) = &here {
+                self.hand_on(h);
             }
             self.lam = next;
+            // Newton's stop first: where both stop here, it costs less than the Hermite stop.
             if let Some(shape) = self.converged(&lam, ci, &step, &age, &scale, was_newton) {
                 return Ok((shape, self.fresh_slope));
+            }
+            if let Some(shape) = self.hermite_stop(here.as_ref(), was_newton, &scale) {
+                return Ok((shape, self.fresh_slope));
+            }
+            if here.is_some() {
+                self.prev = here;
             }
             self.plan_chord(&step, &scale, was_newton, fresh);
             self.last_step = Some(step);
@@ -271,21 +274,18 @@ impl<'a, T: Real> Newton<'a, T> {
 
     /// The Hermite stop of an unseeded stage that may end on any evaluation ([`hermite_root`]).
     #[inline]
-    fn hermite_stop(
-        &self,
-        here: Option<&Point<T>>,
-        newton: bool,
-        scale: &T,
-    ) -> Option<(Shape<T>, Option<Chord<T>>)> {
+    fn hermite_stop(&self, here: Option<&Point<T>>, newton: bool, scale: &T) -> Option<Shape<T>> {
         if !(self.allow_chord && !self.seeded && newton) {
             return None;
         }
-        let (a, b) = (self.prev.as_ref()?, here?);
-        let (root, err, ints) = hermite_root(a, b, &self.eps, scale)?;
-        let slope = Chord::at(b.lam.clone(), b.df.clone(), &b.ints, None);
-        Some((
-            finish(root.clone(), &root, ints, self.ratio, err, self.spent),
-            Some(slope),
+        let (root, err, ints) = hermite_root(self.prev.as_ref()?, here?, &self.eps, scale)?;
+        Some(finish(
+            root.clone(),
+            &root,
+            ints,
+            self.ratio,
+            err,
+            self.spent,
         ))
     }
 
