@@ -347,6 +347,8 @@ pub struct Speed<T: Real> {
     /// The fixed rule's k-independent part at this speed, built on first use and shared by
     /// clones.
     fast: crate::routes::fast::SetupCache<T>,
+    /// The ellipse solve's evaluation at k = 1, built on first use and shared by clones.
+    probe: crate::contact::ProbeCache<T>,
 }
 
 impl<T: Real> Speed<T> {
@@ -374,6 +376,7 @@ impl<T: Real> Speed<T> {
             m2sq,
             m1sq,
             fast: crate::routes::fast::SetupCache::new(),
+            probe: crate::contact::ProbeCache::new(),
         })
     }
 
@@ -381,6 +384,11 @@ impl<T: Real> Speed<T> {
     /// built on first use and kept (shared by the speed's clones).
     pub(crate) fn fast_setup(&self) -> &Result<Box<crate::routes::fast::FastSetup<T>>> {
         self.fast.get(self)
+    }
+
+    /// The ellipse solve's evaluation at k = 1 ([`crate::contact::ProbeCache`]).
+    pub(crate) fn probe_cache(&self) -> &crate::contact::ProbeCache<T> {
+        &self.probe
     }
 
     /// The material this speed belongs to (exactly the one that made it; ν of (4)–(6)).

@@ -31,6 +31,7 @@ mod newton;
 mod seed;
 
 pub(crate) use ladder::ShapeSolver;
+pub(crate) use seed::ProbeCache;
 
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};

@@ -4,9 +4,12 @@
 
 use super::ladder::secant_partner;
 use super::newton::{solve_core, Handed, Newton, Stage};
+use super::{shape_residual, shape_slope};
 use crate::error::Result;
 use crate::routes::evaluate::Evaluator;
+use crate::routes::{AxisRatio, Evaluation, Method};
 use crate::scalar::Real;
+use std::sync::{Arc, OnceLock};
 
 /// The static Hertz ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a
 /// few per cent of the static root down to 10⁻⁶), the k ≫ 1 form ([`static_seed_wide`]) from
@@ -93,9 +96,21 @@ impl<T: Real> Newton<'_, T> {
         if !(self.lam.is_positive() && (self.ratio.to_f64() < PROBE_BELOW_RATIO || near_rayleigh)) {
             return Ok(());
         }
-        let (zero, two) = (T::zero(p), T::from_i64(2, p));
-        let (f, df, _) = self.eval(&zero, None)?;
+        let (zero, two, one) = (T::zero(p), T::from_i64(2, p), T::one(p));
+        let ev = self.evaluator;
+        let kept = ev.speed().probe_cache().slot(ev.method());
+        let ci = match kept.and_then(OnceLock::get) {
+            Some(ci) => ci.clone(),
+            None => {
+                let ci = ev.for_newton(&AxisRatio::new(one.clone())?, true)?;
+                if let Some(slot) = kept {
+                    let _ = slot.set(ci.clone());
+                }
+                ci
+            }
+        };
         self.spent += 1;
+        let (f, df) = (shape_residual(&ci, self.ratio), shape_slope(&one, &ci));
         let newton = (df.is_positive() && df.is_finite()).then(|| -(f.clone() / &df));
         if f.is_negative() {
             if let Some(n) = newton {
@@ -112,6 +127,29 @@ impl<T: Real> Newton<'_, T> {
             self.hi = Some(zero);
         }
         Ok(())
+    }
+}
+
+/// A speed's evaluation at k = 1 for the probe ([`Newton::probe_k_one`]), by method (auto,
+/// fixed): it does not depend on A1/B1, so that the solves at one speed make it once (the
+/// probe still counts as an evaluation, so that a solve's steps do not depend on it). Kept
+/// with the speed and shared by its clones.
+#[derive(Clone, Debug)]
+pub(crate) struct ProbeCache<T: Real>(Arc<[OnceLock<Evaluation<T>>; 2]>);
+
+impl<T: Real> ProbeCache<T> {
+    /// An empty cache.
+    pub(crate) fn new() -> Self {
+        ProbeCache(Arc::new([OnceLock::new(), OnceLock::new()]))
+    }
+
+    /// The slot of `method` (`None`: not kept).
+    fn slot(&self, method: Method) -> Option<&OnceLock<Evaluation<T>>> {
+        match method {
+            Method::Auto => Some(&self.0[0]),
+            Method::Fixed => Some(&self.0[1]),
+            _ => None,
+        }
     }
 }
 
