@@ -77,15 +77,16 @@ impl<T: Real> ShapeSolver<T> {
         self.top.speed()
     }
 
-    /// The evaluator of the `f64` or double-double stage (`None` where the speed does not
-    /// convert).
+    /// The evaluator of the `f64` or double-double stage, on the speed's kept copy at that
+    /// precision (`speed`), whose set-ups serve every solve at this speed; `None` where the
+    /// speed does not convert.
     fn lower<'s, S: Real<Prec = ()>>(
         &'s self,
         cell: &'s OnceCell<Option<Evaluator<S>>>,
+        speed: impl FnOnce(&'s Speed<T>) -> Option<&'s Speed<S>>,
     ) -> Option<&'s Evaluator<S>> {
         cell.get_or_init(|| {
-            let speed = self.top.speed().at::<S>(()).ok()?;
-            Evaluator::new(&speed, newton_options(self.top.method())).ok()
+            Evaluator::new(speed(self.top.speed())?, newton_options(self.top.method())).ok()
         })
         .as_ref()
     }
@@ -107,7 +108,7 @@ impl<T: Real> ShapeSolver<T> {
         }
         let alone = |tol| lowest_stage(&self.top, ratio, allow_chord, tol, None);
         // Each lower stage ends on a Newton step, so that its derivatives serve the next.
-        let Some(Ok((s64, slope64))) = (self.lower(&self.stage64))
+        let Some(Ok((s64, slope64))) = (self.lower(&self.stage64, Speed::at_f64))
             .map(|ev| lowest_stage(ev, &ratio.to_f64(), false, None, guess))
         else {
             return alone(tol);
@@ -202,7 +203,8 @@ impl<T: Real> ShapeSolver<T> {
             ..Stage::from(Some(&seed_dd), None)
         };
         let ratio_dd = Dd::from_float(&ratio.to_float(T::bits(p)), ());
-        let (s, c) = solve_core(self.lower(&self.stage_dd)?, &ratio_dd, stage).ok()?;
+        let (s, c) =
+            solve_core(self.lower(&self.stage_dd, Speed::at_dd)?, &ratio_dd, stage).ok()?;
         let seed = T::from_float(&s.k.to_float(106), p);
         let errs = (T::from_f64(DD_SLOPE, p), T::from_f64(DD_SEED, p));
         let stage = Stage {
