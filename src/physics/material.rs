@@ -10,9 +10,8 @@
 use super::green::GreenFunction;
 use super::rayleigh::RayleighRoots;
 use crate::error::{Error, Result};
-use crate::scalar::{check_finite, decimal_to_rational, short, Dd, Field, Precision, Real};
+use crate::scalar::{check_finite, decimal_to_rational, short, Field, Precision, Real};
 use rug::Rational;
-use std::sync::{Arc, OnceLock};
 
 /// An isotropic elastic half-space, described by Poisson's ratio ν ∈ (−1, 1/2].
 ///
@@ -348,15 +347,9 @@ pub struct Speed<T: Real> {
     /// The fixed rule's k-independent part at this speed, built on first use and shared by
     /// clones.
     fast: crate::routes::fast::SetupCache<T>,
-    /// The ellipse solve's evaluation at k = 1, built on first use and shared by clones.
-    probe: crate::contact::ProbeCache<T>,
-    /// This speed at `f64` and double-double (the ellipse solve's lower ladder stages), made
-    /// on first use and shared by clones, so that their set-ups serve every solve at this speed.
-    lower: LowerSpeeds,
+    /// What the ellipse solves at this speed keep, built on first use and shared by clones.
+    solves: crate::contact::SolveCache<T>,
 }
-
-/// A speed's copies at `f64` and double-double ([`Speed::at_f64`], [`Speed::at_dd`]).
-type LowerSpeeds = Arc<(OnceLock<Option<Speed<f64>>>, OnceLock<Option<Speed<Dd>>>)>;
 
 impl<T: Real> Speed<T> {
     /// From M_R and its gap, both at the working precision (validated by the caller).
@@ -383,8 +376,7 @@ impl<T: Real> Speed<T> {
             m2sq,
             m1sq,
             fast: crate::routes::fast::SetupCache::new(),
-            probe: crate::contact::ProbeCache::new(),
-            lower: LowerSpeeds::default(),
+            solves: crate::contact::SolveCache::new(),
         })
     }
 
@@ -394,20 +386,9 @@ impl<T: Real> Speed<T> {
         self.fast.get(self)
     }
 
-    /// The ellipse solve's evaluation at k = 1 ([`crate::contact::ProbeCache`]).
-    pub(crate) fn probe_cache(&self) -> &crate::contact::ProbeCache<T> {
-        &self.probe
-    }
-
-    /// This speed at `f64` ([`Speed::at`]), made once and kept; `None` where it does not convert.
-    pub(crate) fn at_f64(&self) -> Option<&Speed<f64>> {
-        self.lower.0.get_or_init(|| self.at(()).ok()).as_ref()
-    }
-
-    /// This speed at double-double ([`Speed::at`]), made once and kept; `None` where it does not
-    /// convert.
-    pub(crate) fn at_dd(&self) -> Option<&Speed<Dd>> {
-        self.lower.1.get_or_init(|| self.at(()).ok()).as_ref()
+    /// What the ellipse solves at this speed keep ([`crate::contact::SolveCache`]).
+    pub(crate) fn solve_cache(&self) -> &crate::contact::SolveCache<T> {
+        &self.solves
     }
 
     /// The material this speed belongs to (exactly the one that made it; ν of (4)–(6)).

@@ -13,6 +13,7 @@ use crate::routes::evaluate::{Evaluator, IntegralOptions};
 use crate::routes::{Evaluation, Method};
 use crate::scalar::{Dd, Real};
 use std::cell::OnceCell;
+use std::sync::{Arc, OnceLock};
 
 /// The ellipse solve for one speed and method: the evaluators of the ladder's stages, each
 /// built on first use and kept, so that their set-ups serve every solve at this speed.
@@ -108,7 +109,7 @@ impl<T: Real> ShapeSolver<T> {
         }
         let alone = |tol| lowest_stage(&self.top, ratio, allow_chord, tol, None);
         // Each lower stage ends on a Newton step, so that its derivatives serve the next.
-        let Some(Ok((s64, slope64))) = (self.lower(&self.stage64, Speed::at_f64))
+        let Some(Ok((s64, slope64))) = (self.lower(&self.stage64, |s| s.solve_cache().at_f64(s)))
             .map(|ev| lowest_stage(ev, &ratio.to_f64(), false, None, guess))
         else {
             return alone(tol);
@@ -203,8 +204,12 @@ impl<T: Real> ShapeSolver<T> {
             ..Stage::from(Some(&seed_dd), None)
         };
         let ratio_dd = Dd::from_float(&ratio.to_float(T::bits(p)), ());
-        let (s, c) =
-            solve_core(self.lower(&self.stage_dd, Speed::at_dd)?, &ratio_dd, stage).ok()?;
+        let (s, c) = solve_core(
+            self.lower(&self.stage_dd, |s| s.solve_cache().at_dd(s))?,
+            &ratio_dd,
+            stage,
+        )
+        .ok()?;
         let seed = T::from_float(&s.k.to_float(106), p);
         let errs = (T::from_f64(DD_SLOPE, p), T::from_f64(DD_SEED, p));
         let stage = Stage {
@@ -213,6 +218,51 @@ impl<T: Real> ShapeSolver<T> {
             ..Stage::from(Some(&seed), tol.clone())
         };
         Some(solve_core(&self.top, ratio, stage))
+    }
+}
+
+/// What the ellipse solves at one speed keep, with the speed and shared by its clones: the speed
+/// at `f64` and double-double (the lower ladder stages, whose set-ups then serve every solve)
+/// and the k = 1 probe's evaluation by method (auto, fixed), which does not depend on A1/B1
+/// ([`Newton::probe_k_one`]; it still counts as an evaluation, so that a solve's steps and bits
+/// do not depend on whether it was kept).
+#[derive(Clone, Debug)]
+pub(crate) struct SolveCache<T: Real>(Arc<Kept<T>>);
+
+#[derive(Debug)]
+struct Kept<T: Real> {
+    at_f64: OnceLock<Option<Speed<f64>>>,
+    at_dd: OnceLock<Option<Speed<Dd>>>,
+    probe: [OnceLock<Evaluation<T>>; 2],
+}
+
+impl<T: Real> SolveCache<T> {
+    /// An empty cache.
+    pub(crate) fn new() -> Self {
+        SolveCache(Arc::new(Kept {
+            at_f64: OnceLock::new(),
+            at_dd: OnceLock::new(),
+            probe: [OnceLock::new(), OnceLock::new()],
+        }))
+    }
+
+    /// `speed` (the one holding this cache) at `f64`; `None` where it does not convert.
+    fn at_f64(&self, speed: &Speed<T>) -> Option<&Speed<f64>> {
+        self.0.at_f64.get_or_init(|| speed.at(()).ok()).as_ref()
+    }
+
+    /// `speed` at double-double; `None` where it does not convert.
+    fn at_dd(&self, speed: &Speed<T>) -> Option<&Speed<Dd>> {
+        self.0.at_dd.get_or_init(|| speed.at(()).ok()).as_ref()
+    }
+
+    /// The probe's slot for `method` (`None`: not kept).
+    pub(super) fn probe(&self, method: Method) -> Option<&OnceLock<Evaluation<T>>> {
+        match method {
+            Method::Auto => Some(&self.0.probe[0]),
+            Method::Fixed => Some(&self.0.probe[1]),
+            _ => None,
+        }
     }
 }
 

@@ -10,14 +10,15 @@
 //!
 //! 1. **Check the inputs** (this file: [`check_ratio`], `checked_options`), before any work.
 //! 2. **Seed** (`seed.rs`): the static Hertz ellipse in closed form, or a neighbour's root;
-//!    unseeded above k = 1, one evaluation at k = 1 tells the root's side.
+//!    unseeded above k = 1, one evaluation at k = 1 (kept with the speed) tells the root's side.
 //! 3. **Safeguarded Newton** (`newton.rs`) on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, at the
 //!    ladder's lowest stage (`f64`): F increases with k (checked over ν, M_R and
 //!    10⁻⁶ ≤ A1/B1 ≤ 10⁶ in `tests/contact.rs`), so a step leaving the bracket of known signs
 //!    is replaced by bisection; the last evaluation skips the k-derivatives (a chord step).
 //! 4. **Lift through the precision ladder** (`ladder.rs`): the root and F′ of the stage below
 //!    (`f64`, double-double above 106 bits, p/2 + 32 bits above 1024) start the working
-//!    precision, which takes chord steps with that F′ — at double-double one Halley step.
+//!    precision, which takes chord steps with that F′ — at double-double one Halley step. The
+//!    lower stages' speeds are kept with the speed ([`SolveCache`]), and with them their set-ups.
 //! 5. **Final step and error bound** (`finish.rs`): I1, I2 carried to the root, a Newton step in
 //!    k itself where |ln k| is large, and the bound on k.
 //!
@@ -30,8 +31,7 @@ mod ladder;
 mod newton;
 mod seed;
 
-pub(crate) use ladder::ShapeSolver;
-pub(crate) use seed::ProbeCache;
+pub(crate) use ladder::{ShapeSolver, SolveCache};
 
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};

@@ -7,9 +7,9 @@ use super::newton::{solve_core, Handed, Newton, Stage};
 use super::{shape_residual, shape_slope};
 use crate::error::Result;
 use crate::routes::evaluate::Evaluator;
-use crate::routes::{AxisRatio, Evaluation, Method};
+use crate::routes::AxisRatio;
 use crate::scalar::Real;
-use std::sync::{Arc, OnceLock};
+use std::sync::OnceLock;
 
 /// The static Hertz ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a
 /// few per cent of the static root down to 10⁻⁶), the k ≫ 1 form ([`static_seed_wide`]) from
@@ -98,7 +98,7 @@ impl<T: Real> Newton<'_, T> {
         }
         let (zero, two, one) = (T::zero(p), T::from_i64(2, p), T::one(p));
         let ev = self.evaluator;
-        let kept = ev.speed().probe_cache().slot(ev.method());
+        let kept = ev.speed().solve_cache().probe(ev.method());
         let ci = match kept.and_then(OnceLock::get) {
             Some(ci) => ci.clone(),
             None => {
@@ -127,29 +127,6 @@ impl<T: Real> Newton<'_, T> {
             self.hi = Some(zero);
         }
         Ok(())
-    }
-}
-
-/// A speed's evaluation at k = 1 for the probe ([`Newton::probe_k_one`]), by method (auto,
-/// fixed): it does not depend on A1/B1, so that the solves at one speed make it once (the
-/// probe still counts as an evaluation, so that a solve's steps do not depend on it). Kept
-/// with the speed and shared by its clones.
-#[derive(Clone, Debug)]
-pub(crate) struct ProbeCache<T: Real>(Arc<[OnceLock<Evaluation<T>>; 2]>);
-
-impl<T: Real> ProbeCache<T> {
-    /// An empty cache.
-    pub(crate) fn new() -> Self {
-        ProbeCache(Arc::new([OnceLock::new(), OnceLock::new()]))
-    }
-
-    /// The slot of `method` (`None`: not kept).
-    fn slot(&self, method: Method) -> Option<&OnceLock<Evaluation<T>>> {
-        match method {
-            Method::Auto => Some(&self.0[0]),
-            Method::Fixed => Some(&self.0[1]),
-            _ => None,
-        }
     }
 }
 
