@@ -11,5 +11,5 @@ mod ellipse;
 mod solution;
 
 pub use ellipse::{check_ratio, solve_ellipse, Ellipse, MajorAxis, Options, RATIO_RANGE};
-pub(crate) use ellipse::{checked_options, ShapeSolver};
+pub(crate) use ellipse::{checked_options, ShapeSolver, SolveCache};
 pub use solution::{ContactProblem, ContactSolution, Loading};

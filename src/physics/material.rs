@@ -347,6 +347,8 @@ pub struct Speed<T: Real> {
     /// The fixed rule's k-independent part at this speed, built on first use and shared by
     /// clones.
     fast: crate::routes::fast::SetupCache<T>,
+    /// What the ellipse solves at this speed keep, built on first use and shared by clones.
+    solves: crate::contact::SolveCache<T>,
 }
 
 impl<T: Real> Speed<T> {
@@ -374,6 +376,7 @@ impl<T: Real> Speed<T> {
             m2sq,
             m1sq,
             fast: crate::routes::fast::SetupCache::new(),
+            solves: crate::contact::SolveCache::new(),
         })
     }
 
@@ -381,6 +384,11 @@ impl<T: Real> Speed<T> {
     /// built on first use and kept (shared by the speed's clones).
     pub(crate) fn fast_setup(&self) -> &Result<Box<crate::routes::fast::FastSetup<T>>> {
         self.fast.get(self)
+    }
+
+    /// What the ellipse solves at this speed keep ([`crate::contact::SolveCache`]).
+    pub(crate) fn solve_cache(&self) -> &crate::contact::SolveCache<T> {
+        &self.solves
     }
 
     /// The material this speed belongs to (exactly the one that made it; ν of (4)–(6)).

@@ -1,6 +1,6 @@
-//! Stage 4 of the ellipse solve, the precision ladder: the root at `f64` (and double-double,
-//! and about half the working precision above 1024 bits) lifted to the working precision by
-//! chord steps with the lower stage's F′, or at double-double one Halley step.
+//! Stage 4: the precision ladder — the root at `f64` (then double-double above 106 bits, and
+//! about half the working precision above 1024 bits) lifted to the working precision by chord
+//! steps with the stage below's F′, or at double-double by one Halley step.
 
 use super::finish::{carry_cubic, finish};
 use super::newton::{slope_at, solve_core, Chord, Handed, Newton, Stage};
@@ -13,16 +13,15 @@ use crate::routes::evaluate::{Evaluator, IntegralOptions};
 use crate::routes::{Evaluation, Method};
 use crate::scalar::{Dd, Real};
 use std::cell::OnceCell;
+use std::sync::{Arc, OnceLock};
 
-/// The ellipse solve for one speed and method: the evaluators of the precision ladder's
-/// stages, each built on first use and kept, so that the fixed rules' set-ups serve every
-/// solve at this speed (a sweep's points).
+/// The ellipse solve for one speed and method: the evaluators of the ladder's stages, each
+/// built on first use and kept, so that their set-ups serve every solve at this speed.
 pub(crate) struct ShapeSolver<T: Real + 'static> {
     top: Evaluator<T>,
     stage64: OnceCell<Option<Evaluator<f64>>>,
     stage_dd: OnceCell<Option<Evaluator<Dd>>>,
-    /// Above [`MID_ABOVE_BITS`], the solver at about half the working precision
-    /// ([`ShapeSolver::via_mid`]).
+    /// Above [`MID_ABOVE_BITS`], the solver at about half the working precision.
     stage_mid: OnceCell<Option<Box<ShapeSolver<T>>>>,
 }
 
@@ -37,12 +36,13 @@ impl<T: Real> ShapeSolver<T> {
         })
     }
 
-    /// Solves (33) at `ratio` to the tolerance `tol` (`None`: the working precision's floor)
-    /// by the precision ladder ([`ShapeSolver::ladder`]), whose lowest stage starts from the
-    /// `seed` (the caller's) or else the `guess` (a neighbouring point's root), rounded to
-    /// `f64`, when it converges from there within [`GUESS_EVALUATIONS`], and from the static
-    /// ellipse otherwise: a far seed costs a few `f64` evaluations, never a search at the
-    /// working precision.
+    /// Solves (33) at `ratio` to `tol` (`None`: the working precision's floor) by the ladder,
+    /// whose lowest stage starts from the `seed` (the caller's) or the `guess` (a neighbour's
+    /// root), rounded to `f64`, when it converges from there within
+    /// [`super::seed::GUESS_EVALUATIONS`], else from the static ellipse. A bound that misses
+    /// the tolerance (or 1/64 without one: a stop from a far seed at |ln k| ≫ 1) is refined
+    /// from its own root at the working precision; one still missing it is
+    /// [`Error::Unreachable`].
     #[inline]
     pub(crate) fn solve(
         &self,
@@ -52,30 +52,14 @@ impl<T: Real> ShapeSolver<T> {
         guess: Option<f64>,
     ) -> Result<Shape<T>> {
         let guess = seed.map(|s| s.to_f64()).or(guess);
-        let shape = self.ladder(ratio, tol.clone(), guess)?;
-        self.meet_tolerance(ratio, shape, tol)
-    }
-
-    /// A shape whose bound misses the tolerance (or, without one, exceeds 1/64) — a stop from a
-    /// far seed at |ln k| ≫ 1, where the stopping rules' step relative to ln k is large in k —
-    /// is refined from its own root at the working precision's floor; a bound still missing it
-    /// is [`Error::Unreachable`].
-    pub(super) fn meet_tolerance(
-        &self,
-        ratio: &T,
-        shape: Shape<T>,
-        tol: Option<T>,
-    ) -> Result<Shape<T>> {
-        let p = ratio.prec();
-        let wanted = tol.clone().unwrap_or_else(|| T::from_ratio(1, 64, p));
+        let shape = self.climb(ratio, tol.clone(), guess, true)?.0;
+        let wanted = tol
+            .clone()
+            .unwrap_or_else(|| T::from_ratio(1, 64, ratio.prec()));
         if shape.error_estimate <= wanted {
             return Ok(shape);
         }
-        let stage = Stage {
-            seed: Some(&shape.k),
-            ..Stage::final_stage()
-        };
-        let refined = solve_core(&self.top, ratio, stage)?.0;
+        let refined = solve_core(&self.top, ratio, Stage::from(Some(&shape.k), None))?.0;
         if refined.error_estimate <= wanted {
             return Ok(refined);
         }
@@ -94,22 +78,196 @@ impl<T: Real> ShapeSolver<T> {
         self.top.speed()
     }
 
-    /// The evaluator of the ladder's `f64` or double-double stage (`None` where the speed does
-    /// not convert).
-    pub(super) fn lower<'s, S: Real<Prec = ()>>(
+    /// The evaluator of the `f64` or double-double stage, on the speed's kept copy at that
+    /// precision (`speed`), whose set-ups serve every solve at this speed; `None` where the
+    /// speed does not convert.
+    fn lower<'s, S: Real<Prec = ()>>(
         &'s self,
         cell: &'s OnceCell<Option<Evaluator<S>>>,
+        speed: impl FnOnce(&'s Speed<T>) -> Option<&'s Speed<S>>,
     ) -> Option<&'s Evaluator<S>> {
         cell.get_or_init(|| {
-            let speed = self.top.speed().at::<S>(()).ok()?;
-            Evaluator::new(&speed, newton_options(self.top.method())).ok()
+            Evaluator::new(speed(self.top.speed())?, newton_options(self.top.method())).ok()
         })
         .as_ref()
+    }
+
+    /// The ladder: at `f64` the plain solve; above, the `f64` stage (inputs rounded to `f64`,
+    /// the speed by its gap), above 106 bits the double-double stage ([`Self::via_dd`]), above
+    /// 1024 bits the half-precision stage instead ([`Self::via_mid`]); then the working
+    /// precision from the last stage's root and F′ — one Halley step or two chord steps at
+    /// double-double, a few chord steps above. If a lower stage fails, the working precision
+    /// solves alone. `allow_chord`: whether the last evaluation may skip the k-derivatives
+    /// (false for a stage that hands them on).
+    fn climb(&self, ratio: &T, tol: Option<T>, guess: Option<f64>, allow_chord: bool) -> Handed<T> {
+        let p = ratio.prec();
+        if T::bits(p) <= 53 {
+            return lowest_stage(&self.top, ratio, allow_chord, tol, guess);
+        }
+        if let Some(done) = self.via_mid(ratio, &tol, guess, allow_chord) {
+            return done;
+        }
+        let alone = |tol| lowest_stage(&self.top, ratio, allow_chord, tol, None);
+        // Each lower stage ends on a Newton step, so that its derivatives serve the next.
+        let Some(Ok((s64, slope64))) = (self.lower(&self.stage64, |s| s.solve_cache().at_f64(s)))
+            .map(|ev| lowest_stage(ev, &ratio.to_f64(), false, None, guess))
+        else {
+            return alone(tol);
+        };
+        if T::bits(p) > 106 {
+            if let Some(shape) = self.via_dd(ratio, &tol, s64.k, slope64.as_ref(), allow_chord) {
+                return shape;
+            }
+        }
+        // The Halley step, unless rounding the inputs to f64 moved the root by more than
+        // ~1e-15 (k's sensitivity to the gap's relative change is about 1/4), where two chord
+        // steps are cheaper than the attempt and a Newton step.
+        let moved = |x: &T| {
+            let x64 = x.to_f64();
+            (x.clone() - T::from_f64(x64, p)).abs().to_f64() / x64.abs().max(f64::MIN_POSITIVE)
+        };
+        let speed = self.top.speed();
+        let perturbation = moved(ratio) + moved(speed.material().nu()) + moved(speed.gap());
+        let seed = T::from_f64(s64.k, p);
+        let errs = (T::from_f64(F64_SLOPE, p), T::from_f64(F64_SEED, p));
+        let stage = Stage {
+            seed_slope: slope64.as_ref().map(|c| lift(c, p, errs)),
+            halley: T::bits(p) <= 106 && perturbation <= 1e-15,
+            allow_chord,
+            ..Stage::from(Some(&seed), tol)
+        };
+        solve_core(&self.top, ratio, stage)
+    }
+
+    /// Above [`MID_ABOVE_BITS`] the stage below p bits is the same solve at
+    /// m = p/2 + [`MID_GUARD_BITS`] bits: its root and F′ (~2^-m each) leave one or two chord
+    /// steps at p instead of Newton's steps from the double-double root. Its root is bounded by
+    /// its estimate and 2^(11−m), its F′ by 2^(16−m) (the double-double margins); a stage that
+    /// ended on a chord step gets its derivatives by one more evaluation at its precision.
+    /// `None` (the ladder goes on from `f64`) at or below 1024 bits, at fixed precision, or
+    /// when that stage fails.
+    fn via_mid(
+        &self,
+        ratio: &T,
+        tol: &Option<T>,
+        guess: Option<f64>,
+        allow_chord: bool,
+    ) -> Option<Handed<T>> {
+        let p = ratio.prec();
+        let bits = T::bits(p);
+        if bits <= MID_ABOVE_BITS {
+            return None;
+        }
+        let pm = T::lower_prec(p, bits / 2 + MID_GUARD_BITS)?;
+        let mid = (self.stage_mid)
+            .get_or_init(|| {
+                let speed = self.top.speed().at::<T>(pm).ok()?;
+                ShapeSolver::new(&speed, self.top.method())
+                    .ok()
+                    .map(Box::new)
+            })
+            .as_deref()?;
+        let ratio_m = ratio.with_prec(pm);
+        let (s, c) = mid.climb(&ratio_m, None, guess, false).ok()?;
+        let c = c.or_else(|| slope_at(&mid.top, &ratio_m, s.k.clone().ln()))?;
+        let (m, one) = (T::bits(pm) as i32, T::one(p));
+        let seed_err = s
+            .error_estimate
+            .with_prec(p)
+            .max_of(one.clone().mul_pow2(11 - m));
+        let seed = s.k.with_prec(p);
+        let stage = Stage {
+            seed_slope: Some(lift(&c, p, (one.mul_pow2(16 - m), seed_err))),
+            allow_chord,
+            ..Stage::from(Some(&seed), tol.clone())
+        };
+        Some(solve_core(&self.top, ratio, stage))
+    }
+
+    /// The double-double stage from the `f64` root, then the working precision from its root
+    /// (its root off by ~2^-100: one Newton step fewer); `None` when the double-double stage
+    /// fails.
+    fn via_dd(
+        &self,
+        ratio: &T,
+        tol: &Option<T>,
+        k64: f64,
+        slope64: Option<&Chord<f64>>,
+        allow_chord: bool,
+    ) -> Option<Handed<T>> {
+        let p = ratio.prec();
+        let seed_dd = Dd::from_f64(k64, ());
+        let errs = (Dd::from_f64(F64_SLOPE, ()), Dd::from_f64(F64_SEED, ()));
+        let stage = Stage {
+            seed_slope: slope64.map(|c| lift(c, (), errs)),
+            allow_chord: false,
+            ..Stage::from(Some(&seed_dd), None)
+        };
+        let ratio_dd = Dd::from_float(&ratio.to_float(T::bits(p)), ());
+        let (s, c) = solve_core(
+            self.lower(&self.stage_dd, |s| s.solve_cache().at_dd(s))?,
+            &ratio_dd,
+            stage,
+        )
+        .ok()?;
+        let seed = T::from_float(&s.k.to_float(106), p);
+        let errs = (T::from_f64(DD_SLOPE, p), T::from_f64(DD_SEED, p));
+        let stage = Stage {
+            seed_slope: c.as_ref().map(|c| lift(c, p, errs)),
+            allow_chord,
+            ..Stage::from(Some(&seed), tol.clone())
+        };
+        Some(solve_core(&self.top, ratio, stage))
+    }
+}
+
+/// What the ellipse solves at one speed keep, with the speed and shared by its clones: the speed
+/// at `f64` and double-double (the lower ladder stages, whose set-ups then serve every solve)
+/// and the k = 1 probe's evaluation by method (auto, fixed), which does not depend on A1/B1
+/// ([`Newton::probe_k_one`]; it still counts as an evaluation, so that a solve's steps and bits
+/// do not depend on whether it was kept).
+#[derive(Clone, Debug)]
+pub(crate) struct SolveCache<T: Real>(Arc<Kept<T>>);
+
+#[derive(Debug)]
+struct Kept<T: Real> {
+    at_f64: OnceLock<Option<Speed<f64>>>,
+    at_dd: OnceLock<Option<Speed<Dd>>>,
+    probe: [OnceLock<Evaluation<T>>; 2],
+}
+
+impl<T: Real> SolveCache<T> {
+    /// An empty cache.
+    pub(crate) fn new() -> Self {
+        SolveCache(Arc::new(Kept {
+            at_f64: OnceLock::new(),
+            at_dd: OnceLock::new(),
+            probe: [OnceLock::new(), OnceLock::new()],
+        }))
+    }
+
+    /// `speed` (the one holding this cache) at `f64`; `None` where it does not convert.
+    fn at_f64(&self, speed: &Speed<T>) -> Option<&Speed<f64>> {
+        self.0.at_f64.get_or_init(|| speed.at(()).ok()).as_ref()
+    }
+
+    /// `speed` at double-double; `None` where it does not convert.
+    fn at_dd(&self, speed: &Speed<T>) -> Option<&Speed<Dd>> {
+        self.0.at_dd.get_or_init(|| speed.at(()).ok()).as_ref()
+    }
+
+    /// The probe's slot for `method` (`None`: not kept).
+    pub(super) fn probe(&self, method: Method) -> Option<&OnceLock<Evaluation<T>>> {
+        match method {
+            Method::Auto => Some(&self.0.probe[0]),
+            Method::Fixed => Some(&self.0.probe[1]),
+            _ => None,
+        }
     }
 }
 
 /// The integral options of a Newton iterate: the method, with k-derivatives.
-pub(super) fn newton_options(method: Method) -> IntegralOptions {
+fn newton_options(method: Method) -> IntegralOptions {
     IntegralOptions {
         method,
         derivatives: true,
@@ -117,17 +275,52 @@ pub(super) fn newton_options(method: Method) -> IntegralOptions {
     }
 }
 
-/// The distance in λ = ln k of [`secant_partner`]'s evaluation: about √r for derivatives with
-/// relative error r ~ 2⁻⁴⁰, where the secant's rounding and truncation errors balance.
-pub(super) const PARTNER_STEP: f64 = 9.5367431640625e-7; // 2^-20
+/// Bounds on a lower stage's F′ (relative; a margin over the fixed rules' measured
+/// derivative errors) and on its root's error in λ (`docs/calibration.md`).
+const F64_SLOPE: f64 = 9.094947017729282e-13; // 2^-40
+const F64_SEED: f64 = 3.552713678800501e-15; // 2^-48
+const DD_SLOPE: f64 = 8.077935669463161e-28; // 2^-90
+const DD_SEED: f64 = 2.524354896707238e-29; // 2^-95
 
-/// A stage started from a neighbour's root may converge in one evaluation, leaving its
-/// derivatives without the earlier iterate that the next stage's Halley step takes F″ from
-/// ([`f_second`]): one more evaluation with derivatives at [`PARTNER_STEP`] from its root
-/// supplies it (at the stage's own, lower, precision). Unchanged if that evaluation fails.
+/// Above this precision the stage below is the solve at about half of it ([`ShapeSolver::via_mid`]).
+const MID_ABOVE_BITS: u32 = 1024;
+
+/// Bits of the half-precision stage beyond half: a chord step's error ~2^-2m, 64 times that
+/// ≤ 2^-p with ~40 bits to spare.
+const MID_GUARD_BITS: u32 = 32;
+
+/// A stage's derivatives carried to the next stage's precision `p`, with the bounds
+/// `(slope_err, seed_err)` on its F′ and root.
+fn lift<S: Real, T: Real>(
+    c: &Chord<S>,
+    p: T::Prec,
+    (slope_err, seed_err): (T, T),
+) -> (Chord<T>, T) {
+    let up = |x: &S| T::from_float(&x.to_float(S::bits(x.prec())), p);
+    let before = c.before.as_ref().map(|b| [0, 1, 2, 3].map(|i| up(&b[i])));
+    let (lam, di1, di2, df) = (up(&c.lam), up(&c.di1), up(&c.di2), up(&c.df));
+    (
+        Chord {
+            lam,
+            di1,
+            di2,
+            df,
+            rel_err: slope_err,
+            before,
+        },
+        seed_err,
+    )
+}
+
+/// The distance in λ of [`secant_partner`]'s evaluation: √r for derivatives of relative error
+/// r ~ 2⁻⁴⁰, where the secant's rounding and truncation errors balance.
+const PARTNER_STEP: f64 = 9.5367431640625e-7; // 2^-20
+
+/// A guessed stage that converged in one evaluation leaves no earlier iterate for the next
+/// stage's secant F″ ([`f_second`]): one more evaluation with derivatives at [`PARTNER_STEP`]
+/// from its root supplies it. Unchanged if that evaluation fails.
 pub(super) fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Chord<S> {
-    let p = ratio.prec();
-    let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, p);
+    let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, ratio.prec());
     if let Some(b) = slope_at(ev, ratio, lam) {
         c.before = Some([b.lam, b.df, b.di1, b.di2]);
     }
@@ -136,10 +329,7 @@ pub(super) fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord
 
 impl<T: Real> Newton<'_, T> {
     /// The double-double stage's Halley step from the `f64` root ([`halley_from_f64`]): one
-    /// evaluation with derivatives. `None` (and a Newton step taken instead) when its bounds do
-    /// not reach ε — near the Rayleigh speed, where the `f64` stage solved inputs rounded to
-    /// `f64`.
-    #[inline]
+    /// evaluation with derivatives; `None` and a Newton step instead when its bounds miss ε.
     pub(super) fn halley_step(&mut self, c: &Chord<T>) -> Result<Option<Shape<T>>> {
         let lam = self.lam.clone();
         let (f, df, ci) = self.eval(&lam, None)?;
@@ -162,9 +352,10 @@ impl<T: Real> Newton<'_, T> {
     }
 }
 
-/// F″ at λ0 and its error bound, the first part of [`curvature`] (which needs no evaluation at
-/// λ0, so that the ladder decides before evaluating whether the Halley step can work).
-#[inline]
+/// F″ at λ0 by the secant between the lower stage's last two iterates (`c`, `c.before`) and
+/// its bound 2r|F′|/D + (1 + |F″|)(D + |λ0 − λ_c|) (rounding over their distance D, the
+/// truncation with |F‴| ≤ 1 + |F″|); `None` when the bound exceeds 0.1. Needs no evaluation
+/// at λ0, so that a stage decides before evaluating whether the Halley step can work.
 pub(super) fn f_second<T: Real>(c: &Chord<T>, lam0: &T) -> Option<(f64, f64)> {
     let b = c.before.as_ref()?;
     let (la, lb) = (b[0].to_f64(), c.lam.to_f64());
@@ -178,15 +369,9 @@ pub(super) fn f_second<T: Real>(c: &Chord<T>, lam0: &T) -> Option<(f64, f64)> {
     (f2_err.is_finite() && f2_err <= 0.1).then_some((f2, f2_err))
 }
 
-/// F″ and d²I1/dk², d²I2/dk² at λ0 by secants between the lower-precision stage's last two
-/// iterates with derivatives (`c` and `c.before`, F′ and I′ with relative error r = `c.rel_err`),
-/// with bounds on their errors: 2r|F′|/D + (1 + |F″|)(D + |λ0 − λ_c|) for F″ (rounding over the
-/// distance D between the iterates, the secant's truncation with |F‴| ≤ 1 + |F″| assumed), and
-/// 2r|I′|/Δk + 100(I/k³)(Δk + |k0 − k_c|) for I″ (|k³I‴| ≤ 100 I assumed: 60 for
-/// I1 ∝ ln k/k³; `ints` gives I at λ0). `None` when the F″ bound exceeds 0.1 (D too small for the
-/// rounding or too large for the truncation).
-#[inline]
-pub(super) fn curvature<T: Real>(
+/// F″, d²I1/dk², d²I2/dk² at λ0 by secants ([`f_second`]) with their bounds; for I″,
+/// 2r|I′|/Δk + 100(I/k³)(Δk + |k0 − k_c|) (|k³I‴| ≤ 100 I assumed: 60 for I1 ∝ ln k/k³).
+fn curvature<T: Real>(
     c: &Chord<T>,
     lam0: &T,
     ints: &Evaluation<T>,
@@ -208,14 +393,11 @@ pub(super) fn curvature<T: Real>(
     ))
 }
 
-/// The double-double step of the ladder straight from the `f64` stage: with F, F′ and the
-/// integrals' k-derivatives at the `f64` root λ0 (this precision) and F″, I″ from the `f64`
-/// stage ([`curvature`]), a Halley step h = δ − F″δ²/(2F′) (δ = −F/F′, error ≤
-/// (|ΔF″|/2F′)δ² + |δ|³) and I1, I2 carried to second order (relative error ≤ ½|ΔI″|dk²/I).
-/// Taken when the first bound is ≤ ε·scale/4 and the second ≤ ε: one evaluation with
-/// derivatives instead of two chord evaluations without.
-#[inline]
-pub(super) fn halley_from_f64<T: Real>(
+/// The double-double step straight from the `f64` root λ0: with F, F′, I′ at λ0 and F″, I″
+/// from the `f64` stage ([`curvature`]), the Halley step h = δ − F″δ²/(2F′) (δ = −F/F′; error
+/// ≤ (|ΔF″|/2F′)δ² + |δ|³, required ≤ ε·scale/4) and I1, I2 carried to second order (relative
+/// error ≤ ½|ΔI″|dk²/I, required ≤ ε): one evaluation with derivatives instead of two without.
+fn halley_from_f64<T: Real>(
     lam: &T,
     f: &T,
     df: &T,
@@ -261,214 +443,3 @@ pub(super) fn halley_from_f64<T: Real>(
     };
     Some((lam.clone() + h, T::from_f64(err, p), ints))
 }
-
-impl<T: Real> ShapeSolver<T> {
-    /// The precision ladder (module docs): solves at `f64` first (inputs rounded to `f64`, the speed by its gap),
-    /// above 106 bits then at double-double, above 1024 bits at half the precision
-    /// ([`ShapeSolver::via_mid`]), and refines the root at the working precision of `T`
-    /// from the last stage's root and derivative — one Halley step or two chord steps at
-    /// double-double, two chord steps at 256 bits, three at 512 — a few high-precision
-    /// evaluations of the integrals instead of a search. At `f64` it is the plain solve. If a lower
-    /// stage fails (inputs beyond its range), the working precision solves on its own from the
-    /// static seed. The `f64` stage starts from `guess` when given. `tol`: the tolerance on k at
-    /// the working precision (`None`: its floor).
-    #[inline]
-    pub(super) fn ladder(&self, ratio: &T, tol: Option<T>, guess: Option<f64>) -> Result<Shape<T>> {
-        self.climb(ratio, tol, guess, true).map(|(s, _)| s)
-    }
-
-    /// The ladder of [`ShapeSolver::ladder`], returning the working precision's last
-    /// derivatives too; `allow_chord`: whether its last evaluation may skip the k-derivatives
-    /// (false for a stage that hands them on, [`ShapeSolver::via_mid`]).
-    #[inline]
-    pub(super) fn climb(
-        &self,
-        ratio: &T,
-        tol: Option<T>,
-        guess: Option<f64>,
-        allow_chord: bool,
-    ) -> Handed<T> {
-        let p = ratio.prec();
-        if T::bits(p) <= 53 {
-            return lowest_stage(&self.top, ratio, allow_chord, tol, guess);
-        }
-        if let Some(done) = self.via_mid(ratio, &tol, guess, allow_chord) {
-            return done;
-        }
-        let alone = |tol: Option<T>| lowest_stage(&self.top, ratio, allow_chord, tol, None);
-        // Each stage ends on a Newton step (no chord), so that its last derivatives lie one
-        // rounding-level step from its root and serve the next stage's chord steps.
-        let ratio64 = ratio.to_f64();
-        let stage64 = match self.lower(&self.stage64) {
-            Some(ev) => lowest_stage(ev, &ratio64, false, None, guess),
-            None => return alone(tol),
-        };
-        let (k64, slope64) = match stage64 {
-            Ok((s, c)) => (s.k, c),
-            Err(_) => return alone(tol),
-        };
-        // Above double-double, a double-double stage in between: its root is off by ~2^-100,
-        // so the target precision needs one Newton step fewer (two chord steps up to ~600 bits).
-        if T::bits(p) > 106 {
-            if let Some(shape) = self.via_dd(ratio, &tol, k64, slope64.as_ref(), allow_chord) {
-                return shape;
-            }
-        }
-        let seed = T::from_f64(k64, p);
-        // Straight from the f64 stage at double-double: one evaluation with derivatives and a
-        // Halley step ([`halley_from_f64`]) — unless the f64 stage's inputs, rounded to f64,
-        // moved the root by more than ~1e-15, where one step cannot reach ε and two chord steps
-        // are cheaper than the Halley attempt and a Newton step. k's sensitivity to the
-        // relative change of the gap 1 − M_R is about 1/4.
-        let moved = |x: &T| {
-            let x64 = x.to_f64();
-            (x.clone() - T::from_f64(x64, p)).abs().to_f64() / x64.abs().max(f64::MIN_POSITIVE)
-        };
-        let speed = self.top.speed();
-        let perturbation = moved(ratio) + moved(speed.material().nu()) + moved(speed.gap());
-        let stage = Stage {
-            seed: Some(&seed),
-            seed_slope: slope64
-                .as_ref()
-                .map(|c| lift(c, p, T::from_f64(F64_SLOPE, p), T::from_f64(F64_SEED, p))),
-            halley: T::bits(p) <= 106 && perturbation <= 1e-15,
-            allow_chord,
-            tol,
-            ..Stage::final_stage()
-        };
-        solve_core(&self.top, ratio, stage)
-    }
-
-    /// Above [`MID_ABOVE_BITS`], the ladder's stage below the working precision p is the same
-    /// solve at m = p/2 + [`MID_GUARD_BITS`] bits (itself a ladder): its root, off by ~2^-m,
-    /// and its F′, good to ~2^-m, leave one or two chord steps at p (each contracts the error by
-    /// F′'s accuracy), evaluations without k-derivatives — instead of Newton's steps with them
-    /// from the double-double root (six at 4096 bits). The stage's root error is bounded by its
-    /// own estimate and by 2^(11−m), its F′'s by 2^(16−m): the double-double stage's margins
-    /// ([`DD_SEED`], [`DD_SLOPE`]). A stage that ended on a chord step is given its
-    /// derivatives by one more evaluation at its own precision ([`slope_at`]). `None` (the
-    /// ladder goes on from `f64`) at or below [`MID_ABOVE_BITS`], for the fixed-precision
-    /// types, and when that stage fails.
-    pub(super) fn via_mid(
-        &self,
-        ratio: &T,
-        tol: &Option<T>,
-        guess: Option<f64>,
-        allow_chord: bool,
-    ) -> Option<Handed<T>> {
-        let p = ratio.prec();
-        let bits = T::bits(p);
-        if bits <= MID_ABOVE_BITS {
-            return None;
-        }
-        let pm = T::lower_prec(p, bits / 2 + MID_GUARD_BITS)?;
-        let mid = self
-            .stage_mid
-            .get_or_init(|| {
-                let speed = self.top.speed().at::<T>(pm).ok()?;
-                ShapeSolver::new(&speed, self.top.method())
-                    .ok()
-                    .map(Box::new)
-            })
-            .as_deref()?;
-        let ratio_m = ratio.with_prec(pm);
-        let (s, c) = mid.climb(&ratio_m, None, guess, false).ok()?;
-        // A stage that ended on a chord step hands on no derivatives: one evaluation with them
-        // at its root (at its precision).
-        let c = c.or_else(|| slope_at(&mid.top, &ratio_m, s.k.clone().ln()))?;
-        let m = T::bits(pm) as i32;
-        let one = T::one(p);
-        let seed_err = s
-            .error_estimate
-            .with_prec(p)
-            .max_of(one.clone().mul_pow2(11 - m));
-        let seed = s.k.with_prec(p);
-        let stage = Stage {
-            seed: Some(&seed),
-            seed_slope: Some(lift(&c, p, one.mul_pow2(16 - m), seed_err)),
-            allow_chord,
-            tol: tol.clone(),
-            ..Stage::final_stage()
-        };
-        Some(solve_core(&self.top, ratio, stage))
-    }
-
-    /// The double-double stage from the `f64` root `k64` and its derivatives, then the working
-    /// precision's stage from the double-double root; `None` when the double-double stage
-    /// fails (the caller goes on from the `f64` root).
-    pub(super) fn via_dd(
-        &self,
-        ratio: &T,
-        tol: &Option<T>,
-        k64: f64,
-        slope64: Option<&Chord<f64>>,
-        allow_chord: bool,
-    ) -> Option<Handed<T>> {
-        let p = ratio.prec();
-        let seed_dd = Dd::from_f64(k64, ());
-        let stage = Stage {
-            seed: Some(&seed_dd),
-            seed_slope: slope64.map(|c| {
-                lift(
-                    c,
-                    (),
-                    Dd::from_f64(F64_SLOPE, ()),
-                    Dd::from_f64(F64_SEED, ()),
-                )
-            }),
-            allow_chord: false,
-            ..Stage::final_stage()
-        };
-        let ratio_dd = Dd::from_float(&ratio.to_float(T::bits(p)), ());
-        let (s, c) = solve_core(self.lower(&self.stage_dd)?, &ratio_dd, stage).ok()?;
-        let seed = T::from_float(&s.k.to_float(106), p);
-        let stage = Stage {
-            seed: Some(&seed),
-            seed_slope: c
-                .as_ref()
-                .map(|c| lift(c, p, T::from_f64(DD_SLOPE, p), T::from_f64(DD_SEED, p))),
-            allow_chord,
-            tol: tol.clone(),
-            ..Stage::final_stage()
-        };
-        Some(solve_core(&self.top, ratio, stage))
-    }
-}
-
-/// Bounds on a stage's derivative F′ (relative, with a margin over the fixed rules' measured
-/// derivative errors) and on its root's error in λ (a few ε): `docs/calibration.md`.
-pub(super) const F64_SLOPE: f64 = 9.094947017729282e-13; // 2^-40
-pub(super) const F64_SEED: f64 = 3.552713678800501e-15; // 2^-48
-pub(super) const DD_SLOPE: f64 = 8.077935669463161e-28; // 2^-90
-pub(super) const DD_SEED: f64 = 2.524354896707238e-29; // 2^-95
-
-/// A stage's derivatives carried to the precision `p` of the next, with their error bound and
-/// the bound on the stage's root error.
-pub(super) fn lift<S: Real, T: Real>(
-    c: &Chord<S>,
-    p: T::Prec,
-    slope_err: T,
-    seed_err: T,
-) -> (Chord<T>, T) {
-    let up = |x: &S| T::from_float(&x.to_float(S::bits(x.prec())), p);
-    (
-        Chord {
-            lam: up(&c.lam),
-            di1: up(&c.di1),
-            di2: up(&c.di2),
-            df: up(&c.df),
-            rel_err: slope_err,
-            before: c.before.as_ref().map(|b| [0, 1, 2, 3].map(|i| up(&b[i]))),
-        },
-        seed_err,
-    )
-}
-
-/// Above this working precision the ladder's stage below it is the same solve at about half
-/// the precision ([`ShapeSolver::via_mid`]); at and below, the double-double root's chord
-/// steps reach the working precision in at most four evaluations (1024 bits).
-pub(super) const MID_ABOVE_BITS: u32 = 1024;
-
-/// Bits of the half-precision stage beyond half the working precision: its root and F′
-/// (~2^-m each) leave a chord step's error ~2^-2m, 64 times that ≤ 2^-p with ~40 bits to spare.
-pub(super) const MID_GUARD_BITS: u32 = 32;

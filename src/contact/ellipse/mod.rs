@@ -6,39 +6,32 @@
 //! I2(k)/I1(k) = A1/B1.
 //! ```
 //!
-//! The solve runs in five stages, one file each, in the order they run:
+//! The solve runs in five stages, in the order they run:
 //!
 //! 1. **Check the inputs** (this file: [`check_ratio`], `checked_options`), before any work.
-//! 2. **Seed** (`seed.rs`): the static Hertz ellipse in closed form, or a neighbour's root (a
-//!    sweep's guess or the caller's seed); unseeded above k = 1, one evaluation at k = 1 tells
-//!    the root's side.
+//! 2. **Seed** (`seed.rs`): the static Hertz ellipse in closed form, or a neighbour's root;
+//!    unseeded above k = 1, one evaluation at k = 1 (kept with the speed) tells the root's side.
 //! 3. **Safeguarded Newton** (`newton.rs`) on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, at the
-//!    ladder's lowest stage (`f64`), with F′(λ) = k (I2′/I2 − I1′/I1) from the integrals'
-//!    k-derivatives: F increases with k (checked over ν, M_R and 10^-6 ≤ A1/B1 ≤ 10^6 in
-//!    `tests/contact.rs`), so a step leaving the bracket [lo, hi] of known signs is replaced by
-//!    bisection in λ. Once converging, a Newton step δ leaves an error ~δ²: the iteration stops
-//!    when 64δ² ≤ ε; the evaluation expected to be the last (64δ³ ≤ ε) skips the k-derivatives
-//!    and steps with the previous F′ (a chord step).
-//! 4. **Lift through the precision ladder** (`ladder.rs`): above `f64` the root and F′ of the
-//!    stage below (`f64`, then double-double above 106 bits, then the solve at p/2 + 32 bits
-//!    above 1024 bits) start the working precision, which takes chord steps with that F′ (each
-//!    contracts the error by F′'s accuracy) — at double-double one Halley step whose F″ comes by
-//!    a secant from the `f64` iterates: a few high-precision evaluations, no search.
-//! 5. **Final step and error bound** (`finish.rs`): I1, I2 carried from the last evaluation to
-//!    the root, one Newton step in k itself where |ln k| is large (e^λ's rounding), and the
-//!    bound on k from the last step, the integrals' bounds and the rounding.
+//!    ladder's lowest stage (`f64`): F increases with k (checked over ν, M_R and
+//!    10⁻⁶ ≤ A1/B1 ≤ 10⁶ in `tests/contact.rs`), so a step leaving the bracket of known signs
+//!    is replaced by bisection; the last evaluation skips the k-derivatives (a chord step).
+//! 4. **Lift through the precision ladder** (`ladder.rs`): the root and F′ of the stage below
+//!    (`f64`, double-double above 106 bits, p/2 + 32 bits above 1024) start the working
+//!    precision, which takes chord steps with that F′ — at double-double one Halley step. The
+//!    lower stages' speeds are kept with the speed ([`SolveCache`]), and with them their set-ups.
+//! 5. **Final step and error bound** (`finish.rs`): I1, I2 carried to the root, a Newton step in
+//!    k itself where |ln k| is large, and the bound on k.
 //!
-//! The thresholds and the evidence they were chosen on: `docs/calibration.md`. Tests:
-//! `tests/contact.rs` (the ladder's k within 10ε of a 320-bit adaptive-quadrature solve at f64,
-//! double-double and 256 bits), `tests/high_precision.rs` (2048 to 8192 bits, against the solve
-//! 256 bits higher), `tests/edges.rs` (|ln k| up to 2878).
+//! Thresholds and their evidence: `docs/calibration.md`. Tests: `tests/contact.rs` (k within
+//! 10ε of a 320-bit adaptive-quadrature solve at `f64`, double-double and 256 bits),
+//! `tests/high_precision.rs` (2048 to 8192 bits), `tests/edges.rs` (|ln k| up to 2878).
 
 mod finish;
 mod ladder;
 mod newton;
 mod seed;
 
-pub(crate) use ladder::ShapeSolver;
+pub(crate) use ladder::{ShapeSolver, SolveCache};
 
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};

@@ -1,18 +1,19 @@
-//! Stage 2 of the ellipse solve, the start: the static Hertz ellipse in closed form, or a
-//! neighbour's root (a sweep's extrapolated guess, or the caller's seed), and the k = 1 probe
-//! that tells on which side of k = 1 an unseeded root lies.
+//! Stage 2: the start — the static Hertz ellipse in closed form, or a neighbour's root (a
+//! sweep's extrapolated guess, or the caller's seed) — and the k = 1 probe that tells on which
+//! side of k = 1 an unseeded root lies.
 
 use super::ladder::secant_partner;
-use super::newton::{solve_core, Chord, Newton, Stage, MAX_EVALUATIONS};
-use super::Shape;
+use super::newton::{solve_core, Handed, Newton, Stage};
+use super::{shape_residual, shape_slope};
 use crate::error::Result;
 use crate::routes::evaluate::Evaluator;
+use crate::routes::AxisRatio;
 use crate::scalar::Real;
+use std::sync::OnceLock;
 
-/// A start for Newton: the static Hertz ellipse, by Hamrock & Brewe's approximation
-/// k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a few per cent of the static k down to 10⁻⁶) and by
-/// the k ≫ 1 form of static Hertz from 30 on ([`static_seed_wide`]); the speed lowers k further,
-/// which the safeguarded Newton iteration follows.
+/// The static Hertz ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a
+/// few per cent of the static root down to 10⁻⁶), the k ≫ 1 form ([`static_seed_wide`]) from
+/// 30 on; the speed lowers k further, which Newton follows.
 #[inline]
 pub(super) fn static_seed(ratio: f64) -> f64 {
     if !(ratio.is_finite() && ratio > 0.0) {
@@ -29,14 +30,12 @@ pub(super) fn static_seed(ratio: f64) -> f64 {
     }
 }
 
-/// From this ratio on the static seed is the k ≫ 1 form of static Hertz instead of Hamrock &
-/// Brewe's, which overestimates the static root there (evidence: `docs/calibration.md`).
+/// From this ratio on the static seed is the k ≫ 1 form (`docs/calibration.md`).
 pub(super) const ASYMPTOTIC_SEED_RATIO: f64 = 30.0;
 
-/// The static root for A1/B1 = `ratio` ≥ 30 from the k ≫ 1 form of (33) at rest,
-/// A1/B1 = k²/(ln 4k − 1) (I2 ≈ 2g/k, I1 ≈ (2g/k³)(ln 4k − 1)), by four fixed-point steps
-/// k ← √(ratio·(ln 4k − 1)) (a contraction: each step divides the error by ~2(ln 4k − 1)); within
-/// 1.5 % of the static root at A1/B1 = 30 and 0.01 % at 10⁶.
+/// The static root for A1/B1 ≥ 30 from (33)'s k ≫ 1 form at rest, A1/B1 = k²/(ln 4k − 1)
+/// (I2 ≈ 2g/k, I1 ≈ (2g/k³)(ln 4k − 1)), by four contracting fixed-point steps
+/// k ← √(A1/B1·(ln 4k − 1)): within 1.5 % of the static root at 30, 0.01 % at 10⁶.
 pub(super) fn static_seed_wide(ratio: f64) -> f64 {
     let mut k = ratio.sqrt();
     for _ in 0..4 {
@@ -45,13 +44,13 @@ pub(super) fn static_seed_wide(ratio: f64) -> f64 {
     k
 }
 
-/// The evaluations a stage started from a neighbour's root may spend before the solve starts
-/// again from the static ellipse (a converging start needs 2–4).
+/// The evaluations a stage started from a neighbour's root may spend before it starts again
+/// from the static ellipse (a converging start needs 1–3).
 pub(super) const GUESS_EVALUATIONS: usize = 8;
 
-/// Runs the lowest stage of the ladder (chord steps at its end as `allow_chord` says) from
-/// `guess` when there is one and it converges within [`GUESS_EVALUATIONS`], from the static
-/// ellipse otherwise.
+/// The ladder's lowest stage (chord steps at its end as `allow_chord` says) from `guess` when
+/// it converges within [`GUESS_EVALUATIONS`], else from the static ellipse. A guessed stage
+/// that hands on derivatives without an earlier iterate gets a secant partner.
 #[inline]
 pub(super) fn lowest_stage<S: Real>(
     ev: &Evaluator<S>,
@@ -59,16 +58,14 @@ pub(super) fn lowest_stage<S: Real>(
     allow_chord: bool,
     tol: Option<S>,
     guess: Option<f64>,
-) -> Result<(Shape<S>, Option<Chord<S>>)> {
+) -> Handed<S> {
     let seed = guess
         .filter(|g| g.is_finite() && *g > 0.0)
         .map(|g| S::from_f64(g, ratio.prec()));
     let stage = |seed, budget| Stage {
-        seed,
         allow_chord,
         budget,
-        tol: tol.clone(),
-        ..Stage::final_stage()
+        ..Stage::from(seed, tol.clone())
     };
     if let Some(seed) = &seed {
         if let Ok((shape, slope)) = solve_core(ev, ratio, stage(Some(seed), GUESS_EVALUATIONS)) {
@@ -79,20 +76,19 @@ pub(super) fn lowest_stage<S: Real>(
             return Ok((shape, slope));
         }
     }
-    solve_core(ev, ratio, stage(None, MAX_EVALUATIONS))
+    solve_core(ev, ratio, stage(None, super::newton::MAX_EVALUATIONS))
 }
 
 impl<T: Real> Newton<'_, T> {
-    /// The k = 1 probe: an unseeded start above k = 1 with A1/B1 below [`PROBE_BELOW_RATIO`]
-    /// (or with the static seed's k0·ε_R below [`PROBE_BELOW_SEED_K_EPS`], near the Rayleigh
-    /// speed): the root may lie below k = 1, where the fast route applies, while iterates above
-    /// it pay graded layouts. One evaluation at k = 1 (the fast route, whose set-up the iterates
-    /// below 1 reuse) tells the side and starts Newton from there with the bracket's end at
-    /// λ = 0: from above 1, not above the static seed (speed lowers k) nor, away from the
-    /// Rayleigh speed, more than a factor e² below it; from below, at most a factor e² below 1.
+    /// The k = 1 probe, for an unseeded start above k = 1 with A1/B1 below
+    /// [`PROBE_BELOW_RATIO`] or the seed's k0·√(1 − M_R²) below [`PROBE_BELOW_SEED_K_EPS`]:
+    /// the root may lie below 1, where the fixed rule applies, while iterates above pay graded
+    /// layouts. One evaluation at k = 1 tells the side and starts Newton from there with the
+    /// bracket's end at λ = 0: from above, not above the seed nor (away from the Rayleigh
+    /// speed) more than e² below it; from below, at most e² below 1.
     #[inline]
     pub(super) fn probe_k_one(&mut self) -> Result<()> {
-        // k0·ε_R in the working type: ε_R = √(1 − M_R²) may lie below the f64 range at MPFR.
+        // In the working type: √(1 − M_R²) may lie below the f64 range at MPFR.
         let p = self.prec();
         let pole_width = self.evaluator.speed().one_minus_mr2().clone().sqrt();
         let near_rayleigh =
@@ -100,9 +96,21 @@ impl<T: Real> Newton<'_, T> {
         if !(self.lam.is_positive() && (self.ratio.to_f64() < PROBE_BELOW_RATIO || near_rayleigh)) {
             return Ok(());
         }
-        let (zero, two) = (T::zero(p), T::from_i64(2, p));
-        let (f, df, _) = self.eval(&zero, None)?;
+        let (zero, two, one) = (T::zero(p), T::from_i64(2, p), T::one(p));
+        let ev = self.evaluator;
+        let kept = ev.speed().solve_cache().probe(ev.method());
+        let ci = match kept.and_then(OnceLock::get) {
+            Some(ci) => ci.clone(),
+            None => {
+                let ci = ev.for_newton(&AxisRatio::new(one.clone())?, true)?;
+                if let Some(slot) = kept {
+                    let _ = slot.set(ci.clone());
+                }
+                ci
+            }
+        };
         self.spent += 1;
+        let (f, df) = (shape_residual(&ci, self.ratio), shape_slope(&one, &ci));
         let newton = (df.is_positive() && df.is_finite()).then(|| -(f.clone() / &df));
         if f.is_negative() {
             if let Some(n) = newton {
@@ -122,10 +130,10 @@ impl<T: Real> Newton<'_, T> {
     }
 }
 
-/// Below this curvature ratio an unseeded solve whose static seed lies above k = 1 first
-/// evaluates at k = 1 ([`Newton::probe_k_one`]; evidence: `docs/calibration.md`).
+/// Below this A1/B1 an unseeded start above k = 1 first evaluates at k = 1
+/// (`docs/calibration.md`).
 pub(super) const PROBE_BELOW_RATIO: f64 = 30.0;
 
-/// ... and at any ratio when the static seed k0 has k0·ε below this (ε = √(1 − M_R²)): near the
-/// Rayleigh speed the root falls far below the static seed (evidence: `docs/calibration.md`).
+/// ... and at any A1/B1 when the static seed's k0·√(1 − M_R²) is below this: near the
+/// Rayleigh speed the root falls far below the static seed (`docs/calibration.md`).
 pub(super) const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
