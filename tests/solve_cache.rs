@@ -11,18 +11,18 @@ fn fingerprint<T: Real>(speed: &Speed<T>, ratio: &T) -> String {
     let e = solve_ellipse(speed, ratio, &Options::default()).unwrap();
     let bits = T::bits(ratio.prec());
     let hex = |x: &T| x.to_float(bits).to_string_radix(16, None);
-    let i = &e.integrals;
+    let i = e.integrals();
     format!(
         "k {} ({}) e {} ({}) I1 {} ({}) I2 {} ({}) after {}",
-        hex(&e.k.value),
-        e.k.error,
-        hex(&e.e.value),
-        e.e.error,
+        hex(&e.k().value),
+        e.k().error,
+        hex(&e.e().value),
+        e.e().error,
         hex(&i.i1.value),
         i.i1.error,
         hex(&i.i2.value),
         i.i2.error,
-        e.iterations
+        e.iterations()
     )
 }
 
