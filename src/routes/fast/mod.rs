@@ -33,8 +33,12 @@
 //! 2.3 bits a node in the worst case: 20 nodes at `f64`. The pole is subtracted only when it is
 //! near, ε ≤ 1/2 (M_R ≥ √3/2; then k²ε² ≤ 1/4); farther out the plain rule converges as fast, and
 //! as M_R → 0, k → 1 the pole at iε would meet the branch point of u^{−3/2} at i/k, where a0 is
-//! unbounded. The difference a(s) − a0 is formed directly: its cancellation near s = 0 costs an
-//! absolute error ε·a/(s + ε²) at a node, the rounding error of the integrand itself.
+//! unbounded. On the rule the subtracted integral splits into Σω a/(s + ε²) and a0 Σω/(s + ε²):
+//! the second's weights are k-independent, so the set-up keeps atan(1/ε)/ε − Σω/(s + ε²) (and
+//! 1 − ε atan(1/ε) − Σωs/(s + ε²)) and ω/(s + ε²) folded into the node factors, and a k costs
+//! the sum of a(s)/(s + ε²) alone. The rounding this costs is the subtraction's own: ε·a/(s + ε²)
+//! absolute at a node and ε·a0 atan(1/ε)/ε for the pole terms, both within ε·I2 (the terms are
+//! positive).
 //!
 //! **Above double-double: the left half on sinh-mapped panels.** The single rule in w needs
 //! ⌈0.433·bits⌉ nodes (1772 at 4096 bits), and a rule's construction grows like n². Above 106
@@ -99,14 +103,16 @@
 //! **Cost per node.** G is evaluated in a form with the factors 1/(1 + s) cleared,
 //! G(t)√(1 + s)·2π = (2/m1)·√(p − γc)·D'/Q' with p = 1 + s, D' = (2p − c)² + 4p√((p − γc)(s + δ²))
 //! and Q' = c² − (m2 + m3)c p + m2m3 p², so that a left node costs two square roots and one
-//! division, a right node three and one, and about 25 multiplications and additions. The node
-//! loops carry no dependence from one node to the next (the weighted sums are taken afterwards),
-//! so that at `f64` the compiler vectorises them (two nodes per SSE2 instruction).
+//! division, a right node three and one, and about 25 multiplications and additions: in the
+//! set-up. A k costs u^{−3/2} (and u^{−5/2}) at each node and four weighted sums
+//! ([`graded::power_sums`], shared with the graded route), with the weights ω, 1/(s + ε²) and
+//! the k-independent node factors folded into three tables a half.
 //!
 //! **Many k.** [`FastSetup`] keeps the k-independent part (G at every node, the Taylor
 //! coefficients): each further k costs one square root and one division per node. Each speed
 //! keeps one, built on first use and shared by its clones, which every evaluation at that speed
-//! runs (the route's one integrand).
+//! runs (the route's one integrand); it also keeps the graded route's layouts for k > 1 met at
+//! that speed ([`graded::layout_bucket`]).
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 0 < k ≤ 1 (every k that [`AxisRatio`] admits: at
 //! `f64` down to 1.2·10⁻⁷⁷, where k⁴ is still a normal number). As k → 0 nothing in the route
@@ -138,7 +144,7 @@ use crate::physics::Speed;
 use crate::scalar::FieldOps;
 use crate::scalar::{short, Mp, MpPrec, Real};
 use std::ops::Deref;
-use std::sync::{Arc, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
 mod closed;
 mod rule;
@@ -299,7 +305,7 @@ fn left_parts<T: Real>(pole: &[T; 2], kc: &KConsts<T>, sums: [T; 4], dk: bool) -
 /// The right half by the Taylor subtraction: I1_R = ∫ P W3 + Σω r W3, I2_R = ∫ σ P W3 +
 /// Σωσ r W3 (P the Taylor polynomial, r = b − P at the nodes, kept as ωr and ωσr in `t`) and,
 /// with `dk`, S1 = ∫ P W5 + Σω r W5, S2 (with σ), so that dI_R/dk = −3k S.
-fn taylor_right_parts<T: Real, const N: usize>(
+fn taylor_right_parts<T: Real>(
     rule: &FastRule<T>,
     r: &Half<T>,
     kc: &KConsts<T>,
@@ -307,7 +313,7 @@ fn taylor_right_parts<T: Real, const N: usize>(
     dk: bool,
 ) -> [T; 4] {
     let p = kc.k.prec();
-    let [s1, s2, sd1, sd2] = right_closed_forms_guarded::<T, N>(rule, &t.b, kc, dk);
+    let [s1, s2, sd1, sd2] = right_closed_forms_guarded(rule, &t.b, kc, dk);
     let (f, sf) = (&t.f[..], &t.sf[..]);
     let [a, b, c, d] = graded::power_sums(&r.s, [f, sf, f, sf], dk, p, |sg| sg.clone() + &kc.k2);
     [a + &s1, b + &s2, c + &sd1, d + &sd2]
@@ -415,7 +421,14 @@ pub struct FastSetup<T: Real + 'static> {
     taylor: TaylorCell<T>,
     /// The right half on sinh-mapped panels, per octave of k (above double-double; empty below).
     sinh: Vec<OnceLock<Result<RightSinh<T>>>>,
+    /// The graded rule's layouts for k > 1 met at this speed, by [`graded::layout_bucket`]
+    /// (at most [`GRADED_KEPT`], the oldest dropped first): kept with the fixed rule's set-up
+    /// so that every solve at the speed reuses them.
+    graded: Mutex<Vec<(i64, Arc<graded::GradedSetup<T>>)>>,
 }
+
+/// The graded layouts a [`FastSetup`] keeps.
+const GRADED_KEPT: usize = 8;
 
 /// The fixed rule's k-independent part for one speed ([`FastSetup`]), built on first use and
 /// shared by the speed's clones: every evaluator and ellipse solve at that speed reuses it, so
@@ -558,6 +571,7 @@ impl<T: Real> FastSetup<T> {
                 taylor,
                 sinh,
                 rule,
+                graded: Mutex::new(Vec::new()),
             },
         );
         let FastSetup {
@@ -616,6 +630,30 @@ impl<T: Real> FastSetup<T> {
         Ok(setup)
     }
 
+    /// The graded rule's layout for k > 1 of `bucket` ([`graded::layout_bucket`]) at `speed`
+    /// (the speed of this set-up), laid out for [`graded::bucket_k_ref`] on first use and kept.
+    pub(crate) fn graded_layout(
+        &self,
+        speed: &Speed<T>,
+        bucket: i64,
+        p: T::Prec,
+    ) -> Result<Arc<graded::GradedSetup<T>>> {
+        let kept = || self.graded.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some((_, g)) = kept().iter().find(|(b, _)| *b == bucket) {
+            return Ok(g.clone());
+        }
+        let g = Arc::new(graded::GradedSetup::new(
+            speed,
+            &graded::bucket_k_ref(bucket, p),
+        )?);
+        let mut list = kept();
+        if list.len() >= GRADED_KEPT {
+            list.remove(0);
+        }
+        list.push((bucket, g.clone()));
+        Ok(g)
+    }
+
     /// I1, I2 at the axis ratio `axes` (same domain and accuracy as [`integrals`]).
     /// Implements (46)–(47).
     pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
@@ -628,16 +666,6 @@ impl<T: Real> FastSetup<T> {
     }
 
     fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-        let z = self.rule.sizes;
-        let n = z.left.max(z.right).max(3 * z.taylor + 1);
-        if n <= 32 {
-            self.eval::<32>(axes, dk)
-        } else {
-            self.eval::<48>(axes, dk)
-        }
-    }
-
-    fn eval<const N: usize>(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         check_axes(axes)?;
         let rule = &*self.rule;
         let p = rule.prec;
@@ -663,7 +691,7 @@ impl<T: Real> FastSetup<T> {
             TaylorCell::Lazy(cell) => cell.get_or_init(|| TaylorRight::new(rule, &self.sc)),
         };
         let t = t.as_ref().map_err(Clone::clone)?;
-        let rp = taylor_right_parts::<T, N>(rule, rule.right_half()?, &kc, t, dk);
+        let rp = taylor_right_parts(rule, rule.right_half()?, &kc, t, dk);
         combine(lp, rp, &kc, dk, rule.sizes.nodes())
     }
 }
@@ -795,8 +823,11 @@ mod tests {
             let ratio: Vec<Mp> = (1..=12)
                 .map(|j| Mp::from_ratio(2 * j - 1, 2 * j, p))
                 .collect();
-            let mut n = vec![Mp::zero(p); 12];
-            let (m0, p0) = moments(&kk, &k2, &inv, &ratio, &mut n);
+            let (m0, p0, n0, r1) = moment_bases(&kk, &k2);
+            let mut n = vec![n0];
+            for j in 0..11 {
+                n.push(next_moment(&n[j], &k2, &r1, &inv[j], &ratio[j]));
+            }
             let pts = [
                 Mp::zero(p),
                 kk.clone().min_of(Mp::from_ratio(1, 2, p)),
