@@ -30,7 +30,6 @@ use crate::estimate::RelError;
 use crate::physics::Speed;
 use crate::scalar::{short, Precision, Real};
 use std::cell::RefCell;
-use std::sync::Arc;
 
 /// Options of [`integrals`] and [`Evaluator`]; every field has a default.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -71,8 +70,7 @@ pub struct Evaluator<T: Real + 'static> {
     opts: IntegralOptions,
     /// The tolerance at the working precision (`None`: its floor).
     tol: Option<T>,
-    /// The graded layout last used, with its [`graded::layout_bucket`].
-    graded: RefCell<Option<(i64, Arc<GradedSetup<T>>)>>,
+    graded: RefCell<Option<GradedSetup<T>>>,
 }
 
 /// I1, I2 of (34) (normalisation of (37)) at the axis ratio `k` = b/a for the speed (and
@@ -262,25 +260,18 @@ impl<T: Real> Evaluator<T> {
         }
     }
 
-    /// The graded rule at k > 1 on the layout of k's [`graded::layout_bucket`]: the one last
-    /// used, else the one the speed keeps with its fixed-rule set-up (laid out there on first
-    /// use), so that the rule at a k depends on k alone.
+    /// The graded rule at k > 1 from the kept layout, laid out anew (for 9/8 of this k, so
+    /// that iterates up to 45/32 k reuse it) when k lies outside its range.
     #[inline]
     pub(crate) fn graded(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-        let bucket = graded::layout_bucket(&axes.k);
         let mut kept = self.graded.borrow_mut();
-        let (_, g) = match kept.take() {
-            Some((b, g)) if b == bucket => kept.insert((b, g)),
+        let g = match kept.take() {
+            Some(g) if g.covers(&axes.k) => kept.insert(g),
             _ => {
                 let p = axes.k.prec();
-                let g = match self.speed.fast_setup() {
-                    Ok(f) => f.graded_layout(&self.speed, bucket, p)?,
-                    Err(_) => Arc::new(GradedSetup::new(
-                        &self.speed,
-                        &graded::bucket_k_ref(bucket, p),
-                    )?),
-                };
-                kept.insert((bucket, g))
+                let k_ref = (axes.k.clone() * &T::from_ratio(9, 8, p))
+                    .min_of(T::one(p).mul_pow2(graded::K_MAX_LOG2));
+                kept.insert(GradedSetup::new(&self.speed, &k_ref)?)
             }
         };
         if dk {

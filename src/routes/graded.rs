@@ -90,25 +90,6 @@ pub fn panel_nodes(bits: u32) -> usize {
     }
 }
 
-/// The layout bucket of k ≥ 1: k ∈ (2^e (3 + q)/4, 2^e (4 + q)/4] is bucket 4e + q (q = 1 … 4;
-/// k = 2^e is bucket 4e, its own reference), from k rounded to `f64` (a bucket's edge rounded
-/// the other way is still covered: [`GradedSetup::covers`] reaches 5/4 of the reference).
-/// The evaluator keeps one [`GradedSetup`] a bucket, laid out for [`bucket_k_ref`], so that
-/// the rule at a k depends on k alone, not on the k met before.
-pub(crate) fn layout_bucket<T: Real>(k: &T) -> i64 {
-    let x = k.to_f64().clamp(1.0, 2f64.powi(K_MAX_LOG2));
-    let e = x.log2().floor();
-    let q = ((x / 2f64.powf(e) - 1.0) * 4.0).ceil();
-    4 * e as i64 + q as i64
-}
-
-/// The layout reference of a [`layout_bucket`]: its top, 2^e (4 + q)/4, at most 2^K_MAX_LOG2.
-pub(crate) fn bucket_k_ref<T: Real>(bucket: i64, p: T::Prec) -> T {
-    let (e, q) = (bucket.div_euclid(4), bucket.rem_euclid(4));
-    let top = T::from_ratio(4 + q, 4, p).mul_pow2(e as i32);
-    top.min_of(T::one(p).mul_pow2(K_MAX_LOG2))
-}
-
 /// The route's largest k is 2^K_MAX_LOG2 (≈ 1.5·10⁵⁴): beyond it (k⁵ > 2⁹⁰⁰) the derivatives'
 /// factors u^{−5/2} ~ k⁻⁵ approach 2⁻⁹⁶⁹, below which a double-double's low part is subnormal
 /// and loses bits (at k = 10⁶⁰ dI/dk would be off by about 6·10⁷ε at double-double).

@@ -111,8 +111,7 @@
 //! **Many k.** [`FastSetup`] keeps the k-independent part (G at every node, the Taylor
 //! coefficients): each further k costs one square root and one division per node. Each speed
 //! keeps one, built on first use and shared by its clones, which every evaluation at that speed
-//! runs (the route's one integrand); it also keeps the graded route's layouts for k > 1 met at
-//! that speed ([`graded::layout_bucket`]).
+//! runs (the route's one integrand).
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 0 < k ≤ 1 (every k that [`AxisRatio`] admits: at
 //! `f64` down to 1.2·10⁻⁷⁷, where k⁴ is still a normal number). As k → 0 nothing in the route
@@ -144,7 +143,7 @@ use crate::physics::Speed;
 use crate::scalar::FieldOps;
 use crate::scalar::{short, Mp, MpPrec, Real};
 use std::ops::Deref;
-use std::sync::{Arc, Mutex, OnceLock, PoisonError};
+use std::sync::{Arc, OnceLock};
 
 mod closed;
 mod rule;
@@ -421,14 +420,7 @@ pub struct FastSetup<T: Real + 'static> {
     taylor: TaylorCell<T>,
     /// The right half on sinh-mapped panels, per octave of k (above double-double; empty below).
     sinh: Vec<OnceLock<Result<RightSinh<T>>>>,
-    /// The graded rule's layouts for k > 1 met at this speed, by [`graded::layout_bucket`]
-    /// (at most [`GRADED_KEPT`], the oldest dropped first): kept with the fixed rule's set-up
-    /// so that every solve at the speed reuses them.
-    graded: Mutex<Vec<(i64, Arc<graded::GradedSetup<T>>)>>,
 }
-
-/// The graded layouts a [`FastSetup`] keeps.
-const GRADED_KEPT: usize = 8;
 
 /// The fixed rule's k-independent part for one speed ([`FastSetup`]), built on first use and
 /// shared by the speed's clones: every evaluator and ellipse solve at that speed reuses it, so
@@ -571,7 +563,6 @@ impl<T: Real> FastSetup<T> {
                 taylor,
                 sinh,
                 rule,
-                graded: Mutex::new(Vec::new()),
             },
         );
         let FastSetup {
@@ -628,30 +619,6 @@ impl<T: Real> FastSetup<T> {
             }
         }
         Ok(setup)
-    }
-
-    /// The graded rule's layout for k > 1 of `bucket` ([`graded::layout_bucket`]) at `speed`
-    /// (the speed of this set-up), laid out for [`graded::bucket_k_ref`] on first use and kept.
-    pub(crate) fn graded_layout(
-        &self,
-        speed: &Speed<T>,
-        bucket: i64,
-        p: T::Prec,
-    ) -> Result<Arc<graded::GradedSetup<T>>> {
-        let kept = || self.graded.lock().unwrap_or_else(PoisonError::into_inner);
-        if let Some((_, g)) = kept().iter().find(|(b, _)| *b == bucket) {
-            return Ok(g.clone());
-        }
-        let g = Arc::new(graded::GradedSetup::new(
-            speed,
-            &graded::bucket_k_ref(bucket, p),
-        )?);
-        let mut list = kept();
-        if list.len() >= GRADED_KEPT {
-            list.remove(0);
-        }
-        list.push((bucket, g.clone()));
-        Ok(g)
     }
 
     /// I1, I2 at the axis ratio `axes` (same domain and accuracy as [`integrals`]).
