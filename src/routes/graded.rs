@@ -717,7 +717,9 @@ impl<T: Real> LeftHalf<T> {
                 let (a0, e0) = sc.pole_values(&axes.k2);
                 let (eps2, pole_t) = (&sc.eps2, &sc.pole_t);
                 // Σω (a − a0)/h, Σω a and, with dk, Σω (s F u^{−5/2} + e0)/h, Σω s F u^{−5/2}.
-                let [sr, sa, srd, sb] = chunked_sums(nl, p, |i0, t3, t5| {
+                let buffer = || [(); CHUNK].map(|_| T::zero(p));
+                let scratch = || (buffer(), buffer());
+                let [sr, sa, srd, sb] = chunked_sums(nl, p, scratch, |i0, (t3, t5)| {
                     let m = CHUNK.min(nl - i0);
                     let xs = &ls[i0..i0 + m];
                     if dk {
@@ -776,12 +778,14 @@ pub(super) fn node_map<T: Real>(
     );
 }
 
-/// Nodes a chunk in the node loops of [`power_sums`] (a stack buffer).
+/// Nodes a chunk of [`chunked_sums`].
 const CHUNK: usize = 32;
 
 /// Σ a x^{−3/2}, Σ b x^{−3/2} and, with `dk`, Σ c x^{−5/2}, Σ d x^{−5/2} over the nodes, with
 /// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node),
-/// summed by [`chunked_sums`].
+/// summed by [`chunked_sums`], node j of a chunk in partial sum j mod [`LANES`] (an odd last
+/// node in the first), the partial sums added at the end of the chunk: at `f64` the compiler
+/// packs two nodes into one SSE2 square root, division, product and sum, with no buffer.
 #[inline(always)]
 pub(super) fn power_sums<T: Real>(
     nodes: &[T],
@@ -790,46 +794,68 @@ pub(super) fn power_sums<T: Real>(
     p: T::Prec,
     shift: impl Fn(&T) -> T + Sync,
 ) -> [T; 4] {
-    chunked_sums(nodes.len(), p, |i0, t3, t5| {
-        let m = CHUNK.min(nodes.len() - i0);
-        let xs = &nodes[i0..i0 + m];
-        // Node values first, sums after: the node loop carries no dependence, so that at f64
-        // the compiler packs two nodes into one SSE2 square root and division.
-        if dk {
-            for ((x, v3), v5) in xs.iter().zip(t3.iter_mut()).zip(t5.iter_mut()) {
-                (*v3, *v5) = shift(x).pow_m3_2_m5_2();
+    chunked_sums(
+        nodes.len(),
+        p,
+        || (),
+        |i0, _| {
+            let m = CHUNK.min(nodes.len() - i0);
+            let xs = &nodes[i0..i0 + m];
+            let [a, b, c, d] = factors.map(|f| &f[i0..i0 + m]);
+            let mut acc = [(); 4].map(|_| lanes::<T>(p));
+            let add = |acc: &mut [[T; LANES]; 4], l: usize, j: usize| {
+                add_node(acc, l, shift(&xs[j]), [&a[j], &b[j], &c[j], &d[j]], dk);
+            };
+            let whole = m - m % LANES;
+            for j0 in (0..whole).step_by(LANES) {
+                for l in 0..LANES {
+                    add(&mut acc, l, j0 + l);
+                }
             }
-        } else {
-            for (x, v3) in xs.iter().zip(t3.iter_mut()) {
-                *v3 = shift(x).pow_m3_2();
+            for j in whole..m {
+                add(&mut acc, 0, j);
             }
-        }
-        let [a, b, c, d] = factors.map(|f| &f[i0..i0 + m]);
-        let mut part = [(); 4].map(|_| T::zero(p));
-        for j in 0..m {
-            part[0] += &(a[j].clone() * &t3[j]);
-            part[1] += &(b[j].clone() * &t3[j]);
-            if dk {
-                part[2] += &(c[j].clone() * &t5[j]);
-                part[3] += &(d[j].clone() * &t5[j]);
-            }
-        }
-        part
-    })
+            acc.map(|[x, y]| x + &y)
+        },
+    )
 }
 
-/// Four sums over `n` nodes from `chunk(i0, t3, t5)`, the sums of the [`CHUNK`] nodes from i0
-/// (t3, t5 scratch buffers), each chunk's sums added to the total in chunk order (above
-/// [`crate::numerics::shares::PARALLEL_ABOVE_BITS`] the chunks' sums are formed on the cores
-/// first: the same bits).
+/// Node x's terms of [`power_sums`] added to partial sum `l`: f[0] x^{−3/2}, f[1] x^{−3/2}
+/// and, with `dk`, f[2] x^{−5/2}, f[3] x^{−5/2}.
 #[inline(always)]
-fn chunked_sums<T: Real>(
+fn add_node<T: Real>(acc: &mut [[T; LANES]; 4], l: usize, x: T, f: [&T; 4], dk: bool) {
+    if dk {
+        let (v3, v5) = x.pow_m3_2_m5_2();
+        acc[0][l] += &(f[0].clone() * &v3);
+        acc[1][l] += &(f[1].clone() * &v3);
+        acc[2][l] += &(f[2].clone() * &v5);
+        acc[3][l] += &(f[3].clone() * &v5);
+    } else {
+        let v3 = x.pow_m3_2();
+        acc[0][l] += &(f[0].clone() * &v3);
+        acc[1][l] += &(f[1].clone() * &v3);
+    }
+}
+
+/// The partial sums a quantity of [`power_sums`] keeps.
+const LANES: usize = 2;
+
+fn lanes<T: Real>(p: T::Prec) -> [T; LANES] {
+    [T::zero(p), T::zero(p)]
+}
+
+/// Four sums over `n` nodes from `chunk(i0, scratch)`, the sums of the [`CHUNK`] nodes from i0
+/// (`scratch` from `scratch()`, one a thread), each chunk's sums added to the total in chunk
+/// order (above [`crate::numerics::shares::PARALLEL_ABOVE_BITS`] the chunks' sums are formed
+/// on the cores first: the same bits).
+#[inline(always)]
+fn chunked_sums<T: Real, S>(
     n: usize,
     p: T::Prec,
-    chunk: impl Fn(usize, &mut [T; CHUNK], &mut [T; CHUNK]) -> [T; 4] + Sync,
+    scratch: impl Fn() -> S + Sync,
+    chunk: impl Fn(usize, &mut S) -> [T; 4] + Sync,
 ) -> [T; 4] {
     let zero = || [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-    let buffer = || [(); CHUNK].map(|_| T::zero(p));
     let add = |acc: &mut [T; 4], part: [T; 4]| {
         for (s, q) in acc.iter_mut().zip(part) {
             *s += &q;
@@ -838,19 +864,19 @@ fn chunked_sums<T: Real>(
     let mut acc = zero();
     let count = shares(T::bits(p), n);
     if count == 1 {
-        let (mut t3, mut t5) = (buffer(), buffer());
+        let mut s = scratch();
         let mut i0 = 0;
         while i0 < n {
-            add(&mut acc, chunk(i0, &mut t3, &mut t5));
+            add(&mut acc, chunk(i0, &mut s));
             i0 += CHUNK;
         }
         return acc;
     }
     let mut parts: Vec<[T; 4]> = (0..n.div_ceil(CHUNK)).map(|_| zero()).collect();
     for_shares(count, &mut parts, &mut [] as &mut [T], &|start, ps, _| {
-        let (mut t3, mut t5) = (buffer(), buffer());
+        let mut s = scratch();
         for (c, part) in (start..).zip(ps) {
-            *part = chunk(c * CHUNK, &mut t3, &mut t5);
+            *part = chunk(c * CHUNK, &mut s);
         }
     });
     for part in parts {

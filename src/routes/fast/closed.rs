@@ -64,28 +64,28 @@ pub(crate) fn taylor_b<T: Real>(sc: &SpeedConsts<T>, rule: &FastRule<T>, out: &m
     }
 }
 
-/// The moments N_j = ∫_0^1 v^{2j}(v² + k²)^{−1/2} dv (j = 0..n.len()) by the upward recurrence
-/// N_0 = asinh(1/k), N_j = (√(1 + k²) − (2j − 1)k² N_{j−1})/(2j) (each step multiplies the
-/// inherited error by (2j − 1)k²/(2j) < 1), and the closed forms M_0 = ∫(v² + k²)^{−3/2} dv =
-/// 1/(k²√(1 + k²)), P_0 = ∫(v² + k²)^{−5/2} dv = (2 + 3k²)/(3k⁴(1 + k²)^{3/2}), returned as
-/// (M_0, P_0).
-pub(crate) fn moments<T: Real>(k: &T, k2: &T, inv_2j: &[T], ratio_2j: &[T], n: &mut [T]) -> (T, T) {
+/// The moments of the right half's weights that start the recurrences: M_0 = ∫_0^1 (v² +
+/// k²)^{−3/2} dv = 1/(k²√(1 + k²)), P_0 = ∫(v² + k²)^{−5/2} dv = (2 + 3k²)/(3k⁴(1 + k²)^{3/2}),
+/// N_0 = ∫(v² + k²)^{−1/2} dv = asinh(1/k), and √(1 + k²), returned as (M_0, P_0, N_0, √(1 + k²)).
+pub(crate) fn moment_bases<T: Real>(k: &T, k2: &T) -> (T, T, T, T) {
     let p = k.prec();
     let one = T::one(p);
     let opk2 = one.clone() + k2;
     let r1 = opk2.clone().sqrt();
     let m0 = (k2.clone() * &r1).recip();
     // N_0 = asinh(1/k) = ln((1 + √(1 + k²))/k).
-    let mut nj = ((one + &r1) / k).ln();
-    for j in 0..n.len() {
-        if j > 0 {
-            nj = r1.clone() * &inv_2j[j - 1] - k2.clone() * &ratio_2j[j - 1] * &nj;
-        }
-        n[j] = nj.clone();
-    }
+    let n0 = ((one + &r1) / k).ln();
     // P_0 = M_0 (2 + 3k²)/(3k²(1 + k²)).
     let p0 = m0.clone() * (T::from_i64(2, p) + k2.clone().mul_i64(3)) / (opk2 * k2).mul_i64(3);
-    (m0, p0)
+    (m0, p0, n0, r1)
+}
+
+/// N_{j+1} = ∫_0^1 v^{2j+2}(v² + k²)^{−1/2} dv from N_j by the upward recurrence
+/// N_{j+1} = (√(1 + k²) − (2j + 1)k² N_j)/(2j + 2) (each step multiplies the inherited error by
+/// (2j + 1)k²/(2j + 2) < 1); `inv` = 1/(2j + 2), `ratio` = (2j + 1)/(2j + 2), `r1` = √(1 + k²).
+#[inline(always)]
+pub(crate) fn next_moment<T: Real>(nj: &T, k2: &T, r1: &T, inv: &T, ratio: &T) -> T {
+    r1.clone() * inv - k2.clone() * ratio * nj
 }
 
 /// Synthetic division by σ − x0: P(σ) = P(x0) + (σ − x0) Q(σ) for P = Σ b_j σ^j; writes the
@@ -102,31 +102,18 @@ pub(crate) fn synthetic_division<T: Real>(b: &[T], x0: &T, q: &mut [T]) -> T {
     acc
 }
 
-/// ∫_0^1 P(σ)(σ + k²)^{−3/2} dv and ∫_0^1 σ P(σ)(σ + k²)^{−3/2} dv for the polynomial
-/// P = Σ_{j<J} b_j σ^j, exactly: expanded about the branch point, P = P(−k²) + (σ + k²) Q(σ),
-/// they are P(−k²) M_0 + Σ q_i N_i and −k² P(−k²) M_0 + P(−k²) N_0 + Σ q_i N_{i+1}. Only the
-/// stable N_j enter (the M_j = N_{j−1} − k² M_{j−1} recurrence is neutral at k = 1 and would
-/// accumulate J² ε there). `q` is scratch of length J − 1.
-pub(crate) fn poly_moments<T: Real>(b: &[T], k2: &T, n: &[T], m0: &T, q: &mut [T]) -> (T, T, T) {
-    let p = k2.prec();
-    if b.is_empty() {
-        return (T::zero(p), T::zero(p), T::zero(p));
-    }
-    let x0 = -k2.clone();
-    let pv = synthetic_division(b, &x0, q);
-    let mut s1 = pv.clone() * m0;
-    let mut s2 = pv.clone() * &n[0] - (k2.clone() * &pv) * m0;
-    for (i, qi) in q.iter().enumerate() {
-        s1 += qi.clone() * &n[i];
-        s2 += qi.clone() * &n[i + 1];
-    }
-    (s1, s2, pv)
-}
-
 /// The closed-form parts of the right half: ∫ P W3, ∫ σ P W3 and, when `dk`, ∫ P W5, ∫ σ P W5
-/// (P the subtracted Taylor polynomial, W_m = (σ + k²)^{−m/2}, integrals over v ∈ [0, 1]).
-/// With P = P(−k²) + (σ + k²) Q: ∫ P W5 = P(−k²) P_0 + ∫ Q W3 and
-/// ∫ σ P W5 = −k² P(−k²) P_0 + P(−k²) M_0 + ∫ σ Q W3. `scratch` holds 3J values.
+/// (P = Σ_{j<J} b_j σ^j the subtracted Taylor polynomial, W_m = (σ + k²)^{−m/2}, integrals over
+/// v ∈ [0, 1]), exactly: expanded about the branch point, P = P(−k²) + (σ + k²) Q(σ) and
+/// Q = Q(−k²) + (σ + k²) Q2(σ), so that only the stable N_j ([`next_moment`]) enter (the
+/// M_j = N_{j−1} − k² M_{j−1} recurrence is neutral at k = 1 and would accumulate J² ε there):
+///
+/// ```text
+/// ∫ P W3 = P(−k²) M_0 + Σ q_i N_i,   ∫ σ P W3 = −k² P(−k²) M_0 + P(−k²) N_0 + Σ q_i N_{i+1},
+/// ∫ P W5 = P(−k²) P_0 + ∫ Q W3,      ∫ σ P W5 = −k² P(−k²) P_0 + P(−k²) M_0 + ∫ σ Q W3,
+/// ```
+///
+/// the N_j formed once, upwards, as the sums need them. `scratch` holds 2J values.
 pub(crate) fn right_closed_forms<T: Real>(
     b: &[T],
     k: &T,
@@ -138,27 +125,51 @@ pub(crate) fn right_closed_forms<T: Real>(
 ) -> [T; 4] {
     let p = k.prec();
     let j_max = b.len();
-    let (n, rest) = scratch.split_at_mut(j_max + 1);
-    let (q, rest) = rest.split_at_mut(j_max.saturating_sub(1));
-    let q2 = &mut rest[..j_max.saturating_sub(2)];
-    let (m0, p0) = moments(k, k2, inv_2j, ratio_2j, n);
-    let (s1, s2, pv) = poly_moments(b, k2, n, &m0, q);
+    let (q, rest) = scratch.split_at_mut(j_max.saturating_sub(1));
+    let q2 = &mut rest[..if dk { j_max.saturating_sub(2) } else { 0 }];
+    let x0 = -k2.clone();
+    let pv = synthetic_division(b, &x0, q);
+    let qv = if dk {
+        synthetic_division(q, &x0, q2)
+    } else {
+        T::zero(p)
+    };
+    let (m0, p0, n0, r1) = moment_bases(k, k2);
+    // ∫ R W3 = R(−k²) M_0 + …, ∫ σ R W3 = R(−k²) N_0 − k² R(−k²) M_0 + … for R = P, Q.
+    let kpv = k2.clone() * &pv;
+    let mut s1 = pv.clone() * &m0;
+    let mut s2 = pv.clone() * &n0 - &(kpv.clone() * &m0);
+    let mut t1 = qv.clone() * &m0;
+    let mut t2 = qv.clone() * &n0 - &((k2.clone() * &qv) * &m0);
+    let mut nj = n0;
+    for (i, qi) in q.iter().enumerate() {
+        let next = next_moment(&nj, k2, &r1, &inv_2j[i], &ratio_2j[i]);
+        s1 += qi.clone() * &nj;
+        s2 += qi.clone() * &next;
+        if let Some(q2i) = q2.get(i) {
+            t1 += q2i.clone() * &nj;
+            t2 += q2i.clone() * &next;
+        }
+        nj = next;
+    }
     if !dk {
         return [s1, s2, T::zero(p), T::zero(p)];
     }
-    let (t1, t2, _) = poly_moments(q, k2, n, &m0, q2);
-    let kpv = k2.clone() * &pv;
     let d1 = pv.clone() * &p0 + &t1;
     let d2 = pv * &m0 - &(kpv * &p0) + &t2;
     [s1, s2, d1, d2]
 }
+
+/// The scratch of [`right_closed_forms`] held inline: 2J values at double-double (J = 14), 16 at
+/// `f64`.
+const SCRATCH_INLINE: usize = 28;
 
 /// [`right_closed_forms`] at the working precision, or, above double-double, with 64 guard bits
 /// (in MPFR) and rounded once: the expansion of P about the
 /// branch point −k² cancels like √J·log J when k → 1 (P(−1) and the quotient grow like √J while
 /// the integrals stay O(1)), about 15ε at 256 bits (J = 34) in working precision. At `f64` and
 /// double-double (J = 8, 14) the cancellation costs under 2ε and no guard precision is used.
-pub(crate) fn right_closed_forms_guarded<T: Real, const N: usize>(
+pub(crate) fn right_closed_forms_guarded<T: Real>(
     rule: &FastRule<T>,
     b: &[T],
     kc: &KConsts<T>,
@@ -166,9 +177,9 @@ pub(crate) fn right_closed_forms_guarded<T: Real, const N: usize>(
 ) -> [T; 4] {
     let p = rule.prec;
     let j_max = b.len();
-    let len = 3 * j_max + 1;
+    let len = 2 * j_max;
     if T::bits(p) <= 106 {
-        let mut scratch = Buf::<T, N>::zeros(len, p);
+        let mut scratch = Buf::<T, SCRATCH_INLINE>::zeros(len, p);
         return right_closed_forms(
             b,
             &kc.k,

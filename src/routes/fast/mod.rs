@@ -33,8 +33,12 @@
 //! 2.3 bits a node in the worst case: 20 nodes at `f64`. The pole is subtracted only when it is
 //! near, ε ≤ 1/2 (M_R ≥ √3/2; then k²ε² ≤ 1/4); farther out the plain rule converges as fast, and
 //! as M_R → 0, k → 1 the pole at iε would meet the branch point of u^{−3/2} at i/k, where a0 is
-//! unbounded. The difference a(s) − a0 is formed directly: its cancellation near s = 0 costs an
-//! absolute error ε·a/(s + ε²) at a node, the rounding error of the integrand itself.
+//! unbounded. On the rule the subtracted integral splits into Σω a/(s + ε²) and a0 Σω/(s + ε²):
+//! the second's weights are k-independent, so the set-up keeps atan(1/ε)/ε − Σω/(s + ε²) (and
+//! 1 − ε atan(1/ε) − Σωs/(s + ε²)) and ω/(s + ε²) folded into the node factors, and a k costs
+//! the sum of a(s)/(s + ε²) alone. The rounding this costs is the subtraction's own: ε·a/(s + ε²)
+//! absolute at a node and ε·a0 atan(1/ε)/ε for the pole terms, both within ε·I2 (the terms are
+//! positive).
 //!
 //! **Above double-double: the left half on sinh-mapped panels.** The single rule in w needs
 //! ⌈0.433·bits⌉ nodes (1772 at 4096 bits), and a rule's construction grows like n². Above 106
@@ -99,9 +103,10 @@
 //! **Cost per node.** G is evaluated in a form with the factors 1/(1 + s) cleared,
 //! G(t)√(1 + s)·2π = (2/m1)·√(p − γc)·D'/Q' with p = 1 + s, D' = (2p − c)² + 4p√((p − γc)(s + δ²))
 //! and Q' = c² − (m2 + m3)c p + m2m3 p², so that a left node costs two square roots and one
-//! division, a right node three and one, and about 25 multiplications and additions. The node
-//! loops carry no dependence from one node to the next (the weighted sums are taken afterwards),
-//! so that at `f64` the compiler vectorises them (two nodes per SSE2 instruction).
+//! division, a right node three and one, and about 25 multiplications and additions: in the
+//! set-up. A k costs u^{−3/2} (and u^{−5/2}) at each node and four weighted sums
+//! ([`graded::power_sums`], shared with the graded route), with the weights ω, 1/(s + ε²) and
+//! the k-independent node factors folded into three tables a half.
 //!
 //! **Many k.** [`FastSetup`] keeps the k-independent part (G at every node, the Taylor
 //! coefficients): each further k costs one square root and one division per node. Each speed
@@ -275,52 +280,42 @@ impl<T: Real> KConsts<T> {
     }
 }
 
-/// The left half: I1_L, I2_L and, with `dk`, dI1_L/dk, dI2_L/dk (zero without), from the node
-/// values R and R' (see the module docs) and the closed-form pole integrals.
-fn left_parts<T: Real>(
-    l: &Half<T>,
-    sc: &SpeedConsts<T>,
-    kc: &KConsts<T>,
-    left: &[T],
-    left_dk: &[T],
-    dk: bool,
-) -> [T; 4] {
+/// The left half: I1_L, I2_L and, with `dk`, dI1_L/dk, dI2_L/dk (zero without), from the
+/// weighted power sums [A, B, C, D] = [Σ F1 v3, Σ F2 v3, Σ F2 v5, Σ F3 v5] (v_m = u^{−m/2},
+/// F1 = ω L/(Q'(s + ε²)), F2 = s F1, F3 = s F2: [`FastSetup`]'s left tables) and the pole terms
+/// less their values on the rule ([`FastSetup`]'s `left_pole`).
+fn left_parts<T: Real>(pole: &[T; 2], kc: &KConsts<T>, sums: [T; 4], dk: bool) -> [T; 4] {
     let p = kc.k.prec();
-    // I2_L = a0 atan(1/ε)/ε + Σω R, I1_L = a0 (1 − ε atan(1/ε)) + Σωs R.
-    let i2l = kc.a0.clone() * &sc.pole_t + &dot(&l.w, left);
-    let i1l = kc.a0.clone() * &sc.pole_1 + &dot(&l.ws, left);
+    let [a, b, c, d] = sums;
+    // I2_L = a0 (atan(1/ε)/ε − Σω/(s + ε²)) + A, I1_L = a0 (1 − ε atan(1/ε) − Σωs/(s + ε²)) + B.
+    let i2l = kc.a0.clone() * &pole[0] + &a;
+    let i1l = kc.a0.clone() * &pole[1] + &b;
     if !dk {
         return [i1l, i2l, T::zero(p), T::zero(p)];
     }
-    // dI2_L = 3k (e0 atan(1/ε)/ε − Σω R'), dI1_L = 3k (e0 (1 − ε atan(1/ε)) − Σωs R').
+    // dI2_L = 3k (e0 (atan(1/ε)/ε − Σω/(s + ε²)) − C), dI1_L = 3k (e0 (1 − ε atan(1/ε) −
+    // Σωs/(s + ε²)) − D).
     let three_k = kc.k.clone().mul_i64(3);
-    let d2l = (kc.e0.clone() * &sc.pole_t - &dot(&l.w, left_dk)) * &three_k;
-    let d1l = (kc.e0.clone() * &sc.pole_1 - &dot(&l.ws, left_dk)) * &three_k;
+    let d2l = (kc.e0.clone() * &pole[0] - &c) * &three_k;
+    let d1l = (kc.e0.clone() * &pole[1] - &d) * &three_k;
     [i1l, i2l, d1l, d2l]
 }
 
 /// The right half by the Taylor subtraction: I1_R = ∫ P W3 + Σω r W3, I2_R = ∫ σ P W3 +
-/// Σωσ r W3 (P the Taylor polynomial, r = b − P at the nodes in `right`) and, with `dk`,
-/// S1 = ∫ P W5 + Σω r W5, S2 (with σ), so that dI_R/dk = −3k S.
-fn taylor_right_parts<T: Real, const N: usize>(
+/// Σωσ r W3 (P the Taylor polynomial, r = b − P at the nodes, kept as ωr and ωσr in `t`) and,
+/// with `dk`, S1 = ∫ P W5 + Σω r W5, S2 (with σ), so that dI_R/dk = −3k S.
+fn taylor_right_parts<T: Real>(
     rule: &FastRule<T>,
     r: &Half<T>,
     kc: &KConsts<T>,
-    b: &[T],
-    right: &[T],
-    right_dk: &[T],
+    t: &TaylorRight<T>,
     dk: bool,
 ) -> [T; 4] {
     let p = kc.k.prec();
-    let [s1, s2, sd1, sd2] = right_closed_forms_guarded::<T, N>(rule, b, kc, dk);
-    let i1r = dot(&r.w, right) + &s1;
-    let i2r = dot(&r.ws, right) + &s2;
-    if !dk {
-        return [i1r, i2r, T::zero(p), T::zero(p)];
-    }
-    let t1 = dot(&r.w, right_dk) + &sd1;
-    let t2 = dot(&r.ws, right_dk) + &sd2;
-    [i1r, i2r, t1, t2]
+    let [s1, s2, sd1, sd2] = right_closed_forms_guarded(rule, &t.b, kc, dk);
+    let (f, sf) = (&t.f[..], &t.sf[..]);
+    let [a, b, c, d] = graded::power_sums(&r.s, [f, sf, f, sf], dk, p, |sg| sg.clone() + &kc.k2);
+    [a + &s1, b + &s2, c + &sd1, d + &sd2]
 }
 
 /// I1 = I1_L + I1_R, I2 = I2_L + I2_R and, with `dk`, dI/dk = dI_L/dk − 3k S_R, from
@@ -411,9 +406,15 @@ pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Resu
 pub struct FastSetup<T: Real + 'static> {
     rule: RuleRef<T>,
     sc: SpeedConsts<T>,
-    /// Left: L/Q' with L = (2/m1) D' √(p − γc) (so that a(s) = (L/Q') u^{−3/2}), 1/(s + ε²).
-    left_lq: Buf<T, SETUP_INLINE>,
-    left_ih: Buf<T, SETUP_INLINE>,
+    /// Left: F1 = ω L/(Q'(s + ε²)) with L = (2/m1) D' √(p − γc) (so that a(s) = (L/Q') u^{−3/2}),
+    /// F2 = s F1 and F3 = s F2, so that I2_L = a0 (atan(1/ε)/ε − Σω/(s + ε²)) + Σ F1 u^{−3/2}
+    /// and the rest alike ([`left_parts`]): a k costs a square root and a division a node.
+    left_f: Buf<T, SETUP_INLINE>,
+    left_sf: Buf<T, SETUP_INLINE>,
+    left_ssf: Buf<T, SETUP_INLINE>,
+    /// The pole terms less their values on the rule: atan(1/ε)/ε − Σω/(s + ε²) and
+    /// 1 − ε atan(1/ε) − Σωs/(s + ε²) (zero where the pole is not subtracted; then a0 = 0).
+    left_pole: [T; 2],
     /// The right half by the Taylor subtraction (built with the set-up at `f64` and
     /// double-double, on first use above).
     taylor: TaylorCell<T>,
@@ -460,11 +461,13 @@ enum TaylorCell<T> {
 }
 
 /// The k-independent part of the right half by the Taylor subtraction: the Taylor coefficients
-/// b_j of b and the remainders r = b(σ) − Σ_{j<J} b_j σ^j at the nodes.
+/// b_j of b and the remainders r = b(σ) − Σ_{j<J} b_j σ^j at the nodes, weighted: f = ωr and
+/// σf.
 #[derive(Debug)]
 struct TaylorRight<T> {
     b: Buf<T, TAYLOR_INLINE>,
-    r: Buf<T, RIGHT_INLINE>,
+    f: Buf<T, RIGHT_INLINE>,
+    sf: Buf<T, RIGHT_INLINE>,
 }
 
 impl<T: Real> TaylorRight<T> {
@@ -480,7 +483,8 @@ impl<T: Real> TaylorRight<T> {
         let h = rule.right_half()?;
         Ok(TaylorRight {
             b: Buf::zeros(rule.sizes.taylor, p),
-            r: Buf::zeros(h.len(), p),
+            f: Buf::zeros(h.len(), p),
+            sf: Buf::zeros(h.len(), p),
         })
     }
 
@@ -489,11 +493,15 @@ impl<T: Real> TaylorRight<T> {
         let one = T::one(rule.prec);
         taylor_b(sc, rule, &mut self.b);
         let h = rule.right_half()?;
-        taylor_poly(&self.b, &h.s, &mut self.r);
-        for ((sg, pp, two_p, four_p), ri) in h.nodes().zip(self.r.iter_mut()) {
+        taylor_poly(&self.b, &h.s, &mut self.f);
+        let nodes = h.nodes().zip(h.w.iter().zip(&h.ws));
+        for (((sg, pp, two_p, four_p), (w, ws)), (f, sf)) in
+            nodes.zip(self.f.iter_mut().zip(&mut *self.sf))
+        {
             let (f1, dd, e) = sc.right_node(sg, pp, two_p, four_p, &one);
-            let bi = sc.two_over_m1.clone() * dd * f1.sqrt_div(&e);
-            *ri = bi - &*ri;
+            let r = sc.two_over_m1.clone() * dd * f1.sqrt_div(&e) - &*f;
+            *sf = ws.clone() * &r;
+            *f = w.clone() * r;
         }
         Ok(())
     }
@@ -548,8 +556,10 @@ impl<T: Real> FastSetup<T> {
             Box::new_uninit(),
             FastSetup {
                 sc: SpeedConsts::new(speed),
-                left_lq: Buf::zeros(n, p),
-                left_ih: Buf::zeros(n, p),
+                left_f: Buf::zeros(n, p),
+                left_sf: Buf::zeros(n, p),
+                left_ssf: Buf::zeros(n, p),
+                left_pole: [T::zero(p), T::zero(p)],
                 taylor,
                 sinh,
                 rule,
@@ -558,25 +568,51 @@ impl<T: Real> FastSetup<T> {
         let FastSetup {
             rule,
             sc,
-            left_lq,
-            left_ih,
+            left_f,
+            left_sf,
+            left_ssf,
+            left_pole,
             taylor,
             ..
         } = &mut *setup;
         let (rule, sc) = (&*rule, &*sc);
+        // F1 = ω L/(Q'(s + ε²)) and 1/(s + ε²) node by node (F1 in `left_f`, 1/(s + ε²) in
+        // `left_ssf` until the sums below).
         for_shares(
             shares(T::bits(p), n),
-            left_lq,
-            left_ih,
-            &|start, lqs, ihs| {
-                let nodes = rule.left.nodes_in(start..start + lqs.len());
-                for ((s, pp, two_p, four_p), (lq, ih)) in nodes.zip(lqs.iter_mut().zip(ihs)) {
+            left_f,
+            left_ssf,
+            &|start, fs, ihs| {
+                let range = start..start + fs.len();
+                let nodes = rule.left.nodes_in(range.clone());
+                let w = &rule.left.w[range];
+                for (((s, pp, two_p, four_p), w), (f, ih)) in
+                    nodes.zip(w).zip(fs.iter_mut().zip(ihs))
+                {
                     let (e1, dd, qq) = sc.left_node(s, pp, two_p, four_p);
-                    *lq = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq);
                     *ih = (s.clone() + &sc.eps2).recip();
+                    *f = sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq) * w * &*ih;
                 }
             },
         );
+        // The pole terms less the rule's Σω/(s + ε²), Σωs/(s + ε²) (where the pole is
+        // subtracted), then F2 = s F1, F3 = s F2.
+        if !sc.g0.is_zero() {
+            let l = &rule.left;
+            *left_pole = [
+                sc.pole_t.clone() - &dot(&l.w, left_ssf),
+                sc.pole_1.clone() - &dot(&l.ws, left_ssf),
+            ];
+        }
+        for (((f, sf), ssf), s) in left_f
+            .iter()
+            .zip(left_sf.iter_mut())
+            .zip(left_ssf.iter_mut())
+            .zip(&rule.left.s)
+        {
+            *sf = s.clone() * f;
+            *ssf = s.clone() * &*sf;
+        }
         if let TaylorCell::Built(t) = taylor {
             if let Some(Err(e)) = t.as_mut().ok().map(|tr| tr.fill(rule, sc)) {
                 *t = Err(e);
@@ -597,56 +633,18 @@ impl<T: Real> FastSetup<T> {
     }
 
     fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-        let z = self.rule.sizes;
-        let n = z.left.max(z.right).max(3 * z.taylor + 1);
-        if n <= 32 {
-            self.eval::<32>(axes, dk)
-        } else {
-            self.eval::<48>(axes, dk)
-        }
-    }
-
-    fn eval<const N: usize>(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         check_axes(axes)?;
         let rule = &*self.rule;
         let p = rule.prec;
         let kc = KConsts::new(&self.sc, axes);
         let one = T::one(p);
         let nl = rule.left.len();
-        let mut left = Buf::<T, N>::zeros(nl, p);
-        let mut left_dk = Buf::<T, N>::zeros(if dk { nl } else { 0 }, p);
-        // R (and R′ with `dk`, else `left_dk` is empty) node by node.
-        for_shares(
-            shares(T::bits(p), nl),
-            &mut left,
-            &mut left_dk,
-            &|start, rs, drs| {
-                let range = start..start + rs.len();
-                let ls = &rule.left.s[range.clone()];
-                let lnodes = ls
-                    .iter()
-                    .zip(&self.left_lq[range.clone()])
-                    .zip(&self.left_ih[range]);
-                if dk {
-                    for (((s, lq), ih), (r, dr)) in lnodes.zip(rs.iter_mut().zip(drs)) {
-                        // a = (L/Q') u^{−3/2}; a/u = (L/Q') u^{−5/2}.
-                        let u = one.clone() + kc.k2.clone() * s;
-                        let (v3, v5) = u.pow_m3_2_m5_2();
-                        let a = lq.clone() * v3;
-                        let au = lq.clone() * v5;
-                        *r = (a - &kc.a0) * ih;
-                        *dr = (s.clone() * au + &kc.e0) * ih;
-                    }
-                } else {
-                    for (((s, lq), ih), r) in lnodes.zip(rs) {
-                        let u = one.clone() + kc.k2.clone() * s;
-                        let a = lq.clone() * u.pow_m3_2();
-                        *r = (a - &kc.a0) * ih;
-                    }
-                }
-            },
-        );
-        let lp = left_parts(&rule.left, &self.sc, &kc, &left, &left_dk, dk);
+        // Σ F1 u^{−3/2}, Σ F2 u^{−3/2} and, with `dk`, Σ F2 u^{−5/2}, Σ F3 u^{−5/2}, u = 1 + k²s.
+        let (f, sf, ssf) = (&self.left_f[..], &self.left_sf[..], &self.left_ssf[..]);
+        let sums = graded::power_sums(&rule.left.s, [f, sf, sf, ssf], dk, p, |s| {
+            one.clone() + kc.k2.clone() * s
+        });
+        let lp = left_parts(&self.left_pole, &kc, sums, dk);
         // No octaves kept: a set-up built without the sinh-mapped panels.
         if let Some(j) = sinh_octave(rule, &axes.k).filter(|_| !self.sinh.is_empty()) {
             let rs = self.sinh[j]
@@ -660,24 +658,7 @@ impl<T: Real> FastSetup<T> {
             TaylorCell::Lazy(cell) => cell.get_or_init(|| TaylorRight::new(rule, &self.sc)),
         };
         let t = t.as_ref().map_err(Clone::clone)?;
-        let h = rule.right_half()?;
-        let nr = h.len();
-        let mut right = Buf::<T, N>::zeros(nr, p);
-        let mut right_dk = Buf::<T, N>::zeros(if dk { nr } else { 0 }, p);
-        let rnodes = h.s[..nr].iter().zip(&t.r[..nr]);
-        if dk {
-            for ((sg, rr), (o, od)) in rnodes.zip(right.iter_mut().zip(right_dk.iter_mut())) {
-                // W3 = hq^{−3/2}, W3/hq = hq^{−5/2}.
-                let (w3, w5) = (sg.clone() + &kc.k2).pow_m3_2_m5_2();
-                *od = rr.clone() * w5;
-                *o = rr.clone() * w3;
-            }
-        } else {
-            for ((sg, rr), o) in rnodes.zip(right.iter_mut()) {
-                *o = rr.clone() * (sg.clone() + &kc.k2).pow_m3_2();
-            }
-        }
-        let rp = taylor_right_parts::<T, N>(rule, h, &kc, &t.b, &right, &right_dk, dk);
+        let rp = taylor_right_parts(rule, rule.right_half()?, &kc, t, dk);
         combine(lp, rp, &kc, dk, rule.sizes.nodes())
     }
 }
@@ -809,8 +790,11 @@ mod tests {
             let ratio: Vec<Mp> = (1..=12)
                 .map(|j| Mp::from_ratio(2 * j - 1, 2 * j, p))
                 .collect();
-            let mut n = vec![Mp::zero(p); 12];
-            let (m0, p0) = moments(&kk, &k2, &inv, &ratio, &mut n);
+            let (m0, p0, n0, r1) = moment_bases(&kk, &k2);
+            let mut n = vec![n0];
+            for j in 0..11 {
+                n.push(next_moment(&n[j], &k2, &r1, &inv[j], &ratio[j]));
+            }
             let pts = [
                 Mp::zero(p),
                 kk.clone().min_of(Mp::from_ratio(1, 2, p)),
