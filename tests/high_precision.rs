@@ -218,7 +218,25 @@ fn concurrent_first_calls_finish_with_the_same_bits() {
     });
     let want = solve();
     assert!(alone.iter().all(|k| *k == want), "{alone:?} against {want}");
-    for r in &swept {
-        assert_eq!(show(&r.as_ref().unwrap().k().value), want);
+    // The sweep's points start from their neighbours' roots, so their last bits may differ
+    // from a lone solve's: they equal the same sweep run alone, and the lone solve within
+    // their bound.
+    let again = sweep::ellipses(&points, &Options::default());
+    let lone = solve_ellipse(
+        &Material::new(x(0.25)).unwrap().speed(x(0.99)).unwrap(),
+        &x(3.0),
+        &Options::default(),
+    )
+    .unwrap();
+    for (r, a) in swept.iter().zip(&again) {
+        let k = r.as_ref().unwrap().k();
+        assert_eq!(show(&k.value), show(&a.as_ref().unwrap().k().value));
+        let rel = ((k.value.clone() - &lone.k().value) / &lone.k().value).abs();
+        assert!(
+            rel.to_f64() <= k.error.to_f64(),
+            "{} above {}",
+            rel.to_f64(),
+            k.error
+        );
     }
 }
