@@ -1,13 +1,17 @@
 //! A long job cut into blocks, solved on every thread of `rayon`'s pool while the calling thread
 //! writes each block's output in input order as soon as it and every block before it are done.
 //!
-//! There is no barrier: a thread that finishes a block takes the next one at once, so that the
-//! threads finish within one block of each other at the end of the job, not at the end of every
-//! batch, and writing overlaps solving. Solved blocks wait for the writer at most
-//! [`AHEAD_PER_THREAD`] blocks a thread ahead of it, so that the memory held stays a few blocks
-//! a thread whatever the job's size. A write that fails (a closed pipe, a full disk) stops the
-//! job: no thread takes a block after it, and the error is returned once the blocks being
-//! solved are done. What a block computes depends only on its range, never on the thread count.
+//! A thread takes a task of consecutive blocks at a time (enough points that handing a task
+//! over, one message, one wake-up and one write, is small beside solving it; few enough that
+//! each thread gets [`TASKS_PER_THREAD`] tasks) and writes their rows into one buffer, which
+//! the writer passes on in one write. There is no barrier: a thread that finishes a task takes
+//! the next one at once, so that the threads finish within one task of each other at the end of
+//! the job, and writing overlaps solving. Solved tasks wait for the writer at most
+//! [`AHEAD_PER_THREAD`] tasks a thread ahead of it, so that the memory held stays a few tasks a
+//! thread whatever the job's size. A write that fails (a closed pipe, a full disk) stops the
+//! job: no thread takes a task after it, and the error is returned once the tasks being solved
+//! are done. What a block computes depends only on its range, never on the thread count or on
+//! the task it is solved in.
 
 use super::CliError;
 use std::collections::BTreeMap;
@@ -15,30 +19,55 @@ use std::ops::Range;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{mpsc, Condvar, Mutex, PoisonError};
 
-/// How many blocks a thread may run ahead of the writer (solved blocks waiting to be written,
+/// How many tasks a thread may run ahead of the writer (solved tasks waiting to be written,
 /// per thread of the pool).
 const AHEAD_PER_THREAD: usize = 4;
 
-/// Solves `0..total` in blocks of `block` (`solve` gives a block's output and its count of
-/// failed items) and passes the outputs to `write` in input order. Returns the count of failed
-/// items, or the first error of `write`. A job of one block runs on the calling thread (where
-/// the solves may share their node loops among the cores); any other on the pool's threads.
-pub fn solve_in_order<S, O: Send>(
+/// How many tasks each thread gets at least (when the job has the blocks for it): the last
+/// task to finish then ends within about 1/32 of the job after the others.
+const TASKS_PER_THREAD: usize = 32;
+
+/// The items a task holds at most: a thousand f64 sweep points (about a millisecond of work)
+/// make the hand-over of a task (a message, a wake-up, a write of about 130 kB) a fraction of a
+/// per cent of it; the writer's system calls per block were the serial part that bounded a
+/// 16-thread sweep (docs/design.md, "Many cores").
+const TASK_ITEMS: usize = 1024;
+
+/// Solves `0..total` in blocks of `block` (`solve` appends a block's output to the buffer it is
+/// given and returns its count of failed items) and passes the outputs to `write` in input
+/// order. Returns the count of failed items, or the first error of `write`. A job of one block
+/// runs on the calling thread (where the solves may share their node loops among the cores);
+/// any other on the pool's threads.
+pub fn solve_in_order<S>(
     total: usize,
     block: usize,
     solve: S,
-    mut write: impl FnMut(O) -> Result<(), CliError>,
+    mut write: impl FnMut(&[u8]) -> Result<(), CliError>,
 ) -> Result<usize, CliError>
 where
-    S: Fn(Range<usize>) -> (O, usize) + Sync,
+    S: Fn(Range<usize>, &mut Vec<u8>) -> usize + Sync,
 {
-    let blocks = total.div_ceil(block.max(1));
-    let range = |b: usize| b * block..((b + 1) * block).min(total);
+    let block = block.max(1);
+    let blocks = total.div_ceil(block);
     if blocks <= 1 {
-        let (rows, failed) = solve(0..total);
-        return write(rows).map(|()| failed);
+        let mut out = Vec::new();
+        let failed = solve(0..total, &mut out);
+        return write(&out).map(|()| failed);
     }
     let threads = rayon::current_num_threads().clamp(1, blocks);
+    let group = task_blocks(blocks, block, threads);
+    let tasks = blocks.div_ceil(group);
+    // A task's blocks solved one after another into one buffer, sized after the first block.
+    let task = |t: usize| {
+        let (mut out, mut failed) = (Vec::new(), 0);
+        for b in t * group..((t + 1) * group).min(blocks) {
+            failed += solve(b * block..((b + 1) * block).min(total), &mut out);
+            if b == t * group {
+                out.reserve(out.len() * (group - 1));
+            }
+        }
+        (out, failed)
+    };
     let shared = Shared {
         next: AtomicUsize::new(0),
         stop: AtomicBool::new(false),
@@ -46,14 +75,14 @@ where
         room: Condvar::new(),
         ahead: threads * AHEAD_PER_THREAD,
     };
-    let (tx, rx) = mpsc::channel::<(usize, (O, usize))>();
+    let (tx, rx) = mpsc::channel::<(usize, (Vec<u8>, usize))>();
     std::thread::scope(|s| {
-        let (shared, solve, range) = (&shared, &solve, &range);
+        let (shared, task) = (&shared, &task);
         s.spawn(move || {
             rayon::scope(|rs| {
                 for _ in 0..threads {
                     let tx = tx.clone();
-                    rs.spawn(move |_| shared.take_blocks(blocks, |b| solve(range(b)), &tx));
+                    rs.spawn(move |_| shared.take_tasks(tasks, task, &tx));
                 }
             })
         });
@@ -61,63 +90,72 @@ where
     })
 }
 
+/// How many consecutive blocks of `block` items make a task, for `blocks` blocks on `threads`
+/// threads: at most [`TASK_ITEMS`] items, and at least [`TASKS_PER_THREAD`] tasks a thread
+/// when there are the blocks for them; never less than one block.
+fn task_blocks(blocks: usize, block: usize, threads: usize) -> usize {
+    (TASK_ITEMS / block)
+        .min(blocks / (threads * TASKS_PER_THREAD))
+        .max(1)
+}
+
 /// What the threads of [`solve_in_order`] share.
 struct Shared {
-    /// The next block to take.
+    /// The next task to take.
     next: AtomicUsize,
-    /// Set when a write failed: no block is taken after it.
+    /// Set when a write failed: no task is taken after it.
     stop: AtomicBool,
-    /// How many blocks have been written (all before the first not written).
+    /// How many tasks have been written (all before the first not written).
     written: Mutex<usize>,
     /// Signalled when `written` grows or `stop` is set.
     room: Condvar,
-    /// How far ahead of `written` a block may be taken.
+    /// How far ahead of `written` a task may be taken.
     ahead: usize,
 }
 
 impl Shared {
-    /// One thread's loop: takes the next block, waits while it is too far ahead of the writer,
-    /// solves it and sends its output; until no block is left or the job stops.
-    fn take_blocks<O>(
+    /// One thread's loop: takes the next task, waits while it is too far ahead of the writer,
+    /// solves it and sends its output; until no task is left or the job stops.
+    fn take_tasks<O>(
         &self,
-        blocks: usize,
+        tasks: usize,
         solve: impl Fn(usize) -> O,
         tx: &mpsc::Sender<(usize, O)>,
     ) {
         loop {
-            let b = self.next.fetch_add(1, Ordering::Relaxed);
-            if b >= blocks {
+            let t = self.next.fetch_add(1, Ordering::Relaxed);
+            if t >= tasks {
                 return;
             }
             let mut written = self.written.lock().unwrap_or_else(PoisonError::into_inner);
-            while b >= *written + self.ahead && !self.stop.load(Ordering::Relaxed) {
+            while t >= *written + self.ahead && !self.stop.load(Ordering::Relaxed) {
                 written = self
                     .room
                     .wait(written)
                     .unwrap_or_else(PoisonError::into_inner);
             }
             drop(written);
-            if self.stop.load(Ordering::Relaxed) || tx.send((b, solve(b))).is_err() {
+            if self.stop.load(Ordering::Relaxed) || tx.send((t, solve(t))).is_err() {
                 return;
             }
         }
     }
 
-    /// The writer: receives the solved blocks, writes each once every block before it is
-    /// written, and stops the job at the first failed write (the blocks still arriving are
+    /// The writer: receives the solved tasks, writes each once every task before it is
+    /// written, and stops the job at the first failed write (the tasks still arriving are
     /// dropped). Returns the count of failed items written, or that write's error.
-    fn write_in_order<O>(
+    fn write_in_order(
         &self,
-        rx: mpsc::Receiver<(usize, (O, usize))>,
-        write: &mut impl FnMut(O) -> Result<(), CliError>,
+        rx: mpsc::Receiver<(usize, (Vec<u8>, usize))>,
+        write: &mut impl FnMut(&[u8]) -> Result<(), CliError>,
     ) -> Result<usize, CliError> {
         let mut pending = BTreeMap::new();
         let (mut next, mut failed, mut result) = (0, 0, Ok(()));
-        for (b, out) in rx {
-            pending.insert(b, out);
+        for (t, out) in rx {
+            pending.insert(t, out);
             while let Some((rows, f)) = pending.remove(&next) {
                 if result.is_ok() {
-                    result = write(rows);
+                    result = write(&rows);
                     failed += f;
                 }
                 next += 1;
@@ -137,7 +175,7 @@ mod tests {
     use super::*;
 
     /// Every block is written once, in input order, on one thread and on several, with more
-    /// blocks than the writer lets the threads run ahead.
+    /// tasks than the writer lets the threads run ahead and tasks of several blocks.
     #[test]
     fn blocks_are_written_in_input_order() {
         for threads in [1, 2, 5] {
@@ -148,26 +186,54 @@ mod tests {
             let mut seen = Vec::new();
             let failed = pool.install(|| {
                 solve_in_order(
-                    1000,
+                    10_000,
                     7,
-                    |r| (format!("{}-{};", r.start, r.end), r.len() % 2),
+                    |r, out: &mut Vec<u8>| {
+                        out.extend(format!("{}-{};", r.start, r.end).bytes());
+                        r.len() % 2
+                    },
                     |rows| {
-                        seen.push(rows);
+                        seen.extend_from_slice(rows);
                         Ok(())
                     },
                 )
             });
-            let expected: Vec<String> = (0..1000)
+            let expected: String = (0..10_000)
                 .step_by(7)
-                .map(|s| format!("{}-{};", s, (s + 7).min(1000)))
+                .map(|s| format!("{}-{};", s, (s + 7).min(10_000)))
                 .collect();
-            assert_eq!(seen, expected, "{threads} threads");
-            assert_eq!(failed.ok(), Some(142), "{threads} threads: 142 blocks of 7");
+            assert_eq!(
+                String::from_utf8_lossy(&seen),
+                expected,
+                "{threads} threads"
+            );
+            assert_eq!(
+                failed.ok(),
+                Some(1428),
+                "{threads} threads: 1428 blocks of 7"
+            );
+            assert!(task_blocks(1429, 7, threads) > 1, "{threads} threads");
+        }
+    }
+
+    /// A task holds at most a thousand items, and each thread gets 32 tasks where the blocks
+    /// allow: the f64, double-double and 256-bit sweeps on 16 threads and on one.
+    #[test]
+    fn tasks_are_large_but_many() {
+        assert_eq!(task_blocks(15_625, 64, 16), 16);
+        assert_eq!(task_blocks(1_563, 64, 16), 3);
+        assert_eq!(task_blocks(79, 64, 16), 1);
+        assert_eq!(task_blocks(79, 64, 1), 2);
+        assert_eq!(task_blocks(2, 64, 2), 1);
+        for (blocks, threads) in [(15_625, 16), (1_563, 16), (100_000, 128), (5_000, 2)] {
+            let g = task_blocks(blocks, 64, threads);
+            assert!(g * 64 <= TASK_ITEMS);
+            assert!(g == 1 || blocks.div_ceil(g) >= threads * TASKS_PER_THREAD);
         }
     }
 
     /// A failed write stops the job: its error is returned, nothing is written after it, and
-    /// the blocks solved after it are at most those the threads had taken.
+    /// the tasks solved after it are at most those the threads had taken.
     #[test]
     fn a_failed_write_stops_the_job() {
         let pool = rayon::ThreadPoolBuilder::new()
@@ -180,9 +246,9 @@ mod tests {
             solve_in_order(
                 100_000,
                 10,
-                |_| {
+                |_, _: &mut Vec<u8>| {
                     solved.fetch_add(1, Ordering::Relaxed);
-                    (String::new(), 0)
+                    0
                 },
                 |_| {
                     writes += 1;
@@ -196,9 +262,10 @@ mod tests {
         assert!(matches!(r, Err(CliError::Failed(m)) if m == "closed"));
         assert_eq!(writes, 3);
         let solved = solved.load(Ordering::Relaxed);
+        let group = task_blocks(10_000, 10, 2);
         assert!(
-            solved <= 3 + 2 * (2 * AHEAD_PER_THREAD + 1),
-            "{solved} blocks solved"
+            solved <= (3 + 2 * (2 * AHEAD_PER_THREAD + 1)) * group,
+            "{solved} blocks solved in tasks of {group}"
         );
     }
 }

@@ -519,16 +519,15 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
     let bar = Progress::new("sweep", total);
     // The rows of the points `range` and their count of failed points, formed where the block
     // is solved, which then advances the progress bar.
-    let solve = |range: std::ops::Range<usize>| {
+    let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
         let (block, texts): (Vec<_>, Vec<_>) = range.map(|j| grid.point(j)).unzip();
-        let mut out = Vec::with_capacity(texts.len() * 160);
         let mut failed = 0;
         for (r, t) in sweep::ellipses(&block, &opts).iter().zip(&texts) {
             failed += usize::from(r.is_err());
-            push_row(&mut out, a.format, speed_key, t, r);
+            push_row(out, a.format, speed_key, t, r);
         }
         bar.advance(texts.len());
-        (out, failed)
+        failed
     };
     write_in_order(total, solve, &bar, &a.precision)
 }
@@ -538,11 +537,11 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
 /// points whose rows carry an error.
 pub(super) fn write_in_order(
     total: usize,
-    solve: impl Fn(std::ops::Range<usize>) -> (Vec<u8>, usize) + Sync,
+    solve: impl Fn(std::ops::Range<usize>, &mut Vec<u8>) -> usize + Sync,
     bar: &Progress,
     precision: &impl std::fmt::Display,
 ) -> Result<(), CliError> {
-    let failed = pipeline::solve_in_order(total, BLOCK, solve, |rows| emit_bytes(&rows))?;
+    let failed = pipeline::solve_in_order(total, BLOCK, solve, emit_bytes)?;
     bar.finish();
     if failed > 0 {
         return Err(CliError::Failed(format!(

@@ -564,10 +564,9 @@ fn solve_and_write<T: Real + Send + Sync>(
     }
     let total = grid.len();
     let bar = Progress::new("sweep contact", total);
-    let solve = |range: std::ops::Range<usize>| {
+    let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
         let (problems, c_rs): (Vec<_>, Vec<_>) =
             grid.problems(range.clone(), p).into_iter().unzip();
-        let mut out = Vec::new();
         let mut failed = 0;
         let solved = sweep::try_contacts(&problems, &opts);
         for ((r, c_r), j) in solved.iter().zip(c_rs).zip(range) {
@@ -577,10 +576,10 @@ fn solve_and_write<T: Real + Send + Sync>(
                 .texts(j)
                 .into_iter()
                 .chain(cells.iter().map(String::as_str));
-            push_line(&mut out, a.format, &keys, values);
+            push_line(out, a.format, &keys, values);
         }
         bar.advance(solved.len());
-        (out, failed)
+        failed
     };
     write_in_order(total, solve, &bar, &a.precision)
 }
