@@ -47,6 +47,19 @@ DATA_SECTIONS = [
      "Each parallel job of docs/design.md (\"Many cores\") as one process at 1, 2 and every "
      "CPU (`RAYON_NUM_THREADS`), criterion's median wall time and its ratio to one thread. "
      "Targets: two threads ≤ 0.55× one thread for each of the four large jobs."),
+    ("scaling_16cpu", "Many cores on 16 CPUs (`benches/scaling.rs` there)", "scaling_16cpu.txt",
+     "The same bench built here and run on a lent 16-CPU machine without a toolchain "
+     "(`tools/many_cores.sh` carries the built tool and bench there). Target: ≥ 13× one thread "
+     "(median ≤ 0.077) at 16 threads for each of the four large jobs; `fig2` at f64 never "
+     "slower on 16 threads than on one."),
+    ("many_cores", "Every thread count on 16 CPUs (`tools/many_cores.sh`)", "many_cores.txt",
+     "The jobs of `benches/scaling.rs` at 1, 2, 4, 8 and 16 threads on the same machine "
+     "(minimum of 3 runs), the SHA-256 of each sweep's output at 1, 2 and 16 threads (equal), "
+     "and the warm f64 solve of the 12 cells there (target ≤ 1000 ns)."),
+    ("writer_cost", "The writer's system calls (`tools/writer_cost.sh`)", "writer_cost.txt",
+     "What callgrind does not count: system time and context switches of the 10⁶-point f64 "
+     "sweep, the build that writes each block of 64 points at once (base) against the one that "
+     "writes tasks of up to 1,024 points (head), run alternately on this machine."),
     ("sweep_point_cost", "The sweep command's cost a point (`tools/sweep_point_cost.sh`)",
      "sweep_point_cost.txt",
      "`moving-hertz sweep` at f64 on a slice of a 10⁶-point grid (10,000 ratios at each speed), "
