@@ -7,6 +7,10 @@
 #   threads.txt  each job of benches/scaling.rs at 1, 2, 4, 8, … all threads: the minimum wall
 #                time of 3 runs (one process, RAYON_NUM_THREADS set, output to /dev/null) and
 #                the speed-up over one thread;
+#   ceiling.txt  the machine's own ceiling for each job: as many one-thread copies of it as
+#                CPUs, run at once (minimum of 3), against one copy alone: CPUs × T1 / T(all at
+#                once) is the most any thread count can gain when every core is busy (the clock
+#                a processor keeps with all its cores loaded, shared caches and memory);
 #   bits.txt     the SHA-256 of each sweep's output at 1, 2 and all threads (equal: a point's bits
 #                depend only on its block, never on the thread count);
 #   cells.txt    the warm f64 ellipse solve in the 12 cells of benches/ellipse.rs
@@ -42,8 +46,8 @@ JOBS=(
   "sweep_f64|sweep --nu 0.25 --gap log:1e-1:1e-8:50 --ratio log:1e-2:1e2:20000"
   "sweep_dd|sweep --nu 0.25 --gap log:1e-1:1e-8:50 --ratio log:1e-2:1e2:2000 --precision dd"
   "sweep_256|sweep --nu 0.25 --gap log:1e-1:1e-8:50 --ratio log:1e-2:1e2:100 --precision 256"
-  "fig2_256|fig2 --precision 256 --out $OUT/fig2"
-  "fig2_f64|fig2 --out $OUT/fig2"
+  "fig2_256|fig2 --precision 256 --out OUTDIR"
+  "fig2_f64|fig2 --out OUTDIR"
 )
 COUNTS=(1)
 t=2
@@ -55,7 +59,7 @@ wall() { # threads, args: the minimum of 3 wall times in seconds
   for _ in 1 2 3; do
     local t0=$EPOCHREALTIME
     # shellcheck disable=SC2086
-    RAYON_NUM_THREADS=$1 "$BIN" $2 > /dev/null
+    RAYON_NUM_THREADS=$1 "$BIN" ${2//OUTDIR/$OUT/fig2} > /dev/null
     local t1=$EPOCHREALTIME
     best=$(awk -v a="$t0" -v b="$t1" -v m="$best" 'BEGIN { d = b - a; if (m == "" || d < m) m = d; printf "%.4f", m }')
   done
@@ -76,6 +80,33 @@ wall() { # threads, args: the minimum of 3 wall times in seconds
     done
   done
 } > "$OUT/threads.txt"
+
+together() { # args: the minimum of 3 wall times of $CPUS one-thread copies run at once
+  local best=""
+  for _ in 1 2 3; do
+    local t0=$EPOCHREALTIME
+    for c in $(seq "$CPUS"); do
+      # shellcheck disable=SC2086
+      RAYON_NUM_THREADS=1 "$BIN" ${1//OUTDIR/$OUT/copy$c} > /dev/null &
+    done
+    wait
+    local t1=$EPOCHREALTIME
+    best=$(awk -v a="$t0" -v b="$t1" -v m="$best" 'BEGIN { d = b - a; if (m == "" || d < m) m = d; printf "%.4f", m }')
+  done
+  echo "$best"
+}
+{
+  echo "# $CPUS one-thread copies of each job at once (minimum of 3) against one alone (threads.txt): the gain every core can give"
+  printf "%-10s %10s %12s %9s\n" job one-alone all-at-once ceiling
+  for job in "${JOBS[@]:0:4}"; do
+    name=${job%%|*}
+    one=$(awk -v j="$name" '$1 == j && $2 == 1 { print $3 }' "$OUT/threads.txt")
+    all=$(together "${job#*|}")
+    awk -v j="$name" -v o="$one" -v a="$all" -v n="$CPUS" \
+      'BEGIN { printf "%-10s %10.4f %12.4f %9.2f\n", j, o, a, n * o / a }'
+  done
+} > "$OUT/ceiling.txt"
+rm -rf "$OUT"/copy*
 
 {
   echo "# SHA-256 of each sweep's output at 1, 2 and $CPUS threads"
