@@ -59,7 +59,7 @@
 //! log₂(1/ε) only while kε > 1/4, i.e. by at most two units).
 //!
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
-//! checked against the adaptive route at 400 bits in `tests/graded.rs`, with the derivatives and
+//! checked against the adaptive route at 400 bits in `tests/unit/graded.rs`, with the derivatives and
 //! with layouts for another k_ref. The measured worst errors, and the margin of the node counts
 //! of [`left_nodes`], are in docs/calibration.md.
 
@@ -75,7 +75,7 @@ use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
 
 mod plan;
-pub use plan::{left_nodes, left_plan, max_units, MAX_RULE_NODES, MAX_UNITS};
+pub use plan::{left_nodes, left_plan, MAX_UNITS};
 use plan::{length_costs, pick_plan, plan_table, PLANNED};
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
@@ -780,22 +780,6 @@ fn chunked_sums<T: Real, S>(
     acc
 }
 
-fn run<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-    GradedSetup::new(speed, &axes.k)?.eval(axes, dk)
-}
-
-/// I1, I2 of (34) in the normalisation of (37) for k ≥ 1 by graded fixed panels (module docs).
-///
-/// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^180, else [`Error::Domain`]. Accuracy: relative
-/// error below [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: the [`left_plan`] for
-/// x up to asinh(1/min(4/(5k), ε, δ)) plus [`panel_nodes`] nodes.
-pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-    run(speed, axes, false)
-}
-
-/// [`integrals`] with dI1/dk, dI2/dk differentiated under the integral sign on the same nodes
-/// Implements (46)–(47) and their k-derivatives.
-/// (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵); their relative error is of the same order (positive integrands).
-pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-    run(speed, axes, true)
-}
+#[cfg(test)]
+#[path = "../../../tests/unit/graded.rs"]
+mod reference_tests;
