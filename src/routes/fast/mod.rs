@@ -367,7 +367,7 @@ fn taylor_poly<T: Real>(b: &[T], s: &[T], out: &mut [T]) {
 /// speed: G at every node (as the factors below), the Taylor coefficients of b and the right
 /// remainders. Each further k then costs one square root and one division per node and the
 /// closed forms (one logarithm): the evaluation Newton's method on the ellipse equation (33)
-/// repeats. [`integrals`] and [`integrals_with_dk`] run the one the speed keeps: the route has
+/// repeats. [`crate::Evaluator`] runs the one the speed keeps ([`SetupCache`]): the route has
 /// one integrand, this one.
 #[derive(Debug)]
 pub struct FastSetup<T: Real + 'static> {
@@ -582,13 +582,20 @@ impl<T: Real> FastSetup<T> {
         Ok(setup)
     }
 
-    /// I1, I2 at the axis ratio `axes` (same domain and accuracy as [`integrals`]).
-    /// Implements (46)–(47).
+    /// I1, I2 of (34) in the normalisation of (37) at the axis ratio `axes` by the fast route
+    /// (module docs). Domain: 0 < k ≤ 1, else [`Error::Domain`]. Accuracy: relative error of I1
+    /// and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate`. Work: a square root and
+    /// a division a node and the closed forms; no allocation at `f64` and double-double; above
+    /// double-double the right half's sinh-mapped panels where they are cheaper (module docs).
+    /// The route reported is [`Route::FixedRule`]. Implements (46)–(47).
     pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.run(axes, false)
     }
 
-    /// I1, I2 of (46)–(47), dI1/dk, dI2/dk at the axis ratio `axes` (as [`integrals_with_dk`]).
+    /// I1, I2 of (46)–(47) (as [`FastSetup::integrals`]) and dI1/dk, dI2/dk, differentiated
+    /// under the integral sign on the same nodes (module docs), at the axis ratio `axes`. The
+    /// derivatives' relative error is below [`DK_BOUND_EPS`]·ε = 128ε (the reported estimate is
+    /// for I1, I2); cost: a few products more a node.
     pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.run(axes, true)
     }
