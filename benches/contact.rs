@@ -2,17 +2,18 @@
 //! from the ellipse's I1, I2, then a, b, p0, d0 in closed form) per precision, ν = 0.3,
 //! R2/R1 = 2 (A1/B1 = 2, k < 1), under a load, at 1 − M_R = 0.5, 10⁻⁴ and 10⁻¹²; beside it the
 //! ellipse solve alone at 10⁻⁴ (`ellipse_gap=1e-4`: what the contact solution adds to it is the
-//! difference); and J0 by quadratures of its own at the k of the 10⁻⁴ case:
-//! `routes::direct::approach_integral` (both peaks in closed form, the tests' reference) and
-//! `routes::direct::contact_integrals` (with I1, I2 and their k-derivatives, the adaptive route).
+//! difference); and J0 by the adaptive route at the k of the 10⁻⁴ case (`integrals` with
+//! `Method::Adaptive`, the k-derivatives and J0: the five integrals from one evaluation of G a
+//! node).
 //! At MPFR 256 bits also the solve at 1 − M_R = 10⁻¹⁰⁰⁰ (k ≈ 10⁻²⁵⁰).
 //!
 //! Run: `cargo bench --bench contact -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use moving_hertz::routes::{direct, AxisRatio};
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
-use moving_hertz::{solve_ellipse, ContactProblem, Loading, Material, Options};
+use moving_hertz::{
+    integrals, solve_ellipse, ContactProblem, IntegralOptions, Loading, Material, Method, Options,
+};
 
 fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, gaps: &[&str]) {
     let mut g = c.benchmark_group(format!("contact/{label}"));
@@ -54,13 +55,14 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec, gaps: &[&str]) {
         .k()
         .value
         .clone();
-    let axes = AxisRatio::new(k).expect("k");
-    let zero = T::zero(p);
-    g.bench_function("j0_gap=1e-4/approach_integral", |b| {
-        b.iter(|| direct::approach_integral(black_box(&speed), black_box(&axes), &zero))
-    });
+    let adaptive = IntegralOptions {
+        method: Method::Adaptive,
+        derivatives: true,
+        j0: true,
+        ..Default::default()
+    };
     g.bench_function("j0_gap=1e-4/contact_integrals", |b| {
-        b.iter(|| direct::contact_integrals(black_box(&speed), black_box(&axes), &zero))
+        b.iter(|| integrals(black_box(&speed), black_box(&k), &adaptive))
     });
     g.finish();
 }

@@ -9,7 +9,7 @@
 //! * `scaling_ellipse/{warm,cold}/<precision>`: `solve_ellipse` (the precision ladder);
 //! * `gl_rule/short_point/n=<n>,bits=<bits>`: one n-point Gauss–Legendre rule
 //!   (`GaussLegendre::get`, built cold), n the rule of a 2-unit sinh-mapped panel
-//!   (`routes::graded::left_nodes(bits, 2)`: 914 nodes at 4096 bits), the largest rule a first
+//!   (the graded rule's `left_nodes(bits, 2)`, [`SHORT_POINT`]: 914 nodes at 4096 bits), the largest rule a first
 //!   solve at k < 1 builds above 512 bits (the construction it replaced, Newton on the
 //!   three-term recurrence, is the reference of the unit test in `numerics/gauss_legendre.rs`);
 //! * `node_loops/{cores,one_thread}/<bits>`: the warm `solve_ellipse` called from the bench's
@@ -30,7 +30,6 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use moving_hertz::numerics::quadrature::{clear_rule_caches, GaussLegendre};
-use moving_hertz::routes::graded::left_nodes;
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
 use moving_hertz::{integrals, solve_ellipse, IntegralOptions, Material, Options};
 use std::time::{Duration, Instant};
@@ -97,11 +96,20 @@ fn run<T: Real>(c: &mut Criterion, prec: Precision, p: T::Prec) {
     }
 }
 
+/// (bits, nodes of a 2-unit sinh-mapped panel of the graded rule at those bits); the unit test
+/// `graded::reference_tests::left_nodes_of_the_precision_bench` holds it to the rule's formula.
+const SHORT_POINT: [(u32, usize); 5] = [
+    (256, 59),
+    (1024, 230),
+    (2048, 458),
+    (4096, 914),
+    (8192, 1826),
+];
+
 fn gl_rules(c: &mut Criterion) {
     let mut g = c.benchmark_group("gl_rule");
     g.sample_size(10);
-    for bits in [256u32, 1024, 2048, 4096, 8192] {
-        let n = left_nodes(bits, 2);
+    for (bits, n) in SHORT_POINT {
         let p = MpPrec::new(bits as u64).expect("precision");
         let id = format!("n={n},bits={bits}");
         g.bench_function(BenchmarkId::new("short_point", &id), |b| {

@@ -69,6 +69,16 @@
 
 #![warn(missing_docs)]
 
+// Unit tests of internals (tests/unit/, named by `#[path]` in their modules) share the
+// integration tests' helpers and spell the crate `moving_hertz` as those do.
+#[cfg(test)]
+extern crate self as moving_hertz;
+#[cfg(test)]
+#[macro_use]
+#[path = "../tests/common/mod.rs"]
+#[allow(unreachable_patterns)] // the crate's `#[non_exhaustive]` enums are exhaustive inside it
+mod common;
+
 pub mod contact;
 pub mod error;
 pub mod estimate;

@@ -300,67 +300,6 @@ fn ladder_k_within_10_eps_of_a_320_bit_quadrature_solve() {
     ladder_accuracy::<Mp>(common::mp(256), "mpfr256");
 }
 
-/// The material ν and the speed 2^`gap_log2` below the Rayleigh speed, exact at precision `q`.
-fn dyadic_speed<S: Real>(nu: f64, gap_log2: i32, q: S::Prec) -> Speed<S> {
-    let gap = S::one(q).mul_pow2(gap_log2);
-    Material::new(S::from_f64(nu, q))
-        .and_then(|m| m.speed_from_gap(gap))
-        .unwrap()
-}
-
-/// J0 of the contact solution, k² I1 + I2 from the ellipse's own I1, I2, against J0 by its own
-/// quadrature (`approach_integral`, both peaks in closed form) at 64 bits more, at the solved k
-/// carried over exactly: within its bound, the bound within 40ε, and the true error within 16ε.
-/// Dyadic inputs (exact at every precision): ν from −0.5 to 0.5, speeds from 0 to 2⁻⁴⁰ below the
-/// Rayleigh speed (2⁻³⁰⁰⁰ at MPFR, k from 10⁻²²⁹ to 10⁻²²³), R2/R1 from 2⁻²⁰ to 2²⁰ (k on both
-/// sides of 1 at the other speeds).
-fn j0_against_its_quadrature<T: Real>(p: T::Prec, label: &str) {
-    use moving_hertz::routes::{direct::approach_integral, AxisRatio};
-    let bits = T::bits(p);
-    let hi = common::mp(u64::from(bits) + 64);
-    let x = |v: f64| T::from_f64(v, p);
-    let mut gaps = vec![0, -3, -40];
-    if bits > 106 {
-        gaps.push(-3000);
-    }
-    let mut worst = 0.0f64;
-    for nu in [-0.5, 0.0, 0.25, 0.5] {
-        for &gap in &gaps {
-            let (sp, sp_hi) = (
-                dyadic_speed::<T>(nu, gap, p),
-                dyadic_speed::<Mp>(nu, gap, hi),
-            );
-            for ratio in [2f64.powi(-20), 0.125, 1.0, 8.0, 2f64.powi(20)] {
-                let at = format!("{label} nu={nu} gap=2^{gap} R2/R1={ratio:e}");
-                let load = Loading::Load(x(1000.0));
-                let sol = contact(&sp, &x(1.0), &x(ratio), load, &x(80e9)).unwrap();
-                let k_hi = AxisRatio::new(Mp::from_float(&sol.k().value.to_float(bits), hi));
-                let want = approach_integral(&sp_hi, &k_hi.unwrap(), &Mp::zero(hi))
-                    .unwrap()
-                    .value
-                    .to_float(bits + 64);
-                let err = rel_eps(&sol.j0().value, &want);
-                let bound = sol.j0().error.to_f64() / T::epsilon(p).to_f64();
-                assert!(
-                    err <= bound,
-                    "{at}: J0 off by {err:.2} eps, bound {bound:.2} eps"
-                );
-                assert!(bound <= 40.0, "{at}: J0 bound {bound:.2} eps");
-                assert!(err <= 16.0, "{at}: J0 off by {err:.2} eps");
-                worst = worst.max(err);
-            }
-        }
-    }
-    println!("{label}: J0 = k² I1 + I2 worst error {worst:.2} eps");
-}
-
-#[test]
-fn j0_is_k2_i1_plus_i2_within_its_bound_of_its_own_quadrature() {
-    j0_against_its_quadrature::<f64>((), "f64");
-    j0_against_its_quadrature::<Dd>((), "dd");
-    j0_against_its_quadrature::<Mp>(common::mp(256), "mpfr256");
-}
-
 #[test]
 fn precision_ladder_from_f64() {
     ladder::<Dd>((), "dd");
@@ -459,7 +398,12 @@ fn the_solve_routes_as_a_user_evaluation_does() {
 /// from A1/B1 = 10⁻⁶ to 10⁶ and M_R up to 0.9999.
 #[test]
 fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
-    use moving_hertz::routes::{direct::contact_integrals, AxisRatio};
+    use moving_hertz::IntegralOptions;
+    let adaptive = IntegralOptions {
+        method: Method::Adaptive,
+        derivatives: true,
+        ..Default::default()
+    };
     let (mut worst, mut worst_i) = (0.0f64, 0.0f64);
     for nu in [-0.5, 0.2, 0.5] {
         let mat = Material::new(nu).unwrap();
@@ -472,12 +416,13 @@ fn the_root_satisfies_the_shape_equation_on_a_wide_grid() {
                 let at = format!("nu={nu} M_R={mr} A1/B1={ratio}");
                 let s = ellipse(&sp, &ratio);
                 let (k, k_err) = ok(&s);
-                let ax = AxisRatio::new(Dd::from_f64(k, ())).unwrap();
-                let c = contact_integrals(&spd, &ax, &Dd::zero(())).unwrap();
-                let (i1, i2) = (c.i1.to_f64(), c.i2.to_f64());
+                let c = integrals(&spd, &Dd::from_f64(k, ()), &adaptive).unwrap();
+                let (ci1, ci2) = (c.i1.value, c.i2.value);
+                let (cd1, cd2) = (c.di1_dk.unwrap().value, c.di2_dk.unwrap().value);
+                let (i1, i2) = (ci1.to_f64(), ci2.to_f64());
                 // F′ = d ln(I2/I1)/d ln k, from the reference's derivatives.
-                let df = (c.di2_dk() / c.i2 - c.di1_dk() / c.i1).to_f64() * k;
-                let resid = ((c.i2 / c.i1).to_f64() / ratio).ln().abs();
+                let df = (cd2 / ci2 - cd1 / ci1).to_f64() * k;
+                let resid = ((ci2 / ci1).to_f64() / ratio).ln().abs();
                 let allowed = df.abs() * k_err + 8.0 * f64::EPSILON;
                 assert!(
                     resid <= allowed,

@@ -6,11 +6,24 @@
 //! Inputs are exact binary fractions, so that one value serves every precision.
 
 use moving_hertz::numerics::quadrature::{GaussLegendre, MAX_RULE_BITS};
-use moving_hertz::routes::fast::{self, FastSetup, BOUND_EPS, DK_BOUND_EPS};
-use moving_hertz::routes::{direct, AxisRatio};
-use moving_hertz::scalar::FieldOps;
-use moving_hertz::scalar::{Mp, MpPrec, Real};
-use moving_hertz::{integrals, solve_ellipse, Error, IntegralOptions, Material, Options};
+use moving_hertz::routes::AxisRatio;
+use moving_hertz::scalar::{FieldOps, Mp, MpPrec, Real};
+use moving_hertz::{
+    integrals, solve_ellipse, Error, Evaluator, IntegralOptions, Material, Method, Options,
+};
+
+/// The fixed rule's a-priori bounds in ε ([`IntegralOptions`]): I1, I2 and their k-derivatives.
+const BOUND_EPS: f64 = 16.0;
+const DK_BOUND_EPS: f64 = 128.0;
+
+/// [`Method::Fixed`] (or [`Method::Adaptive`]) with the k-derivatives.
+fn with_dk(method: Method) -> IntegralOptions {
+    IntegralOptions {
+        method,
+        derivatives: true,
+        ..Default::default()
+    }
+}
 
 /// (ν, M_R, k): the static limit near k = 1 (where the Taylor form's derivative cancels most),
 /// the Rayleigh peak, a narrow k-peak, a negative ν, and a k small enough for the Taylor form.
@@ -45,27 +58,47 @@ fn fixed_rule_at_1024_bits_matches_the_adaptive_quadrature() {
     for (nu, mr, k) in CASES {
         let (sp, ax) = inputs(nu, mr, k, bits as u64);
         let (spr, axr) = inputs(nu, mr, k, bits as u64 + 64);
-        let q = MpPrec::new(bits as u64 + 64).expect("precision");
-        let want = direct::contact_integrals(&spr, &axr, &Mp::zero(q)).expect("reference");
-        let wdk = want.dk.clone().expect("derivatives");
-        let got = fast::integrals_with_dk(&sp, &ax).expect("fixed rule");
-        let gdk = got.dk.clone().expect("derivatives");
-        let e = eps_err(&got.i1, &want.i1, bits).max(eps_err(&got.i2, &want.i2, bits));
-        let edk = eps_err(&gdk[0], &wdk[0], bits).max(eps_err(&gdk[1], &wdk[1], bits));
-        let est = (got.error_estimate.0.clone() << (bits as i32 - 1)).to_f64();
-        // The k-independent set-up (laid out per octave of k) gives the same values.
-        let setup = FastSetup::new(&sp).expect("set-up");
-        let s = setup.integrals_with_dk(&ax).expect("set-up evaluation");
-        let sdk = s.dk.clone().expect("derivatives");
-        let es = eps_err(&s.i1, &got.i1, bits).max(eps_err(&s.i2, &got.i2, bits));
-        let esdk = eps_err(&sdk[0], &gdk[0], bits).max(eps_err(&sdk[1], &gdk[1], bits));
+        let want = integrals(&spr, &axr.k, &with_dk(Method::Adaptive)).expect("reference");
+        let wdk = [want.di1_dk.expect("dI1/dk"), want.di2_dk.expect("dI2/dk")];
+        let got = integrals(&sp, &ax.k, &with_dk(Method::Fixed)).expect("fixed rule");
+        let gdk = [
+            got.di1_dk.clone().expect("dI1/dk"),
+            got.di2_dk.clone().expect("dI2/dk"),
+        ];
+        let e = eps_err(&got.i1.value, &want.i1.value, bits).max(eps_err(
+            &got.i2.value,
+            &want.i2.value,
+            bits,
+        ));
+        let edk = eps_err(&gdk[0].value, &wdk[0].value, bits).max(eps_err(
+            &gdk[1].value,
+            &wdk[1].value,
+            bits,
+        ));
+        let est = got.i1.error.to_f64() * 2f64.powi(bits as i32 - 1);
+        // A k-independent set-up of its own (laid out per octave of k, for a speed built anew)
+        // gives the same values.
+        let (fresh, _) = inputs(nu, mr, k, bits as u64);
+        let ev = Evaluator::new(&fresh, with_dk(Method::Fixed)).expect("set-up");
+        let s = ev.at(&ax.k).expect("set-up evaluation");
+        let sdk = [s.di1_dk.expect("dI1/dk"), s.di2_dk.expect("dI2/dk")];
+        let es = eps_err(&s.i1.value, &got.i1.value, bits).max(eps_err(
+            &s.i2.value,
+            &got.i2.value,
+            bits,
+        ));
+        let esdk = eps_err(&sdk[0].value, &gdk[0].value, bits).max(eps_err(
+            &sdk[1].value,
+            &gdk[1].value,
+            bits,
+        ));
         println!(
             "nu={nu} M_R={mr} k={k}: {} nodes, I {e:.2} eps (estimate {est:.0}), dI/dk {edk:.2} \
              eps; set-up against one-shot {es:.2}, {esdk:.2} eps",
             got.work
         );
-        assert!(e <= est && e <= BOUND_EPS as f64, "I: {e} eps");
-        assert!(edk <= DK_BOUND_EPS as f64, "dI/dk: {edk} eps");
+        assert!(e <= est && e <= BOUND_EPS, "I: {e} eps");
+        assert!(edk <= DK_BOUND_EPS, "dI/dk: {edk} eps");
         assert!(es <= 4.0 && esdk <= 16.0, "set-up: {es}, {esdk} eps");
         worst = worst.max(e);
         worst_dk = worst_dk.max(edk);
@@ -89,7 +122,11 @@ fn precisions_beyond_the_rules_are_refused_naming_the_bits_asked_for() {
     let p = MpPrec::new(bits).expect("precision");
     refused(GaussLegendre::<Mp>::get(8, p).map(|_| ()));
     let (sp, ax) = inputs("0.25", "0.5", "0.5", bits);
-    refused(fast::integrals(&sp, &ax).map(|_| ()));
+    let fixed = IntegralOptions {
+        method: Method::Fixed,
+        ..Default::default()
+    };
+    refused(integrals(&sp, &ax.k, &fixed).map(|_| ()));
     refused(integrals(&sp, &ax.k, &IntegralOptions::default()).map(|_| ()));
     refused(solve_ellipse(&sp, &Mp::from_i64(2, p), &Options::default()).map(|_| ()));
 }

@@ -167,7 +167,7 @@ fn case<T: Real + Send + Sync>(g: &mut SplitMix, p: T::Prec, i: u64, shares: &Sh
     });
     let speeds = [
         mat.speed_from_gap(x(gap)),
-        mat.speed_from_m2(x(g.value(0.0, 1.0))),
+        mat.speed(x(g.value(0.0, 1.0)) / mat.cr_over_c2()),
         mat.parse_speed(&format!("{mr:e}")),
     ];
     for r in speeds.into_iter().chain(by_velocity) {

@@ -6,7 +6,7 @@ mod common;
 
 use common::{err_eps, read_csv, reference, rel_eps};
 use moving_hertz::physics::{
-    rayleigh_function, ClosedForm, GreenFunction, Material, RayleighRoots,
+    rayleigh_function, ClosedForm, GreenFunction, Material, RayleighRoots, Solid,
 };
 use moving_hertz::scalar::{mixed_precision_events, Complex, Field, FieldOps, Real};
 use moving_hertz::Error;
@@ -225,10 +225,14 @@ fn bad_material_and_speed_inputs_are_typed_errors() {
         );
     }
     assert!(matches!(mat.speed(f64::NAN), Err(Error::NotFinite { .. })));
-    assert!(matches!(mat.speed_from_m2(0.95), Err(Error::Domain { .. })));
-    assert!(mat.speed_from_m2(0.9).is_ok());
+    // The shear Mach number V/c2 = 0.95 lies above c_R/c2 ≈ 0.919, 0.9 below it.
     assert!(matches!(
-        Material::from_speed_ratio(0.9),
+        mat.speed(0.95 / mat.cr_over_c2()),
+        Err(Error::Domain { .. })
+    ));
+    assert!(mat.speed(0.9 / mat.cr_over_c2()).is_ok());
+    assert!(matches!(
+        Solid::from_wave_speeds(1.0, 0.9),
         Err(Error::Domain { .. })
     ));
     // The message names the value and the bound.
@@ -239,7 +243,8 @@ fn bad_material_and_speed_inputs_are_typed_errors() {
 #[test]
 fn speed_ratio_round_trip() {
     // ν = 1/4 ⇔ c2/c1 = 1/√3; its Rayleigh root is the classical 2 − 2/√3.
-    let mat = Material::from_speed_ratio((1.0f64 / 3.0).sqrt()).expect("material");
+    let solid = Solid::from_wave_speeds(1.0, (1.0f64 / 3.0).sqrt()).expect("material");
+    let mat = solid.material();
     approx::assert_abs_diff_eq!(*mat.nu(), 0.25, epsilon = 4e-16);
     let want = 2.0 - 2.0 / 3f64.sqrt();
     approx::assert_relative_eq!(*mat.m1(), want, max_relative = 4.0 * f64::EPSILON);

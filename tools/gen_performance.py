@@ -114,13 +114,14 @@ FAMILIES = [
      "`ContactProblem::solve` (the ellipse, J0 of (32) as k² I1 + I2 from the ellipse's I1, I2, "
      "then a, b, p0, d0) for ν = 0.3, R2/R1 = 2 under a load at 1 − M_R = 0.5, 10⁻⁴, 10⁻¹² (and "
      "10⁻¹⁰⁰⁰ at 256 bits); the ellipse solve alone at 10⁻⁴ (`ellipse_gap=1e-4`); and J0 by "
-     "quadratures of its own at the 10⁻⁴ case's k: `approach_integral` (both peaks in closed form, "
-     "the tests' reference) and `contact_integrals` (the adaptive route's five integrals)."),
+     "the adaptive route at the 10⁻⁴ case's k (`contact_integrals`: its five integrals from one "
+     "evaluation of G a node)."),
     ("graded", "The graded route for k ≥ 1 (`benches/graded.rs`)",
      "I1, I2 and their k-derivatives in one call (layout and evaluation), ν = 0.2."),
     ("fast", "The fixed rule for k ≤ 1 (`benches/fast_integrals.rs`, group `fast`)",
-     "I1, I2 (`fast`), with k-derivatives (`fast_dk`), the k-independent set-up alone (`setup`) and "
-     "one evaluation from a set-up (`at_dk`); ν = 1/4."),
+     "I1, I2 at a new speed (`fast`; `integrals` with `Method::Fixed`), with k-derivatives "
+     "(`fast_dk`), and one evaluation from a built set-up (`at_dk`; the set-up alone costs "
+     "`fast_dk` − `at_dk`); ν = 1/4."),
     ("adaptive", "The adaptive quadrature (`benches/fast_integrals.rs`, group `adaptive`)",
      "I1, I2 by the adaptive route (tolerance ε of the precision) on the same cases, for comparison "
      "with the fixed rule."),

@@ -150,7 +150,7 @@ impl MaterialSpeed {
         }
     }
 
-    /// `("speed", text)` or `("gap", text)`: the speed as given, for the echo of the inputs.
+    /// `("speed", text)` or `("gap", text)`: the speed as given.
     pub fn given(&self) -> (&'static str, &str) {
         match (&self.speed.speed, &self.speed.gap) {
             (Some(s), _) => ("speed", &s.text),
@@ -166,6 +166,31 @@ impl MaterialSpeed {
             (_, s) => format!("M_R = {s}"),
         }
     }
+
+    /// ν and the speed as typed, for the JSON `inputs`.
+    pub fn json(&self) -> GivenSpeed<'_> {
+        GivenSpeed {
+            nu: &self.nu.text,
+            speed: text_of(&self.speed.speed),
+            gap: text_of(&self.speed.gap),
+        }
+    }
+}
+
+/// The text of an optional decimal option, as typed.
+pub fn text_of(d: &Option<Decimal>) -> Option<&str> {
+    d.as_ref().map(|d| d.text.as_str())
+}
+
+/// ν and the speed as typed: the JSON `inputs`' `nu`, and `speed` or `gap` (neither where the
+/// speed was given otherwise, as by `contact --velocity`).
+#[derive(serde::Serialize)]
+pub struct GivenSpeed<'a> {
+    nu: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    speed: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    gap: Option<&'a str>,
 }
 
 /// A positive quantity (a ratio, a radius, a load, a modulus) rounded once to precision `p`

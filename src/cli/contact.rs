@@ -1,7 +1,7 @@
 //! `moving-hertz contact`: the full moving-punch Hertz solution by [`ContactProblem::solve`].
 
-use super::args::{self, Decimal, MaterialSpeed};
-use super::output::{json_pair, largest, print_json, OutputArgs, Text};
+use super::args::{self, Decimal, GivenSpeed, MaterialSpeed};
+use super::output::{largest, print_json, ran, Head, OutputArgs, Pairs, Text};
 use super::CliError;
 use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{Precision, Real};
@@ -62,11 +62,8 @@ pub struct ContactArgs {
 /// The inputs as typed (JSON `inputs`).
 #[derive(Serialize)]
 struct Inputs<'a> {
-    nu: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    speed: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    gap: Option<&'a str>,
+    #[serde(flatten)]
+    given: GivenSpeed<'a>,
     #[serde(skip_serializing_if = "Option::is_none")]
     velocity: Option<&'a str>,
     r_along: &'a str,
@@ -88,31 +85,21 @@ struct Inputs<'a> {
 /// The JSON object of `contact` (docs/cli.md).
 #[derive(Serialize)]
 struct Json<'a> {
-    command: &'static str,
-    inputs: Inputs<'a>,
-    precision: String,
-    bits: String,
+    #[serde(flatten)]
+    head: Head<Inputs<'a>>,
     route: &'static str,
     /// c_R (m/s) and M_R = V/c_R, when the speed was given by --velocity.
     #[serde(skip_serializing_if = "Option::is_none")]
     c_r: Option<String>,
     #[serde(skip_serializing_if = "Option::is_none")]
     mr: Option<String>,
-    a: String,
-    a_error: String,
-    b: String,
-    b_error: String,
-    k: String,
-    k_error: String,
-    e: String,
-    e_error: String,
+    /// a, b, k, e.
+    #[serde(flatten)]
+    shape: Pairs,
     major_axis: &'static str,
-    p0: String,
-    p0_error: String,
-    d0: String,
-    d0_error: String,
-    load: String,
-    load_error: String,
+    /// p0, d0, P.
+    #[serde(flatten)]
+    loading: Pairs,
     error_estimate: String,
 }
 
@@ -173,11 +160,10 @@ pub(super) fn ratio_fits<T: Real>(
 /// the option and quote the text.
 fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliError> {
     let nu = &a.input.nu;
-    let text = |d: &Option<Decimal>| d.as_ref().map_or(String::new(), |d| d.text.clone());
     let (e_text, mu_text, rho_text) = (
-        text(&a.youngs_modulus),
-        text(&a.shear_modulus),
-        text(&a.density),
+        args::text_of(&a.youngs_modulus).unwrap_or(""),
+        args::text_of(&a.shear_modulus).unwrap_or(""),
+        args::text_of(&a.density).unwrap_or(""),
     );
     if let (Some(v), Some(rho)) = (&a.velocity, &a.density) {
         let moduli = match (&a.youngs_modulus, &a.shear_modulus) {
@@ -192,7 +178,7 @@ fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliE
             (None, None) => return Err(CliError::Input(MODULUS_REQUIRED.into())),
         };
         let names = [
-            ("Young's modulus", "--youngs-modulus", e_text.as_str()),
+            ("Young's modulus", "--youngs-modulus", e_text),
             (
                 "shear modulus",
                 if e_text.is_empty() {
@@ -200,13 +186,9 @@ fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliE
                 } else {
                     "--youngs-modulus"
                 },
-                if e_text.is_empty() {
-                    mu_text.as_str()
-                } else {
-                    e_text.as_str()
-                },
+                if e_text.is_empty() { mu_text } else { e_text },
             ),
-            ("density", "--density", rho_text.as_str()),
+            ("density", "--density", rho_text),
             ("nu", "--nu", nu.text.as_str()),
             ("velocity", "--velocity", v.text.as_str()),
         ];
@@ -272,17 +254,7 @@ fn report_json<T: Real>(
 ) -> Result<(), CliError> {
     let ig = sol.ellipse().integrals();
     let prec = ig.precision;
-    fn text(d: &Option<Decimal>) -> Option<&str> {
-        d.as_ref().map(|d| d.text.as_str())
-    }
     let mr = sol.problem().speed.mr();
-    let (av, a_error) = json_pair(sol.a());
-    let (b, b_error) = json_pair(sol.b());
-    let (k, k_error) = json_pair(sol.k());
-    let (e, e_error) = json_pair(sol.e());
-    let (p0, p0_error) = json_pair(sol.p0());
-    let (d0, d0_error) = json_pair(sol.d0());
-    let (load, load_error) = json_pair(sol.load());
     let bounds = [
         sol.a().error,
         sol.b().error,
@@ -293,42 +265,38 @@ fn report_json<T: Real>(
         sol.load().error,
     ];
     print_json(&Json {
-        command: "contact",
-        inputs: Inputs {
-            nu: &a.input.nu.text,
-            speed: text(&a.input.speed.speed),
-            gap: text(&a.input.speed.gap),
-            velocity: text(&a.velocity),
-            r_along: &a.r_along.text,
-            r_across: &a.r_across.text,
-            load: a.load.as_ref().map(|d| d.text.as_str()),
-            approach: a.approach.as_ref().map(|d| d.text.as_str()),
-            shear_modulus: text(&a.shear_modulus),
-            youngs_modulus: text(&a.youngs_modulus),
-            density: text(&a.density),
-            method: a.method.label(),
-            precision: a.precision.label(),
-        },
-        precision: prec.label(),
-        bits: prec.bits().to_string(),
+        head: Head::new(
+            "contact",
+            Inputs {
+                given: a.input.json(),
+                velocity: args::text_of(&a.velocity),
+                r_along: &a.r_along.text,
+                r_across: &a.r_across.text,
+                load: args::text_of(&a.load),
+                approach: args::text_of(&a.approach),
+                shear_modulus: args::text_of(&a.shear_modulus),
+                youngs_modulus: args::text_of(&a.youngs_modulus),
+                density: args::text_of(&a.density),
+                method: a.method.label(),
+                precision: a.precision.label(),
+            },
+            prec,
+        ),
         route: ig.route.label(),
         c_r: solid.map(|s| s.c_r().to_decimal()),
         mr: solid.map(|_| mr.to_decimal()),
-        a: av,
-        a_error,
-        b,
-        b_error,
-        k,
-        k_error,
-        e,
-        e_error,
+        shape: Pairs::of(&[
+            ("a", Some(sol.a())),
+            ("b", Some(sol.b())),
+            ("k", Some(sol.k())),
+            ("e", Some(sol.e())),
+        ]),
         major_axis: sol.ellipse().major().label(),
-        p0,
-        p0_error,
-        d0,
-        d0_error,
-        load,
-        load_error,
+        loading: Pairs::of(&[
+            ("p0", Some(sol.p0())),
+            ("d0", Some(sol.d0())),
+            ("load", Some(sol.load())),
+        ]),
         error_estimate: largest(&bounds),
     })
 }
@@ -363,11 +331,8 @@ fn report_text<T: Real>(
         a.input.nu.text, a.r_along.text, a.r_across.text,
     ));
     t.line(format!(
-        "at {} ({} bits), method {}: route {}; units as given (SI inputs give SI outputs: m, Pa, N)",
-        prec.label(),
-        prec.bits(),
-        a.method,
-        ig.route
+        "{}; units as given (SI inputs give SI outputs: m, Pa, N)",
+        ran(prec, a.method, ig.route)
     ));
     if let Some(solid) = solid {
         t.plain("Rayleigh wave speed c_R (m/s)", solid.c_r());

@@ -1,8 +1,8 @@
 //! `moving-hertz ellipse`: the contact ellipse's shape, (33) I2(k)/I1(k) = A1/B1, by
 //! [`solve_ellipse`].
 
-use super::args::{self, Decimal, MaterialSpeed, REPEAT_CAP};
-use super::output::{json_pair, largest, print_json, OutputArgs, Text};
+use super::args::{self, Decimal, GivenSpeed, MaterialSpeed, REPEAT_CAP};
+use super::output::{largest, print_json, ran, Head, OutputArgs, Pairs, Text};
 use super::CliError;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{solve_ellipse, with_precision, Ellipse, Method, Options};
@@ -39,11 +39,8 @@ pub struct EllipseArgs {
 /// The inputs as typed (JSON `inputs`).
 #[derive(Serialize)]
 struct Inputs<'a> {
-    nu: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    speed: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    gap: Option<&'a str>,
+    #[serde(flatten)]
+    given: GivenSpeed<'a>,
     ratio: &'a str,
     method: &'a str,
     precision: String,
@@ -52,24 +49,16 @@ struct Inputs<'a> {
 /// The JSON object of `ellipse` (docs/cli.md).
 #[derive(Serialize)]
 struct Json<'a> {
-    command: &'static str,
-    inputs: Inputs<'a>,
-    precision: String,
-    bits: String,
+    #[serde(flatten)]
+    head: Head<Inputs<'a>>,
     route: &'static str,
-    k: String,
-    k_error: String,
-    e: String,
-    e_error: String,
+    /// k, e.
+    #[serde(flatten)]
+    shape: Pairs,
     major_axis: &'static str,
-    #[serde(rename = "I1")]
-    i1: String,
-    #[serde(rename = "I1_error")]
-    i1_error: String,
-    #[serde(rename = "I2")]
-    i2: String,
-    #[serde(rename = "I2_error")]
-    i2_error: String,
+    /// I1, I2.
+    #[serde(flatten)]
+    integrals: Pairs,
     iterations: String,
     error_estimate: String,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -109,36 +98,24 @@ pub fn time(n: u64, mut f: impl FnMut() -> bool) -> Vec<f64> {
 fn report<T: Real>(a: &EllipseArgs, sol: &Ellipse<T>, times: &[f64]) -> Result<(), CliError> {
     let ig = sol.integrals();
     let prec = ig.precision;
-    let (speed_kind, speed_text) = a.input.given();
     let median = (!times.is_empty()).then(|| format!("{:.0}", times[times.len() / 2]));
     let min = times.first().map(|t| format!("{t:.0}"));
     if a.output.json {
-        let (k, k_error) = json_pair(sol.k());
-        let (e, e_error) = json_pair(sol.e());
-        let (i1, i1_error) = json_pair(&ig.i1);
-        let (i2, i2_error) = json_pair(&ig.i2);
         return print_json(&Json {
-            command: "ellipse",
-            inputs: Inputs {
-                nu: &a.input.nu.text,
-                speed: (speed_kind == "speed").then_some(speed_text),
-                gap: (speed_kind == "gap").then_some(speed_text),
-                ratio: &a.ratio.text,
-                method: a.method.label(),
-                precision: a.precision.label(),
-            },
-            precision: prec.label(),
-            bits: prec.bits().to_string(),
+            head: Head::new(
+                "ellipse",
+                Inputs {
+                    given: a.input.json(),
+                    ratio: &a.ratio.text,
+                    method: a.method.label(),
+                    precision: a.precision.label(),
+                },
+                prec,
+            ),
             route: ig.route.label(),
-            k,
-            k_error,
-            e,
-            e_error,
+            shape: Pairs::of(&[("k", Some(sol.k())), ("e", Some(sol.e()))]),
             major_axis: sol.major().label(),
-            i1,
-            i1_error,
-            i2,
-            i2_error,
+            integrals: Pairs::of(&[("I1", Some(&ig.i1)), ("I2", Some(&ig.i2))]),
             iterations: sol.iterations().to_string(),
             error_estimate: largest(&[sol.k().error, sol.e().error, ig.i1.error, ig.i2.error]),
             repeat: (!times.is_empty()).then(|| times.len().to_string()),
@@ -154,11 +131,8 @@ fn report<T: Real>(a: &EllipseArgs, sol: &Ellipse<T>, times: &[f64]) -> Result<(
         a.input.nu.text
     ));
     t.line(format!(
-        "at {} ({} bits), method {}: route {}, {} evaluations",
-        prec.label(),
-        prec.bits(),
-        a.method,
-        ig.route,
+        "{}, {} evaluations",
+        ran(prec, a.method, ig.route),
         sol.iterations()
     ));
     t.result("k = b/a (across/along the motion)", sol.k());

@@ -2,13 +2,13 @@
 //! chosen precision, or by [`integrals_to_tolerance`] at the lowest precision that reaches
 //! `--tol`.
 
-use super::args::{self, Decimal, MaterialSpeed};
-use super::output::{json_pair, largest, print_json, OutputArgs, Text};
+use super::args::{self, Decimal, GivenSpeed, MaterialSpeed};
+use super::output::{largest, print_json, ran, Head, OutputArgs, Pairs, Text};
 use super::CliError;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{
-    integrals, integrals_to_tolerance, with_precision, Estimated, ExactInputs, IntegralOptions,
-    Integrals, Method, RelError,
+    integrals, integrals_to_tolerance, with_precision, ExactInputs, IntegralOptions, Integrals,
+    Method, RelError,
 };
 use serde::Serialize;
 
@@ -65,11 +65,8 @@ fn tol(s: &str) -> Result<Tol, String> {
 /// The inputs as typed (JSON `inputs`).
 #[derive(Serialize)]
 struct Inputs<'a> {
-    nu: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    speed: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    gap: Option<&'a str>,
+    #[serde(flatten)]
+    given: GivenSpeed<'a>,
     k: &'a str,
     method: &'a str,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -83,31 +80,12 @@ struct Inputs<'a> {
 /// The JSON object of `integrals` (docs/cli.md).
 #[derive(Serialize)]
 struct Json<'a> {
-    command: &'static str,
-    inputs: Inputs<'a>,
-    precision: String,
-    bits: String,
+    #[serde(flatten)]
+    head: Head<Inputs<'a>>,
     route: &'static str,
-    #[serde(rename = "I1")]
-    i1: String,
-    #[serde(rename = "I1_error")]
-    i1_error: String,
-    #[serde(rename = "I2")]
-    i2: String,
-    #[serde(rename = "I2_error")]
-    i2_error: String,
-    #[serde(rename = "dI1_dk", skip_serializing_if = "Option::is_none")]
-    di1_dk: Option<String>,
-    #[serde(rename = "dI1_dk_error", skip_serializing_if = "Option::is_none")]
-    di1_dk_error: Option<String>,
-    #[serde(rename = "dI2_dk", skip_serializing_if = "Option::is_none")]
-    di2_dk: Option<String>,
-    #[serde(rename = "dI2_dk_error", skip_serializing_if = "Option::is_none")]
-    di2_dk_error: Option<String>,
-    #[serde(rename = "J0", skip_serializing_if = "Option::is_none")]
-    j0: Option<String>,
-    #[serde(rename = "J0_error", skip_serializing_if = "Option::is_none")]
-    j0_error: Option<String>,
+    /// I1, I2, and dI1/dk, dI2/dk and J0 when asked for.
+    #[serde(flatten)]
+    values: Pairs,
     work: String,
     error_estimate: String,
 }
@@ -208,40 +186,29 @@ fn to_tolerance(a: &IntegralsArgs, tol: &Tol) -> Result<(), CliError> {
 
 fn report<T: Real>(a: &IntegralsArgs, r: &Integrals<T>) -> Result<(), CliError> {
     let prec = r.precision;
-    let (speed_kind, speed_text) = a.input.given();
     if a.output.json {
-        let (i1, i1_error) = json_pair(&r.i1);
-        let (i2, i2_error) = json_pair(&r.i2);
-        let opt = |x: &Option<Estimated<T>>| x.as_ref().map(json_pair).unzip();
-        let (di1_dk, di1_dk_error) = opt(&r.di1_dk);
-        let (di2_dk, di2_dk_error) = opt(&r.di2_dk);
-        let (j0, j0_error) = opt(&r.j0);
         return print_json(&Json {
-            command: "integrals",
-            inputs: Inputs {
-                nu: &a.input.nu.text,
-                speed: (speed_kind == "speed").then_some(speed_text),
-                gap: (speed_kind == "gap").then_some(speed_text),
-                k: &a.k.text,
-                method: a.method.label(),
-                precision: a.precision.map(|p| p.label()),
-                tol: a.tol.as_ref().map(|t| t.text.as_str()),
-                derivatives: a.derivatives,
-                j0: a.j0,
-            },
-            precision: prec.label(),
-            bits: prec.bits().to_string(),
+            head: Head::new(
+                "integrals",
+                Inputs {
+                    given: a.input.json(),
+                    k: &a.k.text,
+                    method: a.method.label(),
+                    precision: a.precision.map(|p| p.label()),
+                    tol: a.tol.as_ref().map(|t| t.text.as_str()),
+                    derivatives: a.derivatives,
+                    j0: a.j0,
+                },
+                prec,
+            ),
             route: r.route.label(),
-            i1,
-            i1_error,
-            i2,
-            i2_error,
-            di1_dk,
-            di1_dk_error,
-            di2_dk,
-            di2_dk_error,
-            j0,
-            j0_error,
+            values: Pairs::of(&[
+                ("I1", Some(&r.i1)),
+                ("I2", Some(&r.i2)),
+                ("dI1_dk", r.di1_dk.as_ref()),
+                ("dI2_dk", r.di2_dk.as_ref()),
+                ("J0", r.j0.as_ref()),
+            ]),
             work: r.work.to_string(),
             error_estimate: largest(&[r.i1.error, r.i2.error]),
         });
@@ -260,11 +227,8 @@ fn report<T: Real>(a: &IntegralsArgs, r: &Integrals<T>) -> Result<(), CliError> 
         a.input.nu.text
     ));
     t.line(format!(
-        "at {} ({} bits), method {}: route {}, {} evaluations or terms; A1/B1 = I2/I1 for this k",
-        prec.label(),
-        prec.bits(),
-        a.method,
-        r.route,
+        "{}, {} evaluations or terms; A1/B1 = I2/I1 for this k",
+        ran(prec, a.method, r.route),
         r.work
     ));
     t.result("I1 (the cos^2 integral, (46))", &r.i1);

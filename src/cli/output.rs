@@ -4,7 +4,7 @@
 //! number a decimal string with every digit.
 
 use super::CliError;
-use moving_hertz::scalar::Real;
+use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{Estimated, RelError};
 use std::io::Write;
 
@@ -22,6 +22,41 @@ pub struct OutputArgs {
     #[arg(long, value_name = "N", conflicts_with = "json",
           value_parser = clap::value_parser!(u32).range(1..))]
     pub digits: Option<u32>,
+}
+
+/// The fields every command's JSON object opens with (docs/cli.md): the command, its inputs as
+/// typed, and the precision that ran.
+#[derive(serde::Serialize)]
+pub struct Head<I> {
+    command: &'static str,
+    inputs: I,
+    precision: String,
+    bits: String,
+}
+
+impl<I> Head<I> {
+    /// The opening of `command`'s object, for `inputs` and the precision `prec` that ran.
+    pub fn new(command: &'static str, inputs: I, prec: Precision) -> Self {
+        Head {
+            command,
+            inputs,
+            precision: prec.label(),
+            bits: prec.bits().to_string(),
+        }
+    }
+}
+
+/// `at P (B bits), method M: route R`: the text summaries' line on how a result was computed.
+pub fn ran(
+    prec: Precision,
+    method: impl std::fmt::Display,
+    route: impl std::fmt::Display,
+) -> String {
+    format!(
+        "at {} ({} bits), method {method}: route {route}",
+        prec.label(),
+        prec.bits()
+    )
 }
 
 /// Builds a text summary: heading lines, and results as a label line followed by the value on
@@ -102,10 +137,31 @@ fn significant(s: &str) -> usize {
     m.chars().filter(char::is_ascii_digit).count()
 }
 
-/// A value and its bound as JSON strings: every digit of the working precision, the bound as
-/// `RelError` prints it.
-pub fn json_pair<T: Real>(x: &Estimated<T>) -> (String, String) {
-    (x.value.to_decimal(), x.error.to_string())
+/// Results as JSON keys `NAME` and `NAME_error`, in the order given: the value with every digit
+/// of the working precision, the bound as `RelError` prints it (flattened into a command's
+/// object).
+pub struct Pairs(Vec<(&'static str, String, String)>);
+
+impl Pairs {
+    /// The pairs of the results in `list` that are present.
+    pub fn of<T: Real>(list: &[(&'static str, Option<&Estimated<T>>)]) -> Pairs {
+        let pair = |(name, x): &(&'static str, Option<&Estimated<T>>)| {
+            x.map(|x| (*name, x.value.to_decimal(), x.error.to_string()))
+        };
+        Pairs(list.iter().filter_map(pair).collect())
+    }
+}
+
+impl serde::Serialize for Pairs {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(2 * self.0.len()))?;
+        for (name, value, error) in &self.0 {
+            m.serialize_entry(name, value)?;
+            m.serialize_entry(&format!("{name}_error"), error)?;
+        }
+        m.end()
+    }
 }
 
 /// The largest of several bounds (the JSON key `error_estimate`).

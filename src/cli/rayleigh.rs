@@ -1,7 +1,7 @@
 //! `moving-hertz rayleigh`: the Rayleigh root and the other two roots of the cubic (section 3).
 
 use super::args::{self, Decimal};
-use super::output::{print_json, OutputArgs, Text};
+use super::output::{print_json, Head, OutputArgs, Text};
 use super::CliError;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{with_precision, Material};
@@ -31,10 +31,8 @@ struct Inputs<'a> {
 /// The JSON object of `rayleigh` (docs/cli.md).
 #[derive(Serialize)]
 struct Json<'a> {
-    command: &'static str,
-    inputs: Inputs<'a>,
-    precision: String,
-    bits: String,
+    #[serde(flatten)]
+    head: Head<Inputs<'a>>,
     m1: String,
     #[serde(rename = "cR_over_c2")]
     cr_over_c2: String,
@@ -56,13 +54,14 @@ fn report<T: Real>(a: &RayleighArgs, mat: &Material<T>) -> Result<(), CliError> 
     let roots = r.all();
     if a.output.json {
         return print_json(&Json {
-            command: "rayleigh",
-            inputs: Inputs {
-                nu: &a.nu.text,
-                precision: prec.label(),
-            },
-            precision: prec.label(),
-            bits: prec.bits().to_string(),
+            head: Head::new(
+                "rayleigh",
+                Inputs {
+                    nu: &a.nu.text,
+                    precision: prec.label(),
+                },
+                prec,
+            ),
             m1: r.m1.to_decimal(),
             cr_over_c2: mat.cr_over_c2().to_decimal(),
             cr_over_c1: mat.cr_over_c1().to_decimal(),

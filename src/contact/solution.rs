@@ -36,8 +36,8 @@
 //! **J0 from I1 and I2.** The integrands of I1 and I2 weighted by k² and 1 add up to J0's, so
 //! J0 = k² I1 + I2 at the solved k, from the integrals the ellipse solve returns; its bound, as
 //! a value at the exact root, is the larger of theirs plus 4ε (both are positive) plus k's, or
-//! the correlated bound where that is smaller. `tests/contact.rs` checks it against the
-//! independent quadrature `routes::direct::approach_integral`.
+//! the correlated bound where that is smaller. `tests/unit/direct.rs` checks it against an
+//! independent quadrature of J0 alone (both of its peaks in closed form).
 
 use super::convolution;
 use super::ellipse::{solve_ellipse, Ellipse, Options};

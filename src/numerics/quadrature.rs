@@ -254,11 +254,6 @@ impl<T: Real> GaussLegendre<T> {
         })
     }
 
-    /// Number of nodes of the full rule.
-    pub fn n(&self) -> usize {
-        self.n
-    }
-
     /// The precision the rule was computed at.
     pub fn prec(&self) -> T::Prec {
         self.prec

@@ -87,23 +87,6 @@ impl<T: Real> Material<T> {
         })
     }
 
-    /// The material whose wave-speed ratio is c2/c1 = `ratio`, 0 ≤ ratio < √3/2
-    /// (ν = (1 − 2γ)/(2(1 − γ)) with γ = ratio², the inverse of γ(ν) of (5)); ν within
-    /// a few ε, then as [`Material::new`].
-    pub fn from_speed_ratio(ratio: T) -> Result<Self> {
-        check_finite("c2/c1", &ratio)?;
-        let p = ratio.prec();
-        let gamma = ratio.square();
-        if ratio.is_negative() || gamma.clone().mul_i64(4) >= T::from_i64(3, p) {
-            return Err(Error::Domain {
-                name: "c2/c1",
-                value: short(&ratio),
-                bound: "[0, sqrt(3)/2)",
-            });
-        }
-        Material::new(nu_of_gamma(&gamma))
-    }
-
     /// Poisson's ratio ν of the Green's function (4)–(6), as given (rounded once to the working
     /// precision).
     pub fn nu(&self) -> &T {
@@ -231,28 +214,6 @@ impl<T: Real> Material<T> {
             });
         }
         Speed::new(self, m, gap)
-    }
-
-    /// The speed with shear Mach number `m2` = V/c2 (must be below c_R/c2): M_R = m2/√m1
-    /// (M2 of (5)), within a few ε.
-    pub fn speed_from_m2(&self, m2: T) -> Result<Speed<T>> {
-        check_finite("speed M2", &m2)?;
-        if m2.is_negative() {
-            return Err(Error::Domain {
-                name: "speed M2 = V/c2",
-                value: short(&m2),
-                bound: "[0, c_R/c2)",
-            });
-        }
-        let mr = m2.clone() / self.cr_over_c2();
-        if mr >= T::one(m2.prec()) {
-            return Err(Error::Domain {
-                name: "speed M2 = V/c2",
-                value: short(&m2),
-                bound: "[0, c_R/c2) (sub-Rayleigh)",
-            });
-        }
-        self.speed(mr)
     }
 
     /// This material at another precision `q` (ν rounded once). Used by the precision ladder's

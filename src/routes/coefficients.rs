@@ -85,12 +85,6 @@ impl<F: FieldOps> GreenSeries<F> {
         }
     }
 
-    /// The index of the coefficient the next call to [`GreenSeries::next_coefficient`] returns.
-    /// The index l of (36); exact.
-    pub fn index(&self) -> u64 {
-        self.l
-    }
-
     /// Returns c_l and advances to l + 1.
     /// One step of (36): c_l = F_l x0^l of (35), exact over an exact field, a few ε per step
     /// relative to the largest term otherwise (the recurrence is stable: docs/series.md).
@@ -167,11 +161,6 @@ impl<F: Field> SpeedCoefficients<F> {
             pow: F::one(p),
             flush: None,
         }
-    }
-
-    /// The index n of (35)–(36) the next call returns; exact.
-    pub fn index(&self) -> u64 {
-        self.gen.index()
     }
 
     /// Sets the binomial-series terms u_l = b_l(γx0)^l, v_l = b_l x0^l inside the recurrence to

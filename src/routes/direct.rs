@@ -26,14 +26,15 @@
 //!
 //! **Subtraction.** I2 = 2π G(M_R²) S + 2π ∫ (G(t) − G(M_R²)) cos²α/((1 − t)Δ³) dα (48), with
 //! S = ∫_0^{π/2} cos²α/((1 − M_R² cos²α)Δ³) dα in closed form (53) — checked against quadrature
-//! (`tests/direct.rs`, `docs/errata.md`): the incomplete integrals take the *modulus k* (the axis
+//! (`tests/unit/direct.rs`, `docs/errata.md`): the incomplete integrals take the *modulus k* (the axis
 //! ratio, complementary to e) and β = arccos M_R, and (53) holds as printed for k²(1 − M_R²) < 1.
 //! The remaining integrand is bounded (G(t) − G(M_R²) vanishes like sin²α where 1/(1 − t) peaks),
 //! so the quadrature needs an absolute accuracy ~tol·I2 on an O(1) quantity instead of a
 //! relative one on a peak of height 1/ε².
 //!
-//! **The pole and the k-peak in closed form** ([`quadrature`], [`contact_integrals`],
-//! [`approach_integral`]; not the subtracted form (48), which keeps its own treatment).
+//! **The pole and the k-peak in closed form** ([`quadrature`], [`contact_integrals`], and the
+//! tests' reference quadrature of J0 alone; not the subtracted form (48), which keeps its own
+//! treatment).
 //! Every left integrand is n(s)/(s + ε²), s = w², with n analytic near [0, 1]; with s0 = −ε²
 //! (where t = 1, the Rayleigh pole),
 //!
@@ -42,20 +43,19 @@
 //! ```
 //!
 //! the divided difference formed by the product rule without cancellation, so that no panel is
-//! graded about ε (taken where ε ≤ 1/2 and kε ≤ 1/2). J0's right integrand b(σ)(σ + k²)^{−1/2}
-//! (σ = v²) is treated alike about σ0 = −k², where ∫_0^1 (σ + k²)^{−1/2} dv = asinh(1/k) (taken
+//! graded about ε (taken where ε ≤ 1/2 and kε ≤ 1/2). The tests' reference quadrature of J0
+//! alone (`tests/unit/direct.rs`) treats J0's right integrand b(σ)(σ + k²)^{−1/2}
+//! (σ = v²) alike about σ0 = −k², where ∫_0^1 (σ + k²)^{−1/2} dv = asinh(1/k) (taken
 //! where k² is below ε of the working precision; above, the panels graded about k number at
 //! most a quarter of the working bits). The work then depends on neither 1 − M_R nor k once
 //! they are small:
-//! J0 at 256 bits takes the same nodes at 1 − M_R = 10⁻³⁰ and 10⁻¹⁰⁰⁰⁰⁰ (`tests/direct.rs`).
+//! J0 at 256 bits takes the same nodes at 1 − M_R = 10⁻³⁰ and 10⁻¹⁰⁰⁰⁰⁰ (`tests/unit/direct.rs`).
 
 use super::{beyond_exponent_range, AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
-use crate::estimate::{Estimated, RelError};
+use crate::estimate::RelError;
 use crate::numerics::elliptic::{ellipd_mc, heuman_lambda_c_mc};
-use crate::numerics::quadrature::{
-    integrate, integrate_plus, integrate_vec, integrate_vec_plus, Limits, VecQuadrature,
-};
+use crate::numerics::quadrature::{integrate_vec, integrate_vec_plus, Limits, VecQuadrature};
 use crate::physics::{GreenFunction, Speed};
 use crate::scalar::{short, Real};
 
@@ -144,52 +144,6 @@ impl<T: Real> DirectSetup<T> {
         let n = self.right_node(v);
         let h = &n[3];
         self.right_factor(&n) / (h.clone() * h.clone().sqrt())
-    }
-
-    /// The right half's peak at v = ±ik, when it is taken out of J0 ([`approach_integral`]):
-    /// where k² is below ε of the working precision, so that no panel needs grading about k
-    /// (the remainder's kink changes the integral by about k² ln(1/k)). Above, panels graded
-    /// about k cost at most a quarter of the working bits and evaluate the cheaper plain
-    /// integrand.
-    fn right_peak(&self) -> Option<RightPeak<T>> {
-        let p = self.k.prec();
-        let one = T::one(p);
-        if self.k2 > T::epsilon(p) {
-            return None;
-        }
-        let ops0 = one.clone() - &self.k2;
-        let t0 = -(self.mr2.clone() * &self.k2 / &ops0);
-        let r0 = ops0.clone().sqrt();
-        let e0 = (one.clone() - self.eps2.clone() * &self.k2).recip();
-        let g0 = self.green.g_regular(&t0);
-        let b0 = self.two_pi.clone() * &g0 * &r0 * &e0;
-        // ∫_0^1 dv/√(v² + k²) = asinh(1/k) = ln(1 + √(1 + k²)) − ln k.
-        let log_integral = (one.clone() + (one + &self.k2).sqrt()).ln() - self.k.clone().ln();
-        Some(RightPeak {
-            ops0,
-            t0,
-            r0,
-            e0,
-            g0,
-            value: b0 * log_integral,
-        })
-    }
-
-    /// J0's right integrand with the peak taken out: (b(σ) − b(σ0))·(σ + k²)^{−1/2} =
-    /// D[b]·√(σ + k²), σ = v², σ0 = −k², for b = 2πG(t)·r·e, t = M_R²σ/(1 + σ),
-    /// r = √(1 + σ), e = 1/(1 + ε²σ): D[b] = 2π(D[G(t)]·r·e + G(t0)·(D[r]·e + r0·D[e])) with
-    /// D[G(t)] = DG(t, t0)·M_R²/((1 + σ)(1 + σ0)), D[r] = 1/(r + r0), D[e] = −ε² e e0. No term
-    /// cancels; a few ε relative.
-    fn right_divided(&self, peak: &RightPeak<T>, v: &T) -> T {
-        let [v2, ops, t, h] = self.right_node(v);
-        let r = ops.clone().sqrt();
-        let e = (T::one(v.prec()) + self.eps2.clone() * v2).recip();
-        let dt = self.mr2.clone() / (ops * &peak.ops0);
-        let dg = self.green.g_divided_difference(&t, &peak.t0) * dt;
-        let de = -(self.eps2.clone() * &e * &peak.e0);
-        let dre = e.clone() / (r.clone() + &peak.r0) + peak.r0.clone() * de;
-        let db = self.two_pi.clone() * (dg * r * e + peak.g0.clone() * dre);
-        db * h.sqrt()
     }
 
     /// The left half's pole at w = iε, when it is taken out of the contact integrands
@@ -380,20 +334,6 @@ impl<T: Real> DirectSetup<T> {
     }
 }
 
-/// The right half's peak at v = ik (σ0 = −k²): the constants of
-/// [`DirectSetup::right_divided`] and b(σ0)·asinh(1/k).
-struct RightPeak<T: Real> {
-    /// 1 + σ0 = 1 − k².
-    ops0: T,
-    /// t0 = M_R²σ0/(1 + σ0).
-    t0: T,
-    /// r0 = √(1 + σ0), e0 = 1/(1 + ε²σ0), G(t0).
-    r0: T,
-    e0: T,
-    g0: T,
-    value: T,
-}
-
 /// The left half's pole at w = iε (s0 = −ε², where t = 1): the constants of
 /// [`DirectSetup::left_divided`], and the closed-form parts n_c(s0)·∫_0^1 dw/(w² + ε²).
 struct LeftPole<T: Real> {
@@ -434,11 +374,10 @@ fn limits<T: Real>(tol: &T) -> Limits {
 /// −1 < ν ≤ 1/2; the reported error estimate bounds the true error in the tests. The left half's
 /// Rayleigh pole is taken out in closed form where ε ≤ 1/2 and kε ≤ 1/2 (module docs; else its
 /// panels are graded about ε), so that the work grows like |log k| panels, not with
-/// log(1/(1 − M_R)) (`tests/direct.rs`, to 1 − M_R = 10⁻¹⁰⁰⁰⁰⁰). Where the panels about k or
+/// log(1/(1 − M_R)) (`tests/unit/direct.rs`, to 1 − M_R = 10⁻¹⁰⁰⁰⁰⁰). Where the panels about k or
 /// 1/k alone would take a third of the evaluation cap (|log₂ k| beyond about
 /// 4.4·10⁵/(bits/4 + 8): about 6150 at 256 bits, 1670 at 1024 bits), [`Error::Domain`] naming k before
-/// any evaluation (the same for [`contact_integrals`], [`approach_integral`] and the subtracted
-/// route).
+/// any evaluation (the same for [`contact_integrals`] and the subtracted route).
 pub fn quadrature<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
@@ -602,7 +541,7 @@ pub fn subtracted<T: Real>(
 /// ε ≤ 1/2 and kε ≤ 1/2 (module docs), so its panels are not graded about ε and the work does
 /// not grow with log(1/(1 − M_R)); the right half is graded about k, so the work grows like
 /// |log k| for small k. Accuracy as [`quadrature`]; J0 within 16ε of mpmath and of its own
-/// bound (`tests/direct.rs`).
+/// bound (`tests/unit/direct.rs`).
 pub fn contact_integrals<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
@@ -667,72 +606,6 @@ pub fn contact_integrals<T: Real>(
     })
 }
 
-/// J0 of (32) alone, J0 = ∫_0^π g(V sin φ)/(k² cos²φ + sin²φ)^{1/2} dφ in the variables of the
-/// module docs (left: ∫_0^1 B(s) u^{−1/2}/(s + ε²) dw; right: ∫_0^1 b(σ)(σ + k²)^{−1/2} dv), by
-/// adaptive quadrature with its two peaks taken out in closed form, so that the work depends
-/// on neither the gap 1 − M_R nor k once they are small:
-///
-/// ```text
-/// left  (ε ≤ 1/2, kε ≤ 1/2):  n(s0)·atan(1/ε)/ε + ∫_0^1 (n(s) − n(s0))/(s − s0) dw,  s0 = −ε²;
-/// right (k² < ε):             b(σ0)·asinh(1/k) + ∫_0^1 (b(σ) − b(σ0))/√(σ + k²) dv,  σ0 = −k²,
-/// ```
-///
-/// n = B u^{−1/2}. Both remainders are formed without cancellation
-/// (`DirectSetup::left_pole_parts`, `DirectSetup::right_divided`). The left one is
-/// analytic in |Im w| < min(1/k, δ), δ ≥ 0.3 the distance of G's branch points; the right one
-/// keeps a kink √(v² + k²) whose effect, about k² ln(1/k), is below the working ε. Where
-/// k² ≥ ε the right half is the plain integrand on panels graded about k.
-/// Relative tolerance `tol` for each half (0: the precision's floor); the returned bound adds
-/// the halves' estimated errors and 8ε for the closed forms. Accuracy: within 16ε of mpmath
-/// and of the returned bound, at 1 − M_R from 1 to 2⁻¹²⁰ and k from 2⁻²⁰⁰ to 1000, and within
-/// the bound of [`contact_integrals`]' J0 at 64 bits more down to 1 − M_R = 10⁻¹⁰⁰⁰⁰⁰
-/// (`tests/direct.rs`). The contact solution and [`crate::Evaluator`] form J0 as k² I1 + I2
-/// from I1, I2 instead (no quadrature of its own); this route is their independent reference.
-/// [`contact_integrals`] computes J0 together with I1, I2 and their derivatives, its right
-/// half graded about k instead.
-pub fn approach_integral<T: Real>(
-    speed: &Speed<T>,
-    axes: &AxisRatio<T>,
-    tol: &T,
-) -> Result<Estimated<T>> {
-    let s = DirectSetup::new(speed, axes);
-    let p = tol.prec();
-    let lim = limits(tol);
-    let half = tol.clone().mul_pow2(-1);
-    let left = match s.left_pole() {
-        Some(pole) => {
-            let f = |w: &T| {
-                let (_, db, phi, dphi) = s.left_pole_parts(&pole, w);
-                db * &phi[0] + pole.b0.clone() * &dphi[0]
-            };
-            let pts = s.breakpoints(&s.left_scales(true), lim)?;
-            integrate_plus(f, &pts, &pole.parts[2], &half, lim)?
-        }
-        None => {
-            let f = |w: &T| {
-                let n = s.left_node(w);
-                s.left_factor(&n) / &n[3].clone().sqrt()
-            };
-            integrate(f, &s.breakpoints(&s.left_scales(false), lim)?, &half, lim)?
-        }
-    };
-    let right = match s.right_peak() {
-        Some(peak) => {
-            let f = |v: &T| s.right_divided(&peak, v);
-            integrate_plus(f, &s.breakpoints(&[], lim)?, &peak.value, &half, lim)?
-        }
-        None => {
-            let f = |v: &T| {
-                let n = s.right_node(v);
-                s.right_factor(&n) / &n[3].clone().sqrt()
-            };
-            integrate(f, &s.breakpoints(&s.right_scales(), lim)?, &half, lim)?
-        }
-    };
-    let j0 = left.value + &right.value;
-    if !j0.is_finite() || !j0.is_positive() {
-        return Err(beyond_exponent_range(&s.k));
-    }
-    let rel = (left.error + &right.error) / &j0 + &T::epsilon(p).mul_i64(8);
-    Ok(Estimated::new(j0, RelError::of(&rel)))
-}
+#[cfg(test)]
+#[path = "../../tests/unit/direct.rs"]
+mod reference_tests;

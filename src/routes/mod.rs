@@ -18,13 +18,10 @@
 
 pub mod choose;
 pub mod coefficients;
-#[doc(hidden)]
-pub mod direct;
+pub(crate) mod direct;
 pub mod evaluate;
-#[doc(hidden)]
-pub mod fast;
-#[doc(hidden)]
-pub mod graded;
+pub(crate) mod fast;
+pub(crate) mod graded;
 mod guard;
 pub mod moments;
 pub mod series;
@@ -405,9 +402,8 @@ pub(crate) const BEYOND_EXPONENT_RANGE: &str = "a k whose integrals stay within 
 /// and 1/k do (I1 ≈ 2(1 − ν)/k² as k → 0). Below the Rayleigh speed g > 0, so I1 and I2 are
 /// positive and J0's relative error is at most the larger of theirs plus the three roundings
 /// (4ε); a pair that is not positive gets [`RelError::INFINITE`] (an error at the public
-/// boundary). Tested against the independent quadrature [`direct::approach_integral`], the
-/// adaptive route's own J0 and mpmath (`tests/contact.rs`, `tests/identities.rs`,
-/// `tests/direct.rs`).
+/// boundary). Tested against an independent quadrature of J0 alone (both peaks in closed form),
+/// the adaptive route's own J0 and mpmath (`tests/unit/direct.rs`, `tests/identities.rs`).
 pub(crate) fn j0_from_pair<T: Real>(k: &T, i1: &T, i2: &T, pair_error: RelError) -> Estimated<T> {
     let value = k.clone() * &(k.clone() * i1) + i2;
     let error = if i1.is_positive() && i2.is_positive() {

@@ -4,10 +4,9 @@
 
 use super::median_ns;
 use super::svg::{Chart, Series, Style};
-use moving_hertz::routes::series::{self, SeriesOptions};
-use moving_hertz::routes::{direct, fast, AxisRatio, Evaluation};
+use moving_hertz::routes::AxisRatio;
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
-use moving_hertz::{integrals, ExactInputs, IntegralOptions, Method, Route, Speed};
+use moving_hertz::{integrals, ExactInputs, IntegralOptions, Integrals, Method, Route, Speed};
 use rug::Float;
 
 type Prepared<T> = (Speed<T>, AxisRatio<T>);
@@ -15,22 +14,34 @@ type Prepared<T> = (Speed<T>, AxisRatio<T>);
 /// Runs a route on inputs already rounded to the working precision (so that timings do not
 /// include the conversion of the inputs nor the material's Rayleigh roots), at the working
 /// precision's floor, without the automatic choice of [`moving_hertz::integrals`].
-fn run_route<T: Real>(route: Route, (s, a): &Prepared<T>) -> moving_hertz::Result<Evaluation<T>> {
-    let zero = T::zero(a.k.prec());
-    match route {
-        Route::Series => series::integrals(s, a, &SeriesOptions::default()),
-        Route::Adaptive => direct::quadrature(s, a, &zero),
-        Route::AdaptiveSubtracted => direct::subtracted(s, a, &zero),
-        // A set-up of its own each time (`fast::integrals` keeps one with the speed): the cost
+fn run_route<T: Real>(route: Route, (s, a): &Prepared<T>) -> moving_hertz::Result<Integrals<T>> {
+    let method = match route {
+        Route::Series => Method::Series,
+        Route::Adaptive => Method::Adaptive,
+        Route::AdaptiveSubtracted => Method::AdaptiveSubtracted,
+        // The same speed made anew each time (a speed keeps its fixed-rule set-up): the cost
         // of one call at a new speed, as the other routes'.
-        Route::FixedRule => fast::FastSetup::new(s).and_then(|f| f.integrals(a)),
-        Route::GradedRule => moving_hertz::routes::graded::integrals(s, a),
-        other => Err(moving_hertz::Error::Domain {
-            name: "route",
-            value: other.label().into(),
-            bound: "series, adaptive, adaptive-subtracted, fixed-rule or graded-rule",
-        }),
-    }
+        Route::FixedRule | Route::GradedRule => {
+            let fresh = s.material().speed_from_gap(s.gap().clone())?;
+            let opts = IntegralOptions {
+                method: Method::Fixed,
+                ..Default::default()
+            };
+            return integrals(&fresh, &a.k, &opts);
+        }
+        other => {
+            return Err(moving_hertz::Error::Domain {
+                name: "route",
+                value: other.label().into(),
+                bound: "series, adaptive, adaptive-subtracted, fixed-rule or graded-rule",
+            })
+        }
+    };
+    let opts = IntegralOptions {
+        method,
+        ..Default::default()
+    };
+    integrals(s, &a.k, &opts)
 }
 
 /// One measurement.
@@ -107,7 +118,7 @@ fn measure<T: Real>(
                 let d = Float::with_val(bits, &got.to_float(bits) - want) / want;
                 d.abs().to_f64()
             };
-            let error = err(&r.i1, &reference.0).max(err(&r.i2, &reference.1));
+            let error = err(&r.i1.value, &reference.0).max(err(&r.i2.value, &reference.1));
             let time_ns = median_ns(budget_ms, || {
                 run_route::<T>(method, &prepared).map(|r| r.work)
             });
@@ -116,7 +127,7 @@ fn measure<T: Real>(
                 method,
                 precision: label,
                 error,
-                estimate: r.error_estimate.to_f64(),
+                estimate: r.i1.error.to_f64(),
                 time_ns,
                 work: r.work,
                 failure: None,

@@ -99,39 +99,6 @@ pub fn printed_f2() -> RatFunc {
     RatFunc::from_polys(p, d)
 }
 
-/// The value of `f` at the real `x`: exact evaluation at the rational value of `x`, rounded
-/// once to the precision of `x` (correctly rounded for [`crate::scalar::Mp`]).
-///
-/// Errors: [`Error::NotFinite`] for a non-finite `x`, [`Error::Domain`] where the denominator
-/// vanishes or where f(x) overflows or underflows the working type (`f64` beyond about 10³⁰⁸).
-/// Evaluates the exact forms of (36) and (40); correctly rounded for MPFR, within an ulp otherwise.
-pub fn eval_real<T: Real>(f: &RatFunc, x: &T) -> Result<T> {
-    crate::scalar::check_finite("x (symbolic evaluation)", x)?;
-    let p = x.prec();
-    let q = x
-        .to_float(T::bits(p) + 64)
-        .to_rational()
-        .ok_or(Error::NotFinite {
-            name: "x (symbolic evaluation)",
-            value: crate::scalar::short(x),
-        })?;
-    let v = f.eval(&q).ok_or(Error::Domain {
-        name: "x (symbolic evaluation: a pole of the rational function)",
-        value: crate::scalar::short(x),
-        bound: "denominator != 0",
-    })?;
-    let bits = T::bits(p) + 64;
-    let y = T::from_float(&Float::with_val(bits, &v), p);
-    if !y.is_finite() || (y.is_zero() && v != 0) {
-        return Err(Error::Domain {
-            name: "x (symbolic evaluation: f(x) does not fit the working type)",
-            value: crate::scalar::short(x),
-            bound: "f(x) zero or within the working type's exponent range",
-        });
-    }
-    Ok(y)
-}
-
 /// The condition numbers of the K, E basis at e² from the closed forms: for k = 0 … n,
 /// log₂((|α_k|K + |β_k|E)/L_k) and log₂((|γ_k|K + |δ_k|E)/M_k) — the bits any evaluation of
 /// L_k, M_k as α_k K + β_k E loses (the forward recursion (40) is one). α_k … δ_k are evaluated

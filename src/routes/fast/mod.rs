@@ -127,7 +127,7 @@
 //! ([`RuleSizes::for_bits`]), chosen so that the truncation error is below 1ε over the whole
 //! domain; [`BOUND_EPS`] = 16 is the a-priori bound on the relative error of I1 and I2 in units
 //! of ε and [`DK_BOUND_EPS`] that of the k-derivatives, checked against the adaptive route at 400
-//! bits (`tests/fast.rs`) and at 1024 bits against it at 1088 bits
+//! bits (`tests/unit/fast.rs`) and at 1024 bits against it at 1088 bits
 //! (`tests/precision_scaling.rs`). The measured worst errors by precision are in
 //! docs/calibration.md. The derivatives are least accurate near k = 1, M_R = 0, where the closed
 //! forms of the (σ + k²)^{−5/2} moments cancel most (no guard precision is spent on them below
@@ -160,7 +160,7 @@ use sinh::*;
 pub const BOUND_EPS: i64 = 16;
 
 /// The bound on the relative error of the k-derivatives, in units of ε, asserted in
-/// `tests/fast.rs` (measured worst errors: docs/calibration.md).
+/// `tests/unit/fast.rs` (measured worst errors: docs/calibration.md).
 pub const DK_BOUND_EPS: i64 = 128;
 
 // ---------------------------------------------------------------------------------------------
@@ -360,39 +360,6 @@ fn taylor_poly<T: Real>(b: &[T], s: &[T], out: &mut [T]) {
     }
 }
 
-/// I1, I2 of (34) in the normalisation of (37) by the fast route (see the module docs), with
-/// the default rule of the working precision.
-///
-/// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 0 < k ≤ 1, else [`Error::Domain`]. Accuracy: relative
-/// error of I1 and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate` (at
-/// `f64` 3.6e-15). Work: [`RuleSizes::nodes`] evaluations of G (32 at `f64`, 70 at
-/// double-double; timings in docs/performance.md) for the speed's [`FastSetup`], built on the
-/// speed's first call and kept with it, then a square root and a division a node; no allocation
-/// at `f64` and double-double once the rule and the set-up are built; above double-double the
-/// right half's sinh-mapped panels where they are cheaper (module docs). The route reported is
-/// [`Route::FixedRule`].
-pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-    check_axes(axes)?;
-    speed
-        .fast_setup()
-        .as_ref()
-        .map_err(Clone::clone)?
-        .run(axes, false)
-}
-
-/// I1, I2 (as [`integrals`]) and dI1/dk, dI2/dk, differentiated under the integral sign on the
-/// same nodes (see the module docs). The derivatives' relative error is not bounded by the
-/// reported estimate (which is for I1, I2): it is below [`DK_BOUND_EPS`]·ε = 128ε. Cost: the same nodes as [`integrals`] and a few products more a node.
-/// Implements (46)–(47) and their k-derivatives.
-pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-    check_axes(axes)?;
-    speed
-        .fast_setup()
-        .as_ref()
-        .map_err(Clone::clone)?
-        .run(axes, true)
-}
-
 // ---------------------------------------------------------------------------------------------
 // The k-independent part, kept for many axis ratios
 
@@ -400,7 +367,7 @@ pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Resu
 /// speed: G at every node (as the factors below), the Taylor coefficients of b and the right
 /// remainders. Each further k then costs one square root and one division per node and the
 /// closed forms (one logarithm): the evaluation Newton's method on the ellipse equation (33)
-/// repeats. [`integrals`] and [`integrals_with_dk`] run the one the speed keeps: the route has
+/// repeats. [`crate::Evaluator`] runs the one the speed keeps ([`SetupCache`]): the route has
 /// one integrand, this one.
 #[derive(Debug)]
 pub struct FastSetup<T: Real + 'static> {
@@ -524,16 +491,10 @@ impl<T: Real> std::fmt::Debug for RuleRef<T> {
 
 impl<T: Real> FastSetup<T> {
     /// Precomputes the k-independent part for `speed` (and its material) with the default rule
-    /// of the working precision (cost about that of one [`integrals`] call). Above
-    /// double-double the right half is laid out on first use for each octave of k
-    /// ([`sinh_octave`]).
-    /// Implements the k-independent part of (46)–(47).
-    pub fn new(speed: &Speed<T>) -> Result<Self> {
-        Self::boxed(speed).map(|b| *b)
-    }
-
-    /// [`FastSetup::new`] built in its box: the inline tables are filled where they stay,
-    /// not moved (a speed keeps its set-up boxed, [`SetupCache`]).
+    /// of the working precision (cost about that of one evaluation), built in its box: the
+    /// inline tables are filled where they stay, not moved (a speed keeps its set-up boxed,
+    /// [`SetupCache`]). Above double-double the right half is laid out on first use for each
+    /// octave of k ([`sinh_octave`]). Implements the k-independent part of (46)–(47).
     pub(crate) fn boxed(speed: &Speed<T>) -> Result<Box<Self>> {
         Self::with_rule(speed, FastRule::<T>::get(speed.mr().prec())?, true)
     }
@@ -621,13 +582,20 @@ impl<T: Real> FastSetup<T> {
         Ok(setup)
     }
 
-    /// I1, I2 at the axis ratio `axes` (same domain and accuracy as [`integrals`]).
-    /// Implements (46)–(47).
+    /// I1, I2 of (34) in the normalisation of (37) at the axis ratio `axes` by the fast route
+    /// (module docs). Domain: 0 < k ≤ 1, else [`Error::Domain`]. Accuracy: relative error of I1
+    /// and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate`. Work: a square root and
+    /// a division a node and the closed forms; no allocation at `f64` and double-double; above
+    /// double-double the right half's sinh-mapped panels where they are cheaper (module docs).
+    /// The route reported is [`Route::FixedRule`]. Implements (46)–(47).
     pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.run(axes, false)
     }
 
-    /// I1, I2 of (46)–(47), dI1/dk, dI2/dk at the axis ratio `axes` (as [`integrals_with_dk`]).
+    /// I1, I2 of (46)–(47) (as [`FastSetup::integrals`]) and dI1/dk, dI2/dk, differentiated
+    /// under the integral sign on the same nodes (module docs), at the axis ratio `axes`. The
+    /// derivatives' relative error is below [`DK_BOUND_EPS`]·ε = 128ε (the reported estimate is
+    /// for I1, I2); cost: a few products more a node.
     pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.run(axes, true)
     }
@@ -700,7 +668,7 @@ mod tests {
 
     fn check_taylor<T: Real>(p: T::Prec, tol_eps: f64) {
         let rule = FastRule::<T>::get(p).unwrap();
-        let j_max = rule.sizes().taylor;
+        let j_max = rule.sizes.taylor;
         for (nu, mr) in [(0.25, 0.625), (-0.9, 0.99), (0.5, 0.0), (0.5, 0.999)] {
             let want = composed_b(nu, mr, j_max);
             let mat = Material::new(T::from_f64(nu, p)).unwrap();
@@ -820,3 +788,7 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+#[path = "../../../tests/unit/fast.rs"]
+mod reference_tests;

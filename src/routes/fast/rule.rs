@@ -286,12 +286,6 @@ impl<T: Real> FastRule<T> {
         })
     }
 
-    /// The sizes of this rule.
-    /// Of the rule for (46)–(47); exact.
-    pub fn sizes(&self) -> RuleSizes {
-        self.sizes
-    }
-
     /// The right half's rule (built on first use above double-double).
     pub(crate) fn right_half(&self) -> Result<&Half<T>> {
         if let Some(h) = self.right.get() {
@@ -299,11 +293,5 @@ impl<T: Real> FastRule<T> {
         }
         let h = Half::new(self.sizes.right, self.prec)?;
         Ok(self.right.get_or_init(|| h))
-    }
-
-    /// The precision of this rule.
-    /// Of the rule for (46)–(47); exact.
-    pub fn prec(&self) -> T::Prec {
-        self.prec
     }
 }

@@ -21,7 +21,7 @@
 //! panels need fewer nodes per unit of x (at double-double 18 for ℓ = 1, 13 a unit at ℓ = 2,
 //! 9.25 at ℓ = 8) but round the x-range up further; [`left_plan`] picks the lengths with the
 //! fewest nodes in all (dynamic programming over C, cached per precision up to C = 96; above 256
-//! bits only lengths whose rule has at most [`MAX_RULE_NODES`] nodes, [`max_units`], since a
+//! bits only lengths whose rule has at most [`plan::MAX_RULE_NODES`] nodes, [`plan::max_units`], since a
 //! rule's construction grows like n² and the rules are built on first use). Panel
 //! boundaries at whole multiples of ln 2 make every node's e^{±x} a product of a cached
 //! 2^{±(1+t)ℓ/2} by 2^{±c}: no exponential a node (the choice of layout: docs/calibration.md).
@@ -59,7 +59,7 @@
 //! log₂(1/ε) only while kε > 1/4, i.e. by at most two units).
 //!
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
-//! checked against the adaptive route at 400 bits in `tests/graded.rs`, with the derivatives and
+//! checked against the adaptive route at 400 bits in `tests/unit/graded.rs`, with the derivatives and
 //! with layouts for another k_ref. The measured worst errors, and the margin of the node counts
 //! of [`left_nodes`], are in docs/calibration.md.
 
@@ -75,7 +75,7 @@ use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
 
 mod plan;
-pub use plan::{left_nodes, left_plan, max_units, MAX_RULE_NODES, MAX_UNITS};
+pub use plan::{left_nodes, left_plan, MAX_UNITS};
 use plan::{length_costs, pick_plan, plan_table, PLANNED};
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
@@ -110,7 +110,7 @@ struct LeftRule<T: Real> {
 }
 
 /// The fixed tables of the graded route at one precision, cached per precision: a
-/// [`LeftRule`] for each panel length 1…[`max_units`] (units of ln 2), each built the first time
+/// [`LeftRule`] for each panel length 1…[`plan::max_units`] (units of ln 2), each built the first time
 /// a plan uses it (a Gauss–Legendre rule costs O(n²) operations to build), the plans, and, for
 /// the right half's single panel [0, 1] in v, σ = v² and the weights (also built on first use:
 /// the fixed rule's right half above double-double uses the panel tables alone).
@@ -164,7 +164,7 @@ impl<T: Real> Rules<T> {
         Ok(self.right.get_or_init(|| (right_s, right_w)))
     }
 
-    /// The table of a left panel of length `l`·ln 2 (1 ≤ l ≤ [`max_units`]), built on first use.
+    /// The table of a left panel of length `l`·ln 2 (1 ≤ l ≤ [`plan::max_units`]), built on first use.
     fn left_rule(&self, l: usize) -> Result<&LeftRule<T>> {
         let cell = &self.left[l - 1];
         if let Some(rule) = cell.get() {
@@ -541,13 +541,17 @@ impl<T: Real> GradedSetup<T> {
         *k >= T::one(k.prec()) && *k <= self.k_max
     }
 
-    /// I1, I2 at `axes` ([`integrals`]' accuracy); [`Error::Domain`] outside [`Self::covers`].
-    /// Implements (46)–(47).
+    /// I1, I2 of (34) in the normalisation of (37) at `axes` by graded fixed panels (module
+    /// docs); [`Error::Domain`] outside [`Self::covers`]. Accuracy: relative error below
+    /// [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: the [`left_plan`] for x up to
+    /// asinh(1/min(4/(5k), ε, δ)) plus [`panel_nodes`] nodes. Implements (46)–(47).
     pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.eval(axes, false)
     }
 
-    /// I1, I2, dI1/dk, dI2/dk at `axes` ([`integrals_with_dk`]' accuracy).
+    /// I1, I2 (as [`GradedSetup::integrals`]) and dI1/dk, dI2/dk differentiated under the
+    /// integral sign on the same nodes (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵), their relative error of the
+    /// same order (positive integrands), at `axes`.
     /// Implements (46)–(47) and their k-derivatives.
     pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
         self.eval(axes, true)
@@ -780,22 +784,6 @@ fn chunked_sums<T: Real, S>(
     acc
 }
 
-fn run<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-    GradedSetup::new(speed, &axes.k)?.eval(axes, dk)
-}
-
-/// I1, I2 of (34) in the normalisation of (37) for k ≥ 1 by graded fixed panels (module docs).
-///
-/// Domain: 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^180, else [`Error::Domain`]. Accuracy: relative
-/// error below [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: the [`left_plan`] for
-/// x up to asinh(1/min(4/(5k), ε, δ)) plus [`panel_nodes`] nodes.
-pub fn integrals<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-    run(speed, axes, false)
-}
-
-/// [`integrals`] with dI1/dk, dI2/dk differentiated under the integral sign on the same nodes
-/// Implements (46)–(47) and their k-derivatives.
-/// (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵); their relative error is of the same order (positive integrands).
-pub fn integrals_with_dk<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-    run(speed, axes, true)
-}
+#[cfg(test)]
+#[path = "../../../tests/unit/graded.rs"]
+mod reference_tests;

@@ -71,11 +71,6 @@ impl Dd {
     pub fn lo(&self) -> f64 {
         self.0.lo()
     }
-    /// The wrapped `twofloat` value.
-    pub fn as_twofloat(&self) -> TwoFloat {
-        self.0
-    }
-
     /// Product with an `f64`, error ≤ 2·2^-106 relative.
     #[inline(always)]
     pub fn mul_f64(self, b: f64) -> Dd {

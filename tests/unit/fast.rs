@@ -9,7 +9,7 @@
 //! k ∈ {10⁻⁶, 10⁻⁴, 0.01, 0.1, 0.3, 0.5, 0.7, 1}, each input the `f64` nearest to the decimal,
 //! taken exactly at every precision (so one reference serves all of them).
 
-mod common;
+use crate::common;
 
 use common::{
     assert_no_mixing, check_adaptive_row, integral_cases, integral_inputs, mp, mpmath_cases,
@@ -18,7 +18,14 @@ use common::{
 use moving_hertz::physics::Material;
 use moving_hertz::prelude::*;
 use moving_hertz::routes::fast::{self, FastSetup, RuleSizes};
-use moving_hertz::routes::{direct, AxisRatio, Route};
+use moving_hertz::routes::{direct, AxisRatio, Evaluation, Route};
+
+/// The fixed rule on the speed's kept set-up, with the k-derivatives when `dk` asks for them:
+/// what [`Method::Fixed`] runs at k ≤ 1.
+fn fixed<T: Real>(sp: &Speed<T>, ax: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
+    fast::check_axes(ax)?;
+    sp.fast_setup().as_ref().map_err(Clone::clone)?.run(ax, dk)
+}
 
 const NUS: [f64; 4] = [-0.9, 0.0, 0.25, 0.5];
 const MRS: [f64; 7] = [0.0, 0.3, 0.7, 0.9, 0.99, 0.9999, 1.0 - 1e-8];
@@ -29,13 +36,13 @@ fn cases() -> Vec<IntegralCase> {
 }
 
 /// Writes tests/data/fast_reference.csv (about a minute):
-/// `cargo test --release --test fast -- --ignored regenerate_reference`.
+/// `cargo test --release --lib -- --ignored fast::reference_tests::regenerate_reference`.
 #[test]
 #[ignore]
 fn regenerate_reference() {
     write_adaptive_reference(
         "fast_reference.csv",
-        "cargo test --release --test fast -- --ignored regenerate_reference",
+        "cargo test --release --lib -- --ignored fast::reference_tests::regenerate_reference",
         &NUS,
         &MRS,
         &KS,
@@ -59,7 +66,7 @@ fn integrals_within_estimate<T: Real>(p: T::Prec, label: &str, bound: f64) -> f6
     let mut worst = 0.0f64;
     for c in cases() {
         let (sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
-        let r = fast::integrals(&sp, &ax).expect("fast route");
+        let r = fixed(&sp, &ax, false).expect("fast route");
         assert_eq!(r.route, Route::FixedRule);
         let est = r.error_estimate.to_f64() / eps;
         let e = rel_eps(&r.i1, &c.i1).max(rel_eps(&r.i2, &c.i2));
@@ -99,7 +106,7 @@ fn derivatives<T: Real>(p: T::Prec, label: &str, bound: f64) {
     let mut worst = 0.0f64;
     for c in cases() {
         let (sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
-        let r = fast::integrals_with_dk(&sp, &ax).expect("fast route");
+        let r = fixed(&sp, &ax, true).expect("fast route");
         let e = rel_eps(&r.di1_dk(), &c.d1).max(rel_eps(&r.di2_dk(), &c.d2));
         assert!(
             e <= bound,
@@ -129,11 +136,11 @@ fn setup_agrees<T: Real>(p: T::Prec, label: &str) {
     for nu in [-0.9, 0.5] {
         for mr in [0.0, 0.9, 0.9999] {
             let (sp, _) = integral_inputs::<T>(nu, mr, 1.0, p);
-            let setup = FastSetup::new(&sp).expect("setup");
+            let setup = FastSetup::boxed(&sp).expect("setup");
             for k in KS {
                 let ax = AxisRatio::new(T::from_f64(k, p)).expect("k");
                 let a = setup.integrals_with_dk(&ax).expect("setup route");
-                let b = fast::integrals_with_dk(&sp, &ax).expect("one set-up per k");
+                let b = fixed(&sp, &ax, true).expect("one set-up per k");
                 let i = setup.integrals(&ax).expect("setup route");
                 for (x, y) in [
                     (&a.i1, &b.i1),
@@ -169,7 +176,7 @@ fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
         if ax.k > T::one(p) {
             continue;
         }
-        let r = fast::integrals(&sp, &ax).expect("fast route");
+        let r = fixed(&sp, &ax, false).expect("fast route");
         let e = c.error_eps(&r.i1, &r.i2);
         assert!(
             e <= 16.0,
@@ -200,7 +207,7 @@ fn extremes_of_the_domain() {
         (0.0, 0.5, tiny),
     ] {
         let (sp, ax) = integral_inputs::<f64>(nu, mr, k, ());
-        let f = fast::integrals(&sp, &ax).expect("fast route");
+        let f = fixed(&sp, &ax, false).expect("fast route");
         let p = mp(160);
         let (s2, a2) = integral_inputs::<Mp>(nu, mr, k, p);
         let r = direct::quadrature(&s2, &a2, &Mp::zero(p)).expect("adaptive");
@@ -216,11 +223,11 @@ fn outside_the_domain_is_a_typed_error() {
     for k in [1.0 + f64::EPSILON, 2.0, 1e6] {
         let ax = AxisRatio::new(k).unwrap();
         assert!(
-            matches!(fast::integrals(&sp, &ax), Err(Error::Domain { .. })),
+            matches!(fixed(&sp, &ax, false), Err(Error::Domain { .. })),
             "k = {k}"
         );
         assert!(matches!(
-            FastSetup::new(&sp).unwrap().integrals(&ax),
+            FastSetup::boxed(&sp).unwrap().integrals(&ax),
             Err(Error::Domain { .. })
         ));
     }

@@ -10,15 +10,24 @@
 //! k ∈ {1, 1.5, 3, 10, 10³, 10⁶}, each input the `f64` nearest to the decimal, taken exactly at
 //! every precision.
 
-#[macro_use]
-mod common;
+use crate::common;
 
 use common::{
     check_adaptive_row, integral_cases, integral_inputs, mp, mpmath_cases, rel_eps,
     write_adaptive_reference, IntegralCase,
 };
 use moving_hertz::prelude::*;
-use moving_hertz::routes::{direct, graded, AxisRatio};
+use moving_hertz::routes::{direct, graded, AxisRatio, Evaluation};
+
+/// The graded rule laid out for this k, with the k-derivatives when `dk` asks for them.
+fn graded_at<T: Real>(sp: &Speed<T>, ax: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
+    let setup = graded::GradedSetup::new(sp, &ax.k)?;
+    if dk {
+        setup.integrals_with_dk(ax)
+    } else {
+        setup.integrals(ax)
+    }
+}
 
 const NUS: [f64; 4] = [-0.9, 0.0, 0.25, 0.5];
 const MRS: [f64; 6] = [0.0, 0.5, 0.9, 0.99, 0.9999, 1.0 - 1e-8];
@@ -28,13 +37,13 @@ fn cases() -> Vec<IntegralCase> {
 }
 
 /// Writes tests/data/graded_reference.csv (about half a minute):
-/// `cargo test --release --test graded -- --ignored regenerate_reference`.
+/// `cargo test --release --lib -- --ignored graded::reference_tests::regenerate_reference`.
 #[test]
 #[ignore]
 fn regenerate_reference() {
     write_adaptive_reference(
         "graded_reference.csv",
-        "cargo test --release --test graded -- --ignored regenerate_reference",
+        "cargo test --release --lib -- --ignored graded::reference_tests::regenerate_reference",
         &NUS,
         &MRS,
         &KS,
@@ -55,7 +64,7 @@ fn against_reference<T: Real>(p: T::Prec, label: &str) {
     let (mut worst, mut worst_d) = (0.0f64, 0.0f64);
     for c in cases() {
         let (sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
-        let r = graded::integrals_with_dk(&sp, &ax).expect("graded route");
+        let r = graded_at(&sp, &ax, true).expect("graded route");
         let est = (r.error_estimate.clone() / T::epsilon(p)).to_f64();
         let e = rel_eps(&r.i1, &c.i1).max(rel_eps(&r.i2, &c.i2));
         let d = rel_eps(&r.di1_dk(), &c.d1).max(rel_eps(&r.di2_dk(), &c.d2));
@@ -139,7 +148,7 @@ fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
         if ax.k <= T::one(p) {
             continue;
         }
-        let r = graded::integrals(&sp, &ax).expect("graded");
+        let r = graded_at(&sp, &ax, false).expect("graded");
         let e = c.error_eps(&r.i1, &r.i2);
         assert!(
             e <= 32.0,
@@ -165,7 +174,7 @@ fn domain_and_extremes() {
     for k in [0.5, 2f64.powi(181)] {
         let ax = AxisRatio::new(k).unwrap();
         assert!(matches!(
-            graded::integrals(&sp, &ax),
+            graded_at(&sp, &ax, false),
             Err(moving_hertz::Error::Domain { .. })
         ));
     }
@@ -177,7 +186,7 @@ fn domain_and_extremes() {
         (0.25, 0.5, 2f64.powi(180)),
     ] {
         let (sp, ax) = integral_inputs::<f64>(nu, mr, k, ());
-        let g = graded::integrals(&sp, &ax).unwrap();
+        let g = graded_at(&sp, &ax, false).unwrap();
         let p = mp(160);
         let (s2, a2) = integral_inputs::<Mp>(nu, mr, k, p);
         let q = direct::quadrature(&s2, &a2, &Mp::zero(p)).unwrap();
@@ -202,7 +211,7 @@ fn both_sides_of_the_pole_subtraction() {
                     let (s2, a2) = integral_inputs::<Mp>(nu, mr, k, r);
                     let q = direct::contact_integrals(&s2, &a2, &Mp::zero(r)).unwrap();
                     let (sp, ax) = integral_inputs::<T>(nu, mr, k, p);
-                    let g = graded::integrals_with_dk(&sp, &ax).unwrap();
+                    let g = graded_at(&sp, &ax, true).unwrap();
                     let f = |x: &Mp| x.to_float(160);
                     let e = rel_eps(&g.i1, &f(&q.i1)).max(rel_eps(&g.i2, &f(&q.i2)));
                     let d = rel_eps(&g.di1_dk(), &f(&q.di1_dk()))
@@ -242,12 +251,12 @@ fn gaps_below_the_f64_range() {
     for k in ["1.5", "2", "1e6"] {
         let (s2, a2) = at(r, g0, k);
         let q = direct::quadrature(&s2, &a2, &Mp::zero(r)).unwrap();
-        let work = graded::integrals(&at(p, "1e-10", k).0, &at(p, "1e-10", k).1)
+        let work = graded_at(&at(p, "1e-10", k).0, &at(p, "1e-10", k).1, false)
             .unwrap()
             .work;
         for gap in [g0, "1e-5000", "1e-20000", "1e-100000"] {
             let (sp, ax) = at(p, gap, k);
-            let g = graded::integrals(&sp, &ax).unwrap();
+            let g = graded_at(&sp, &ax, false).unwrap();
             // I2 scaled by √(g0/g), at 320 bits.
             let scale = (Mp::parse(g0, r).unwrap() / Mp::parse(gap, r).unwrap()).sqrt();
             let i2 = (q.i2.clone() * &scale).to_float(320);
@@ -307,7 +316,7 @@ fn left_plan_takes_the_fewest_nodes() {
                 *best = (*best).min(acc);
                 return;
             }
-            for l in 1..=graded::max_units(bits) {
+            for l in 1..=graded::plan::max_units(bits) {
                 go(
                     bits,
                     left - l as i64,
@@ -321,14 +330,14 @@ fn left_plan_takes_the_fewest_nodes() {
         best
     }
     assert_eq!(
-        [53, 106, 128, 256, 512, 1024].map(graded::max_units),
+        [53, 106, 128, 256, 512, 1024].map(graded::plan::max_units),
         [8, 8, 8, 8, 3, 2]
     );
     for bits in [53u32, 106, 128, 256, 512, 1024] {
-        let longest = graded::max_units(bits);
+        let longest = graded::plan::max_units(bits);
         assert!((2..=graded::MAX_UNITS).contains(&longest));
         for l in 3..=longest {
-            assert!(graded::left_nodes(bits, l) <= graded::MAX_RULE_NODES);
+            assert!(graded::left_nodes(bits, l) <= graded::plan::MAX_RULE_NODES);
         }
         for units in 1..=90 {
             let plan = graded::left_plan(bits, units);
@@ -346,5 +355,21 @@ fn left_plan_takes_the_fewest_nodes() {
                 assert_eq!(nodes, fewest(bits, units), "{bits} bits, {units}: {plan:?}");
             }
         }
+    }
+}
+
+/// The node counts `benches/precision_scaling.rs` builds Gauss–Legendre rules of (`SHORT_POINT`:
+/// a 2-unit panel at 256 … 8192 bits) are the rule's own.
+#[test]
+fn left_nodes_of_the_precision_bench() {
+    let bench = [
+        (256, 59),
+        (1024, 230),
+        (2048, 458),
+        (4096, 914),
+        (8192, 1826),
+    ];
+    for (bits, n) in bench {
+        assert_eq!(graded::left_nodes(bits, 2), n, "{bits} bits");
     }
 }
