@@ -106,7 +106,7 @@ impl RelError {
     }
 
     /// The rounding of `n` operations of `T` at the precision `p`: γ = n·r/(1 − n·r) with
-    /// r = [`Real::ROUNDING`]·ε the worst relative error of one (ε/2 at `f64` and MPFR, 1.6ε at
+    /// r = [`Real::ROUNDING`]·ε the worst relative error of one (ε/2 at `f64` and MPFR, 1.625ε at
     /// double-double), so that (1 + δ1)⋯(1 + δn) − 1 ≤ γ for |δi| ≤ r; `n` may be fractional
     /// (a rounding raised to the power 1/3 in a cube root counts 1/3). [`RelError::INFINITE`]
     /// where n·r ≥ 1/2.

@@ -20,7 +20,7 @@
 //!
 //! **Error bounds.** The closed forms are evaluated at [`Real::Wide`] from the inputs and the
 //! computed k, I1, I2, and each result rounded once, so that its rounding is one operation of
-//! the working type ([`Real::ROUNDING`]·ε: ε/2 at `f64` and MPFR, 1.6ε at double-double) plus
+//! the working type ([`Real::ROUNDING`]·ε: ε/2 at `f64` and MPFR, 1.625ε at double-double) plus
 //! the wide operations' (counted in `rounded`). Each returned quantity carries a bound on its
 //! relative error (relative to its exact value for the inputs as given), that rounding plus
 //! the smaller of two honest bounds on the shape's error:

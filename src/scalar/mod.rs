@@ -210,7 +210,7 @@ pub trait Real: Field {
     /// operations multiplies (through `RelError::rounding`). 1/2 for a correctly rounded type
     /// rounding to nearest (`f64`'s arithmetic and square root, MPFR's every operation); for
     /// double-double the measured worst over its operations (`docs/design.md`, the table of
-    /// `tests/dd_accuracy.rs`: mul 3.2·2⁻¹⁰⁶ = 1.6ε). `f64`'s `cbrt` comes from the system's
+    /// `tests/dd_accuracy.rs`: mul 3.235·2⁻¹⁰⁶, so 1.625ε). `f64`'s `cbrt` comes from the system's
     /// libm and is not counted with it: the closed forms take their cube roots from
     /// [`Real::Wide`].
     const ROUNDING: f64;
