@@ -105,6 +105,21 @@ impl RelError {
         RelError::normal(n as f64, 1 - T::bits(p) as i64)
     }
 
+    /// The rounding of `n` operations of `T` at the precision `p`: γ = n·r/(1 − n·r) with
+    /// r = [`Real::ROUNDING`]·ε the worst relative error of one (ε/2 at `f64` and MPFR, 1.625ε at
+    /// double-double), so that (1 + δ1)⋯(1 + δn) − 1 ≤ γ for |δi| ≤ r; `n` may be fractional
+    /// (a rounding raised to the power 1/3 in a cube root counts 1/3). [`RelError::INFINITE`]
+    /// where n·r ≥ 1/2.
+    #[inline]
+    pub fn rounding<T: Real>(n: f64, p: T::Prec) -> RelError {
+        let nr = RelError::normal(n * T::ROUNDING, 1 - T::bits(p) as i64);
+        let small = nr.to_f64();
+        if small >= 0.5 {
+            return RelError::INFINITE;
+        }
+        nr.scale(1.0 / (1.0 - small))
+    }
+
     /// 2^e.
     pub fn pow2(e: i64) -> RelError {
         RelError { m: 0.5, e: e + 1 }

@@ -10,6 +10,10 @@ use rug::Float;
 const N: usize = 20_000;
 const U: f64 = 1.232595164407831e-32; // 2^-106
 
+/// The bound of one arithmetic operation (+ − × ÷, sqrt, cbrt) in u: the rounding unit the
+/// error bounds count, [`Real::ROUNDING`] ε = 2·ROUNDING u.
+const OP_U: f64 = 2.0 * Dd::ROUNDING;
+
 /// Random test arguments (the shared SplitMix64 generator).
 struct Rng(common::SplitMix);
 impl Rng {
@@ -149,7 +153,7 @@ fn add_sub_mul_div() {
         |r| (r.dd_log(-5.0, 5.0, false), r.dd_log(-5.0, 5.0, false)),
         |a, b| a + b,
         |a, b| Float::with_val(256, a + b),
-        4.0,
+        OP_U,
     );
     binary(
         "sub",
@@ -157,7 +161,7 @@ fn add_sub_mul_div() {
         pair,
         |a, b| a - b,
         |a, b| Float::with_val(256, a - b),
-        4.0,
+        OP_U,
     );
     binary(
         "mul",
@@ -165,7 +169,7 @@ fn add_sub_mul_div() {
         pair,
         |a, b| a * b,
         |a, b| Float::with_val(256, a * b),
-        4.0,
+        OP_U,
     );
     binary(
         "div",
@@ -173,7 +177,7 @@ fn add_sub_mul_div() {
         pair,
         |a, b| a / b,
         |a, b| Float::with_val(256, a / b),
-        4.0,
+        OP_U,
     );
 }
 
@@ -185,7 +189,7 @@ fn roots() {
         |r| r.dd_log(-100.0, 100.0, false),
         |x| x.sqrt(),
         |x| x.sqrt(),
-        4.0,
+        OP_U,
     );
     unary(
         "recip_sqrt",
@@ -241,7 +245,7 @@ fn roots() {
         |r| r.dd_log(-100.0, 100.0, true),
         |x| x.cbrt(),
         |x| x.cbrt(),
-        4.0,
+        OP_U,
     );
 }
 

@@ -7,7 +7,8 @@
 //! At `f64`, double-double and 256 bits every result must lie within its returned bound and
 //! within a stated number of units u = max(ε, 10⁻⁴⁵) (at 256 bits the reference's 45 digits are
 //! the unit); e's bound and error are absolute, the others relative. At `f64` and double-double
-//! every bound is also held within 16× of the worst error over the rows. The test prints the worst
+//! every bound is also held within 10× of the worst error over the rows (p0 under an approach
+//! at double-double within 12×: [`TIGHT_DD`]). The test prints the worst
 //! and mean errors in u and the worst error/bound per quantity and precision
 //! (`cargo test --release --test references -- --nocapture`).
 
@@ -169,13 +170,37 @@ fn check<T: Real>(p: T::Prec, label: &str, every: usize) -> Vec<Stat> {
     stats
 }
 
-/// The bounds are not loose: for every quantity some row's error is at least 1/16 of its bound
-/// (`f64` and double-double; at 256 bits the reference's 45 digits set the error).
-fn assert_tight(stats: &[Stat], label: &str) {
-    for (name, s) in NAMES.iter().zip(stats) {
+/// The least worst error/bound per quantity (the order of [`NAMES`]) at `f64`: every bound
+/// within 10× of the worst error.
+const TIGHT_F64: [f64; 13] = [0.1; 13];
+
+/// The same at double-double: 10×, but p0 under an approach within 12×. Where w1 = k²I1/J0 is
+/// small its error is −(q1 + q2)/2 to first order in the errors q1, q2 of I1 and I2, so its
+/// bound holds half of each of their bounds, 16ε a priori for the fixed rule
+/// (`routes::fast::BOUND_EPS`), plus its rounding: 17.6ε, against a worst error of 1.55ε.
+const TIGHT_DD: [f64; 13] = [
+    0.1,
+    0.1,
+    0.1,
+    0.1,
+    0.1,
+    0.1,
+    0.1,
+    0.1,
+    0.1,
+    0.1,
+    0.1,
+    1.0 / 12.0,
+    0.1,
+];
+
+/// The bounds are not loose: for every quantity some row's error is at least `least` of its
+/// bound (`f64` and double-double; at 256 bits the reference's 45 digits set the error).
+fn assert_tight(stats: &[Stat], least: &[f64; 13], label: &str) {
+    for ((name, s), least) in NAMES.iter().zip(stats).zip(least) {
         assert!(
-            s.ratio >= 1.0 / 16.0,
-            "{label} {name}: worst error/bound {:.3} below 1/16: the bound is loose",
+            s.ratio >= *least,
+            "{label} {name}: worst error/bound {:.3} below {least:.3}: the bound is loose",
             s.ratio
         );
     }
@@ -183,12 +208,12 @@ fn assert_tight(stats: &[Stat], label: &str) {
 
 #[test]
 fn f64_within_bounds_and_eps() {
-    assert_tight(&check::<f64>((), "f64", 1), "f64");
+    assert_tight(&check::<f64>((), "f64", 1), &TIGHT_F64, "f64");
 }
 
 #[test]
 fn double_double_within_bounds_and_eps() {
-    assert_tight(&check::<Dd>((), "dd", 1), "dd");
+    assert_tight(&check::<Dd>((), "dd", 1), &TIGHT_DD, "dd");
 }
 
 #[test]

@@ -18,13 +18,17 @@
 //! In the static limit these are Johnson's (Contact Mechanics §4.2) with E* = 2μ/(1 − ν):
 //! A1 = p0 b (K − E)/(E* e² a²), d0 = p0 b K/E* (tested to a few ε in `tests/contact.rs`).
 //!
-//! **Error bounds.** Each returned quantity carries a bound on its relative error (relative to
-//! its exact value for the inputs as given), the smaller of two honest bounds:
+//! **Error bounds.** The closed forms are evaluated at [`Real::Wide`] from the inputs and the
+//! computed k, I1, I2, and each result rounded once, so that its rounding is one operation of
+//! the working type ([`Real::ROUNDING`]·ε: ε/2 at `f64` and MPFR, 1.625ε at double-double) plus
+//! the wide operations' (counted in `rounded`). Each returned quantity carries a bound on its
+//! relative error (relative to its exact value for the inputs as given), that rounding plus
+//! the smaller of two honest bounds on the shape's error:
 //!
 //! * the separate bound: the ellipse's bounds on k and I1, the bound on J0, the sensitivity of
-//!   I1 and J0 to k (|k I1′/I1| ≈ 3, |k J0′/J0| ≤ 1, from the computed derivatives) and the
-//!   rounding of each operation (a few ε), added: a = (·)^{1/3} divides I1's error by 3, p0
-//!   and the load add those of a and b, and so on;
+//!   I1 and J0 to k (|k I1′/I1| ≈ 3, |k J0′/J0| ≤ 1, from the computed derivatives), added as
+//!   the closed form combines them: a = (·)^{1/3} divides I1's error by 3, p0 adds those of a
+//!   and b, d0 = 3P J0/(8π μ a) those of a and J0, and so on;
 //! * the correlated bound (`ShapeErrors` below): k's error and the integrals' errors at the
 //!   computed k are one error seen three ways (the solve makes Ĩ2/Ĩ1 = A1/B1), so each size's
 //!   error is written to first order as a combination of the integrals' errors at the computed
@@ -36,8 +40,9 @@
 //! **J0 from I1 and I2.** The integrands of I1 and I2 weighted by k² and 1 add up to J0's, so
 //! J0 = k² I1 + I2 at the solved k, from the integrals the ellipse solve returns; its bound, as
 //! a value at the exact root, is the larger of theirs plus 4ε (both are positive) plus k's, or
-//! the correlated bound where that is smaller. `tests/unit/direct.rs` checks it against an
-//! independent quadrature of J0 alone (both of its peaks in closed form).
+//! the correlated bound plus its rounding (1 + 2w1 operations, w1 = k² I1/J0) where that is
+//! smaller. `tests/unit/direct.rs` checks it against an independent quadrature of J0 alone
+//! (both of its peaks in closed form).
 
 use super::convolution;
 use super::ellipse::{solve_ellipse, Ellipse, Options};
@@ -45,7 +50,7 @@ use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
 use crate::physics::Speed;
 use crate::routes::j0_from_pair;
-use crate::scalar::{check_finite, check_positive, short, Real};
+use crate::scalar::{check_finite, check_positive, short, FieldOps, Real};
 
 /// What fixes the size of the contact: the load P or the approach d0 (both positive).
 #[derive(Clone, Debug)]
@@ -141,7 +146,8 @@ struct ShapeErrors {
 }
 
 impl ShapeErrors {
-    fn new<T: Real>(el: &Ellipse<T>, j0: &T, ratio: &T) -> Option<Self> {
+    /// The errors at the solved `el` for the problem `pb` (its radii give A1/B1 = R2/R1).
+    fn new<T: Real>(el: &Ellipse<T>, j0: &T, pb: &ContactProblem<T>) -> Option<Self> {
         let ints = &el.integrals;
         let (d1, d2) = (ints.di1_dk.as_ref()?, ints.di2_dk.as_ref()?);
         let k = &el.k.value;
@@ -158,9 +164,15 @@ impl ShapeErrors {
         if !(0.0..=1.0).contains(&w1) {
             return None;
         }
-        let rho_hat = ints.i2.value.clone() / &ints.i1.value / ratio - T::one(p);
-        // The two divisions' roundings and the ratio R2/R1's own.
-        let rho = RelError::of(&rho_hat).add(RelError::eps::<T>(3, p));
+        // ρ against the exact R2/R1 (so that the solve's rounded ratio shows in it), at
+        // Real::Wide: the ratio's, the product's and the quotient's roundings and the
+        // difference's, on a quotient of 1 + ρ.
+        let pw = T::wide_prec(p);
+        let w = |x: &T| x.to_wide(pw);
+        let ratio = w(&pb.radius_across) / &w(&pb.radius_along);
+        let rho_hat = w(&ints.i2.value) / &(w(&ints.i1.value) * &ratio) - &T::Wide::one(pw);
+        let rho_abs = RelError::of(&rho_hat);
+        let rho = rho_abs.add(RelError::rounding::<T::Wide>(4.0, pw).scale(1.0 + rho_abs.to_f64()));
         let (e1, e2) = (ints.i1.error, ints.i2.error);
         let delta = rho.add(e1).add(e2).scale(1.0 / sigma);
         let first = delta.add(e1).add(e2);
@@ -201,7 +213,8 @@ const RESCALE: &str = "(overflow or underflow: rescale the inputs)";
 impl<T: Real> ContactProblem<T> {
     /// Solves the problem: the ellipse (33) by [`solve_ellipse`] with `opts`, J0 of (32) at the
     /// solved k as k² I1 + I2 from the ellipse's own I1, I2 (no further quadrature: the
-    /// integrands add up to J0's), then a, b, p0, d0 and the load in closed form (module docs).
+    /// integrands add up to J0's), then a, b, p0, d0 and the load in closed form at
+    /// [`Real::Wide`], each rounded once (module docs).
     /// The work is the ellipse solve's and a few operations.
     ///
     /// Accuracy: every quantity to a few ε of the working precision (measured against Johnson's
@@ -249,17 +262,20 @@ impl<T: Real> ContactProblem<T> {
         let pair_error = ints.i1.error.max(ints.i2.error);
         let mut j0 = j0_from_pair(&ellipse.k.value, &ints.i1.value, &ints.i2.value, pair_error)
             .checked("J0")?;
-        let shape = ShapeErrors::new(&ellipse, &j0.value, &ratio);
-        let sizes = Sizes::new(self, &ellipse, &j0, &a1, &b1, shape.as_ref());
+        let shape = ShapeErrors::new(&ellipse, &j0.value, self);
+        let sizes = Sizes::new(self, &ellipse, &j0, shape.as_ref());
         // J0 as the value at the exact root: its error at the computed k plus its change over
         // k's error (|k J0′/J0| ≤ 1), or the correlated bound where it is smaller.
         let p = a1.prec();
-        j0.error = j0.error.add(ellipse.k.error.add(RelError::eps::<T>(2, p)));
+        j0.error = j0
+            .error
+            .add(ellipse.k.error.add(RelError::rounding::<T>(1.0, p)));
         if let Some(sh) = &shape {
+            // k̃(k̃ Ĩ1) + Ĩ2: two roundings in the share w1 of k² I1, one in the sum.
             let w1 = sh.w1;
             let tight = sh
                 .bound(w1, 1.0 - w1, 2.0 * w1)
-                .add(RelError::eps::<T>(5, p));
+                .add(RelError::rounding::<T>(1.0 + 2.0 * w1, p));
             j0.error = j0.error.min(tight);
         }
         Ok(ContactSolution {
@@ -301,79 +317,128 @@ struct Sizes<T: Real> {
     load: Estimated<T>,
 }
 
+/// The sizes' values and the bounds on their rounding, in the order a, b, p0 and then d0 under
+/// a load or P under an approach.
+type Rounded<T> = [(T, RelError); 4];
+
+/// a, b, p0 and d0 (given the load) or P (given the approach) from the inputs and the computed
+/// k, I1 and I2, formed at [`Real::Wide`] and rounded once ("guard bits, then round once"), so
+/// that each carries one rounding of the working type plus the wide operations', each of
+/// those counted with the power of its rounded intermediate in the closed form (a rounding
+/// inside a³ counts 1/3, one in a quantity that cancels counts 0). With B1 = 1/(2R2) and
+/// J0 = k²I1 + I2 formed there too (1 and 3 operations), the wide operations count, in units
+/// of [`Real::ROUNDING`]:
+///
+/// ```text
+/// given P:  s = 3 I1/(8π B1) (5),  a = ∛P/∛μ·∛s: 5/3 + 3 + 2 = 20/3;  b = k a: 23/3;
+///           p0 = (P/a/b)·3/(2π): a² (with π's rounding once, 1/3) 3 + 6 + 4, b's 1, own 4 = 18;
+///           d0 = p0/(4μ)·b·J0 = 3P J0/(8π μ a): s's 2, the roots' 3, a's 2, p0's own 4,
+///           J0's 3, own 3 = 17;
+/// given d0: s = I1/(B1 J0) (6),  a = √d0·√s: 3 + 3 = 6;  b = k a: 7;
+///           p0 = 4μ·(a B1/(k I1)): a's 6 (B1's rounding at the power 1/2), own 4 = 10;
+///           P = (p0 a b)·(2π/3) ∝ a³ B1: the roots' and a's product 9, J0's 9/2, s's product
+///           and quotient 3/2 each, B1's 1/2, b's 1, p0's own 4, own 5 = 27.
+/// ```
+fn rounded<T: Real>(pb: &ContactProblem<T>, el: &Ellipse<T>) -> Rounded<T> {
+    let p = pb.shear_modulus.prec();
+    let pw = T::wide_prec(p);
+    let w = |x: &T| x.to_wide(pw);
+    let ints = &el.integrals;
+    let (k, i1, i2) = (w(&el.k.value), w(&ints.i1.value), w(&ints.i2.value));
+    let mu = w(&pb.shear_modulus);
+    let b1 = w(&pb.radius_across).recip().mul_pow2(-1);
+    let j0 = k.clone() * &(k.clone() * &i1) + &i2;
+    let pi = <T::Wide as Real>::pi(pw);
+    // Grouped so that no intermediate leaves the working type's range unless a result does:
+    // P, μ and d0 enter through their own roots, apart from the factors of order one (a load
+    // of 1e308 with μ = 1e100 gives a = 1e69, whose cube, formed from 3P, would overflow).
+    let (a, b, p0, last, counts) = match &pb.loading {
+        Loading::Load(pl) => {
+            let pl = w(pl);
+            let shape = i1.mul_i64(3) / (pi.clone().mul_i64(8) * &b1);
+            let a = pl.clone().cbrt() / &mu.clone().cbrt() * shape.cbrt();
+            let b = k * &a;
+            let p0 = (pl / &a / &b).mul_i64(3) / pi.mul_i64(2);
+            let d0 = (p0.clone() / &mu.mul_i64(4)) * &b * &j0;
+            (a, b, p0, d0, [20.0 / 3.0, 23.0 / 3.0, 18.0, 17.0])
+        }
+        Loading::Approach(d0) => {
+            let shape = i1.clone() / (b1.clone() * &j0);
+            let a = w(d0).sqrt() * shape.sqrt();
+            let b = k.clone() * &a;
+            let p0 = mu.mul_i64(4) * &(a.clone() * &b1 / (k * &i1));
+            let load = (p0.clone() * &a * &b) * pi.mul_i64(2).div_i64(3);
+            (a, b, p0, load, [6.0, 7.0, 10.0, 27.0])
+        }
+    };
+    let once = RelError::rounding::<T>(1.0, p);
+    let round = |x: T::Wide, n: f64| {
+        let r = once.add(RelError::rounding::<T::Wide>(n, pw));
+        // A wide value out of range is an overflow (double-double's renormalisation turns
+        // one into NaN): ∞, which `fits` names.
+        let v = match x.is_finite() {
+            true => T::from_wide(&x, p),
+            false => T::from_f64(f64::INFINITY, p),
+        };
+        (v, r)
+    };
+    [
+        round(a, counts[0]),
+        round(b, counts[1]),
+        round(p0, counts[2]),
+        round(last, counts[3]),
+    ]
+}
+
 impl<T: Real> Sizes<T> {
-    /// The sizes with the bounds of [`Sizes::separate`], each replaced by the correlated bound
-    /// of [`ShapeErrors`] plus the same roundings where that is smaller.
+    /// The sizes of [`rounded`] with the bounds of [`Sizes::separate`], each replaced by the
+    /// correlated bound of [`ShapeErrors`] plus the same rounding where that is smaller.
     fn new(
         pb: &ContactProblem<T>,
         el: &Ellipse<T>,
         j0: &Estimated<T>,
-        a1: &T,
-        b1: &T,
         shape: Option<&ShapeErrors>,
     ) -> Self {
-        let mut s = Self::separate(pb, el, j0, a1, b1);
+        let r = rounded(pb, el);
+        let mut s = Self::separate(pb, el, j0, r.clone());
         let Some(sh) = shape else { return s };
-        let p = a1.prec();
-        let eps = |x: f64| RelError::eps::<T>(1, p).scale(x);
         let w1 = sh.w1;
         let w2 = 1.0 - w1;
-        // (A, B, C) of each quantity's error A t1 + B t2 + C δ (module docs) and its roundings
-        // in ε, one an operation as in the separate bounds: a's own (ra) enters each quantity
-        // with the power of the computed ã in its formula, once each. Under a load b = k ã
-        // (ra and its own 1), p0 = 3P/(2π ã b̃) (2ra, b̃'s 1, its own 5), and
-        // d0 = p0 b̃ J0/(4μ) = 3P J0/(8π μ ã): ã once, b̃'s rounding cancels, p0's 5, its own
-        // 3 and J0's 4. Under an approach p0 = 4μ ã B1/(k I1) (ra and its own 5) and
-        // P = (2/3)π p0 ã b̃ (3ra, b̃'s 1, p0's 5 and its own 5).
-        let rows: [(&mut Estimated<T>, [f64; 3], f64); 4] = match &pb.loading {
-            Loading::Load(_) => {
-                let ra = 8.0 / 3.0 + 4.0;
-                [
-                    (&mut s.a, [1.0 / 3.0, 0.0, 0.0], ra),
-                    (&mut s.b, [1.0 / 3.0, 0.0, 1.0], ra + 1.0),
-                    (&mut s.p0, [-2.0 / 3.0, 0.0, -1.0], 2.0 * ra + 6.0),
-                    (&mut s.d0, [w1 - 1.0 / 3.0, w2, 2.0 * w1], ra + 12.0),
-                ]
-            }
+        // (A, B, C) of each quantity's error A t1 + B t2 + C δ (module docs) and its rounding.
+        let rows: [(&mut Estimated<T>, [f64; 3]); 4] = match &pb.loading {
+            Loading::Load(_) => [
+                (&mut s.a, [1.0 / 3.0, 0.0, 0.0]),
+                (&mut s.b, [1.0 / 3.0, 0.0, 1.0]),
+                (&mut s.p0, [-2.0 / 3.0, 0.0, -1.0]),
+                (&mut s.d0, [w1 - 1.0 / 3.0, w2, 2.0 * w1]),
+            ],
             Loading::Approach(_) => {
-                let ra = 7.0;
                 let (ah, bh) = ((1.0 - w1) / 2.0, -w2 / 2.0);
                 [
-                    (&mut s.a, [ah, bh, -w1], ra),
-                    (&mut s.b, [ah, bh, 1.0 - w1], ra + 1.0),
-                    (&mut s.p0, [ah - 1.0, bh, -w1 - 1.0], ra + 5.0),
-                    (
-                        &mut s.load,
-                        [(1.0 - 3.0 * w1) / 2.0, -1.5 * w2, -3.0 * w1],
-                        3.0 * ra + 11.0,
-                    ),
+                    (&mut s.a, [ah, bh, -w1]),
+                    (&mut s.b, [ah, bh, 1.0 - w1]),
+                    (&mut s.p0, [ah - 1.0, bh, -w1 - 1.0]),
+                    (&mut s.load, [(1.0 - 3.0 * w1) / 2.0, -1.5 * w2, -3.0 * w1]),
                 ]
             }
         };
-        for (q, [a, b, c], r) in rows {
-            q.error = q.error.min(sh.bound(a, b, c).add(eps(r)));
+        for ((q, [a, b, c]), (_, round)) in rows.into_iter().zip(r) {
+            q.error = q.error.min(sh.bound(a, b, c).add(round));
         }
         s
     }
 
-    /// Each size with a bound that adds the bounds of its parts: k's, I1's (with its change
-    /// over k's error) and J0's.
-    fn separate(
-        pb: &ContactProblem<T>,
-        el: &Ellipse<T>,
-        j0: &Estimated<T>,
-        a1: &T,
-        b1: &T,
-    ) -> Self {
-        let p = a1.prec();
-        let eps = |n: u32| RelError::eps::<T>(n, p);
+    /// Each size with a bound that adds the bounds of its parts (k's, I1's with its change
+    /// over k's error, J0's) as its closed form combines them, plus its rounding.
+    fn separate(pb: &ContactProblem<T>, el: &Ellipse<T>, j0: &Estimated<T>, r: Rounded<T>) -> Self {
+        let p = pb.shear_modulus.prec();
         let k = &el.k.value;
         let ints = &el.integrals;
         let i1 = &ints.i1.value;
         // The integrals' errors at the computed k, plus their change over k's error
         // (|k I1′/I1| from the computed derivative, |k J0′/J0| ≤ 1), plus the ratio's
         // rounding (|d ln k/d ln(A1/B1)| ≤ 1).
-        let dk = el.k.error.add(eps(2));
+        let dk = el.k.error.add(RelError::rounding::<T>(1.0, p));
         // Formed at the working precision: k, I1′ and I1 may each lie outside the f64 range
         // (near the Rayleigh speed, k ~ 1e-250 and I1 ~ 1e500 at 1 − M_R = 1e-1000).
         let sens = |d: &Option<Estimated<T>>| {
@@ -382,42 +447,32 @@ impl<T: Real> Sizes<T> {
         };
         let e_i1 = ints.i1.error.add(dk.scale(sens(&ints.di1_dk)));
         let e_j0 = j0.error.add(dk);
-        let pi = T::pi(p);
-        let mu = &pb.shear_modulus;
-        let four_mu = mu.clone().mul_i64(4);
+        let [(av, ra), (bv, rb), (pv, rp), (lv, rl)] = r;
         let est = Estimated::new;
-        // Grouped so that no intermediate leaves the working type's range unless a result
-        // does: P, μ and d0 enter through their own roots, apart from the factors of order one
-        // (a load of 1e308 with μ = 1e100 gives a = 1e69, whose cube, formed from 3P,
-        // overflowed).
+        let exact = |x: &T| est(x.clone(), RelError::ZERO);
         match &pb.loading {
             Loading::Load(pl) => {
-                // a³ = 3 P I1 / (8 π μ B1): a = (∛P/∛μ)·∛(3 I1/(8π B1)).
-                let shape = i1.clone().mul_i64(3) / (pi.clone().mul_i64(8) * b1);
-                let av = pl.clone().cbrt() / &mu.clone().cbrt() * shape.cbrt();
-                let a = est(av, e_i1.add(eps(8)).scale(1.0 / 3.0).add(eps(4)));
-                let b = est(k.clone() * &a.value, a.error.add(dk).add(eps(1)));
-                // p0 = 3P/(2π a b), d0 = p0 b J0/(4μ).
-                let p0v = (pl.clone() / &a.value / &b.value).mul_i64(3) / pi.mul_i64(2);
-                let p0 = est(p0v, a.error.add(b.error).add(eps(5)));
-                let d0v = (p0.value.clone() / &four_mu) * &b.value * &j0.value;
-                let d0 = est(d0v, p0.error.add(b.error).add(e_j0).add(eps(4)));
-                let load = est(pl.clone(), RelError::ZERO);
-                Sizes { a, b, p0, d0, load }
+                // a³ ∝ I1, b = k a, p0 ∝ 1/(a b), d0 = 3P J0/(8π μ a).
+                let ea = e_i1.scale(1.0 / 3.0);
+                let eb = ea.add(dk);
+                Sizes {
+                    a: est(av, ea.add(ra)),
+                    b: est(bv, eb.add(rb)),
+                    p0: est(pv, ea.add(eb).add(rp)),
+                    d0: est(lv, ea.add(e_j0).add(rl)),
+                    load: exact(pl),
+                }
             }
-            Loading::Approach(d0v) => {
-                // a² = d0 I1/(B1 J0): a = √d0·√(I1/(B1 J0)); p0 = 4μ a B1/(k I1),
-                // P = (2/3)π p0 a b.
-                let shape = i1.clone() / (b1.clone() * &j0.value);
-                let av = d0v.clone().sqrt() * shape.sqrt();
-                let a = est(av, e_i1.add(e_j0).add(eps(4)).scale(0.5).add(eps(3)));
-                let b = est(k.clone() * &a.value, a.error.add(dk).add(eps(1)));
-                let p0v = four_mu * &(a.value.clone() * b1 / (k.clone() * i1));
-                let p0 = est(p0v, a.error.add(dk).add(e_i1).add(eps(4)));
-                let lv = (p0.value.clone() * &a.value * &b.value) * pi.mul_i64(2).div_i64(3);
-                let load = est(lv, p0.error.add(a.error).add(b.error).add(eps(5)));
-                let d0 = est(d0v.clone(), RelError::ZERO);
-                Sizes { a, b, p0, d0, load }
+            Loading::Approach(d0) => {
+                // a² ∝ I1/J0, b = k a, p0 ∝ a/(k I1), P = (8π/3) μ d0 a/J0.
+                let ea = e_i1.add(e_j0).scale(0.5);
+                Sizes {
+                    a: est(av, ea.add(ra)),
+                    b: est(bv, ea.add(dk).add(rb)),
+                    p0: est(pv, ea.add(dk).add(e_i1).add(rp)),
+                    load: est(lv, ea.add(e_j0).add(rl)),
+                    d0: exact(d0),
+                }
             }
         }
     }
@@ -510,7 +565,7 @@ impl<T: Real> ContactSolution<T> {
                 + &axis
                     .error
                     .scale(2.0)
-                    .add(RelError::eps::<T>(8, p))
+                    .add(RelError::rounding::<T>(8.0, p))
                     .to_real(p);
             c.clone().abs() > axis.value.clone() * &reach
         };
@@ -522,13 +577,15 @@ impl<T: Real> ContactSolution<T> {
             (x.clone() / &self.a.value).square().to_f64(),
             (y.clone() / &self.b.value).square().to_f64(),
         );
-        // |δq| ≤ 2(x²/a²)δa + 2(y²/b²)δb + 4ε; |δ√q| ≤ min(√|δq|, |δq|/(2√q)).
+        // |δq| ≤ 2(x²/a²)δa + 2(y²/b²)δb + the roundings: 3 in each square's share (the
+        // quotient's twice, the square's), |1 − x²/a²| ≤ 1 + x²/a² and |q| ≤ 1 for the two
+        // subtractions; |δ√q| ≤ min(√|δq|, |δq|/(2√q)).
         let dq = self
             .a
             .error
             .scale(2.0 * xa)
             .add(self.b.error.scale(2.0 * yb))
-            .add(RelError::eps::<T>(4, p));
+            .add(RelError::rounding::<T>(4.0 * (xa + yb) + 2.0, p));
         let qf = q.to_f64().max(0.0);
         let droot = if qf > 0.0 {
             dq.sqrt().min(dq.scale(0.5 / qf.sqrt()))
@@ -545,7 +602,7 @@ impl<T: Real> ContactSolution<T> {
             .error
             .scale(qf.sqrt())
             .add(droot)
-            .add(RelError::eps::<T>(2, p));
+            .add(RelError::rounding::<T>(2.0, p));
         Ok(Estimated::new(value, err))
     }
 
@@ -560,11 +617,13 @@ impl<T: Real> ContactSolution<T> {
     pub fn displacement(&self, x: &T, y: &T, tol: &RelError) -> Result<Estimated<T>> {
         check_point(x, y)?;
         let p = x.prec();
-        let eps = RelError::eps::<T>(4, p);
         if self.inside(x, y) {
             let curv = self.a1.clone() * x.square() + self.b1.clone() * y.square();
             let scale = (curv.clone() / &self.d0.value).to_f64();
-            let err = self.d0.error.add(eps.scale(1.0 + scale));
+            // Each term's square, curvature (1/(2R), rounded) and product, the positive sum's
+            // rounding (4 relative to curv), and the difference's (at most d0, inside).
+            let rounding = RelError::rounding::<T>(1.0 + 4.0 * scale, p);
+            let err = self.d0.error.add(rounding);
             return Ok(Estimated::new(self.d0.value.clone() - curv, err));
         }
         self.convolution(x, y, tol)

@@ -89,6 +89,8 @@ impl Field for f64 {
 
 impl Real for f64 {
     type Wide = super::Dd;
+    /// IEEE round to nearest: ε/2.
+    const ROUNDING: f64 = 0.5;
     #[inline(always)]
     fn wide_prec(_: ()) {}
     #[inline(always)]

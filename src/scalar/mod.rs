@@ -205,6 +205,15 @@ pub trait Real: Field {
         let _ = (p, bits);
         None
     }
+    /// The worst relative error of one operation (`+ − × ÷`, `sqrt`, `cbrt`, a rounding from
+    /// [`Real::Wide`]), in units of [`Real::epsilon`]: the unit every error bound that counts
+    /// operations multiplies (through `RelError::rounding`). 1/2 for a correctly rounded type
+    /// rounding to nearest (`f64`'s arithmetic and square root, MPFR's every operation); for
+    /// double-double the measured worst over its operations (`docs/design.md`, the table of
+    /// `tests/dd_accuracy.rs`: mul 3.235·2⁻¹⁰⁶, so 1.625ε). `f64`'s `cbrt` comes from the system's
+    /// libm and is not counted with it: the closed forms take their cube roots from
+    /// [`Real::Wide`].
+    const ROUNDING: f64;
     /// Machine epsilon `2^(1 - bits)` at precision `p`: the unit every tolerance is built from.
     fn epsilon(p: Self::Prec) -> Self {
         Self::one(p).mul_pow2(1 - Self::bits(p) as i32)

@@ -195,6 +195,8 @@ impl Field for Mp {
 
 impl Real for Mp {
     type Wide = Mp;
+    /// MPFR rounds every operation correctly to nearest: ε/2.
+    const ROUNDING: f64 = 0.5;
     fn wide_prec(p: MpPrec) -> MpPrec {
         MpPrec((2 * p.0 + 32).min(MpPrec::MAX_BITS))
     }
