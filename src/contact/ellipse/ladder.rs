@@ -230,15 +230,18 @@ impl<T: Real> ShapeSolver<T> {
 #[derive(Clone, Debug)]
 pub(crate) struct SolveCache<T: Real>(Arc<Kept<T>>);
 
+/// Values kept on first use, one slot each.
+type Slots<V> = Box<[OnceLock<V>]>;
+
 #[derive(Debug)]
 struct Kept<T: Real> {
     at_f64: OnceLock<Option<Speed<f64>>>,
     at_dd: OnceLock<Option<Speed<Dd>>>,
     probe: [OnceLock<Evaluation<T>>; 2],
     /// F + ln(A1/B1) and F′ at the nodes of [`super::seed::grid_seed`], each on first use.
-    grid: OnceLock<Box<[OnceLock<Option<(f64, f64)>>]>>,
+    grid: OnceLock<Slots<Option<(f64, f64)>>>,
     /// The graded route's node values by plan (units, pole subtracted), each on first use.
-    graded: OnceLock<Box<[OnceLock<Arc<GradedBody<T>>>]>>,
+    graded: OnceLock<Slots<Arc<GradedBody<T>>>>,
 }
 
 impl<T: Real> SolveCache<T> {

@@ -227,7 +227,7 @@ fn cubic_root(ya: f64, yb: f64, da: f64, db: f64) -> Option<f64> {
     for _ in 0..8 {
         let y = ya + t * (da + t * (c2 + t * c3));
         let dy = da + t * (2.0 * c2 + t * 3.0 * c3);
-        if !(dy > 0.0) {
+        if dy.is_nan() || dy <= 0.0 {
             return None;
         }
         let next = (t - y / dy).clamp(0.0, 1.0);

@@ -530,9 +530,9 @@ impl<T: Real> GradedBody<T> {
         let layout = SinhLayout::for_units(rules, units);
         let nl = layout.nodes()?;
         let left = if subtract {
-            subtracted_left(&layout, &sc, nl, p)?
+            subtracted_left(&layout, sc, nl, p)?
         } else {
-            resolved_left(&layout, &sc, nl, p)?
+            resolved_left(&layout, sc, nl, p)?
         };
         // Right: σ, f, σ·f.
         let (right_s, right_w) = rules.right()?;
