@@ -10,6 +10,7 @@ use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::physics::Speed;
 use crate::routes::evaluate::{Evaluator, IntegralOptions};
+use crate::routes::graded::GradedBody;
 use crate::routes::{Evaluation, Method};
 use crate::scalar::{Dd, Real};
 use std::cell::OnceCell;
@@ -229,11 +230,18 @@ impl<T: Real> ShapeSolver<T> {
 #[derive(Clone, Debug)]
 pub(crate) struct SolveCache<T: Real>(Arc<Kept<T>>);
 
+/// Values kept on first use, one slot each.
+type Slots<V> = Box<[OnceLock<V>]>;
+
 #[derive(Debug)]
 struct Kept<T: Real> {
     at_f64: OnceLock<Option<Speed<f64>>>,
     at_dd: OnceLock<Option<Speed<Dd>>>,
     probe: [OnceLock<Evaluation<T>>; 2],
+    /// F + ln(A1/B1) and F′ at the nodes of [`super::seed::grid_seed`], each on first use.
+    grid: OnceLock<Slots<Option<(f64, f64)>>>,
+    /// The graded route's node values by plan (units, pole subtracted), each on first use.
+    graded: OnceLock<Slots<Arc<GradedBody<T>>>>,
 }
 
 impl<T: Real> SolveCache<T> {
@@ -243,6 +251,8 @@ impl<T: Real> SolveCache<T> {
             at_f64: OnceLock::new(),
             at_dd: OnceLock::new(),
             probe: [OnceLock::new(), OnceLock::new()],
+            grid: OnceLock::new(),
+            graded: OnceLock::new(),
         }))
     }
 
@@ -256,6 +266,37 @@ impl<T: Real> SolveCache<T> {
         self.0.at_dd.get_or_init(|| speed.at(()).ok()).as_ref()
     }
 
+    /// The graded route's node values for a plan of `units` (`subtract`: the pole subtracted),
+    /// built by `build` on first use and shared by every layout at this speed with that plan
+    /// (the same values as a layout built anew); plans of [`GRADED_UNITS`] units or more are
+    /// not kept.
+    pub(crate) fn graded_body(
+        &self,
+        units: usize,
+        subtract: bool,
+        build: impl FnOnce() -> Result<GradedBody<T>>,
+    ) -> Result<Arc<GradedBody<T>>> {
+        let slots = self
+            .0
+            .graded
+            .get_or_init(|| (0..2 * GRADED_UNITS).map(|_| OnceLock::new()).collect());
+        let Some(slot) = slots.get(2 * units + usize::from(subtract)) else {
+            return build().map(Arc::new);
+        };
+        if let Some(body) = slot.get() {
+            return Ok(body.clone());
+        }
+        let body = Arc::new(build()?);
+        Ok(slot.get_or_init(|| body).clone())
+    }
+
+    /// The slots of the seed grid's `n` nodes.
+    pub(super) fn grid(&self, n: usize) -> &[OnceLock<Option<(f64, f64)>>] {
+        self.0
+            .grid
+            .get_or_init(|| (0..n).map(|_| OnceLock::new()).collect())
+    }
+
     /// The probe's slot for `method` (`None`: not kept).
     pub(super) fn probe(&self, method: Method) -> Option<&OnceLock<Evaluation<T>>> {
         match method {
@@ -265,6 +306,10 @@ impl<T: Real> SolveCache<T> {
         }
     }
 }
+
+/// The plans a speed keeps graded node values for: up to 191 units of ln 2 (k ≤ 2^180 needs
+/// at most about 183).
+const GRADED_UNITS: usize = 192;
 
 /// The integral options of a Newton iterate: the method, with k-derivatives.
 fn newton_options(method: Method) -> IntegralOptions {

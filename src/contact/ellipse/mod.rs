@@ -9,8 +9,10 @@
 //! The solve runs in five stages, in the order they run:
 //!
 //! 1. **Check the inputs** (this file: [`check_ratio`], `checked_options`), before any work.
-//! 2. **Seed** (`seed.rs`): the static Hertz ellipse in closed form, or a neighbour's root;
-//!    unseeded above k = 1, one evaluation at k = 1 (kept with the speed) tells the root's side.
+//! 2. **Seed** (`seed.rs`): a neighbour's root; unseeded at `f64`, the root of the cubic
+//!    through ln(I2/I1) and its slope at two nodes of a grid in ln k kept with the speed;
+//!    else the static Hertz ellipse in closed form, and above k = 1 one evaluation at k = 1
+//!    (kept with the speed) tells the root's side.
 //! 3. **Safeguarded Newton** (`newton.rs`) on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, at the
 //!    ladder's lowest stage (`f64`): F increases with k (checked over ν, M_R and
 //!    10⁻⁶ ≤ A1/B1 ≤ 10⁶ in `tests/contact.rs`), so a step leaving the bracket of known signs

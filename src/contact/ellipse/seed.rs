@@ -7,7 +7,7 @@ use super::newton::{solve_core, Handed, Newton, Stage};
 use super::{shape_residual, shape_slope};
 use crate::error::Result;
 use crate::routes::evaluate::Evaluator;
-use crate::routes::AxisRatio;
+use crate::routes::{AxisRatio, Method};
 use crate::scalar::Real;
 use std::sync::OnceLock;
 
@@ -59,6 +59,11 @@ pub(super) fn lowest_stage<S: Real>(
     tol: Option<S>,
     guess: Option<f64>,
 ) -> Handed<S> {
+    let guess = match guess {
+        Some(g) => Some(g),
+        None if allow_chord => grid_seed(ev, ratio),
+        None => None,
+    };
     let seed = guess
         .filter(|g| g.is_finite() && *g > 0.0)
         .map(|g| S::from_f64(g, ratio.prec()));
@@ -137,3 +142,133 @@ pub(super) const PROBE_BELOW_RATIO: f64 = 30.0;
 /// ... and at any A1/B1 when the static seed's k0·√(1 − M_R²) is below this: near the
 /// Rayleigh speed the root falls far below the static seed (`docs/calibration.md`).
 pub(super) const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
+
+/// The seed grid's spacing in λ = ln k and its nodes' range, |λ| ≤ `GRID_HALF`·`GRID_STEP`.
+const GRID_STEP: f64 = 0.5;
+const GRID_HALF: i64 = 32;
+
+/// The nodes a grid seed may visit before it gives up (a root off the grid, a failed
+/// evaluation): the static seed's cell, then Newton's pick from the nearer end.
+const GRID_VISITS: usize = 4;
+
+/// The start of an unseeded `f64` solve at a speed whose method is a fixed rule: the root of
+/// the cubic through ln(I2/I1) and its λ-derivative at the two nodes of a grid in λ (spacing
+/// ½, kept with the speed, each node evaluated once per speed on first use) around the root,
+/// within ~1e-5 of it on ν = 0.25, M_R ≤ 0.9999, A1/B1 ∈ [10⁻³, 10]
+/// (`docs/calibration.md`): Newton then needs two evaluations. A node's values depend on its
+/// λ alone (its own evaluator: no layout shared with the solve), so the seed, and the solve
+/// from it, do not depend on which solves the speed served before. `None` at higher
+/// precisions, for the adaptive method, and where the root lies off the grid.
+pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<f64> {
+    let p = ratio.prec();
+    if S::bits(p) > 53 || !matches!(ev.method(), Method::Auto | Method::Fixed) {
+        return None;
+    }
+    let target = ratio.to_f64().ln();
+    let slots = ev.speed().solve_cache().grid(2 * GRID_HALF as usize + 1);
+    let node = |j: i64| -> Option<(f64, f64)> {
+        let slot = slots.get(usize::try_from(j + GRID_HALF).ok()?)?;
+        *slot.get_or_init(|| grid_node(ev, j as f64 * GRID_STEP))
+    };
+    let cell = |lam: f64| {
+        (lam / GRID_STEP)
+            .floor()
+            .clamp(-GRID_HALF as f64, (GRID_HALF - 1) as f64) as i64
+    };
+    let mut j = cell(static_seed(ratio.to_f64()).ln());
+    for _ in 0..GRID_VISITS {
+        let ((ga, da), (gb, db)) = (node(j)?, node(j + 1)?);
+        if ga <= target && target <= gb {
+            let t = cubic_root(ga - target, gb - target, da * GRID_STEP, db * GRID_STEP)?;
+            return Some(((j as f64 + t) * GRID_STEP).exp());
+        }
+        let (lam, g, d) = if target < ga {
+            (j as f64 * GRID_STEP, ga, da)
+        } else {
+            ((j + 1) as f64 * GRID_STEP, gb, db)
+        };
+        let next = cell(lam - (g - target) / d);
+        // Newton's pick, moved at least one cell towards the target.
+        j = if target < ga {
+            next.min(j - 1)
+        } else {
+            next.max(j + 1)
+        };
+    }
+    None
+}
+
+/// ln(I2/I1) and its λ-derivative F′ at λ, by the fixed rules on an evaluator of its own.
+fn grid_node<S: Real>(ev: &Evaluator<S>, lam: f64) -> Option<(f64, f64)> {
+    let opts = crate::routes::IntegralOptions {
+        method: Method::Auto,
+        derivatives: true,
+        ..Default::default()
+    };
+    let own = Evaluator::new(ev.speed(), opts).ok()?;
+    let one = S::one(ev.speed().mr().prec());
+    let ax = AxisRatio::new(S::from_f64(lam.exp(), one.prec())).ok()?;
+    let ci = own.for_newton(&ax, true).ok()?;
+    let (g, d) = (
+        shape_residual(&ci, &one).to_f64(),
+        shape_slope(&ax.k, &ci).to_f64(),
+    );
+    (g.is_finite() && d.is_finite() && d > 0.0).then_some((g, d))
+}
+
+/// The root t ∈ [0, 1] of the cubic Hermite interpolant through y(0) = ya ≤ 0 ≤ y(1) = yb
+/// with slopes da, db (per unit t), by Newton's method from the chord's root, safeguarded to
+/// [0, 1]; `None` if it does not settle within eight steps.
+fn cubic_root(ya: f64, yb: f64, da: f64, db: f64) -> Option<f64> {
+    // y(t) = ya + da·t + c2·t² + c3·t³.
+    let c3 = da + db - 2.0 * (yb - ya);
+    let c2 = yb - ya - da - c3;
+    let mut t = if yb > ya { -ya / (yb - ya) } else { 0.5 };
+    for _ in 0..8 {
+        let y = ya + t * (da + t * (c2 + t * c3));
+        let dy = da + t * (2.0 * c2 + t * 3.0 * c3);
+        if dy.is_nan() || dy <= 0.0 {
+            return None;
+        }
+        let next = (t - y / dy).clamp(0.0, 1.0);
+        if (next - t).abs() <= 1e-12 {
+            return Some(next);
+        }
+        t = next;
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::{solve_ellipse, Options};
+    use crate::physics::Material;
+    use crate::routes::IntegralOptions;
+
+    /// The grid seed against the solve's root: within 10⁻⁴ in λ (so that Newton needs two
+    /// evaluations) over ν, M_R up to 0.9999 and A1/B1 from 10⁻³ to 10, on both sides of k = 1.
+    #[test]
+    fn grid_seeds_lie_near_the_root() {
+        let opts = IntegralOptions {
+            derivatives: true,
+            ..Default::default()
+        };
+        let mut worst = 0.0f64;
+        for nu in [-0.5, 0.25, 0.5] {
+            let mat = Material::new(nu).unwrap();
+            for mr in [0.0, 0.5, 0.9, 0.99, 0.9999] {
+                let sp = mat.speed(mr).unwrap();
+                let ev = Evaluator::new(&sp, opts).unwrap();
+                for ratio in [1e-3, 0.01, 0.1, 0.5, 2.0, 10.0] {
+                    let k = solve_ellipse(&sp, &ratio, &Options::default()).unwrap().k;
+                    let seed = grid_seed(&ev, &ratio).expect("a seed on the grid");
+                    let err = (seed / k.value).ln().abs();
+                    assert!(err <= 1e-4, "nu {nu}, M_R {mr}, A1/B1 {ratio}: {err:.2e}");
+                    worst = worst.max(err);
+                }
+            }
+        }
+        println!("grid seed: worst |ln(seed/k)| {worst:.2e}");
+    }
+}

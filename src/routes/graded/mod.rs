@@ -400,6 +400,15 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 #[derive(Clone, Debug)]
 pub struct GradedSetup<T: Real> {
     k_max: T,
+    /// The node values, shared by the layouts of one speed with the same plan
+    /// ([`crate::contact::SolveCache`]): they depend on the plan's units and on whether the
+    /// pole is subtracted, not on k_ref itself.
+    body: Arc<GradedBody<T>>,
+}
+
+/// The node values of a [`GradedSetup`].
+#[derive(Debug)]
+pub(crate) struct GradedBody<T: Real> {
     left: LeftHalf<T>,
     /// The right nodes' σ, f, σ·f (3 × the node count).
     right: Vec<T>,
@@ -501,12 +510,29 @@ impl<T: Real> GradedSetup<T> {
         let lg = |x: &T| RelError::of(x).log2();
         let pole_scale = if subtract { 0.0 } else { -lg(&sc.eps2) / 2.0 };
         let inv_a = lg(&k_max).max(pole_scale).max(-lg(&sc.d2) / 2.0);
-        let layout = SinhLayout::for_units(&rules, units_for_log2(inv_a));
+        let units = units_for_log2(inv_a);
+        let build = || GradedBody::new(&rules, &sc, units, subtract, p);
+        let body = speed.solve_cache().graded_body(units, subtract, build)?;
+        Ok(GradedSetup { k_max, body })
+    }
+}
+
+impl<T: Real> GradedBody<T> {
+    /// The left and right node values for a plan of `units` (the pole `subtract`ed or not).
+    fn new(
+        rules: &Rules<T>,
+        sc: &SpeedConsts<T>,
+        units: usize,
+        subtract: bool,
+        p: T::Prec,
+    ) -> Result<Self> {
+        let one = T::one(p);
+        let layout = SinhLayout::for_units(rules, units);
         let nl = layout.nodes()?;
         let left = if subtract {
-            subtracted_left(&layout, &sc, nl, p)?
+            subtracted_left(&layout, sc, nl, p)?
         } else {
-            resolved_left(&layout, &sc, nl, p)?
+            resolved_left(&layout, sc, nl, p)?
         };
         // Right: σ, f, σ·f.
         let (right_s, right_w) = rules.right()?;
@@ -532,9 +558,11 @@ impl<T: Real> GradedSetup<T> {
             // σ·f in place of σ's copy.
             node_map(p, rf, rsf, |f, sg| sg.clone() * f);
         }
-        Ok(GradedSetup { k_max, left, right })
+        Ok(GradedBody { left, right })
     }
+}
 
+impl<T: Real> GradedSetup<T> {
     /// Whether `k` lies in the range this layout serves, 1 ≤ k ≤ (5/4)·k_ref.
     /// The range of (46)–(47) in k this layout serves; an exact comparison.
     pub fn covers(&self, k: &T) -> bool {
@@ -567,10 +595,11 @@ impl<T: Real> GradedSetup<T> {
             });
         }
         let p = axes.k.prec();
-        let (left, nl) = (self.left.sums(axes, dk, p), self.left.nodes());
+        let (left, nl) = (self.body.left.sums(axes, dk, p), self.body.left.nodes());
         // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
-        let nr = self.right.len() / 3;
-        let [rs, rf, rsf] = [0, 1, 2].map(|i| &self.right[i * nr..(i + 1) * nr]);
+        let right = &self.body.right;
+        let nr = right.len() / 3;
+        let [rs, rf, rsf] = [0, 1, 2].map(|i| &right[i * nr..(i + 1) * nr]);
         let right = power_sums(rs, [rf, rsf, rf, rsf], dk, p, |sg| sg.clone() + &axes.k2);
         let [i2l, i1l, d2l, d1l] = left;
         let [i1r, i2r, d1r, d2r] = right;
