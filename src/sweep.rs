@@ -445,7 +445,7 @@ fn same_speed<T: Real>(a: &Speed<T>, b: &Speed<T>) -> bool {
 }
 
 /// Where a point lies, for continuation: ν, ln(1 − M_R) and ln(A1/B1) in `f64`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct Place {
     nu: f64,
     ln_gap: f64,
@@ -456,10 +456,11 @@ struct Place {
 /// close enough for one evaluation (the evidence: docs/calibration.md).
 const TRAIL: usize = 4;
 
-/// The last roots of a block (at most [`TRAIL`]), for the next point's start.
+/// The last roots of a block (at most [`TRAIL`], oldest first), for the next point's start.
 #[derive(Default)]
 struct Trail {
-    roots: Vec<(Place, f64)>,
+    roots: [(Place, f64); TRAIL],
+    len: usize,
 }
 
 impl Trail {
@@ -467,51 +468,61 @@ impl Trail {
     /// earlier roots) along the coordinate that varies — ln(A1/B1) at one speed, ln(1 − M_R) at
     /// one A1/B1 — or the last root where neither holds; `None` for a block's first point.
     fn guess(&self, at: &Place) -> Option<f64> {
-        let &(last, ln_k) = self.roots.last()?;
+        let roots = &self.roots[..self.len];
+        let &(last, ln_k) = roots.last()?;
         let by_ratio = last.ln_gap == at.ln_gap;
-        let on_curve = |p: &Place| {
-            p.nu == at.nu
-                && if by_ratio {
-                    p.ln_gap == at.ln_gap
-                } else {
-                    p.ln_ratio == at.ln_ratio
-                }
+        // The abscissa along the curve, and the other coordinates that stay on it.
+        let x = |p: &Place| match by_ratio {
+            true => (p.ln_ratio, p.ln_gap),
+            false => (p.ln_gap, p.ln_ratio),
         };
-        let x = |p: &Place| if by_ratio { p.ln_ratio } else { p.ln_gap };
-        let mut line = [(0.0, 0.0); TRAIL];
-        let mut n = 0;
-        for (p, y) in self.roots.iter().rev().take_while(|(p, _)| on_curve(p)) {
-            line[n] = (x(p), *y);
+        let (t, at_fixed) = x(at);
+        // The roots on the curve, most recent first.
+        let (mut xs, mut ys, mut n) = ([0.0; TRAIL], [0.0; TRAIL], 0);
+        for (p, y) in roots.iter().rev() {
+            let (xp, fp) = x(p);
+            if p.nu != at.nu || fp != at_fixed {
+                break;
+            }
+            (xs[n], ys[n]) = (xp, *y);
             n += 1;
         }
-        let predicted = lagrange(&line[..n], x(at)).filter(|y| (y - ln_k).abs() <= 2.0);
+        let predicted = lagrange(&xs[..n], &ys[..n], t).filter(|y| (y - ln_k).abs() <= 2.0);
         Some(predicted.unwrap_or(ln_k).exp())
     }
 
     fn push(&mut self, at: Place, k: f64) {
-        if self.roots.len() == TRAIL {
-            self.roots.remove(0);
+        if self.len == TRAIL {
+            self.roots.rotate_left(1);
+            self.len -= 1;
         }
-        self.roots.push((at, k.ln()));
+        self.roots[self.len] = (at, k.ln());
+        self.len += 1;
     }
 }
 
-/// The polynomial through `pts` (distinct abscissae; `None` otherwise or when empty) at `t`.
-fn lagrange(pts: &[(f64, f64)], t: f64) -> Option<f64> {
+/// The polynomial through (`xs`, `ys`) (distinct abscissae; `None` otherwise or when empty)
+/// at `t`, in Lagrange's form (each weight the product of (t − x_j)/(x_i − x_j) in the order of
+/// the points).
+fn lagrange(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+    let mut dt = [0.0; TRAIL];
+    for (d, x) in dt.iter_mut().zip(xs) {
+        *d = t - x;
+    }
     let mut sum = 0.0;
-    for (i, &(xi, yi)) in pts.iter().enumerate() {
+    for (i, (&xi, &yi)) in xs.iter().zip(ys).enumerate() {
         let mut w = 1.0;
-        for (j, &(xj, _)) in pts.iter().enumerate() {
+        for (j, (&xj, &d)) in xs.iter().zip(&dt).enumerate() {
             if i != j {
                 if xi == xj {
                     return None;
                 }
-                w *= (t - xj) / (xi - xj);
+                w *= d / (xi - xj);
             }
         }
         sum += w * yi;
     }
-    (!pts.is_empty() && sum.is_finite()).then_some(sum)
+    (!xs.is_empty() && sum.is_finite()).then_some(sum)
 }
 
 #[cfg(test)]
