@@ -455,6 +455,8 @@ struct Place {
 /// The roots a trail keeps: a cubic through four roots starts most points of a smooth curve
 /// close enough for one evaluation (the evidence: docs/calibration.md).
 const TRAIL: usize = 4;
+// [`lagrange`] takes up to four points.
+const _: () = assert!(TRAIL <= 4);
 
 /// The last roots of a block (at most [`TRAIL`], oldest first), for the next point's start.
 #[derive(Default)]
@@ -503,32 +505,83 @@ impl Trail {
 
 /// The polynomial through (`xs`, `ys`) (distinct abscissae; `None` otherwise or when empty)
 /// at `t`, in Lagrange's form (each weight the product of (t − x_j)/(x_i − x_j) in the order of
-/// the points).
+/// the points), by [`lagrange_n`] for the number of points (its loops unrolled).
 fn lagrange(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
-    let mut dt = [0.0; TRAIL];
-    for (d, x) in dt.iter_mut().zip(xs) {
-        *d = t - x;
+    fn by<const N: usize>(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+        lagrange_n::<N>(xs.first_chunk()?, ys.first_chunk()?, t)
     }
+    match xs.len().min(ys.len()) {
+        1 => by::<1>(xs, ys, t),
+        2 => by::<2>(xs, ys, t),
+        3 => by::<3>(xs, ys, t),
+        4 => by::<4>(xs, ys, t),
+        _ => None,
+    }
+}
+
+/// [`lagrange`] through `N` points.
+#[inline]
+fn lagrange_n<const N: usize>(xs: &[f64; N], ys: &[f64; N], t: f64) -> Option<f64> {
+    let dt = xs.map(|x| t - x);
     let mut sum = 0.0;
-    for (i, (&xi, &yi)) in xs.iter().zip(ys).enumerate() {
+    for i in 0..N {
         let mut w = 1.0;
-        for (j, (&xj, &d)) in xs.iter().zip(&dt).enumerate() {
+        for j in 0..N {
             if i != j {
-                if xi == xj {
+                if xs[i] == xs[j] {
                     return None;
                 }
-                w *= d / (xi - xj);
+                w *= dt[j] / (xs[i] - xs[j]);
             }
         }
-        sum += w * yi;
+        sum += w * ys[i];
     }
-    (!xs.is_empty() && sum.is_finite()).then_some(sum)
+    sum.is_finite().then_some(sum)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scalar::MpPrec;
+
+    /// The polynomial through 1 to 4 points reproduces a polynomial of that degree less one
+    /// (a cubic through four), refuses repeated abscissae and no points; the trail extrapolates
+    /// along the curve of its last roots only (a root at another ν starts a new curve).
+    #[test]
+    fn the_trail_extrapolates_along_its_curve() {
+        let cubic = |x: f64| 0.5 - 1.25 * x + 0.75 * x * x - 0.125 * x * x * x;
+        let xs = [0.3, -0.2, 1.1, 0.7];
+        for n in 1..=4 {
+            let ys: Vec<f64> = xs[..n].iter().map(|&x| cubic(x)).collect();
+            let poly = |t: f64| lagrange(&xs[..n], &ys, t).expect("distinct abscissae");
+            for &t in &xs[..n] {
+                assert!((poly(t) - cubic(t)).abs() < 1e-14, "{n} points at {t}");
+            }
+            if n == 4 {
+                assert!((poly(1.5) - cubic(1.5)).abs() < 1e-13);
+            }
+        }
+        assert_eq!(lagrange(&[0.1, 0.1], &[1.0, 2.0], 0.5), None);
+        assert_eq!(lagrange(&[], &[], 0.5), None);
+        // ln k = 0.1 + 0.5 ln(A1/B1) along a speed: the trail's guess from the last four
+        // roots is exact; at another ν it starts from the last root alone.
+        let mut trail = Trail::default();
+        let place = |nu: f64, ln_ratio: f64| Place {
+            nu,
+            ln_gap: -3.0,
+            ln_ratio,
+        };
+        assert_eq!(trail.guess(&place(0.25, 0.0)), None);
+        trail.push(place(0.3, -0.5), 0.9);
+        for j in 0..5 {
+            let x = 0.1 * f64::from(j);
+            trail.push(place(0.25, x), (0.1 + 0.5 * x).exp());
+        }
+        let guess = trail.guess(&place(0.25, 0.55)).expect("a guess");
+        assert!((guess.ln() - (0.1 + 0.5 * 0.55)).abs() < 1e-12, "{guess}");
+        let other = trail.guess(&place(0.3, 0.55)).expect("a guess");
+        assert!((other.ln() - (0.1 + 0.5 * 0.4)).abs() < 1e-12, "{other}");
+    }
 
     /// A few hundred `f64` points keep one thread busy, a million keep a thousand; a point
     /// costs more at double-double and more again at 256 bits, so the same points keep more

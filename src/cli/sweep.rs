@@ -602,6 +602,7 @@ pub(super) struct Row<'a> {
 
 impl<'a> Row<'a> {
     /// A line begun in `out` (in JSON its brace); [`Row::end`] ends it.
+    #[inline]
     pub(super) fn new(out: &'a mut Vec<u8>, format: Format) -> Self {
         let json = format == Format::Jsonl;
         if json {
@@ -615,6 +616,7 @@ impl<'a> Row<'a> {
     }
 
     /// Ends the line (in JSON the closing brace).
+    #[inline]
     pub(super) fn end(self) {
         if self.json {
             self.out.push(b'}');
@@ -623,6 +625,7 @@ impl<'a> Row<'a> {
     }
 
     /// The separator before every cell but the first, and in JSON the key.
+    #[inline]
     fn open(&mut self, key: &str) {
         if !self.first {
             self.out.push(b',');
@@ -636,6 +639,7 @@ impl<'a> Row<'a> {
 
     /// A cell that needs no quoting or escaping in either format (a number, a label), written
     /// by `write` (in JSON as a string).
+    #[inline]
     fn number(&mut self, key: &str, write: impl FnOnce(&mut Vec<u8>)) {
         self.open(key);
         if self.json {
@@ -648,27 +652,32 @@ impl<'a> Row<'a> {
     }
 
     /// A value with every digit of the working precision.
+    #[inline]
     pub(super) fn value<T: Real>(&mut self, key: &str, x: &T) {
         self.number(key, |o| x.push_decimal(o));
     }
 
     /// A value and its bound under the two `keys`.
+    #[inline]
     pub(super) fn estimated<T: Real>(&mut self, keys: [&str; 2], x: &Estimated<T>) {
         self.value(keys[0], &x.value);
         self.number(keys[1], |o| x.error.push_text(o));
     }
 
     /// A label (ASCII, no comma or quote: an axis, a route).
+    #[inline]
     pub(super) fn label(&mut self, key: &str, label: &str) {
         self.number(key, |o| o.extend_from_slice(label.as_bytes()));
     }
 
     /// A count, in decimal digits.
+    #[inline]
     pub(super) fn count(&mut self, key: &str, n: usize) {
         self.number(key, |o| push_count(o, n));
     }
 
     /// A cell of any text: quoted where CSV or JSON needs it; an empty one is left out of JSON.
+    #[inline]
     pub(super) fn text(&mut self, key: &str, v: &str) {
         if self.json && v.is_empty() {
             return;
@@ -679,6 +688,7 @@ impl<'a> Row<'a> {
 
     /// The cells of a point that failed: empty under `empty` (the result's columns), and the
     /// error under `error`.
+    #[inline]
     pub(super) fn failed(&mut self, empty: &[&str], err: &moving_hertz::Error) {
         for key in empty {
             self.text(key, "");

@@ -366,15 +366,20 @@ fn write_17_digits(out: &mut Vec<u8>, negative: bool, digits: u64, e10: i32) {
     out.truncate(start + end);
 }
 
-/// Writes the 8 digits of `n` < 10⁸ (leading zeros included) at `text[at..at + 8]`.
+/// Writes the 8 digits of `n` < 10⁸ (leading zeros included) at `text[at..at + 8]`: its two
+/// 4-digit halves in the 32-bit lanes of a `u64` (the first in the low lane, which comes first
+/// in little-endian bytes), each split into two 2-digit values in 16-bit lanes, each of those
+/// into its two digits in bytes, by divisions by 100 and 10 as multiply-shifts, exact for
+/// these ranges (v/100 = ⌊10486·v/2²⁰⌋ for v < 10⁴, v/10 = ⌊103·v/2¹⁰⌋ for v < 100), done in
+/// every lane at once.
 fn write_8_digits(text: &mut [u8], at: usize, n: u32) {
-    let (high, low) = (n / 10_000, n % 10_000);
-    for (slot, pair) in [high / 100, high % 100, low / 100, low % 100]
-        .into_iter()
-        .enumerate()
-    {
-        text[at + 2 * slot..at + 2 * slot + 2].copy_from_slice(&DIGIT_PAIRS[pair as usize]);
-    }
+    let n = u64::from(n);
+    let x = (n / 10_000) | ((n % 10_000) << 32);
+    let hundreds = ((x * 10_486) >> 20) & 0x0000_007f_0000_007f;
+    let y = hundreds | ((x - hundreds * 100) << 16);
+    let tens = ((y * 103) >> 10) & 0x000f_000f_000f_000f;
+    let z = tens | ((y - tens * 10) << 8);
+    text[at..at + 8].copy_from_slice(&(z | 0x3030_3030_3030_3030).to_le_bytes());
 }
 
 /// Writes the decimal exponent `e` (|e| < 10⁴) as `-ddd` (no sign when positive, no leading
@@ -396,17 +401,6 @@ pub(crate) fn write_exponent(text: &mut [u8], mut at: usize, e: i32) -> usize {
     text[at] = b'0' + (e % 10) as u8;
     at + 1
 }
-
-/// "00", "01", …, "99".
-const DIGIT_PAIRS: [[u8; 2]; 100] = {
-    let mut t = [[0u8; 2]; 100];
-    let mut i = 0;
-    while i < 100 {
-        t[i] = [b'0' + (i / 10) as u8, b'0' + (i % 10) as u8];
-        i += 1;
-    }
-    t
-};
 
 /// The doubles nearest 10^-6 … 10^16 (exact from 10^0 up).
 const F64_DECADES: [f64; 23] = [
