@@ -135,21 +135,25 @@ where
         let mut material: Option<(&T, Result<Material<T>>)> = None;
         let mut last: Option<(&EllipsePoint<T>, Result<Speed<T>>)> = None;
         for (pt, slot) in block.iter().zip(out) {
-            let speed = match last {
-                Some((prev, ref sp)) if prev.nu == pt.nu && prev.speed == pt.speed => sp.clone(),
-                _ => {
+            // The speed of the last point, kept (not cloned) while the points share it.
+            let speed = match &mut last {
+                Some((prev, sp)) if prev.nu == pt.nu && prev.speed == pt.speed => &*sp,
+                last => {
                     if !material.as_ref().is_some_and(|(nu, _)| **nu == pt.nu) {
                         material = Some((&pt.nu, Material::new(pt.nu.clone())));
                     }
-                    match material.as_ref().map(|(_, m)| m) {
+                    let speed = match material.as_ref().map(|(_, m)| m) {
                         Some(Ok(mat)) => pt.speed_of(mat),
                         Some(Err(e)) => Err(e.clone()),
                         None => Material::new(pt.nu.clone()).and_then(|m| pt.speed_of(&m)),
-                    }
+                    };
+                    &last.insert((pt, speed)).1
                 }
             };
-            *slot = speed.clone().and_then(|sp| run.solve(&sp, &pt.ratio));
-            last = Some((pt, speed));
+            *slot = match speed {
+                Ok(sp) => run.solve(sp, &pt.ratio),
+                Err(e) => Err(e.clone()),
+            };
         }
     })
 }
