@@ -199,7 +199,7 @@ fn f64_decimals_are_the_exact_values_rounded_to_17_digits() {
         } else {
             f64::from_bits(((1023 - 30 + next() % 90) << 52) | (next() >> 12))
         };
-        check(if next() % 2 == 0 { x } else { -x });
+        check(if next().is_multiple_of(2) { x } else { -x });
     }
     for e in -20..=22 {
         let p: f64 = format!("1e{e}").parse().expect("a power of ten");
