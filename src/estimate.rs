@@ -295,8 +295,26 @@ impl fmt::Display for RelError {
 
 impl RelError {
     /// Appends the bound's text (ASCII) as [`fmt::Display`] writes it (three significant
-    /// digits), without a string of its own (the `sweep` command's rows).
+    /// digits), without a string of its own (the `sweep` commands' rows): a bound in the
+    /// range of [`RelError::decimal_in_f64`] (every bound of an `f64` result) as `d.dde±x`
+    /// straight from its three digits, any other by [`RelError::text`].
     pub fn push_text(&self, out: &mut Vec<u8>) {
+        if let Some((mant, exp10)) = self.decimal_in_f64(2) {
+            // "d.dde-xxx": three digits, a point, "e", a sign and at most 3 digits (|exp10|
+            // ≤ 310 in that range), copied whole (a fixed-size copy) and cut to length.
+            let mut text = [0u8; 10];
+            let mant = mant as u32; // in [100, 1000)
+            text[0] = b'0' + (mant / 100) as u8;
+            text[1] = b'.';
+            text[2] = b'0' + (mant / 10 % 10) as u8;
+            text[3] = b'0' + (mant % 10) as u8;
+            text[4] = b'e';
+            let end = crate::scalar::write_exponent(&mut text, 5, exp10 as i32);
+            let start = out.len();
+            out.extend_from_slice(&text);
+            out.truncate(start + end);
+            return;
+        }
         let (text, end) = self.text(2);
         out.extend_from_slice(&text[..end]);
     }
@@ -363,9 +381,10 @@ impl RelError {
             return None;
         }
         let v = self.m * f64::from_bits(((1023 + self.e) as u64) << 52);
-        // v ∈ [2^(e−1), 2^e): its decade is this or one more.
-        let mut exp10 = ((self.e - 1) as f64 * std::f64::consts::LOG10_2).floor() as i64;
-        let low = 10f64.powi(digits);
+        // v ∈ [2^(e−1), 2^e): its decade is ⌊(e − 1)·log₁₀2⌋ (78913/2¹⁸ ≈ log₁₀2 gives that
+        // floor exactly for every e of this range) or one more.
+        let mut exp10 = ((self.e - 1) * 78_913) >> 18;
+        let low = F64_POW10[digits.max(0) as usize];
         for _ in 0..2 {
             let k = i64::from(digits) - exp10;
             let p = *F64_POW10.get(k.unsigned_abs() as usize)?;
@@ -374,7 +393,10 @@ impl RelError {
                 exp10 += 1;
                 continue;
             }
-            let mant = ((scaled * (1.0 - 1e-9)).ceil() as u64).max(low as u64);
+            // ⌈x⌉ of 0 < x < 2^53 from its truncation (one more unless x is an integer).
+            let x = scaled * (1.0 - 1e-9);
+            let t = x as u64;
+            let mant = (t + u64::from((t as f64) < x)).max(low as u64);
             return Some(Self::carry(mant, exp10, digits));
         }
         None

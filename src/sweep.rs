@@ -135,21 +135,25 @@ where
         let mut material: Option<(&T, Result<Material<T>>)> = None;
         let mut last: Option<(&EllipsePoint<T>, Result<Speed<T>>)> = None;
         for (pt, slot) in block.iter().zip(out) {
-            let speed = match last {
-                Some((prev, ref sp)) if prev.nu == pt.nu && prev.speed == pt.speed => sp.clone(),
-                _ => {
+            // The speed of the last point, kept (not cloned) while the points share it.
+            let speed = match &mut last {
+                Some((prev, sp)) if prev.nu == pt.nu && prev.speed == pt.speed => &*sp,
+                last => {
                     if !material.as_ref().is_some_and(|(nu, _)| **nu == pt.nu) {
                         material = Some((&pt.nu, Material::new(pt.nu.clone())));
                     }
-                    match material.as_ref().map(|(_, m)| m) {
+                    let speed = match material.as_ref().map(|(_, m)| m) {
                         Some(Ok(mat)) => pt.speed_of(mat),
                         Some(Err(e)) => Err(e.clone()),
                         None => Material::new(pt.nu.clone()).and_then(|m| pt.speed_of(&m)),
-                    }
+                    };
+                    &last.insert((pt, speed)).1
                 }
             };
-            *slot = speed.clone().and_then(|sp| run.solve(&sp, &pt.ratio));
-            last = Some((pt, speed));
+            *slot = match speed {
+                Ok(sp) => run.solve(sp, &pt.ratio),
+                Err(e) => Err(e.clone()),
+            };
         }
     })
 }
@@ -445,7 +449,7 @@ fn same_speed<T: Real>(a: &Speed<T>, b: &Speed<T>) -> bool {
 }
 
 /// Where a point lies, for continuation: ν, ln(1 − M_R) and ln(A1/B1) in `f64`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct Place {
     nu: f64,
     ln_gap: f64,
@@ -455,11 +459,14 @@ struct Place {
 /// The roots a trail keeps: a cubic through four roots starts most points of a smooth curve
 /// close enough for one evaluation (the evidence: docs/calibration.md).
 const TRAIL: usize = 4;
+// [`lagrange`] takes up to four points.
+const _: () = assert!(TRAIL <= 4);
 
-/// The last roots of a block (at most [`TRAIL`]), for the next point's start.
+/// The last roots of a block (at most [`TRAIL`], oldest first), for the next point's start.
 #[derive(Default)]
 struct Trail {
-    roots: Vec<(Place, f64)>,
+    roots: [(Place, f64); TRAIL],
+    len: usize,
 }
 
 impl Trail {
@@ -467,57 +474,118 @@ impl Trail {
     /// earlier roots) along the coordinate that varies — ln(A1/B1) at one speed, ln(1 − M_R) at
     /// one A1/B1 — or the last root where neither holds; `None` for a block's first point.
     fn guess(&self, at: &Place) -> Option<f64> {
-        let &(last, ln_k) = self.roots.last()?;
+        let roots = &self.roots[..self.len];
+        let &(last, ln_k) = roots.last()?;
         let by_ratio = last.ln_gap == at.ln_gap;
-        let on_curve = |p: &Place| {
-            p.nu == at.nu
-                && if by_ratio {
-                    p.ln_gap == at.ln_gap
-                } else {
-                    p.ln_ratio == at.ln_ratio
-                }
+        // The abscissa along the curve, and the other coordinates that stay on it.
+        let x = |p: &Place| match by_ratio {
+            true => (p.ln_ratio, p.ln_gap),
+            false => (p.ln_gap, p.ln_ratio),
         };
-        let x = |p: &Place| if by_ratio { p.ln_ratio } else { p.ln_gap };
-        let mut line = [(0.0, 0.0); TRAIL];
-        let mut n = 0;
-        for (p, y) in self.roots.iter().rev().take_while(|(p, _)| on_curve(p)) {
-            line[n] = (x(p), *y);
+        let (t, at_fixed) = x(at);
+        // The roots on the curve, most recent first.
+        let (mut xs, mut ys, mut n) = ([0.0; TRAIL], [0.0; TRAIL], 0);
+        for (p, y) in roots.iter().rev() {
+            let (xp, fp) = x(p);
+            if p.nu != at.nu || fp != at_fixed {
+                break;
+            }
+            (xs[n], ys[n]) = (xp, *y);
             n += 1;
         }
-        let predicted = lagrange(&line[..n], x(at)).filter(|y| (y - ln_k).abs() <= 2.0);
+        let predicted = lagrange(&xs[..n], &ys[..n], t).filter(|y| (y - ln_k).abs() <= 2.0);
         Some(predicted.unwrap_or(ln_k).exp())
     }
 
     fn push(&mut self, at: Place, k: f64) {
-        if self.roots.len() == TRAIL {
-            self.roots.remove(0);
+        if self.len == TRAIL {
+            self.roots.rotate_left(1);
+            self.len -= 1;
         }
-        self.roots.push((at, k.ln()));
+        self.roots[self.len] = (at, k.ln());
+        self.len += 1;
     }
 }
 
-/// The polynomial through `pts` (distinct abscissae; `None` otherwise or when empty) at `t`.
-fn lagrange(pts: &[(f64, f64)], t: f64) -> Option<f64> {
+/// The polynomial through (`xs`, `ys`) (distinct abscissae; `None` otherwise or when empty)
+/// at `t`, in Lagrange's form (each weight the product of (t − x_j)/(x_i − x_j) in the order of
+/// the points), by [`lagrange_n`] for the number of points (its loops unrolled).
+fn lagrange(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+    fn by<const N: usize>(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+        lagrange_n::<N>(xs.first_chunk()?, ys.first_chunk()?, t)
+    }
+    match xs.len().min(ys.len()) {
+        1 => by::<1>(xs, ys, t),
+        2 => by::<2>(xs, ys, t),
+        3 => by::<3>(xs, ys, t),
+        4 => by::<4>(xs, ys, t),
+        _ => None,
+    }
+}
+
+/// [`lagrange`] through `N` points.
+#[inline]
+fn lagrange_n<const N: usize>(xs: &[f64; N], ys: &[f64; N], t: f64) -> Option<f64> {
+    let dt = xs.map(|x| t - x);
     let mut sum = 0.0;
-    for (i, &(xi, yi)) in pts.iter().enumerate() {
+    for i in 0..N {
         let mut w = 1.0;
-        for (j, &(xj, _)) in pts.iter().enumerate() {
+        for j in 0..N {
             if i != j {
-                if xi == xj {
+                if xs[i] == xs[j] {
                     return None;
                 }
-                w *= (t - xj) / (xi - xj);
+                w *= dt[j] / (xs[i] - xs[j]);
             }
         }
-        sum += w * yi;
+        sum += w * ys[i];
     }
-    (!pts.is_empty() && sum.is_finite()).then_some(sum)
+    sum.is_finite().then_some(sum)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scalar::MpPrec;
+
+    /// The polynomial through 1 to 4 points reproduces a polynomial of that degree less one
+    /// (a cubic through four), refuses repeated abscissae and no points; the trail extrapolates
+    /// along the curve of its last roots only (a root at another ν starts a new curve).
+    #[test]
+    fn the_trail_extrapolates_along_its_curve() {
+        let cubic = |x: f64| 0.5 - 1.25 * x + 0.75 * x * x - 0.125 * x * x * x;
+        let xs = [0.3, -0.2, 1.1, 0.7];
+        for n in 1..=4 {
+            let ys: Vec<f64> = xs[..n].iter().map(|&x| cubic(x)).collect();
+            let poly = |t: f64| lagrange(&xs[..n], &ys, t).expect("distinct abscissae");
+            for &t in &xs[..n] {
+                assert!((poly(t) - cubic(t)).abs() < 1e-14, "{n} points at {t}");
+            }
+            if n == 4 {
+                assert!((poly(1.5) - cubic(1.5)).abs() < 1e-13);
+            }
+        }
+        assert_eq!(lagrange(&[0.1, 0.1], &[1.0, 2.0], 0.5), None);
+        assert_eq!(lagrange(&[], &[], 0.5), None);
+        // ln k = 0.1 + 0.5 ln(A1/B1) along a speed: the trail's guess from the last four
+        // roots is exact; at another ν it starts from the last root alone.
+        let mut trail = Trail::default();
+        let place = |nu: f64, ln_ratio: f64| Place {
+            nu,
+            ln_gap: -3.0,
+            ln_ratio,
+        };
+        assert_eq!(trail.guess(&place(0.25, 0.0)), None);
+        trail.push(place(0.3, -0.5), 0.9);
+        for j in 0..5 {
+            let x = 0.1 * f64::from(j);
+            trail.push(place(0.25, x), (0.1 + 0.5 * x).exp());
+        }
+        let guess = trail.guess(&place(0.25, 0.55)).expect("a guess");
+        assert!((guess.ln() - (0.1 + 0.5 * 0.55)).abs() < 1e-12, "{guess}");
+        let other = trail.guess(&place(0.3, 0.55)).expect("a guess");
+        assert!((other.ln() - (0.1 + 0.5 * 0.4)).abs() < 1e-12, "{other}");
+    }
 
     /// A few hundred `f64` points keep one thread busy, a million keep a thousand; a point
     /// costs more at double-double and more again at 256 bits, so the same points keep more

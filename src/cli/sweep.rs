@@ -10,7 +10,7 @@ use super::progress::Progress;
 use super::CliError;
 use moving_hertz::scalar::{short, Precision, Real};
 use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
-use moving_hertz::{with_precision, Ellipse, Material, Method, Options};
+use moving_hertz::{with_precision, Ellipse, Estimated, Material, Method, Options};
 use rayon::prelude::*;
 use rug::{Float, Rational};
 
@@ -560,33 +560,22 @@ fn push_row<T: Real>(
     t: &[&str; 3],
     r: &moving_hertz::Result<Ellipse<T>>,
 ) {
-    let mut row = Row {
-        out,
-        json: format == Format::Jsonl,
-        first: true,
-    };
-    if row.json {
-        row.out.push(b'{');
-    }
+    let mut row = Row::new(out, format);
     for (key, cell) in ["nu", speed_key, "ratio"].into_iter().zip(t) {
         row.open(key);
         row.out.extend_from_slice(cell.as_bytes());
     }
     match r {
         Ok(e) => {
-            row.number("k", |o| e.k().value.push_decimal(o));
-            row.number("k_error", |o| e.k().error.push_text(o));
-            row.number("e", |o| e.e().value.push_decimal(o));
-            row.number("e_error", |o| e.e().error.push_text(o));
-            let major = e.major().label().as_bytes();
-            row.number("major_axis", |o| o.extend_from_slice(major));
-            let route = e.integrals().route.label().as_bytes();
-            row.number("route", |o| o.extend_from_slice(route));
-            row.number("iterations", |o| push_count(o, e.iterations()));
+            row.estimated(["k", "k_error"], e.k());
+            row.estimated(["e", "e_error"], e.e());
+            row.label("major_axis", e.major().label());
+            row.label("route", e.integrals().route.label());
+            row.count("iterations", e.iterations());
             row.text("error", "");
         }
         Err(err) => {
-            for key in [
+            let keys = [
                 "k",
                 "k_error",
                 "e",
@@ -594,53 +583,49 @@ fn push_row<T: Real>(
                 "major_axis",
                 "route",
                 "iterations",
-            ] {
-                row.text(key, "");
-            }
-            row.text("error", &err.to_string());
+            ];
+            row.failed(&keys, err);
         }
     }
-    if row.json {
-        row.out.push(b'}');
-    }
-    row.out.push(b'\n');
-}
-
-/// Appends one line of `values` under `keys` (an empty value: an empty CSV cell, a key left
-/// out of the JSON object), each quoted where CSV or JSON needs it ([`Row::text`]).
-pub(super) fn push_line<'v>(
-    out: &mut Vec<u8>,
-    format: Format,
-    keys: &[&str],
-    values: impl Iterator<Item = &'v str>,
-) {
-    let mut row = Row {
-        out,
-        json: format == Format::Jsonl,
-        first: true,
-    };
-    if row.json {
-        row.out.push(b'{');
-    }
-    for (key, v) in keys.iter().zip(values) {
-        row.text(key, v);
-    }
-    if row.json {
-        row.out.push(b'}');
-    }
-    row.out.push(b'\n');
+    row.end();
 }
 
 /// One line of the output being written: CSV cells, or a JSON object's members (an empty cell
-/// is left out of the object).
-struct Row<'a> {
+/// is left out of the object). The one writer of the `sweep` commands' cells: numbers with
+/// every digit of the working precision ([`Real::push_decimal`]), bounds with three
+/// ([`moving_hertz::RelError::push_text`]), counts, labels and quoted text.
+pub(super) struct Row<'a> {
     out: &'a mut Vec<u8>,
     json: bool,
     first: bool,
 }
 
-impl Row<'_> {
+impl<'a> Row<'a> {
+    /// A line begun in `out` (in JSON its brace); [`Row::end`] ends it.
+    #[inline]
+    pub(super) fn new(out: &'a mut Vec<u8>, format: Format) -> Self {
+        let json = format == Format::Jsonl;
+        if json {
+            out.push(b'{');
+        }
+        Row {
+            out,
+            json,
+            first: true,
+        }
+    }
+
+    /// Ends the line (in JSON the closing brace).
+    #[inline]
+    pub(super) fn end(self) {
+        if self.json {
+            self.out.push(b'}');
+        }
+        self.out.push(b'\n');
+    }
+
     /// The separator before every cell but the first, and in JSON the key.
+    #[inline]
     fn open(&mut self, key: &str) {
         if !self.first {
             self.out.push(b',');
@@ -654,6 +639,7 @@ impl Row<'_> {
 
     /// A cell that needs no quoting or escaping in either format (a number, a label), written
     /// by `write` (in JSON as a string).
+    #[inline]
     fn number(&mut self, key: &str, write: impl FnOnce(&mut Vec<u8>)) {
         self.open(key);
         if self.json {
@@ -665,13 +651,49 @@ impl Row<'_> {
         }
     }
 
+    /// A value with every digit of the working precision.
+    #[inline]
+    pub(super) fn value<T: Real>(&mut self, key: &str, x: &T) {
+        self.number(key, |o| x.push_decimal(o));
+    }
+
+    /// A value and its bound under the two `keys`.
+    #[inline]
+    pub(super) fn estimated<T: Real>(&mut self, keys: [&str; 2], x: &Estimated<T>) {
+        self.value(keys[0], &x.value);
+        self.number(keys[1], |o| x.error.push_text(o));
+    }
+
+    /// A label (ASCII, no comma or quote: an axis, a route).
+    #[inline]
+    pub(super) fn label(&mut self, key: &str, label: &str) {
+        self.number(key, |o| o.extend_from_slice(label.as_bytes()));
+    }
+
+    /// A count, in decimal digits.
+    #[inline]
+    pub(super) fn count(&mut self, key: &str, n: usize) {
+        self.number(key, |o| push_count(o, n));
+    }
+
     /// A cell of any text: quoted where CSV or JSON needs it; an empty one is left out of JSON.
-    fn text(&mut self, key: &str, v: &str) {
+    #[inline]
+    pub(super) fn text(&mut self, key: &str, v: &str) {
         if self.json && v.is_empty() {
             return;
         }
         self.open(key);
         push_cell(self.out, self.json, v);
+    }
+
+    /// The cells of a point that failed: empty under `empty` (the result's columns), and the
+    /// error under `error`.
+    #[inline]
+    pub(super) fn failed(&mut self, empty: &[&str], err: &moving_hertz::Error) {
+        for key in empty {
+            self.text(key, "");
+        }
+        self.text("error", &err.to_string());
     }
 }
 

@@ -10,8 +10,8 @@ use super::contact::ratio_fits;
 use super::output::emit;
 use super::progress::Progress;
 use super::sweep::{
-    axis, check_count, checked_nus, push_line, write_in_order, Axis, Checked, Format, APPROACH,
-    GAP, LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
+    axis, check_count, checked_nus, write_in_order, Axis, Checked, Format, Row, APPROACH, GAP,
+    LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
 };
 use super::CliError;
 use moving_hertz::physics::solid::shear_from_youngs;
@@ -381,7 +381,7 @@ impl<T: Real> Half<T> {
 type Cached<K, V> = Option<(K, moving_hertz::Result<V>)>;
 
 /// A point's problem as the block forms it, with c_R of its half-space (with --velocity).
-type Formed<T> = (moving_hertz::Result<ContactProblem<T>>, Option<String>);
+type Formed<T> = (moving_hertz::Result<ContactProblem<T>>, Option<T>);
 
 impl<T: Real + Send + Sync> Grid<T> {
     /// The half-space of ν `iv` and modulus `im` (checked before any work).
@@ -429,7 +429,7 @@ impl<T: Real + Send + Sync> Grid<T> {
                     &slot.insert(((iv, im, is), sp)).1
                 }
             };
-            let c_r = h.as_ref().ok().and_then(Half::c_r).map(Real::to_decimal);
+            let c_r = h.as_ref().ok().and_then(Half::c_r).cloned();
             let size = self.sizes[il].1.clone();
             let problem = sp.clone().and_then(|speed| {
                 let h = h.as_ref().map_err(Clone::clone)?;
@@ -506,42 +506,41 @@ impl<T: Real + Send + Sync> Grid<T> {
         keys
     }
 
-    /// The result cells of one point (after its inputs): c_R and M_R with --velocity, the
-    /// values and bounds, or empty cells and the error.
-    fn cells(
+    /// The result cells of one point (after its inputs, under `keys`, the columns after the
+    /// six inputs): c_R and M_R with --velocity, the values and bounds, or empty cells and the
+    /// error.
+    fn push_results(
         &self,
+        row: &mut Row,
+        keys: &[&str],
         r: &moving_hertz::Result<ContactSolution<T>>,
-        c_r: Option<String>,
-    ) -> Vec<String> {
-        let velocity = self.kind == SpeedKind::Velocity;
+        c_r: Option<&T>,
+    ) {
         let s = match r {
             Ok(s) => s,
-            Err(e) => {
-                // Every result column empty (the keys less the six inputs and the error).
-                let mut v = vec![String::new(); self.keys().len() - 7];
-                v.push(e.to_string());
-                return v;
-            }
+            // Every result column empty, then the error.
+            Err(e) => return row.failed(&keys[..keys.len() - 1], e),
         };
-        let mut v = Vec::with_capacity(20);
-        if velocity {
-            v.push(c_r.unwrap_or_default());
-            v.push(s.problem().speed.mr().to_decimal());
+        let mut keys = keys.iter();
+        let mut key = || keys.next().copied().unwrap_or_default();
+        if self.kind == SpeedKind::Velocity {
+            match c_r {
+                Some(c_r) => row.value(key(), c_r),
+                None => row.text(key(), ""),
+            }
+            row.value(key(), s.problem().speed.mr());
         }
         let other = if self.by_load { s.d0() } else { s.load() };
         for x in [s.a(), s.b(), s.k(), s.e()] {
-            v.extend([x.value.to_decimal(), x.error.to_string()]);
+            row.estimated([key(), key()], x);
         }
-        v.push(s.ellipse().major().label().into());
+        row.label(key(), s.ellipse().major().label());
         for x in [s.p0(), other] {
-            v.extend([x.value.to_decimal(), x.error.to_string()]);
+            row.estimated([key(), key()], x);
         }
-        v.extend([
-            s.ellipse().integrals().route.label().into(),
-            s.ellipse().iterations().to_string(),
-            String::new(),
-        ]);
-        v
+        row.label(key(), s.ellipse().integrals().route.label());
+        row.count(key(), s.ellipse().iterations());
+        row.text(key(), "");
     }
 }
 
@@ -571,12 +570,12 @@ fn solve_and_write<T: Real + Send + Sync>(
         let solved = sweep::try_contacts(&problems, &opts);
         for ((r, c_r), j) in solved.iter().zip(c_rs).zip(range) {
             failed += usize::from(r.is_err());
-            let cells = grid.cells(r, c_r);
-            let values = grid
-                .texts(j)
-                .into_iter()
-                .chain(cells.iter().map(String::as_str));
-            push_line(out, a.format, &keys, values);
+            let mut row = Row::new(out, a.format);
+            for (key, text) in keys.iter().zip(grid.texts(j)) {
+                row.text(key, text);
+            }
+            grid.push_results(&mut row, &keys[6..], r, c_r.as_ref());
+            row.end();
         }
         bar.advance(solved.len());
         failed

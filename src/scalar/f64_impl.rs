@@ -283,8 +283,10 @@ impl Real for f64 {
 /// `format!("{:.16e}", x)` writes it, and returns `true`, for 10⁻⁶ ≤ |x| < 2⁵³ (from the
 /// double above 10⁻⁶). There x·10^(16−E) = m·10^(16−E)/2^j (x = m·2^−j, m < 2⁵³, E the
 /// decimal exponent) fits in 128 bits, so one product, one shift and its remainder give the
-/// digits, without std's general algorithm (the sweeps write two decimals a point). Returns
-/// `false`, having written nothing, elsewhere; std's formatter then writes them.
+/// digits, without std's general algorithm (the sweeps write two decimals a point): E from a
+/// comparison with the powers of ten in `f64`, checked on the exact digits (a second product
+/// where x lies within a rounding of a power of ten), the digits two at a time from a table.
+/// Returns `false`, having written nothing, elsewhere; std's formatter then writes them.
 fn push_17_digits(x: f64, out: &mut Vec<u8>) -> bool {
     const LOW: f64 = 1e-6;
     const HIGH: f64 = 9_007_199_254_740_992.0; // 2^53
@@ -293,23 +295,27 @@ fn push_17_digits(x: f64, out: &mut Vec<u8>) -> bool {
         return false;
     }
     let bits = a.to_bits();
-    let m = u128::from((bits & ((1 << 52) - 1)) | (1 << 52));
+    let m = (bits & ((1 << 52) - 1)) | (1 << 52);
     // a = m / 2^j with 0 ≤ j ≤ 72 (a is normal, below 2^53 and at least 10^-6 > 2^-20).
-    let j = 1075 - ((bits >> 52) as i32);
-    // log10(a) from the binary exponent: E is this or one less.
-    let mut e10 = ((52 - j) as f64 * std::f64::consts::LOG10_2).floor() as i32 + 1;
+    let j = 1075 - (bits >> 52) as u32;
+    // a ∈ [2^b, 2^(b+1)), b = 52 − j: E is ⌊b·log₁₀2⌋ (78913/2¹⁸ ≈ log₁₀2) or one more, as a
+    // reaches the next power of ten (the double nearest it below 1, so that E may be one off
+    // next to those: the digits say).
+    let e0 = ((52 - j as i32) * 78_913) >> 18;
+    let mut e10 = e0
+        + usize::try_from(e0 + 7)
+            .ok()
+            .and_then(|i| F64_DECADES.get(i))
+            .map_or(0, |&p| i32::from(a >= p));
     // At most two passes: a wrong decade moves E toward the right one and never back.
-    let digits = loop {
+    for _ in 0..2 {
         // 0 ≤ 16 − E ≤ 22: m·10^(16−E) < 2^53·10^22 < 2^127 (the double nearest 10^-6 lies
         // below it, E = −7: there the product may not fit, and std writes the digits).
-        let Some(scaled) = usize::try_from(16 - e10)
-            .ok()
-            .and_then(|s| POW10.get(s))
-            .map(|p| p * m)
-        else {
+        let Some(&p) = usize::try_from(16 - e10).ok().and_then(|s| POW10.get(s)) else {
             return false;
         };
-        let (q, r) = (scaled >> j, scaled & ((1u128 << j) - 1));
+        let scaled = p * u128::from(m);
+        let q = (scaled >> j) as u64;
         // The decade from the exact floor: 10^16 ≤ ⌊x·10^(16−E)⌋ < 10^17 exactly when
         // 10^E ≤ x < 10^(E+1).
         if q < 10_000_000_000_000_000 {
@@ -320,54 +326,89 @@ fn push_17_digits(x: f64, out: &mut Vec<u8>) -> bool {
             e10 += 1;
             continue;
         }
-        // Ties to even, as std.
+        // Ties to even, as std: the remainder against half of 2^j.
         let up = j > 0 && {
-            let half = 1u128 << (j - 1);
+            let (r, half) = (scaled & ((1u128 << j) - 1), 1u128 << (j - 1));
             r > half || (r == half && q % 2 == 1)
         };
-        match q + u128::from(up) {
+        let digits = match q + u64::from(up) {
             // Rounded up to the next power of ten: one digit, one decade up.
             100_000_000_000_000_000 => {
                 e10 += 1;
-                break 10_000_000_000_000_000u64;
+                10_000_000_000_000_000
             }
-            q => break q as u64,
-        }
-    };
-    // "-d.dddddddddddddddde-dd": a sign, 17 digits, a point, "e", a sign and ≤ 2 digits.
+            q => q,
+        };
+        write_17_digits(out, x < 0.0, digits, e10);
+        return true;
+    }
+    false
+}
+
+/// Appends `-d.dddddddddddddddde-dd` (sign if `negative`) for the 17 digits `digits` and the
+/// exponent `e10` (|e10| < 100).
+fn write_17_digits(out: &mut Vec<u8>, negative: bool, digits: u64, e10: i32) {
+    // A sign, 17 digits, a point, "e", a sign and ≤ 2 digits: at most 24 bytes, copied whole
+    // (a fixed-size copy) and cut to length.
     let mut text = [0u8; 24];
-    let mut at = usize::from(x < 0.0);
+    let at = usize::from(negative);
     text[0] = b'-';
-    // The last 16 digits as two groups of 8 in 32-bit arithmetic; the first digit alone.
     let (first, rest) = (
         digits / 10_000_000_000_000_000,
         digits % 10_000_000_000_000_000,
     );
-    for (group, slots) in [(rest / 100_000_000, at + 2), (rest % 100_000_000, at + 10)] {
-        let mut d = group as u32;
-        for slot in text[slots..slots + 8].iter_mut().rev() {
-            *slot = b'0' + (d % 10) as u8;
-            d /= 10;
-        }
-    }
     text[at] = b'0' + first as u8;
     text[at + 1] = b'.';
-    at += 18;
-    text[at] = b'e';
-    at += 1;
-    if e10 < 0 {
+    write_8_digits(&mut text, at + 2, (rest / 100_000_000) as u32);
+    write_8_digits(&mut text, at + 10, (rest % 100_000_000) as u32);
+    text[at + 18] = b'e';
+    let end = write_exponent(&mut text, at + 19, e10);
+    let start = out.len();
+    out.extend_from_slice(&text);
+    out.truncate(start + end);
+}
+
+/// Writes the 8 digits of `n` < 10⁸ (leading zeros included) at `text[at..at + 8]`: its two
+/// 4-digit halves in the 32-bit lanes of a `u64` (the first in the low lane, which comes first
+/// in little-endian bytes), each split into two 2-digit values in 16-bit lanes, each of those
+/// into its two digits in bytes, by divisions by 100 and 10 as multiply-shifts, exact for
+/// these ranges (v/100 = ⌊10486·v/2²⁰⌋ for v < 10⁴, v/10 = ⌊103·v/2¹⁰⌋ for v < 100), done in
+/// every lane at once.
+fn write_8_digits(text: &mut [u8], at: usize, n: u32) {
+    let n = u64::from(n);
+    let x = (n / 10_000) | ((n % 10_000) << 32);
+    let hundreds = ((x * 10_486) >> 20) & 0x0000_007f_0000_007f;
+    let y = hundreds | ((x - hundreds * 100) << 16);
+    let tens = ((y * 103) >> 10) & 0x000f_000f_000f_000f;
+    let z = tens | ((y - tens * 10) << 8);
+    text[at..at + 8].copy_from_slice(&(z | 0x3030_3030_3030_3030).to_le_bytes());
+}
+
+/// Writes the decimal exponent `e` (|e| < 10⁴) as `-ddd` (no sign when positive, no leading
+/// zeros) at `text[at..]`; returns the end. The exponents of the `f64` decimals and of the
+/// error bounds' texts.
+pub(crate) fn write_exponent(text: &mut [u8], mut at: usize, e: i32) -> usize {
+    if e < 0 {
         text[at] = b'-';
         at += 1;
     }
-    let e = e10.unsigned_abs();
-    if e >= 10 {
-        text[at] = b'0' + (e / 10) as u8;
-        at += 1;
+    // A digit at a time from the first (no copy of a length known only here).
+    let e = e.unsigned_abs().min(9_999);
+    for scale in [1_000, 100, 10] {
+        if e >= scale {
+            text[at] = b'0' + (e / scale % 10) as u8;
+            at += 1;
+        }
     }
     text[at] = b'0' + (e % 10) as u8;
-    out.extend_from_slice(&text[..at + 1]);
-    true
+    at + 1
 }
+
+/// The doubles nearest 10^-6 … 10^16 (exact from 10^0 up).
+const F64_DECADES: [f64; 23] = [
+    1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10,
+    1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
+];
 
 /// 10^0 … 10^22, each exact in a `u128`.
 const POW10: [u128; 23] = {
