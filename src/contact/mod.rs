@@ -9,7 +9,9 @@
 mod convolution;
 mod ellipse;
 mod solution;
+mod solve_cache;
 
 pub use ellipse::{check_ratio, solve_ellipse, Ellipse, MajorAxis, Options, RATIO_RANGE};
-pub(crate) use ellipse::{checked_options, ShapeSolver, SolveCache};
+pub(crate) use ellipse::{checked_options, ShapeSolver};
 pub use solution::{ContactProblem, ContactSolution, Loading};
+pub(crate) use solve_cache::SolveCache;

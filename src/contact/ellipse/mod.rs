@@ -9,31 +9,34 @@
 //! The solve runs in five stages, in the order they run:
 //!
 //! 1. **Check the inputs** (this file: [`check_ratio`], `checked_options`), before any work.
-//! 2. **Seed** (`seed.rs`): a neighbour's root; unseeded at `f64`, the root of the cubic
-//!    through ln(I2/I1) and its slope at two nodes of a grid in ln k kept with the speed;
-//!    else the static Hertz ellipse in closed form, and above k = 1 one evaluation at k = 1
-//!    (kept with the speed) tells the root's side.
+//! 2. **Seed** (`seed.rs`): the caller's seed or a neighbour's root; else, for an `f64` solve
+//!    by a fixed-rule method, the root of the cubic through ln(I2/I1) and its slope at two
+//!    nodes of a grid in ln k kept with the speed; else the static Hertz ellipse in closed
+//!    form, and above k = 1 one evaluation at k = 1 (kept with the speed) tells the root's side.
 //! 3. **Safeguarded Newton** (`newton.rs`) on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, at the
 //!    ladder's lowest stage (`f64`): F increases with k (checked over ν, M_R and
 //!    10⁻⁶ ≤ A1/B1 ≤ 10⁶ in `tests/contact.rs`), so a step leaving the bracket of known signs
 //!    is replaced by bisection; the last evaluation skips the k-derivatives (a chord step).
 //! 4. **Lift through the precision ladder** (`ladder.rs`): the root and F′ of the stage below
 //!    (`f64`, double-double above 106 bits, p/2 + 32 bits above 1024) start the working
-//!    precision, which takes chord steps with that F′ — at double-double one Halley step. The
-//!    lower stages' speeds are kept with the speed ([`SolveCache`]), and with them their set-ups.
+//!    precision, which takes chord steps with that F′ — at double-double one Halley step
+//!    (`halley.rs`). The lower stages' speeds are kept with the speed
+//!    (`contact/solve_cache.rs`).
 //! 5. **Final step and error bound** (`finish.rs`): I1, I2 carried to the root, a Newton step in
 //!    k itself where |ln k| is large, and the bound on k.
 //!
-//! Thresholds and their evidence: `docs/calibration.md`. Tests: `tests/contact.rs` (k within
-//! 10ε of a 320-bit adaptive-quadrature solve at `f64`, double-double and 256 bits),
-//! `tests/high_precision.rs` (2048 to 8192 bits), `tests/edges.rs` (|ln k| up to 2878).
+//! Thresholds and what each tactic beside Newton's method saves: `docs/calibration.md`.
+//! Tests: `tests/contact.rs` (k within 10ε of a 320-bit adaptive-quadrature solve at `f64`,
+//! double-double and 256 bits), `tests/high_precision.rs` (2048 to 8192 bits),
+//! `tests/edges.rs` (|ln k| up to 2878).
 
 mod finish;
+mod halley;
 mod ladder;
 mod newton;
 mod seed;
 
-pub(crate) use ladder::{ShapeSolver, SolveCache};
+pub(crate) use ladder::ShapeSolver;
 
 use crate::error::{Error, Result};
 use crate::estimate::{Estimated, RelError};
@@ -74,12 +77,10 @@ pub struct Options<T> {
     pub method: Method,
     /// A starting value for k, positive and finite (else [`Error::NotFinite`] or
     /// [`Error::Domain`] before any work). Without one (the default) the solve starts from the
-    /// static ellipse; with one, from the seed (rounded to `f64`), falling back to the static
-    /// ellipse when Newton's method does not converge from it within a few evaluations (or when
-    /// the seed rounds to 0 or ∞ in `f64`). Either way,
-    /// above `f64` the solve climbs the precision ladder (`f64`, then double-double, above 1024
-    /// bits stages at about half the precision of the next, then the working precision: a few
-    /// high-precision evaluations, no search).
+    /// grid seed (at `f64`, by the fixed rules) or the static ellipse; with one, from the seed rounded
+    /// to `f64`, falling back to those when Newton's method does not converge from it within a
+    /// few evaluations. Either way, above `f64` the solve climbs the precision ladder (the
+    /// module docs of `contact::ellipse`).
     pub seed: Option<T>,
     /// The relative accuracy wanted for k; `None` (the default) asks for the working
     /// precision's floor (a few ε). A tolerance below 4ε is refused before any work
@@ -139,10 +140,13 @@ impl<T: Real> Ellipse<T> {
         &self.integrals
     }
 
-    /// Evaluations of the integrals at the working precision (above `f64` the precision
-    /// ladder's lower stages come on top: an evaluation at `f64` or double-double costs a small
-    /// fraction of one at the working precision, one at the half-precision stage above 1024
-    /// bits about a fifth).
+    /// Evaluations of the integrals at the working precision: Newton's iterates (and the k = 1
+    /// probe's) and, at `f64`, the distinct nodes the grid seed read (2–4 on the cost target's
+    /// cells; each is evaluated once per speed and kept with it, and counts whether kept or
+    /// not, so that the count does not depend on the solves before). Above `f64`
+    /// the precision ladder's lower stages come on top: an evaluation at `f64` or
+    /// double-double costs a small fraction of one at the working precision, one at the
+    /// half-precision stage above 1024 bits about a fifth.
     pub fn iterations(&self) -> usize {
         self.iterations
     }
@@ -297,8 +301,8 @@ pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<
 
 /// The loosest tolerance on k the solve works to, 2⁻²⁰ ≈ 10⁻⁶: a looser one is met as this
 /// one. The stopping rules' error model (an error ~δ² after a Newton step δ) and the
-/// integrals' carry from the last iterate to the root ([`carry_error`], Hermite's
-/// [`hermite_root`]) hold for the steps they allow here; at `f64` a solve to 2⁻²⁰ costs about
+/// integrals' carry from the last iterate to the root (`finish::carry_error`) hold for the
+/// steps they allow here; at `f64` a solve to 2⁻²⁰ costs about
 /// two evaluations fewer than one to the working precision's floor.
 const LOOSEST_TOLERANCE_LOG2: i64 = -20;
 
@@ -316,35 +320,5 @@ fn shape_slope<T: Real>(k: &T, ci: &Evaluation<T>) -> T {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::seed::static_seed;
-    use super::*;
-
-    /// The seeds' stated accuracy against the static root (M_R = 0): the k ≫ 1 form within
-    /// 1.5 % at A1/B1 = 30 and 0.01 % at 10⁶, Hamrock & Brewe's 2.3× too large at 10⁶.
-    #[test]
-    fn static_seeds_against_the_static_root() {
-        let mat = crate::physics::Material::new(0.2f64).unwrap();
-        let sp = mat.speed(0.0).unwrap();
-        let solve = |ratio: f64| {
-            solve_ellipse(&sp, &ratio, &Options::default())
-                .unwrap()
-                .k
-                .value
-        };
-        for (ratio, tol) in [(30.0, 0.015), (1e3, 0.002), (1e6, 1e-4)] {
-            let k = solve(ratio);
-            let seed = static_seed(ratio);
-            assert!(
-                (seed / k - 1.0).abs() <= tol,
-                "A1/B1 = {ratio}: seed {seed}, root {k}"
-            );
-        }
-        let k = solve(1e6);
-        let hb = 1e6f64.powf(std::f64::consts::FRAC_2_PI);
-        assert!(
-            hb / k > 2.2 && hb / k < 2.4,
-            "Hamrock & Brewe {hb} against {k}"
-        );
-    }
-}
+#[path = "../../../tests/unit/ellipse.rs"]
+mod tests;

@@ -1,21 +1,24 @@
-//! Stage 3: Newton's method on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, inside a bracket
-//! (bisection when a step leaves it), its stopping rules and the chord steps at its end.
+//! Stage 3: Newton's method on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, inside a bracket of known
+//! signs (bisection when a step leaves it), with chord steps — evaluations without the
+//! k-derivatives, stepping with an F′ in hand — where that F′ is close enough.
 
-use super::finish::{carry_error, finish, hermite_root};
-use super::ladder::f_second;
+use super::finish::{carry_error, finish};
 use super::seed::static_seed;
-use super::{check_ratio, shape_residual, shape_slope, Shape};
+use super::{shape_residual, shape_slope, Shape};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::routes::evaluate::Evaluator;
-use crate::routes::{fast, AxisRatio, Evaluation, Method};
+use crate::routes::{fast, AxisRatio, Evaluation};
 use crate::scalar::{short, Real};
 
 /// A stage's result: the shape and the derivatives it hands on to the stage above.
 pub(super) type Handed<T> = Result<(Shape<T>, Option<Chord<T>>)>;
 
-/// F, F′ and the integrals at λ; with `chord` (derivatives kept from an earlier iterate) the
-/// derivatives are not evaluated again, and their relative error grows by ≲ 8|Δλ|.
+/// The bound on one stage's evaluations.
+pub(super) const MAX_EVALUATIONS: usize = 200;
+
+/// F, F′ and the integrals at λ; with `chord` (derivatives kept from an earlier iterate or a
+/// lower stage) the derivatives are not evaluated, and their relative error grows by ≲ 8|Δλ|.
 #[inline(always)]
 pub(super) fn residual<T: Real>(
     ev: &Evaluator<T>,
@@ -38,15 +41,10 @@ pub(super) fn residual<T: Real>(
     Ok((f, df, ci))
 }
 
-/// The derivatives at λ (one evaluation with them); `None` if it fails.
-pub(super) fn slope_at<S: Real>(ev: &Evaluator<S>, ratio: &S, lam: S) -> Option<Chord<S>> {
-    let (_, df, ci) = residual(ev, ratio, &lam, None).ok()?;
-    Some(Chord::at(lam, df, &ci, None))
-}
-
-/// How one stage runs: its seed and the derivatives handed on from below (with the bound on
-/// the seed's error), whether its last evaluation may skip the k-derivatives, whether it tries
-/// the Halley step from `f64`, the tolerance on k (`None`: ε) and its evaluation budget.
+/// How one stage runs: its seed (`None`: the static ellipse), the derivatives handed on from
+/// below with a bound on the seed's error, whether its last evaluation may skip the
+/// k-derivatives, whether it tries the Halley step, the tolerance on k (`None`: ε) and its
+/// evaluation budget.
 pub(super) struct Stage<'s, T: Real> {
     pub(super) seed: Option<&'s T>,
     pub(super) seed_slope: Option<(Chord<T>, T)>,
@@ -57,7 +55,7 @@ pub(super) struct Stage<'s, T: Real> {
 }
 
 impl<'s, T: Real> Stage<'s, T> {
-    /// A stage from `seed` (or the static ellipse), chord steps allowed.
+    /// A stage from `seed`, chord steps allowed, no derivatives handed on.
     pub(super) fn from(seed: Option<&'s T>, tol: Option<T>) -> Self {
         Stage {
             seed,
@@ -70,25 +68,28 @@ impl<'s, T: Real> Stage<'s, T> {
     }
 }
 
-/// Runs one stage: the k = 1 probe (unseeded), the Halley step from `f64` (when handed one),
-/// then the safeguarded iteration. Returns the shape and the last derivatives evaluated.
+/// Runs one stage: the k = 1 probe (unseeded), the Halley step when the stage asks for it and the handed-on derivatives
+/// allow it ([`super::halley`]), else chord steps with them when they are close enough, then
+/// the safeguarded iteration. Returns the shape and the last derivatives evaluated.
+#[inline]
 pub(super) fn solve_core<T: Real>(ev: &Evaluator<T>, ratio: &T, stage: Stage<'_, T>) -> Handed<T> {
-    check_ratio(ratio)?;
     let mut newton = Newton::new(ev, ratio, &stage);
-    let halley = (stage.seed_slope).and_then(|(c, err)| newton.adopt_slope(c, &err, stage.halley));
-    if stage.seed.is_none() && ev.method() != Method::Adaptive {
+    if stage.seed.is_none() && ev.method() != crate::routes::Method::Adaptive {
         newton.probe_k_one()?;
     }
-    if let Some(c) = halley {
-        if let Some(shape) = newton.halley_step(&c)? {
-            return Ok((shape, None));
+    if let Some((c, err)) = stage.seed_slope {
+        if newton.seeded && c.df.is_positive() && c.df.is_finite() {
+            if stage.halley && super::halley::f_second(&c, &newton.lam).is_some() {
+                if let Some(shape) = newton.halley_step(&c)? {
+                    return Ok((shape, None));
+                }
+            } else {
+                newton.adopt_slope(c, &err);
+            }
         }
     }
     newton.iterate()
 }
-
-/// The bound on one stage's evaluations.
-pub(super) const MAX_EVALUATIONS: usize = 200;
 
 /// One stage's iteration state.
 pub(super) struct Newton<'a, T: Real + 'static> {
@@ -96,30 +97,28 @@ pub(super) struct Newton<'a, T: Real + 'static> {
     pub(super) evaluator: &'a Evaluator<T>,
     /// The stopping rules' unit: ε, or the tolerance asked for.
     pub(super) eps: T,
-    pub(super) seeded: bool,
-    pub(super) allow_chord: bool,
+    seeded: bool,
+    allow_chord: bool,
     pub(super) lam: T,
     /// The bracket in λ, F(lo) < 0 < F(hi), grown as evaluations reveal signs.
     pub(super) lo: Option<T>,
     pub(super) hi: Option<T>,
-    pub(super) last_step: Option<T>,
+    last_step: Option<T>,
     /// Derivatives for a chord step at the next evaluation (none: a Newton step).
-    pub(super) chord: Option<Chord<T>>,
+    chord: Option<Chord<T>>,
     /// The last derivatives evaluated, handed to the next stage.
-    pub(super) fresh_slope: Option<Chord<T>>,
-    /// The last iterate with derivatives (the Hermite stop).
-    pub(super) prev: Option<Point<T>>,
+    fresh_slope: Option<Chord<T>>,
     pub(super) spent: usize,
-    pub(super) budget: usize,
+    budget: usize,
     /// The longest unbracketed step: 2, doubled after each step cut to it.
-    pub(super) reach: T,
+    reach: T,
     /// The λ a step longer than 2 may reach: the fixed rules' k ≤ 2^180, and k⁴ ≥ 2⁸ times the
     /// smallest normal number ([`AxisRatio`]'s range with a margin).
-    pub(super) lam_range: (f64, f64),
+    lam_range: (f64, f64),
 }
 
 impl<'a, T: Real> Newton<'a, T> {
-    pub(super) fn new(evaluator: &'a Evaluator<T>, ratio: &'a T, stage: &Stage<'_, T>) -> Self {
+    fn new(evaluator: &'a Evaluator<T>, ratio: &'a T, stage: &Stage<'_, T>) -> Self {
         let p = ratio.prec();
         let k0 = match stage.seed {
             Some(s) if s.is_positive() && s.is_finite() => s.clone(),
@@ -139,7 +138,6 @@ impl<'a, T: Real> Newton<'a, T> {
             last_step: None,
             chord: None,
             fresh_slope: None,
-            prev: None,
             spent: 0,
             budget: stage.budget,
             reach: T::from_i64(2, p),
@@ -154,39 +152,22 @@ impl<'a, T: Real> Newton<'a, T> {
         self.ratio.prec()
     }
 
-    #[inline(always)]
-    pub(super) fn eval(&self, lam: &T, chord: Option<&Chord<T>>) -> Result<(T, T, Evaluation<T>)> {
-        residual(self.evaluator, self.ratio, lam, chord)
-    }
-
-    /// The hand-off from below: derivatives `c` (relative error r) and a bound `seed_err` on
-    /// the seed. Chord steps are planned when two of them bring the seed's error to ε/64;
-    /// returns `c` instead for the Halley step when `halley` asks and the secant F″ exists.
-    pub(super) fn adopt_slope(
-        &mut self,
-        c: Chord<T>,
-        seed_err: &T,
-        halley: bool,
-    ) -> Option<Chord<T>> {
-        if !(self.seeded && c.df.is_positive() && c.df.is_finite()) {
-            return None;
-        }
-        if halley && f_second(&c, &self.lam).is_some() {
-            return Some(c);
-        }
+    /// Chord steps with the derivatives `c` handed on from below (relative error r, the seed
+    /// within `seed_err`) when two of them bring the seed's error to ε/64: r²·64·seed_err ≤ ε.
+    fn adopt_slope(&mut self, c: Chord<T>, seed_err: &T) {
         let r = c.rel_err.clone() + &(self.lam.clone() - &c.lam).abs();
         if r.square() * &seed_err.clone().mul_i64(64) <= self.eps {
             self.chord = Some(c);
         }
-        None
     }
 
     /// Evaluate, step, stop, until the budget is spent.
-    pub(super) fn iterate(mut self) -> Handed<T> {
+    #[inline]
+    fn iterate(mut self) -> Handed<T> {
         let p = self.prec();
         while self.spent < self.budget {
             let lam = self.lam.clone();
-            let (f, df, ci) = self.eval(&lam, self.chord.as_ref())?;
+            let (f, df, ci) = residual(self.evaluator, self.ratio, &lam, self.chord.as_ref())?;
             self.spent += 1;
             if f.is_zero() {
                 let shape = finish(lam.clone(), &lam, ci, self.ratio, T::zero(p), self.spent);
@@ -207,25 +188,12 @@ impl<'a, T: Real> Newton<'a, T> {
             let age = (self.chord.as_ref())
                 .map_or_else(|| T::zero(p), |c| (lam.clone() - &c.lam).abs() + &c.rel_err);
             let fresh = self.chord.is_none();
-            let here = fresh.then(|| Point {
-                lam: lam.clone(),
-                f,
-                df,
-                ints: ci.clone(),
-            });
-            if let Some(h) = &here {
-                self.hand_on(h);
+            if fresh {
+                self.hand_on(&lam, &df, &ci);
             }
             self.lam = next;
-            // Newton's stop first: where both stop here, it costs less than the Hermite stop.
             if let Some(shape) = self.converged(&lam, ci, &step, &age, &scale, was_newton) {
                 return Ok((shape, self.fresh_slope));
-            }
-            if let Some(shape) = self.hermite_stop(here.as_ref(), was_newton, &scale) {
-                return Ok((shape, self.fresh_slope));
-            }
-            if here.is_some() {
-                self.prev = here;
             }
             self.plan_chord(&step, &scale, was_newton, fresh);
             self.last_step = Some(step);
@@ -243,7 +211,7 @@ impl<'a, T: Real> Newton<'a, T> {
     /// about log₂ L cut steps) and never past a known end. Returns the iterate, whether it is
     /// a full Newton step (which the stopping rules assume) and whether it was cut.
     #[inline]
-    pub(super) fn next_iterate(&self, f: &T, df: &T) -> (T, bool, bool) {
+    fn next_iterate(&self, f: &T, df: &T) -> (T, bool, bool) {
         let lam = &self.lam;
         let newton = (df.is_positive() && df.is_finite()).then(|| lam.clone() - f.clone() / df);
         let half_way = |end: &T| (lam.clone() + end).mul_pow2(-1);
@@ -272,31 +240,15 @@ impl<'a, T: Real> Newton<'a, T> {
         }
     }
 
-    /// The Hermite stop of an unseeded stage that may end on any evaluation ([`hermite_root`]).
+    /// Keeps this iterate's derivatives for the next stage; a stage that hands them on (no
+    /// chord steps) also keeps, of the two iterates with derivatives before, the one whose
+    /// distance D from this one minimises the secant's error bound r/D + D (r = 2¹²ε, in the
+    /// working type) for the Halley step above.
     #[inline]
-    fn hermite_stop(&self, here: Option<&Point<T>>, newton: bool, scale: &T) -> Option<Shape<T>> {
-        if !(self.allow_chord && !self.seeded && newton) {
-            return None;
-        }
-        let (root, err, ints) = hermite_root(self.prev.as_ref()?, here?, &self.eps, scale)?;
-        Some(finish(
-            root.clone(),
-            &root,
-            ints,
-            self.ratio,
-            err,
-            self.spent,
-        ))
-    }
-
-    /// Keeps this iterate's derivatives for the next stage; a ladder stage (no chord steps)
-    /// also keeps, of the two iterates with derivatives before, the one whose distance D from
-    /// this one minimises the secant's error bound r/D + D (r = 2¹²ε) for the Halley step.
-    #[inline]
-    fn hand_on(&mut self, h: &Point<T>) {
+    fn hand_on(&mut self, lam: &T, df: &T, ci: &Evaluation<T>) {
         let r = self.eps.clone().mul_i64(4096);
         let bound = |x: &T| {
-            let d = (h.lam.clone() - x).abs();
+            let d = (lam.clone() - x).abs();
             (!d.is_zero()).then(|| r.clone() / &d + &d)
         };
         let nearer = |a: Option<T>, b: Option<T>| match (a, b) {
@@ -309,7 +261,7 @@ impl<'a, T: Real> Newton<'a, T> {
                 Some(b) if nearer(bound(&b[0]), bound(&c.lam)) => b.clone(),
                 _ => [c.lam.clone(), c.df.clone(), c.di1.clone(), c.di2.clone()],
             });
-        self.fresh_slope = Some(Chord::at(h.lam.clone(), h.df.clone(), &h.ints, before));
+        self.fresh_slope = Some(Chord::at(lam.clone(), df.clone(), ci, before));
     }
 
     /// The stopping rules after a step of length `step` from `lam_old` (whose integrals `ci`
@@ -343,10 +295,9 @@ impl<'a, T: Real> Newton<'a, T> {
         None
     }
 
-    /// Chord steps at the end: when the next evaluation is expected to be the last
+    /// The chord step at the end: when the next evaluation is expected to be the last
     /// (64δ³ ≤ ε), it skips the k-derivatives and steps with this iterate's F′ (the stop counts
-    /// the derivative's age). A handed-on slope is kept while the steps are full ones; a stage
-    /// that hands its derivatives on takes one chord step, then evaluates them.
+    /// the derivative's age). A handed-on slope is kept while the steps are full ones.
     #[inline]
     fn plan_chord(&mut self, step: &T, scale: &T, newton: bool, fresh: bool) {
         let past_first = self.seeded || self.spent >= 2;
@@ -360,17 +311,9 @@ impl<'a, T: Real> Newton<'a, T> {
     }
 }
 
-/// An iterate with F, F′ and the integrals with their k-derivatives (the Hermite stop).
-pub(super) struct Point<T: Real> {
-    pub(super) lam: T,
-    pub(super) f: T,
-    pub(super) df: T,
-    pub(super) ints: Evaluation<T>,
-}
-
 /// Derivatives kept for chord steps: dI1/dk, dI2/dk and F′ at λ, with F′'s relative error
 /// when it comes from a lower precision, and the iterate before (λ, F′, dI1/dk, dI2/dk) for
-/// secant second derivatives ([`super::ladder::curvature`]).
+/// the Halley step's secant second derivatives.
 #[derive(Clone)]
 pub(super) struct Chord<T> {
     pub(super) lam: T,
@@ -382,13 +325,13 @@ pub(super) struct Chord<T> {
 }
 
 impl<T: Real> Chord<T> {
-    fn at(lam: T, df: T, ci: &Evaluation<T>, before: Option<[T; 4]>) -> Self {
-        let rel_err = T::zero(lam.prec());
+    /// The derivatives of `ci` at λ, exact for this precision.
+    pub(super) fn at(lam: T, df: T, ci: &Evaluation<T>, before: Option<[T; 4]>) -> Self {
         Chord {
             di1: ci.di1_dk(),
             di2: ci.di2_dk(),
             df,
-            rel_err,
+            rel_err: T::zero(lam.prec()),
             before,
             lam,
         }

@@ -1,15 +1,65 @@
-//! Stage 2: the start — the static Hertz ellipse in closed form, or a neighbour's root (a
-//! sweep's extrapolated guess, or the caller's seed) — and the k = 1 probe that tells on which
-//! side of k = 1 an unseeded root lies.
+//! Stage 2: the start of the ladder's lowest stage — the caller's seed or a neighbour's root,
+//! else the grid seed (an `f64` solve by a fixed-rule method), else the static Hertz ellipse in
+//! closed form, with the k = 1 probe that tells on which side of k = 1 the root lies.
 
-use super::ladder::secant_partner;
-use super::newton::{solve_core, Handed, Newton, Stage};
+use super::halley::secant_partner;
+use super::newton::{solve_core, Handed, Newton, Stage, MAX_EVALUATIONS};
 use super::{shape_residual, shape_slope};
 use crate::error::Result;
 use crate::routes::evaluate::Evaluator;
-use crate::routes::{AxisRatio, Method};
+use crate::routes::{AxisRatio, IntegralOptions, Method};
 use crate::scalar::Real;
 use std::sync::OnceLock;
+
+/// The evaluations a stage started from the caller's seed or a neighbour's root may spend
+/// before it starts again from the grid seed or the static ellipse (a converging start needs
+/// 1–3).
+const GUESS_EVALUATIONS: usize = 8;
+
+/// The ladder's lowest stage: from `guess` when it converges within [`GUESS_EVALUATIONS`],
+/// else, at the `f64` working precision, from the grid seed ([`grid_seed`], whose nodes count
+/// in the shape's iterations), else from the static ellipse (a stage that hands its
+/// derivatives on starts there: its evaluations give the Halley step its secant). `allow_chord`: whether its last evaluation may
+/// skip the k-derivatives (not when it hands them on). A seeded stage that hands on derivatives
+/// from one evaluation gets a secant partner for the Halley step above it.
+#[inline]
+pub(super) fn lowest_stage<S: Real>(
+    ev: &Evaluator<S>,
+    ratio: &S,
+    allow_chord: bool,
+    tol: Option<S>,
+    guess: Option<f64>,
+) -> Handed<S> {
+    let run = |seed: f64, budget| {
+        let seed = S::from_f64(seed, ratio.prec());
+        let stage = Stage {
+            allow_chord,
+            budget,
+            ..Stage::from(Some(&seed), tol.clone())
+        };
+        let (shape, slope) = solve_core(ev, ratio, stage)?;
+        let slope = match slope {
+            Some(c) if !allow_chord && c.before.is_none() => Some(secant_partner(ev, ratio, c)),
+            other => other,
+        };
+        Ok((shape, slope))
+    };
+    if let Some(g) = guess.filter(|g| g.is_finite() && *g > 0.0) {
+        if let Ok(done) = run(g, GUESS_EVALUATIONS) {
+            return Ok(done);
+        }
+    }
+    if let Some((k, nodes)) = allow_chord.then(|| grid_seed(ev, ratio)).flatten() {
+        let (mut shape, slope) = run(k, MAX_EVALUATIONS)?;
+        shape.iterations += nodes;
+        return Ok((shape, slope));
+    }
+    let stage = Stage {
+        allow_chord,
+        ..Stage::from(None, tol.clone())
+    };
+    solve_core(ev, ratio, stage)
+}
 
 /// The static Hertz ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a
 /// few per cent of the static root down to 10⁻⁶), the k ≫ 1 form ([`static_seed_wide`]) from
@@ -31,57 +81,17 @@ pub(super) fn static_seed(ratio: f64) -> f64 {
 }
 
 /// From this ratio on the static seed is the k ≫ 1 form (`docs/calibration.md`).
-pub(super) const ASYMPTOTIC_SEED_RATIO: f64 = 30.0;
+const ASYMPTOTIC_SEED_RATIO: f64 = 30.0;
 
 /// The static root for A1/B1 ≥ 30 from (33)'s k ≫ 1 form at rest, A1/B1 = k²/(ln 4k − 1)
 /// (I2 ≈ 2g/k, I1 ≈ (2g/k³)(ln 4k − 1)), by four contracting fixed-point steps
 /// k ← √(A1/B1·(ln 4k − 1)): within 1.5 % of the static root at 30, 0.01 % at 10⁶.
-pub(super) fn static_seed_wide(ratio: f64) -> f64 {
+fn static_seed_wide(ratio: f64) -> f64 {
     let mut k = ratio.sqrt();
     for _ in 0..4 {
         k = (ratio * ((4.0 * k).ln() - 1.0)).sqrt();
     }
     k
-}
-
-/// The evaluations a stage started from a neighbour's root may spend before it starts again
-/// from the static ellipse (a converging start needs 1–3).
-pub(super) const GUESS_EVALUATIONS: usize = 8;
-
-/// The ladder's lowest stage (chord steps at its end as `allow_chord` says) from `guess` when
-/// it converges within [`GUESS_EVALUATIONS`], else from the static ellipse. A guessed stage
-/// that hands on derivatives without an earlier iterate gets a secant partner.
-#[inline]
-pub(super) fn lowest_stage<S: Real>(
-    ev: &Evaluator<S>,
-    ratio: &S,
-    allow_chord: bool,
-    tol: Option<S>,
-    guess: Option<f64>,
-) -> Handed<S> {
-    let guess = match guess {
-        Some(g) => Some(g),
-        None if allow_chord => grid_seed(ev, ratio),
-        None => None,
-    };
-    let seed = guess
-        .filter(|g| g.is_finite() && *g > 0.0)
-        .map(|g| S::from_f64(g, ratio.prec()));
-    let stage = |seed, budget| Stage {
-        allow_chord,
-        budget,
-        ..Stage::from(seed, tol.clone())
-    };
-    if let Some(seed) = &seed {
-        if let Ok((shape, slope)) = solve_core(ev, ratio, stage(Some(seed), GUESS_EVALUATIONS)) {
-            let slope = match slope {
-                Some(c) if !allow_chord && c.before.is_none() => Some(secant_partner(ev, ratio, c)),
-                other => other,
-            };
-            return Ok((shape, slope));
-        }
-    }
-    solve_core(ev, ratio, stage(None, super::newton::MAX_EVALUATIONS))
 }
 
 impl<T: Real> Newton<'_, T> {
@@ -91,7 +101,8 @@ impl<T: Real> Newton<'_, T> {
     /// layouts. One evaluation at k = 1 tells the side and starts Newton from there with the
     /// bracket's end at λ = 0: from above, not above the seed nor (away from the Rayleigh
     /// speed) more than e² below it; from below, at most e² below 1.
-    #[inline]
+    // Out of line: it never runs on a seeded start, the common one.
+    #[inline(never)]
     pub(super) fn probe_k_one(&mut self) -> Result<()> {
         // In the working type: √(1 − M_R²) may lie below the f64 range at MPFR.
         let p = self.prec();
@@ -137,31 +148,29 @@ impl<T: Real> Newton<'_, T> {
 
 /// Below this A1/B1 an unseeded start above k = 1 first evaluates at k = 1
 /// (`docs/calibration.md`).
-pub(super) const PROBE_BELOW_RATIO: f64 = 30.0;
+const PROBE_BELOW_RATIO: f64 = 30.0;
 
 /// ... and at any A1/B1 when the static seed's k0·√(1 − M_R²) is below this: near the
 /// Rayleigh speed the root falls far below the static seed (`docs/calibration.md`).
-pub(super) const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
+const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
 
 /// The seed grid's spacing in λ = ln k and its nodes' range, |λ| ≤ `GRID_HALF`·`GRID_STEP`.
 const GRID_STEP: f64 = 0.5;
 const GRID_HALF: i64 = 32;
 
-/// The nodes a grid seed may visit before it gives up (a root off the grid, a failed
+/// The cells a grid seed may visit before it gives up (a root off the grid, a failed
 /// evaluation): the static seed's cell, then Newton's pick from the nearer end.
 const GRID_VISITS: usize = 4;
 
-/// The start of an unseeded `f64` solve at a speed whose method is a fixed rule: the root of
-/// the cubic through ln(I2/I1) and its λ-derivative at the two nodes of a grid in λ (spacing
-/// ½, kept with the speed, each node evaluated once per speed on first use) around the root,
-/// within ~1e-5 of it on ν = 0.25, M_R ≤ 0.9999, A1/B1 ∈ [10⁻³, 10]
-/// (`docs/calibration.md`): Newton then needs two evaluations. A node's values depend on its
-/// λ alone (its own evaluator: no layout shared with the solve), so the seed, and the solve
-/// from it, do not depend on which solves the speed served before. `None` at higher
-/// precisions, for the adaptive method, and where the root lies off the grid.
-pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<f64> {
-    let p = ratio.prec();
-    if S::bits(p) > 53 || !matches!(ev.method(), Method::Auto | Method::Fixed) {
+/// The start of an `f64` stage at a speed whose method is a fixed rule: the root of the cubic
+/// through ln(I2/I1) and its λ-derivative at the two nodes of a grid in λ (spacing ½, kept
+/// with the speed, each node evaluated once per speed on first use) around the root, within
+/// ~1e-5 of it (`docs/calibration.md`), from where Newton needs two evaluations. A node's
+/// values depend on its λ alone (its own evaluator), so that the seed does not depend on which
+/// solves the speed served before. Returns the seed and the distinct nodes read (kept or evaluated now);
+/// `None` above `f64`, for the adaptive method, and where the root lies off the grid.
+pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, usize)> {
+    if S::bits(ratio.prec()) > 53 || !matches!(ev.method(), Method::Auto | Method::Fixed) {
         return None;
     }
     let target = ratio.to_f64().ln();
@@ -176,19 +185,27 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<f64> {
             .clamp(-GRID_HALF as f64, (GRID_HALF - 1) as f64) as i64
     };
     let mut j = cell(static_seed(ratio.to_f64()).ln());
-    for _ in 0..GRID_VISITS {
+    // The cells visited, for the count of distinct nodes read.
+    let mut cells = [0i64; GRID_VISITS];
+    for visit in 0..GRID_VISITS {
+        cells[visit] = j;
         let ((ga, da), (gb, db)) = (node(j)?, node(j + 1)?);
         if ga <= target && target <= gb {
             let t = cubic_root(ga - target, gb - target, da * GRID_STEP, db * GRID_STEP)?;
-            return Some(((j as f64 + t) * GRID_STEP).exp());
+            let seen = &cells[..=visit];
+            let nodes = (seen.iter().map(|&c| [c, c + 1]).enumerate())
+                .flat_map(|(i, pair)| pair.map(|n| (i, n)))
+                .filter(|&(i, n)| !seen[..i].iter().any(|&c| c == n || c + 1 == n))
+                .count();
+            return Some((((j as f64 + t) * GRID_STEP).exp(), nodes));
         }
         let (lam, g, d) = if target < ga {
             (j as f64 * GRID_STEP, ga, da)
         } else {
             ((j + 1) as f64 * GRID_STEP, gb, db)
         };
+        // Newton's pick from the nearer end, at least one cell towards the target.
         let next = cell(lam - (g - target) / d);
-        // Newton's pick, moved at least one cell towards the target.
         j = if target < ga {
             next.min(j - 1)
         } else {
@@ -200,7 +217,7 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<f64> {
 
 /// ln(I2/I1) and its λ-derivative F′ at λ, by the fixed rules on an evaluator of its own.
 fn grid_node<S: Real>(ev: &Evaluator<S>, lam: f64) -> Option<(f64, f64)> {
-    let opts = crate::routes::IntegralOptions {
+    let opts = IntegralOptions {
         method: Method::Auto,
         derivatives: true,
         ..Default::default()
@@ -209,10 +226,8 @@ fn grid_node<S: Real>(ev: &Evaluator<S>, lam: f64) -> Option<(f64, f64)> {
     let one = S::one(ev.speed().mr().prec());
     let ax = AxisRatio::new(S::from_f64(lam.exp(), one.prec())).ok()?;
     let ci = own.for_newton(&ax, true).ok()?;
-    let (g, d) = (
-        shape_residual(&ci, &one).to_f64(),
-        shape_slope(&ax.k, &ci).to_f64(),
-    );
+    let g = shape_residual(&ci, &one).to_f64();
+    let d = shape_slope(&ax.k, &ci).to_f64();
     (g.is_finite() && d.is_finite() && d > 0.0).then_some((g, d))
 }
 
@@ -237,38 +252,4 @@ fn cubic_root(ya: f64, yb: f64, da: f64, db: f64) -> Option<f64> {
         t = next;
     }
     None
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::contact::{solve_ellipse, Options};
-    use crate::physics::Material;
-    use crate::routes::IntegralOptions;
-
-    /// The grid seed against the solve's root: within 10⁻⁴ in λ (so that Newton needs two
-    /// evaluations) over ν, M_R up to 0.9999 and A1/B1 from 10⁻³ to 10, on both sides of k = 1.
-    #[test]
-    fn grid_seeds_lie_near_the_root() {
-        let opts = IntegralOptions {
-            derivatives: true,
-            ..Default::default()
-        };
-        let mut worst = 0.0f64;
-        for nu in [-0.5, 0.25, 0.5] {
-            let mat = Material::new(nu).unwrap();
-            for mr in [0.0, 0.5, 0.9, 0.99, 0.9999] {
-                let sp = mat.speed(mr).unwrap();
-                let ev = Evaluator::new(&sp, opts).unwrap();
-                for ratio in [1e-3, 0.01, 0.1, 0.5, 2.0, 10.0] {
-                    let k = solve_ellipse(&sp, &ratio, &Options::default()).unwrap().k;
-                    let seed = grid_seed(&ev, &ratio).expect("a seed on the grid");
-                    let err = (seed / k.value).ln().abs();
-                    assert!(err <= 1e-4, "nu {nu}, M_R {mr}, A1/B1 {ratio}: {err:.2e}");
-                    worst = worst.max(err);
-                }
-            }
-        }
-        println!("grid seed: worst |ln(seed/k)| {worst:.2e}");
-    }
 }
