@@ -615,7 +615,7 @@ impl<T: Real> GradedSetup<T> {
         // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
         let right = &self.body.right;
         let nr = right.len() / 4;
-        let [rs, rf, rsf, rssf] = [0, 1, 2, 3].map(|i| &right[i * nr..(i + 1) * nr]);
+        let [rs, rf, rsf, rssf] = four_tables(right);
         let one = T::one(p);
         let ([i1r, i2r], [d1r, d2r, _]) = power_sums(rs, [rf, rsf, rssf], dk, [&axes.k2, &one]);
         let [i2l, i1l, d2l, d1l] = left;
@@ -650,12 +650,12 @@ impl<T: Real> LeftHalf<T> {
         match self {
             // Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2}, Σ s² f u^{−5/2}.
             LeftHalf::Resolved(v) => {
-                let [ls, lf, lsf, lssf] = [0, 1, 2, 3].map(|i| &v[i * nl..(i + 1) * nl]);
+                let [ls, lf, lsf, lssf] = four_tables(v);
                 let ([a, b], [_, c, d]) = power_sums(ls, [lf, lsf, lssf], dk, [&one, &axes.k2]);
                 [a, b, c, d]
             }
             LeftHalf::Subtracted { nodes, sc } => {
-                let [ls, lf, lih, lw] = [0, 1, 2, 3].map(|i| &nodes[i * nl..(i + 1) * nl]);
+                let [ls, lf, lih, lw] = four_tables(nodes);
                 // u0 = 1 − k²ε² ≥ 15/16 here.
                 let (a0, e0) = sc.pole_values(&axes.k2);
                 let (eps2, pole_t) = (&sc.eps2, &sc.pole_t);
@@ -691,6 +691,15 @@ impl<T: Real> LeftHalf<T> {
             }
         }
     }
+}
+
+/// The four tables of node values that `v` holds one after the other.
+fn four_tables<T>(v: &[T]) -> [&[T]; 4] {
+    let n = v.len() / 4;
+    let (a, rest) = v.split_at(n);
+    let (b, rest) = rest.split_at(n);
+    let (c, d) = rest.split_at(n);
+    [a, b, c, &d[..n]]
 }
 
 /// `out[i] = g(x[i], out[i])` for every node, on the cores above

@@ -107,7 +107,8 @@ pub(crate) fn power_sums<T: Real>(
         let m = CHUNK.min(nodes.len() - i0);
         let v = &mut v[..m];
         let xs = &nodes[i0..i0 + m];
-        let [g0, g1, g2] = g.map(|f| &f[i0..i0 + m]);
+        let range = i0..i0 + m;
+        let (g0, g1, g2) = (&g[0][range.clone()], &g[1][range.clone()], &g[2][range]);
         let zero = || T::zero(p);
         if dk {
             for (x, y) in xs.iter().zip(v.iter_mut()) {
