@@ -289,10 +289,10 @@ fn taylor_right_parts<T: Real>(
     t: &TaylorRight<T>,
     dk: bool,
 ) -> [T; 4] {
-    let one = T::one(kc.k.prec());
     let [s1, s2, sd1, sd2] = right_closed_forms_guarded(rule, &t.b, kc, dk);
     let g = [&t.f[..], &t.sf[..], &t.ssf[..]];
-    let ([a, b], [c, d, _]) = graded::power_sums(&r.s, g, dk, [&kc.k2, &one]);
+    let right = graded::Kernel::Right { k2: &kc.k2 };
+    let ([a, b], [c, d, _]) = graded::power_sums(&r.s, g, dk, right);
     [a + &s1, b + &s2, c + &sd1, d + &sd2]
 }
 
@@ -592,8 +592,15 @@ impl<T: Real> FastSetup<T> {
         let nl = rule.left.len();
         // Σ F1 u^{−3/2}, Σ F2 u^{−3/2} and, with `dk`, Σ F2 u^{−5/2}, Σ F3 u^{−5/2}, u = 1 + k²s.
         let (f, sf, ssf) = (&self.left_f[..], &self.left_sf[..], &self.left_ssf[..]);
-        let ([a, b], [_, c, d]) =
-            graded::power_sums(&rule.left.s, [f, sf, ssf], dk, [&one, &kc.k2]);
+        let ([a, b], [_, c, d]) = graded::power_sums(
+            &rule.left.s,
+            [f, sf, ssf],
+            dk,
+            graded::Kernel::Left {
+                k2: &kc.k2,
+                one: &one,
+            },
+        );
         let sums = [a, b, c, d];
         let lp = left_parts(&self.left_pole, &kc, sums, dk);
         // No octaves kept: a set-up built without the sinh-mapped panels.

@@ -83,9 +83,9 @@ impl<T: Real> RightSinh<T> {
     /// I1_R = Σ f (σ + k²)^{−3/2}, I2_R = Σ σf (σ + k²)^{−3/2} and, with `dk`, S1, S2 the same
     /// with (σ + k²)^{−5/2} (dI_R/dk = −3k S).
     pub(crate) fn parts(&self, kc: &KConsts<T>, dk: bool) -> [T; 4] {
-        let one = T::one(kc.k.prec());
         let g = [&self.f[..], &self.sf[..], &self.ssf[..]];
-        let ([a, b], [c, d, _]) = graded::power_sums(&self.s, g, dk, [&kc.k2, &one]);
+        let right = graded::Kernel::Right { k2: &kc.k2 };
+        let ([a, b], [c, d, _]) = graded::power_sums(&self.s, g, dk, right);
         [a, b, c, d]
     }
 }

@@ -79,7 +79,7 @@ mod sums;
 pub use plan::{left_nodes, left_plan, MAX_UNITS};
 use plan::{length_costs, pick_plan, plan_table, PLANNED};
 use sums::{chunked_sums, kernel_powers, CHUNK};
-pub(super) use sums::{dot, power_sums};
+pub(super) use sums::{dot, power_sums, Kernel};
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
 pub const BOUND_EPS: i64 = 32;
@@ -616,8 +616,8 @@ impl<T: Real> GradedSetup<T> {
         let right = &self.body.right;
         let nr = right.len() / 4;
         let [rs, rf, rsf, rssf] = four_tables(right);
-        let one = T::one(p);
-        let ([i1r, i2r], [d1r, d2r, _]) = power_sums(rs, [rf, rsf, rssf], dk, [&axes.k2, &one]);
+        let right = Kernel::Right { k2: &axes.k2 };
+        let ([i1r, i2r], [d1r, d2r, _]) = power_sums(rs, [rf, rsf, rssf], dk, right);
         let [i2l, i1l, d2l, d1l] = left;
         let i1 = i1l + &i1r;
         let i2 = i2l + &i2r;
@@ -651,7 +651,11 @@ impl<T: Real> LeftHalf<T> {
             // Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2}, Σ s² f u^{−5/2}.
             LeftHalf::Resolved(v) => {
                 let [ls, lf, lsf, lssf] = four_tables(v);
-                let ([a, b], [_, c, d]) = power_sums(ls, [lf, lsf, lssf], dk, [&one, &axes.k2]);
+                let left = Kernel::Left {
+                    k2: &axes.k2,
+                    one: &one,
+                };
+                let ([a, b], [_, c, d]) = power_sums(ls, [lf, lsf, lssf], dk, left);
                 [a, b, c, d]
             }
             LeftHalf::Subtracted { nodes, sc } => {

@@ -79,13 +79,41 @@ pub(super) fn kernel_powers<T: Real>(
     }
 }
 
-/// The kernel sums of one half over its nodes s with x = α + βs > 0 and the factors
-/// [g0, g1, g2] = `g` with g1 = s·g0, g2 = s·g1: returns [Σ g0 x^{−3/2}, Σ g1 x^{−3/2}] and,
-/// with `dk`, [Σ g0 x^{−5/2}, Σ g1 x^{−5/2}, Σ g2 x^{−5/2}] (zero without; g2 is read only
+/// The kernel's argument x at a node s of one half: u = 1 + k²s on the left half (`Left`),
+/// σ + k² on the right (`Right`), with k² and 1 at the working precision.
+#[derive(Clone, Copy)]
+pub(crate) enum Kernel<'a, T> {
+    Left { k2: &'a T, one: &'a T },
+    Right { k2: &'a T },
+}
+
+impl<T: Real> Kernel<'_, T> {
+    #[inline(always)]
+    fn at(&self, s: &T) -> T {
+        match self {
+            Kernel::Left { k2, one } => (*one).clone() + (*k2).clone() * s,
+            Kernel::Right { k2 } => s.clone() + *k2,
+        }
+    }
+
+    /// Σ g_i x^{−3/2} from S_i = Σ g_i x^{−5/2} and S_{i+1}, x = α + βs:
+    /// α S_i + β S_{i+1} (left: S_i + k² S_{i+1}; right: k² S_i + S_{i+1}).
+    #[inline(always)]
+    fn w3(&self, si: &T, next: &T) -> T {
+        match self {
+            Kernel::Left { k2, .. } => si.clone() + (*k2).clone() * next,
+            Kernel::Right { k2 } => (*k2).clone() * si + next,
+        }
+    }
+}
+
+/// The kernel sums of one half over its nodes s with x = [`Kernel::at`] (α + βs > 0) and the
+/// factors [g0, g1, g2] = `g` with g1 = s·g0, g2 = s·g1: returns [Σ g0 x^{−3/2}, Σ g1 x^{−3/2}]
+/// and, with `dk`, [Σ g0 x^{−5/2}, Σ g1 x^{−5/2}, Σ g2 x^{−5/2}] (zero without; g2 is read only
 /// with `dk`). With `dk` only x^{−5/2} is formed and the x^{−3/2} sums follow from
 /// x^{−3/2} = (α + βs) x^{−5/2}: Σ g_i x^{−3/2} = α Σ g_i x^{−5/2} + β Σ g_{i+1} x^{−5/2}
 /// (three dot products a chunk instead of four; positive terms, so within two roundings more
-/// than the sums it is formed from). Left half: x = u = 1 + k²s; right: x = σ + k².
+/// than the sums it is formed from).
 ///
 /// Per chunk of [`CHUNK`] nodes the kernel powers into a table, then the sums
 /// ([`dot`]), the chunks' sums added in order ([`chunked_sums`]). One square root and one
@@ -98,11 +126,12 @@ pub(crate) fn power_sums<T: Real>(
     nodes: &[T],
     g: [&[T]; 3],
     dk: bool,
-    [alpha, beta]: [&T; 2],
+    kernel: Kernel<'_, T>,
 ) -> ([T; 2], [T; 3]) {
-    let p = alpha.prec();
+    let p = match kernel {
+        Kernel::Left { k2, .. } | Kernel::Right { k2 } => k2.prec(),
+    };
     let table = || -> [T; CHUNK] { std::array::from_fn(|_| T::zero(p)) };
-    let shift = |s: &T| alpha.clone() + beta.clone() * s;
     let [t0, t1, s0, s1, s2] = chunked_sums(nodes.len(), p, table, |i0, v| {
         let m = CHUNK.min(nodes.len() - i0);
         let v = &mut v[..m];
@@ -112,12 +141,12 @@ pub(crate) fn power_sums<T: Real>(
         let zero = || T::zero(p);
         if dk {
             for (x, y) in xs.iter().zip(v.iter_mut()) {
-                *y = shift(x).pow_m3_2_m5_2().1;
+                *y = kernel.at(x).pow_m3_2_m5_2().1;
             }
             [zero(), zero(), dot(g0, v), dot(g1, v), dot(g2, v)]
         } else {
             for (x, y) in xs.iter().zip(v.iter_mut()) {
-                *y = shift(x).pow_m3_2();
+                *y = kernel.at(x).pow_m3_2();
             }
             [dot(g0, v), dot(g1, v), zero(), zero(), zero()]
         }
@@ -125,10 +154,7 @@ pub(crate) fn power_sums<T: Real>(
     if !dk {
         return ([t0, t1], [s0, s1, s2]);
     }
-    let w3 = [
-        alpha.clone() * &s0 + beta.clone() * &s1,
-        alpha.clone() * &s1 + beta.clone() * &s2,
-    ];
+    let w3 = [kernel.w3(&s0, &s1), kernel.w3(&s1, &s2)];
     (w3, [s0, s1, s2])
 }
 
