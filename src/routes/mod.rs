@@ -400,14 +400,16 @@ pub(crate) const BEYOND_EXPONENT_RANGE: &str = "a k whose integrals stay within 
 ///
 /// Formed as k·(k·I1) + I2, whose intermediates stay within the working type wherever I1, I2
 /// and 1/k do (I1 ≈ 2(1 − ν)/k² as k → 0). Below the Rayleigh speed g > 0, so I1 and I2 are
-/// positive and J0's relative error is at most the larger of theirs plus the three roundings
-/// (4ε); a pair that is not positive gets [`RelError::INFINITE`] (an error at the public
-/// boundary). Tested against an independent quadrature of J0 alone (both peaks in closed form),
+/// positive and J0's relative error is at most the larger q of theirs compounded with the three
+/// roundings (k·I1, k·(k·I1), the sum; k is exact): (1 + q)(1 + γ3) − 1 = q + γ3 + q·γ3 with
+/// γ3 = [`RelError::rounding`] of 3 operations (1.5ε at `f64` and MPFR, 4.9ε at double-double);
+/// a pair that is not positive gets [`RelError::INFINITE`] (an error at the public boundary). Tested against an independent quadrature of J0 alone (both peaks in closed form),
 /// the adaptive route's own J0 and mpmath (`tests/unit/direct.rs`, `tests/identities.rs`).
 pub(crate) fn j0_from_pair<T: Real>(k: &T, i1: &T, i2: &T, pair_error: RelError) -> Estimated<T> {
     let value = k.clone() * &(k.clone() * i1) + i2;
     let error = if i1.is_positive() && i2.is_positive() {
-        pair_error.add(RelError::eps::<T>(4, k.prec()))
+        let gamma = RelError::rounding::<T>(3.0, k.prec());
+        pair_error.add(gamma).add(pair_error.mul(gamma))
     } else {
         RelError::INFINITE
     };
@@ -436,4 +438,61 @@ pub struct Integrals<T: Real> {
     pub precision: Precision,
     /// Work done: series terms or integrand evaluations.
     pub work: usize,
+}
+
+#[cfg(test)]
+mod j0_rounding_tests {
+    use super::j0_from_pair;
+    use crate::estimate::RelError;
+    use crate::scalar::{Dd, Real};
+    use rug::Float;
+
+    /// J0 = k·(k·I1) + I2 from exact I1, I2 (pair error 0) against the same sum in exact
+    /// arithmetic, over pseudo-random positive operands of every scale: every error within the
+    /// counted bound γ3, and some error above `least`·γ3: at `f64` above γ3/3 (0.75ε against
+    /// 1.5ε), so that a count of one rounding would fail; at double-double, whose worst case of
+    /// an operation (1.625ε, [`Real::ROUNDING`]) three operations do not reach together, above
+    /// γ3/8 (0.86ε against 4.9ε).
+    fn check<T: Real>(p: T::Prec, label: &str, least: f64) {
+        let bits = T::bits(p);
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut worst = 0.0f64;
+        let bound = RelError::rounding::<T>(3.0, p).to_f64();
+        for _ in 0..20_000 {
+            // Operands carrying all of `bits` (a sum of two f64 at double-double).
+            let mut draw = |scale: f64| {
+                let hi = T::from_f64((1.0 + next()) * scale, p);
+                hi.clone() + &T::from_f64(next() * scale * f64::EPSILON, p)
+            };
+            let (k, i1, i2) = (draw(1.0), draw(2f64.powi(-3)), draw(1.0));
+            let got = j0_from_pair(&k, &i1, &i2, RelError::ZERO);
+            let x = |v: &T| v.to_float(bits);
+            let exact = Float::with_val(4 * bits, x(&k) * x(&k)) * x(&i1) + x(&i2);
+            let err = (Float::with_val(4 * bits, x(&got.value) - &exact) / &exact).abs();
+            let err = err.to_f64();
+            assert!(
+                err <= got.error.to_f64(),
+                "{label}: {err:e} above {}",
+                got.error
+            );
+            worst = worst.max(err);
+        }
+        println!("{label}: J0's rounding, worst {worst:.3e} against γ3 = {bound:.3e}");
+        assert!(
+            worst > bound * least,
+            "{label}: γ3 loose: {worst:e} against {bound:e}"
+        );
+    }
+
+    #[test]
+    fn j0_rounding_is_within_its_count() {
+        check::<f64>((), "f64", 1.0 / 3.0);
+        check::<Dd>((), "dd", 1.0 / 8.0);
+    }
 }

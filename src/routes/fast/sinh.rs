@@ -44,13 +44,15 @@ pub(crate) fn sinh_octave<T: Real>(rule: &FastRule<T>, k: &T) -> Option<usize> {
 /// from the Bernstein ellipse that reaches the strip |Im x| < π/2, where the branch points ±ik of
 /// (σ + k²)^{−3/2} and every singularity of b(σ), at |v| ≥ 1 on or near the imaginary axis,
 /// lie). No subtraction: the integrands b(σ)(σ + k²)^{−3/2} dv/dx are positive and analytic in
-/// the strip. Kept per k-independent part: σ, f = ω b(σ) (ω the weight times dv/dx) and σf;
+/// the strip. Kept per k-independent part: σ, f = ω b(σ) (ω the weight times dv/dx), σf and
+/// σ²f;
 /// a k costs one square root and one division a node ([`graded`]'s power sums).
 #[derive(Debug)]
 pub(crate) struct RightSinh<T> {
     pub(crate) s: Vec<T>,
     pub(crate) f: Vec<T>,
     pub(crate) sf: Vec<T>,
+    pub(crate) ssf: Vec<T>,
 }
 
 impl<T: Real> RightSinh<T> {
@@ -68,8 +70,9 @@ impl<T: Real> RightSinh<T> {
                 let (f1, dd, e) = sc.right_node(sg, &pp, &two_p, &four_p, &one);
                 fi.clone() * dd * f1.sqrt_div(&e)
             });
-            let sf = s.iter().zip(&f).map(|(a, b)| a.clone() * b).collect();
-            Ok(RightSinh { s, f, sf })
+            let sf: Vec<T> = s.iter().zip(&f).map(|(a, b)| a.clone() * b).collect();
+            let ssf = s.iter().zip(&sf).map(|(a, b)| a.clone() * b).collect();
+            Ok(RightSinh { s, f, sf, ssf })
         })
     }
 
@@ -80,8 +83,9 @@ impl<T: Real> RightSinh<T> {
     /// I1_R = Σ f (σ + k²)^{−3/2}, I2_R = Σ σf (σ + k²)^{−3/2} and, with `dk`, S1, S2 the same
     /// with (σ + k²)^{−5/2} (dI_R/dk = −3k S).
     pub(crate) fn parts(&self, kc: &KConsts<T>, dk: bool) -> [T; 4] {
-        let p = kc.k.prec();
-        let factors = [&self.f[..], &self.sf[..], &self.f[..], &self.sf[..]];
-        graded::power_sums(&self.s, factors, dk, p, |sg| sg.clone() + &kc.k2)
+        let g = [&self.f[..], &self.sf[..], &self.ssf[..]];
+        let right = graded::Kernel::Right { k2: &kc.k2 };
+        let ([a, b], [c, d, _]) = graded::power_sums(&self.s, g, dk, right);
+        [a, b, c, d]
     }
 }

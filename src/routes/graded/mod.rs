@@ -75,8 +75,11 @@ use crate::scalar::{short, Real};
 use std::sync::{Arc, OnceLock};
 
 mod plan;
+mod sums;
 pub use plan::{left_nodes, left_plan, MAX_UNITS};
 use plan::{length_costs, pick_plan, plan_table, PLANNED};
+use sums::{chunked_sums, kernel_powers, CHUNK};
+pub(super) use sums::{dot, power_sums, Kernel};
 
 /// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
 pub const BOUND_EPS: i64 = 32;
@@ -395,7 +398,7 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 /// Stored per node, weights included: on the left (w = a sinh x, s = w²) f = (2/m1) D′ √e1/(Q′ h)
 /// times dw/dx with a/h = f·u^{−3/2}, u = 1 + k²s, h = s + ε², and s·f, s²·f (or, with the pole
 /// subtracted, a·u^{3/2}, 1/h and the weight apart: module docs); on the right
-/// (σ = v²) f = (2/m1) √f1 D′/E with b W3 = f·(σ + k²)^{−3/2}, and σ·f. An evaluation forms
+/// (σ = v²) f = (2/m1) √f1 D′/E with b W3 = f·(σ + k²)^{−3/2}, σ·f and σ²·f. An evaluation forms
 /// u^{−3/2} (and u^{−5/2} for the derivatives) at the nodes, then weighted sums panel by panel.
 #[derive(Clone, Debug)]
 pub struct GradedSetup<T: Real> {
@@ -410,7 +413,7 @@ pub struct GradedSetup<T: Real> {
 #[derive(Debug)]
 pub(crate) struct GradedBody<T: Real> {
     left: LeftHalf<T>,
-    /// The right nodes' σ, f, σ·f (3 × the node count).
+    /// The right nodes' σ, f, σ·f, σ²·f (4 × the node count).
     right: Vec<T>,
 }
 
@@ -436,56 +439,67 @@ fn left_parts<T: Real>(sc: &SpeedConsts<T>, s: &T, one: &T) -> (T, T, T) {
     sc.left_node(s, &pp, &pp.clone().mul_pow2(1), &pp.clone().mul_pow2(2))
 }
 
-/// The left half with the pole resolved by the panels: s, f, s·f, s²·f (f = weight·a/h·u^{3/2}).
-fn resolved_left<T: Real>(
-    layout: &SinhLayout<'_, T>,
-    sc: &SpeedConsts<T>,
-    nl: usize,
-    p: T::Prec,
-) -> Result<LeftHalf<T>> {
+/// The left half with the pole resolved by the panels: s, f, s·f, s²·f (f = weight·a/h·u^{3/2},
+/// with G's constant factor 2/m1 folded into the weight).
+fn resolved_left<T: Real>(layout: &SinhLayout<'_, T>, sc: &SpeedConsts<T>) -> Result<LeftHalf<T>> {
+    let p = sc.c.prec();
     let one = T::one(p);
-    // s and the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 at each node, with G's constant factor 2/m1
-    // folded in, then f in place of the weight, then s·f and s²·f.
-    let mut left = vec![T::zero(p); 4 * nl];
-    let (ls, rest) = left.split_at_mut(nl);
-    let (lf, rest) = rest.split_at_mut(nl);
-    let (lsf, lssf) = rest.split_at_mut(nl);
-    layout.fill(&sc.two_over_m1, ls, lf)?;
-    node_map(p, ls, lf, |s, w| {
-        let (e1, dd, qq) = left_parts(sc, s, &one);
-        let h = s.clone() + &sc.eps2;
-        w.clone() * dd * e1.sqrt_div(&(qq * h))
-    });
-    lsf.clone_from_slice(lf);
-    node_map(p, ls, lsf, |s, f| s.clone() * f);
-    lssf.clone_from_slice(lsf);
-    node_map(p, ls, lssf, |s, f| s.clone() * f);
-    Ok(LeftHalf::Resolved(left))
+    let tables = left_tables(layout, &sc.two_over_m1, 0, |ls, [lf, lsf, lssf]| {
+        node_map(p, ls, lf, |s, w| {
+            let (e1, dd, qq) = left_parts(sc, s, &one);
+            let h = s.clone() + &sc.eps2;
+            w.clone() * dd * e1.sqrt_div(&(qq * h))
+        });
+        node_map(p, lf, lsf, |f, s| s.clone() * f);
+        node_map(p, lsf, lssf, |sf, s| s.clone() * sf);
+    })?;
+    Ok(LeftHalf::Resolved(tables))
 }
 
 /// The left half with the pole subtracted: s, F (with G's constant factor 2/m1), 1/h and the
-/// weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2.
+/// weight.
 fn subtracted_left<T: Real>(
     layout: &SinhLayout<'_, T>,
     sc: &SpeedConsts<T>,
-    nl: usize,
-    p: T::Prec,
 ) -> Result<LeftHalf<T>> {
+    let p = sc.c.prec();
     let one = T::one(p);
-    let mut nodes = vec![T::zero(p); 4 * nl];
-    let (ls, rest) = nodes.split_at_mut(nl);
-    let (lf, rest) = rest.split_at_mut(nl);
-    let (lih, lw) = rest.split_at_mut(nl);
-    layout.fill(&one, ls, lw)?;
-    node_map(p, ls, lf, |s, _| {
-        let (e1, dd, qq) = left_parts(sc, s, &one);
-        sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq)
-    });
-    node_map(p, ls, lih, |s, _| (s.clone() + &sc.eps2).recip());
+    let nodes = left_tables(layout, &one, 2, |ls, [lf, lih, _]| {
+        node_map(p, ls, lf, |s, _| {
+            let (e1, dd, qq) = left_parts(sc, s, &one);
+            sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq)
+        });
+        node_map(p, ls, lih, |s, _| (s.clone() + &sc.eps2).recip());
+    })?;
     Ok(LeftHalf::Subtracted {
         nodes,
         sc: Box::new(sc.clone()),
     })
+}
+
+/// The left half's four tables of node values, one after the other: s = w² and, in table
+/// 1 + `weight_at` of the other three, the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 times `scale`
+/// (every other table a copy of s), which `fill(s, tables)` then turns into the node values.
+fn left_tables<T: Real>(
+    layout: &SinhLayout<'_, T>,
+    scale: &T,
+    weight_at: usize,
+    fill: impl FnOnce(&[T], [&mut [T]; 3]),
+) -> Result<Vec<T>> {
+    let nl = layout.nodes()?;
+    let mut v = vec![T::zero(scale.prec()); 4 * nl];
+    let (ls, rest) = v.split_at_mut(nl);
+    let (a, rest) = rest.split_at_mut(nl);
+    let (b, c) = rest.split_at_mut(nl);
+    let mut tables = [a, b, c];
+    layout.fill(scale, ls, tables[weight_at])?;
+    for (i, t) in tables.iter_mut().enumerate() {
+        if i != weight_at {
+            t.clone_from_slice(ls);
+        }
+    }
+    fill(ls, tables);
+    Ok(v)
 }
 
 impl<T: Real> GradedSetup<T> {
@@ -528,22 +542,23 @@ impl<T: Real> GradedBody<T> {
     ) -> Result<Self> {
         let one = T::one(p);
         let layout = SinhLayout::for_units(rules, units);
-        let nl = layout.nodes()?;
         let left = if subtract {
-            subtracted_left(&layout, sc, nl, p)?
+            subtracted_left(&layout, sc)?
         } else {
-            resolved_left(&layout, sc, nl, p)?
+            resolved_left(&layout, sc)?
         };
-        // Right: σ, f, σ·f.
+        // Right: σ, f, σ·f, σ²·f.
         let (right_s, right_w) = rules.right()?;
         let nr = right_s.len();
-        let mut right = Vec::with_capacity(3 * nr);
+        let mut right = Vec::with_capacity(4 * nr);
         right.extend(right_s.iter().cloned());
         right.extend(right_w.iter().cloned());
         right.extend(right_s.iter().cloned());
+        right.extend(right_s.iter().cloned());
         {
             let (rs, rest) = right.split_at_mut(nr);
-            let (rf, rsf) = rest.split_at_mut(nr);
+            let (rf, rest) = rest.split_at_mut(nr);
+            let (rsf, rssf) = rest.split_at_mut(nr);
             node_map(p, rs, rf, |sg, w| {
                 let pp = one.clone() + sg;
                 let (f1, dd, e) = sc.right_node(
@@ -555,8 +570,9 @@ impl<T: Real> GradedBody<T> {
                 );
                 w.clone() * &sc.two_over_m1 * dd * f1.sqrt_div(&e)
             });
-            // σ·f in place of σ's copy.
+            // σ·f and σ²·f in place of σ's copies.
             node_map(p, rf, rsf, |f, sg| sg.clone() * f);
+            node_map(p, rsf, rssf, |sf, sg| sg.clone() * sf);
         }
         Ok(GradedBody { left, right })
     }
@@ -598,11 +614,11 @@ impl<T: Real> GradedSetup<T> {
         let (left, nl) = (self.body.left.sums(axes, dk, p), self.body.left.nodes());
         // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
         let right = &self.body.right;
-        let nr = right.len() / 3;
-        let [rs, rf, rsf] = [0, 1, 2].map(|i| &right[i * nr..(i + 1) * nr]);
-        let right = power_sums(rs, [rf, rsf, rf, rsf], dk, p, |sg| sg.clone() + &axes.k2);
+        let nr = right.len() / 4;
+        let [rs, rf, rsf, rssf] = four_tables(right);
+        let right = Kernel::Right { k2: &axes.k2 };
+        let ([i1r, i2r], [d1r, d2r, _]) = power_sums(rs, [rf, rsf, rssf], dk, right);
         let [i2l, i1l, d2l, d1l] = left;
-        let [i1r, i2r, d1r, d2r] = right;
         let i1 = i1l + &i1r;
         let i2 = i2l + &i2r;
         let dks = dk.then(|| {
@@ -634,13 +650,16 @@ impl<T: Real> LeftHalf<T> {
         match self {
             // Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2}, Σ s² f u^{−5/2}.
             LeftHalf::Resolved(v) => {
-                let [ls, lf, lsf, lssf] = [0, 1, 2, 3].map(|i| &v[i * nl..(i + 1) * nl]);
-                power_sums(ls, [lf, lsf, lsf, lssf], dk, p, |s| {
-                    one.clone() + axes.k2.clone() * s
-                })
+                let [ls, lf, lsf, lssf] = four_tables(v);
+                let left = Kernel::Left {
+                    k2: &axes.k2,
+                    one: &one,
+                };
+                let ([a, b], [_, c, d]) = power_sums(ls, [lf, lsf, lssf], dk, left);
+                [a, b, c, d]
             }
             LeftHalf::Subtracted { nodes, sc } => {
-                let [ls, lf, lih, lw] = [0, 1, 2, 3].map(|i| &nodes[i * nl..(i + 1) * nl]);
+                let [ls, lf, lih, lw] = four_tables(nodes);
                 // u0 = 1 − k²ε² ≥ 15/16 here.
                 let (a0, e0) = sc.pole_values(&axes.k2);
                 let (eps2, pole_t) = (&sc.eps2, &sc.pole_t);
@@ -650,15 +669,9 @@ impl<T: Real> LeftHalf<T> {
                 let [sr, sa, srd, sb] = chunked_sums(nl, p, scratch, |i0, (t3, t5)| {
                     let m = CHUNK.min(nl - i0);
                     let xs = &ls[i0..i0 + m];
-                    if dk {
-                        for ((s, v3), v5) in xs.iter().zip(t3.iter_mut()).zip(t5.iter_mut()) {
-                            (*v3, *v5) = (one.clone() + axes.k2.clone() * s).pow_m3_2_m5_2();
-                        }
-                    } else {
-                        for (s, v3) in xs.iter().zip(t3.iter_mut()) {
-                            *v3 = (one.clone() + axes.k2.clone() * s).pow_m3_2();
-                        }
-                    }
+                    kernel_powers(xs, &mut t3[..m], &mut t5[..m], dk, &|s: &T| {
+                        one.clone() + axes.k2.clone() * s
+                    });
                     let mut part = [(); 4].map(|_| T::zero(p));
                     for j in 0..m {
                         let (f, ih, w) = (&lf[i0 + j], &lih[i0 + j], &lw[i0 + j]);
@@ -684,9 +697,17 @@ impl<T: Real> LeftHalf<T> {
     }
 }
 
+/// The four tables of node values that `v` holds one after the other.
+fn four_tables<T>(v: &[T]) -> [&[T]; 4] {
+    let n = v.len() / 4;
+    let (a, rest) = v.split_at(n);
+    let (b, rest) = rest.split_at(n);
+    let (c, d) = rest.split_at(n);
+    [a, b, c, &d[..n]]
+}
+
 /// `out[i] = g(x[i], out[i])` for every node, on the cores above
-/// [`crate::numerics::shares::PARALLEL_ABOVE_BITS`]: no dependence between nodes, so that at
-/// `f64` the compiler packs two nodes into one SSE2 square root and division.
+/// [`crate::numerics::shares::PARALLEL_ABOVE_BITS`]: no dependence between nodes.
 #[inline(always)]
 pub(super) fn node_map<T: Real>(
     p: T::Prec,
@@ -704,113 +725,6 @@ pub(super) fn node_map<T: Real>(
             }
         },
     );
-}
-
-/// Nodes a chunk of [`chunked_sums`].
-const CHUNK: usize = 32;
-
-/// Σ a x^{−3/2}, Σ b x^{−3/2} and, with `dk`, Σ c x^{−5/2}, Σ d x^{−5/2} over the nodes, with
-/// x = shift(node) and [a, b, c, d] = `factors` (one square root and one division a node),
-/// summed by [`chunked_sums`], node j of a chunk in partial sum j mod [`LANES`] (an odd last
-/// node in the first), the partial sums added at the end of the chunk: at `f64` the compiler
-/// packs two nodes into one SSE2 square root, division, product and sum, with no buffer.
-#[inline(always)]
-pub(super) fn power_sums<T: Real>(
-    nodes: &[T],
-    factors: [&[T]; 4],
-    dk: bool,
-    p: T::Prec,
-    shift: impl Fn(&T) -> T + Sync,
-) -> [T; 4] {
-    chunked_sums(
-        nodes.len(),
-        p,
-        || (),
-        |i0, _| {
-            let m = CHUNK.min(nodes.len() - i0);
-            let xs = &nodes[i0..i0 + m];
-            let [a, b, c, d] = factors.map(|f| &f[i0..i0 + m]);
-            let mut acc = [(); 4].map(|_| lanes::<T>(p));
-            let add = |acc: &mut [[T; LANES]; 4], l: usize, j: usize| {
-                add_node(acc, l, shift(&xs[j]), [&a[j], &b[j], &c[j], &d[j]], dk);
-            };
-            let whole = m - m % LANES;
-            for j0 in (0..whole).step_by(LANES) {
-                for l in 0..LANES {
-                    add(&mut acc, l, j0 + l);
-                }
-            }
-            for j in whole..m {
-                add(&mut acc, 0, j);
-            }
-            acc.map(|[x, y]| x + &y)
-        },
-    )
-}
-
-/// Node x's terms of [`power_sums`] added to partial sum `l`: f[0] x^{−3/2}, f[1] x^{−3/2}
-/// and, with `dk`, f[2] x^{−5/2}, f[3] x^{−5/2}.
-#[inline(always)]
-fn add_node<T: Real>(acc: &mut [[T; LANES]; 4], l: usize, x: T, f: [&T; 4], dk: bool) {
-    if dk {
-        let (v3, v5) = x.pow_m3_2_m5_2();
-        acc[0][l] += &(f[0].clone() * &v3);
-        acc[1][l] += &(f[1].clone() * &v3);
-        acc[2][l] += &(f[2].clone() * &v5);
-        acc[3][l] += &(f[3].clone() * &v5);
-    } else {
-        let v3 = x.pow_m3_2();
-        acc[0][l] += &(f[0].clone() * &v3);
-        acc[1][l] += &(f[1].clone() * &v3);
-    }
-}
-
-/// The partial sums a quantity of [`power_sums`] keeps.
-const LANES: usize = 2;
-
-fn lanes<T: Real>(p: T::Prec) -> [T; LANES] {
-    [T::zero(p), T::zero(p)]
-}
-
-/// Four sums over `n` nodes from `chunk(i0, scratch)`, the sums of the [`CHUNK`] nodes from i0
-/// (`scratch` from `scratch()`, one a thread), each chunk's sums added to the total in chunk
-/// order (above [`crate::numerics::shares::PARALLEL_ABOVE_BITS`] the chunks' sums are formed
-/// on the cores first: the same bits).
-#[inline(always)]
-fn chunked_sums<T: Real, S>(
-    n: usize,
-    p: T::Prec,
-    scratch: impl Fn() -> S + Sync,
-    chunk: impl Fn(usize, &mut S) -> [T; 4] + Sync,
-) -> [T; 4] {
-    let zero = || [T::zero(p), T::zero(p), T::zero(p), T::zero(p)];
-    let add = |acc: &mut [T; 4], part: [T; 4]| {
-        for (s, q) in acc.iter_mut().zip(part) {
-            *s += &q;
-        }
-    };
-    let mut acc = zero();
-    let count = shares(T::bits(p), n);
-    if count == 1 {
-        let mut s = scratch();
-        let mut i0 = 0;
-        while i0 < n {
-            add(&mut acc, chunk(i0, &mut s));
-            i0 += CHUNK;
-        }
-        return acc;
-    }
-    let mut parts: Vec<[T; 4]> = (0..n.div_ceil(CHUNK)).map(|_| zero()).collect();
-    for_shares(count, &mut parts, &mut [] as &mut [T], &|start, ps, _| {
-        let mut s = scratch();
-        for (c, part) in (start..).zip(ps) {
-            *part = chunk(c * CHUNK, &mut s);
-        }
-    });
-    for part in parts {
-        add(&mut acc, part);
-    }
-    acc
 }
 
 #[cfg(test)]
