@@ -108,5 +108,5 @@ where
 }
 
 #[cfg(test)]
-#[path = "series_tests.rs"]
+#[path = "../../tests/unit/series.rs"]
 mod tests;
