@@ -168,6 +168,13 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+impl Error {
+    /// [`Error::Domain`]: the argument `name`, received as `value`, outside `bound`.
+    pub(crate) fn domain(name: &'static str, value: String, bound: &'static str) -> Error {
+        Error::Domain { name, value, bound }
+    }
+}
+
 #[cfg(test)]
 #[path = "../tests/unit/error.rs"]
 mod tests;

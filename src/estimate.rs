@@ -131,11 +131,11 @@ impl RelError {
     pub fn parse(text: &str) -> Result<RelError> {
         let r = decimal_to_rational(text)?;
         if r <= 0 {
-            return Err(Error::Domain {
-                name: "relative tolerance",
-                value: text.trim().to_string(),
-                bound: "(0, inf)",
-            });
+            return Err(Error::domain(
+                "relative tolerance",
+                text.trim().to_string(),
+                "(0, inf)",
+            ));
         }
         let f = rug::Float::with_val_round(64, &r, rug::float::Round::Up).0;
         let (m, e) = f.to_f64_exp();

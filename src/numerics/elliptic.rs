@@ -44,11 +44,7 @@ use rug::float::Constant;
 use rug::Float;
 
 fn domain<T: Real>(name: &'static str, x: &T, bound: &'static str) -> Error {
-    Error::Domain {
-        name,
-        value: crate::scalar::short(x),
-        bound,
-    }
+    Error::domain(name, crate::scalar::short(x), bound)
 }
 
 /// Guards against a silent ∞/NaN from an intermediate overflow at extreme arguments.
