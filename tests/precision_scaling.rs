@@ -9,7 +9,8 @@ use moving_hertz::numerics::quadrature::{GaussLegendre, MAX_RULE_BITS};
 use moving_hertz::routes::AxisRatio;
 use moving_hertz::scalar::{FieldOps, Mp, MpPrec, Real};
 use moving_hertz::{
-    integrals, solve_ellipse, Error, Evaluator, IntegralOptions, Material, Method, Options,
+    integrals, solve_ellipse, Error, Estimated, Evaluator, IntegralOptions, Integrals, Material,
+    Method, Options,
 };
 
 /// The fixed rule's a-priori bounds in ε ([`IntegralOptions`]): I1, I2 and their k-derivatives.
@@ -51,6 +52,24 @@ fn eps_err(a: &Mp, b: &Mp, bits: u32) -> f64 {
     ((d / &b.0) << (bits as i32 - 1)).to_f64().abs()
 }
 
+/// The larger error (units of 2^(1 − bits)) of I1, I2 and, second, of dI1/dk, dI2/dk of `got`
+/// against `want` (both evaluated with the derivatives).
+fn errors(got: &Integrals<Mp>, want: &Integrals<Mp>, bits: u32) -> (f64, f64) {
+    let dk = |ig: &Integrals<Mp>| {
+        let d = |x: &Option<Estimated<Mp>>| x.clone().expect("dI/dk").value;
+        [d(&ig.di1_dk), d(&ig.di2_dk)]
+    };
+    let worst = |g: [&Mp; 2], w: [&Mp; 2]| eps_err(g[0], w[0], bits).max(eps_err(g[1], w[1], bits));
+    let (gdk, wdk) = (dk(got), dk(want));
+    (
+        worst(
+            [&got.i1.value, &got.i2.value],
+            [&want.i1.value, &want.i2.value],
+        ),
+        worst([&gdk[0], &gdk[1]], [&wdk[0], &wdk[1]]),
+    )
+}
+
 #[test]
 fn fixed_rule_at_1024_bits_matches_the_adaptive_quadrature() {
     let bits = 1024u32;
@@ -59,39 +78,15 @@ fn fixed_rule_at_1024_bits_matches_the_adaptive_quadrature() {
         let (sp, ax) = inputs(nu, mr, k, bits as u64);
         let (spr, axr) = inputs(nu, mr, k, bits as u64 + 64);
         let want = integrals(&spr, &axr.k, &with_dk(Method::Adaptive)).expect("reference");
-        let wdk = [want.di1_dk.expect("dI1/dk"), want.di2_dk.expect("dI2/dk")];
         let got = integrals(&sp, &ax.k, &with_dk(Method::Fixed)).expect("fixed rule");
-        let gdk = [
-            got.di1_dk.clone().expect("dI1/dk"),
-            got.di2_dk.clone().expect("dI2/dk"),
-        ];
-        let e = eps_err(&got.i1.value, &want.i1.value, bits).max(eps_err(
-            &got.i2.value,
-            &want.i2.value,
-            bits,
-        ));
-        let edk = eps_err(&gdk[0].value, &wdk[0].value, bits).max(eps_err(
-            &gdk[1].value,
-            &wdk[1].value,
-            bits,
-        ));
+        let (e, edk) = errors(&got, &want, bits);
         let est = got.i1.error.to_f64() * 2f64.powi(bits as i32 - 1);
         // A k-independent set-up of its own (laid out per octave of k, for a speed built anew)
         // gives the same values.
         let (fresh, _) = inputs(nu, mr, k, bits as u64);
         let ev = Evaluator::new(&fresh, with_dk(Method::Fixed)).expect("set-up");
         let s = ev.at(&ax.k).expect("set-up evaluation");
-        let sdk = [s.di1_dk.expect("dI1/dk"), s.di2_dk.expect("dI2/dk")];
-        let es = eps_err(&s.i1.value, &got.i1.value, bits).max(eps_err(
-            &s.i2.value,
-            &got.i2.value,
-            bits,
-        ));
-        let esdk = eps_err(&sdk[0].value, &gdk[0].value, bits).max(eps_err(
-            &sdk[1].value,
-            &gdk[1].value,
-            bits,
-        ));
+        let (es, esdk) = errors(&s, &got, bits);
         println!(
             "nu={nu} M_R={mr} k={k}: {} nodes, I {e:.2} eps (estimate {est:.0}), dI/dk {edk:.2} \
              eps; set-up against one-shot {es:.2}, {esdk:.2} eps",

@@ -308,8 +308,6 @@ fn report_text<T: Real>(
     solid: Option<&Solid<T>>,
 ) -> Result<(), CliError> {
     let ig = sol.ellipse().integrals();
-    let prec = ig.precision;
-    let mr = sol.problem().speed.mr();
     let mut t = Text::new(a.output.digits);
     let given = match (&a.load, &a.approach) {
         (Some(l), _) => format!("load P = {}", l.text),
@@ -332,11 +330,11 @@ fn report_text<T: Real>(
     ));
     t.line(format!(
         "{}; units as given (SI inputs give SI outputs: m, Pa, N)",
-        ran(prec, a.method, ig.route)
+        ran(ig.precision, a.method, ig.route)
     ));
     if let Some(solid) = solid {
         t.plain("Rayleigh wave speed c_R (m/s)", solid.c_r());
-        t.plain("speed M_R = V/c_R", mr);
+        t.plain("speed M_R = V/c_R", sol.problem().speed.mr());
     }
     t.result("semi-axis along the motion a", sol.a());
     t.result("semi-axis across the motion b", sol.b());

@@ -88,10 +88,18 @@ fn io(e: std::io::Error) -> CliError {
     CliError::Failed(format!("writing study output: {e}"))
 }
 
-/// Writes `rows` under `header` (comma-separated column names) to `out/file`; returns the path.
-fn csv(out: &Path, file: &str, header: &str, rows: &[Vec<String>]) -> Result<PathBuf, CliError> {
+/// Writes the row `row(item)` of each of `items` under `header` (comma-separated column names)
+/// to `out/file`; returns the path.
+fn csv<R>(
+    out: &Path,
+    file: &str,
+    header: &str,
+    items: &[R],
+    row: impl Fn(&R) -> Vec<String>,
+) -> Result<PathBuf, CliError> {
     let path = out.join(file);
-    studies::write_csv(&path, header, rows).map_err(io)?;
+    let rows: Vec<Vec<String>> = items.iter().map(row).collect();
+    studies::write_csv(&path, header, &rows).map_err(io)?;
     Ok(path)
 }
 
@@ -115,9 +123,12 @@ fn study_rayleigh(out: &Path) -> Result<(), CliError> {
         nus.len()
     );
     let rows = rayleigh::run(&nus);
-    let table: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
+    let data = csv(
+        out,
+        "data/rayleigh_stability.csv",
+        "nu,precision,method,err_m1_eps,err_m23_eps",
+        &rows,
+        |r| {
             vec![
                 format!("{:.17e}", r.nu),
                 r.precision.label(),
@@ -125,13 +136,7 @@ fn study_rayleigh(out: &Path) -> Result<(), CliError> {
                 format!("{:.4e}", r.m1),
                 format!("{:.4e}", r.m23),
             ]
-        })
-        .collect();
-    let data = csv(
-        out,
-        "data/rayleigh_stability.csv",
-        "nu,precision,method,err_m1_eps,err_m23_eps",
-        &table,
+        },
     )?;
     charts(
         out,
@@ -161,9 +166,12 @@ fn study_integrals(out: &Path) -> Result<(), CliError> {
     let (nu, k) = ("0.2", "0.3");
     let rows = integrals::run(nu, k, 60.0, |mr| note!("integrals: M_R = {mr} ..."))
         .map_err(CliError::lib)?;
-    let table: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
+    let data = csv(
+        out,
+        INTEGRALS_CSV,
+        "mr,method,precision,rel_error,error_estimate,time_ns,work,failure",
+        &rows,
+        |r| {
             vec![
                 r.mr.clone(),
                 r.method.label().to_string(),
@@ -174,13 +182,7 @@ fn study_integrals(out: &Path) -> Result<(), CliError> {
                 r.work.to_string(),
                 r.failure.clone().unwrap_or_default().replace(',', ";"),
             ]
-        })
-        .collect();
-    let data = csv(
-        out,
-        INTEGRALS_CSV,
-        "mr,method,precision,rel_error,error_estimate,time_ns,work,failure",
-        &table,
+        },
     )?;
     draw_integrals(out)?;
     say!("| M_R | method | precision | rel. error | estimate | time | work |");
@@ -257,9 +259,12 @@ fn study_poisson(out: &Path) -> Result<(), CliError> {
     let bar = Progress::new("poisson", total);
     let pts = poisson::run(|| bar.advance(1)).map_err(CliError::lib)?;
     bar.finish();
-    let table: Vec<Vec<String>> = pts
-        .iter()
-        .map(|q| {
+    let data = csv(
+        out,
+        "data/poisson_study.csv",
+        "nu,M_R,A1_over_B1,e,k,a_for_P_mu_R1_1,a_over_static_a",
+        &pts,
+        |q| {
             vec![
                 format!("{}", q.nu),
                 format!("{}", q.mr),
@@ -269,13 +274,7 @@ fn study_poisson(out: &Path) -> Result<(), CliError> {
                 format!("{:.16e}", q.a),
                 format!("{:.16e}", q.a_rel),
             ]
-        })
-        .collect();
-    let data = csv(
-        out,
-        "data/poisson_study.csv",
-        "nu,M_R,A1_over_B1,e,k,a_for_P_mu_R1_1,a_over_static_a",
-        &table,
+        },
     )?;
     charts(out, poisson::charts(&pts))?;
     say!("Largest deviation from nu = 0.2 (max over A1/B1 in [0.01, 1]), in %: e absolute (x100),");
@@ -317,9 +316,12 @@ fn study_poisson(out: &Path) -> Result<(), CliError> {
 fn study_pareto(out: &Path) -> Result<(), CliError> {
     let rows = pareto::run(&PARETO_METHODS, 200.0, |what| note!("pareto: {what} ..."))
         .map_err(CliError::lib)?;
-    let table: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
+    let data = csv(
+        out,
+        PARETO_CSV,
+        "mr,method,precision,bits,k_rel_error,error_estimate,time_ns,failure",
+        &rows,
+        |r| {
             vec![
                 format!("{}", r.mr),
                 r.method.label().to_string(),
@@ -330,13 +332,7 @@ fn study_pareto(out: &Path) -> Result<(), CliError> {
                 format!("{:.1}", r.time_ns),
                 r.failure.clone().unwrap_or_default().replace(',', ";"),
             ]
-        })
-        .collect();
-    let data = csv(
-        out,
-        PARETO_CSV,
-        "mr,method,precision,bits,k_rel_error,error_estimate,time_ns,failure",
-        &table,
+        },
     )?;
     draw_pareto(out)?;
     say!("| M_R | method | precision | error of k | estimate | time per solve |");
@@ -372,9 +368,12 @@ fn study_series(out: &Path) -> Result<(), CliError> {
         series::targets().len()
     );
     let rows = series::terms_study(&speeds, 20.0).map_err(CliError::lib)?;
-    let table: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
+    let data = csv(
+        out,
+        SERIES_CSV,
+        "M_R,target,precision,terms,terms_estimate,time_ns,error,error_estimate",
+        &rows,
+        |r| {
             vec![
                 format!("{}", r.mr),
                 format!("{:e}", r.target),
@@ -385,13 +384,7 @@ fn study_series(out: &Path) -> Result<(), CliError> {
                 format!("{:.3e}", r.error),
                 format!("{:.3e}", r.error_estimate),
             ]
-        })
-        .collect();
-    let data = csv(
-        out,
-        SERIES_CSV,
-        "M_R,target,precision,terms,terms_estimate,time_ns,error,error_estimate",
-        &table,
+        },
     )?;
     draw_series(out)?;
     let mut md = String::from(
@@ -430,9 +423,12 @@ fn study_series(out: &Path) -> Result<(), CliError> {
 fn study_recursion(out: &Path) -> Result<(), CliError> {
     note!("forward recursion (40) against the exact form at 4 precisions ...");
     let (points, growth) = series::forward_study().map_err(CliError::lib)?;
-    let table: Vec<Vec<String>> = points
-        .iter()
-        .map(|p| {
+    csv(
+        out,
+        "data/recursion_forward.csv",
+        "k2,precision,n,rel_err_L,rel_err_M",
+        &points,
+        |p| {
             vec![
                 format!("{}", p.mc),
                 p.precision.label(),
@@ -440,16 +436,10 @@ fn study_recursion(out: &Path) -> Result<(), CliError> {
                 format!("{:.3e}", p.err_l),
                 format!("{:.3e}", p.err_m),
             ]
-        })
-        .collect();
-    csv(
-        out,
-        "data/recursion_forward.csv",
-        "k2,precision,n,rel_err_L,rel_err_M",
-        &table,
+        },
     )?;
     let (md, gcsv) = growth_table(&growth);
-    csv(out, "data/recursion_growth.csv", "k2,precision,predicted_bits_per_step,measured_L,measured_M,total_loss_n,predicted_total_loss_n,worst_err_eps,n_max", &gcsv)?;
+    csv(out, "data/recursion_growth.csv", "k2,precision,predicted_bits_per_step,measured_L,measured_M,total_loss_n,predicted_total_loss_n,worst_err_eps,n_max", &gcsv, Vec::clone)?;
     charts(out, series::forward_charts(&points, &growth))?;
     write_condition_maps(out)?;
     text(out, "data/recursion_summary.md", &md)?;
@@ -480,22 +470,16 @@ fn growth_table(growth: &[series::Growth]) -> (String, Vec<Vec<String>>) {
         let pred = g
             .predicted_loss_n
             .map_or("—".to_string(), |n| format!("{n:.0}"));
+        // A measured growth rate is shown where growth is predicted.
+        let measured = |x: f64| opt(if g.predicted > 0.0 { x } else { f64::NAN });
         md.push_str(&format!(
             "| {} | {} | {:.4} | {} | {} | {} | {} | {} | {:.2e} | {} |\n",
             g.mc,
             1.0 - g.mc,
             g.predicted,
             g.precision.label(),
-            opt(if g.predicted > 0.0 {
-                g.measured_l
-            } else {
-                f64::NAN
-            }),
-            opt(if g.predicted > 0.0 {
-                g.measured_m
-            } else {
-                f64::NAN
-            }),
+            measured(g.measured_l),
+            measured(g.measured_m),
             loss,
             pred,
             g.worst_eps,
@@ -537,7 +521,13 @@ fn write_condition_maps(out: &Path) -> Result<(), CliError> {
         } else {
             ("e", "data/recursion_bits_lost_e.csv")
         };
-        csv(out, file, &format!("{param},n,bits_L,bits_M"), &rows)?;
+        csv(
+            out,
+            file,
+            &format!("{param},n,bits_L,bits_M"),
+            &rows,
+            Vec::clone,
+        )?;
         charts(out, [series::condition_chart(&map, k_side)])?;
     }
     Ok(())
@@ -553,6 +543,7 @@ fn study_stability(out: &Path) -> Result<(), CliError> {
             &format!("data/{}.csv", m.name),
             "x,y,digits",
             &m.rows(),
+            Vec::clone,
         )?;
         charts(out, [(format!("{}.svg", m.name), m.map.to_svg())])?;
         let all: Vec<f64> = m.map.z.iter().flatten().cloned().collect();

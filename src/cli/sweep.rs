@@ -60,6 +60,13 @@ pub struct SweepArgs {
     /// spaced) or `log:START:STOP:N` (N points, log-spaced).
     #[arg(long, value_name = "LIST", value_parser = axis, required = true)]
     pub ratio: Option<Axis>,
+    #[command(flatten)]
+    pub run: RunArgs,
+}
+
+/// The options both sweeps end with.
+#[derive(clap::Args, Debug)]
+pub struct RunArgs {
     /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
     /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
     /// mpfr256 as the output labels it.
@@ -367,40 +374,34 @@ impl Checked {
     }
 }
 
-/// Refuses a sweep of more than [`POINT_CAP`] points (`total` saturated at `u128::MAX`).
-pub(super) fn check_count(total: u128) -> Result<(), CliError> {
-    if total <= POINT_CAP as u128 {
-        return Ok(());
-    }
-    let total = match total {
-        u128::MAX => "more than 10^38".to_string(),
-        n => n.to_string(),
-    };
-    Err(CliError::Input(format!(
-        "the sweep has {total} points, more than the {POINT_CAP} one run solves"
-    )))
-}
-
-/// The inputs' domains, checked exactly before any work, and the point count against its cap.
-fn check_inputs(a: &SweepArgs) -> Result<(), CliError> {
-    for (axis, checked) in a.axes()? {
+/// The sweep commands' preamble, before any work: each axis's domain checked exactly (in the
+/// order given: the first refusal is reported), the point count against [`POINT_CAP`], then
+/// the global pool bound for that many points. Returns the count.
+pub(super) fn check_and_bind(
+    axes: &[(&Axis, &Checked)],
+    precision: &Precision,
+) -> Result<usize, CliError> {
+    for (axis, checked) in axes {
         checked.check(axis)?;
     }
-    check_count(point_count(a)?)
-}
-
-/// The number of points of the grid: each axis holds at most POINT_CAP values or one per
-/// character typed, so the product is exact in a u128, whatever was typed.
-fn point_count(a: &SweepArgs) -> Result<u128, CliError> {
-    Ok(a.axes()?
-        .iter()
-        .map(|(axis, _)| axis.len() as u128)
-        .product())
+    // Saturating: six axes of up to POINT_CAP values each overflow a u128.
+    let total = (axes.iter()).fold(1u128, |n, (axis, _)| n.saturating_mul(axis.len() as u128));
+    if total > POINT_CAP as u128 {
+        let total = match total {
+            u128::MAX => "more than 10^38".to_string(),
+            n => n.to_string(),
+        };
+        return Err(CliError::Input(format!(
+            "the sweep has {total} points, more than the {POINT_CAP} one run solves"
+        )));
+    }
+    super::bind_global_pool(total as usize, precision);
+    Ok(total as usize)
 }
 
 pub fn run(a: &SweepArgs) -> Result<(), CliError> {
-    check_inputs(a)?;
-    with_precision!(a.precision, T, p => solve_and_write::<T>(a, p))
+    let total = check_and_bind(&a.axes()?, &a.run.precision)?;
+    with_precision!(a.run.precision, T, p => solve_and_write::<T>(a, total, p))
 }
 
 /// The grid's three axes, each value with its text, in the order ν, speed, ratio (ratio
@@ -428,11 +429,6 @@ impl<T: Real> Grid<T> {
         }
     }
 
-    /// The number of points.
-    pub(super) fn len(&self) -> usize {
-        self.nus.len() * self.speeds.len() * self.ratios.len()
-    }
-
     /// The `j`-th point (ratio fastest) and the text of its ν, speed and ratio (their cells,
     /// after [`Grid::cells`]).
     fn point(&self, j: usize) -> (EllipsePoint<T>, [&str; 3]) {
@@ -455,9 +451,9 @@ impl<T: Real> Grid<T> {
 /// the working precision is refused before any work.
 fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
     let [(nu, _), (speed, speed_checked), (ratio, _)] = a.axes()?;
-    let nus = checked_nus(nu, &a.precision, p)?;
-    let speeds = speed_checked.values::<T>(speed, &a.precision, p)?;
-    let ratios = RATIO.values::<T>(ratio, &a.precision, p)?;
+    let nus = checked_nus(nu, &a.run.precision, p)?;
+    let speeds = speed_checked.values::<T>(speed, &a.run.precision, p)?;
+    let ratios = RATIO.values::<T>(ratio, &a.run.precision, p)?;
     let by_gap = std::ptr::eq(speed_checked, &GAP);
     let speeds = (speeds.into_iter())
         .map(|(text, sp)| {
@@ -497,12 +493,14 @@ pub(super) fn checked_nus<T: Real + Send>(
 
 /// Solves the sweep block by block on the pool, writing the rows in input order as they are
 /// solved; exit code 1 when a point failed (its row carries the error).
-fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(), CliError> {
-    let count = usize::try_from(point_count(a)?).unwrap_or(usize::MAX);
-    super::bind_global_pool(count, &a.precision);
-    let grid = points::<T>(a, p)?.cells(a.format);
+fn solve_and_write<T: Real + Send + Sync>(
+    a: &SweepArgs,
+    total: usize,
+    p: T::Prec,
+) -> Result<(), CliError> {
+    let grid = points::<T>(a, p)?.cells(a.run.format);
     let opts = Options::<T> {
-        method: a.method,
+        method: a.run.method,
         ..Default::default()
     };
     let speed_key = if a.speed.gap.is_some() {
@@ -510,37 +508,55 @@ fn solve_and_write<T: Real + Send + Sync>(a: &SweepArgs, p: T::Prec) -> Result<(
     } else {
         "speed"
     };
-    if a.format == Format::Csv {
-        emit(&format!(
-            "nu,{speed_key},ratio,k,k_error,e,e_error,major_axis,route,iterations,error\n"
-        ))?;
-    }
-    let total = grid.len();
-    let bar = Progress::new("sweep", total);
+    let keys = [
+        "nu",
+        speed_key,
+        "ratio",
+        "k",
+        "k_error",
+        "e",
+        "e_error",
+        "major_axis",
+        "route",
+        "iterations",
+        "error",
+    ];
     // The rows of the points `range` and their count of failed points, formed where the block
-    // is solved, which then advances the progress bar.
+    // is solved.
     let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
         let (block, texts): (Vec<_>, Vec<_>) = range.map(|j| grid.point(j)).unzip();
         let mut failed = 0;
         for (r, t) in sweep::ellipses(&block, &opts).iter().zip(&texts) {
             failed += usize::from(r.is_err());
-            push_row(out, a.format, speed_key, t, r);
+            push_row(out, a.run.format, &keys, t, r);
         }
-        bar.advance(texts.len());
         failed
     };
-    write_in_order(total, solve, &bar, &a.precision)
+    write_in_order("sweep", &keys, a.run.format, total, solve, &a.run.precision)
 }
 
-/// Solves the rows of `0..total` block by block on every thread and writes them in order
-/// ([`pipeline::solve_in_order`]); then the bar's end, and [`CliError::Failed`] counting the
-/// points whose rows carry an error.
+/// Writes the CSV header of `keys` (in CSV), then solves the rows of `0..total` block by block
+/// on every thread (`solve` returns the count of failed points among those it wrote) and
+/// writes them in order ([`pipeline::solve_in_order`]) under a progress bar `label`; then
+/// [`CliError::Failed`] counting the points whose rows carry an error.
 pub(super) fn write_in_order(
+    label: &str,
+    keys: &[&str],
+    format: Format,
     total: usize,
     solve: impl Fn(std::ops::Range<usize>, &mut Vec<u8>) -> usize + Sync,
-    bar: &Progress,
-    precision: &impl std::fmt::Display,
+    precision: &Precision,
 ) -> Result<(), CliError> {
+    if format == Format::Csv {
+        emit(&(keys.join(",") + "\n"))?;
+    }
+    let bar = Progress::new(label, total);
+    let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
+        let n = range.len();
+        let failed = solve(range, out);
+        bar.advance(n);
+        failed
+    };
     let failed = pipeline::solve_in_order(total, BLOCK, solve, emit_bytes)?;
     bar.finish();
     if failed > 0 {
@@ -551,17 +567,17 @@ pub(super) fn write_in_order(
     Ok(())
 }
 
-/// Appends one point's line: its inputs' cells `t` ([`Grid::cells`]), then the result's cells
-/// or the error, each number written straight into `out` (no string of its own).
+/// Appends one point's line under `keys`: its inputs' cells `t` ([`Grid::cells`]), then the
+/// result's cells or the error, each number written straight into `out` (no string of its own).
 fn push_row<T: Real>(
     out: &mut Vec<u8>,
     format: Format,
-    speed_key: &str,
+    keys: &[&str; 11],
     t: &[&str; 3],
     r: &moving_hertz::Result<Ellipse<T>>,
 ) {
     let mut row = Row::new(out, format);
-    for (key, cell) in ["nu", speed_key, "ratio"].into_iter().zip(t) {
+    for (key, cell) in keys.iter().zip(t) {
         row.open(key);
         row.out.extend_from_slice(cell.as_bytes());
     }
@@ -574,18 +590,7 @@ fn push_row<T: Real>(
             row.count("iterations", e.iterations());
             row.text("error", "");
         }
-        Err(err) => {
-            let keys = [
-                "k",
-                "k_error",
-                "e",
-                "e_error",
-                "major_axis",
-                "route",
-                "iterations",
-            ];
-            row.failed(&keys, err);
-        }
+        Err(err) => row.failed(&keys[3..10], err),
     }
     row.end();
 }
@@ -738,45 +743,5 @@ fn push_json(out: &mut Vec<u8>, s: &str) {
 }
 
 #[cfg(test)]
-mod tests {
-    /// Each option's domain is read from its text: both ends, whether each is included, `inf`
-    /// as no bound.
-    #[test]
-    fn domains_are_read_from_their_text() {
-        use rug::Rational;
-        let q = |n: i64, d: i64| Rational::from((n, d));
-        for (c, inside, outside) in [
-            (&super::NU, q(1, 2), [q(-1, 1), q(1, 2) + q(1, 1 << 40)]),
-            (&super::SPEED, q(0, 1), [q(1, 1), q(-1, 1 << 40)]),
-            (&super::GAP, q(1, 1), [q(0, 1), q(3, 2)]),
-            (&super::VELOCITY, q(0, 1), [q(-1, 1 << 40), q(-1, 1)]),
-            (&super::LOAD, q(1 << 62, 1), [q(0, 1), q(-1, 3)]),
-        ] {
-            assert!(c.holds(&inside), "{} holds {inside}", c.domain);
-            for x in outside {
-                assert!(!c.holds(&x), "{} refuses {x}", c.domain);
-            }
-        }
-    }
-
-    /// `push_json` writes each string as `serde_json` writes it: plain text, quotes,
-    /// backslashes, control characters and text beyond ASCII.
-    #[test]
-    fn json_strings_are_escaped_as_serde_json_escapes_them() {
-        for s in [
-            "",
-            "0.25",
-            "1.4733513154946710e-2",
-            "a \"quoted\" word",
-            "back\\slash",
-            "tab\there, newline\n, bell\u{7}",
-            "ν = 0.7 is outside (−1, 1/2]",
-            "/",
-        ] {
-            let mut out = Vec::new();
-            super::push_json(&mut out, s);
-            let out = String::from_utf8(out).expect("UTF-8 in, UTF-8 out");
-            assert_eq!(out, serde_json::Value::from(s).to_string(), "{s:?}");
-        }
-    }
-}
+#[path = "../../tests/unit/cli_sweep.rs"]
+mod tests;

@@ -7,10 +7,8 @@
 
 use super::args::{self, Decimal};
 use super::contact::ratio_fits;
-use super::output::emit;
-use super::progress::Progress;
 use super::sweep::{
-    axis, check_count, checked_nus, write_in_order, Axis, Checked, Format, Row, APPROACH, GAP,
+    axis, check_and_bind, checked_nus, write_in_order, Axis, Checked, Row, RunArgs, APPROACH, GAP,
     LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
 };
 use super::CliError;
@@ -18,8 +16,8 @@ use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
 use moving_hertz::sweep;
 use moving_hertz::{
-    with_precision, ContactProblem, ContactSolution, Loading, Material, Method, Moduli, Options,
-    Solid, Speed,
+    with_precision, ContactProblem, ContactSolution, Loading, Material, Moduli, Options, Solid,
+    Speed,
 };
 use rayon::prelude::*;
 
@@ -72,17 +70,8 @@ pub struct ContactSweepArgs {
     /// E/(2(1 + nu)) is formed exactly at each nu.
     #[arg(long, value_name = "LIST", value_parser = axis, allow_hyphen_values = true)]
     pub youngs_modulus: Option<Axis>,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
-    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
-    /// mpfr256 as the output labels it.
-    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
-    pub precision: Precision,
-    /// How the ellipse solves evaluate the integrals: auto, adaptive or fixed.
-    #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::solve_method())]
-    pub method: Method,
-    /// The output: csv (a header line, then one row a point) or jsonl (one JSON object a line).
-    #[arg(long, value_name = "FORMAT", default_value = "csv")]
-    pub format: Format,
+    #[command(flatten)]
+    pub run: RunArgs,
 }
 
 /// How the speeds are given.
@@ -121,27 +110,6 @@ impl ContactSweepArgs {
             _ => Err(required("one of --load and --approach")),
         }
     }
-
-    /// The six axes in the order of the rows (the last fastest): ν, the modulus, the speed,
-    /// R1, R2, the load or approach.
-    fn axes(&self) -> Result<[&Axis; 6], CliError> {
-        Ok([
-            &self.nu,
-            self.moduli()?.0,
-            self.speeds()?.0,
-            &self.r_along,
-            &self.r_across,
-            self.sizes()?.0,
-        ])
-    }
-
-    /// The number of points (saturating: six axes of up to 10^7 values overflow a u128).
-    fn point_count(&self) -> Result<u128, CliError> {
-        let axes = self.axes()?;
-        Ok(axes
-            .iter()
-            .fold(1u128, |n, ax| n.saturating_mul(ax.len() as u128)))
-    }
 }
 
 /// The refusal of a command line without one of a group of options (clap requires each group;
@@ -150,8 +118,7 @@ fn required(what: &str) -> CliError {
     CliError::Input(format!("{what} is required"))
 }
 
-/// The inputs' domains, checked exactly before any work, and the point count against its cap.
-fn check_inputs(a: &ContactSweepArgs) -> Result<(), CliError> {
+pub fn run(a: &ContactSweepArgs) -> Result<(), CliError> {
     let (speeds, _, speed) = a.speeds()?;
     let (sizes, _, size) = a.sizes()?;
     let (moduli, _, modulus) = a.moduli()?;
@@ -163,15 +130,8 @@ fn check_inputs(a: &ContactSweepArgs) -> Result<(), CliError> {
         (sizes, size),
         (moduli, modulus),
     ];
-    for (axis, checked) in checks {
-        checked.check(axis)?;
-    }
-    check_count(a.point_count()?)
-}
-
-pub fn run(a: &ContactSweepArgs) -> Result<(), CliError> {
-    check_inputs(a)?;
-    with_precision!(a.precision, T, p => solve_and_write::<T>(a, p))
+    let total = check_and_bind(&checks, &a.run.precision)?;
+    with_precision!(a.run.precision, T, p => solve_and_write::<T>(a, total, p))
 }
 
 /// A positive axis's values with their text, each rounded once as `contact` rounds it
@@ -215,7 +175,7 @@ struct Grid<T> {
 impl<T: Real + Send + Sync> Grid<T> {
     /// The grid of the command line at precision `p`; every refusal before any work.
     fn new(a: &ContactSweepArgs, p: T::Prec) -> Result<Self, CliError> {
-        let precision = &a.precision;
+        let precision = &a.run.precision;
         let nus = checked_nus::<T>(&a.nu, precision, p)?;
         let (speed_axis, kind, speed) = a.speeds()?;
         let speeds = match kind {
@@ -337,11 +297,6 @@ impl<T: Real + Send + Sync> Grid<T> {
             self.across.len(),
             self.sizes.len(),
         ]
-    }
-
-    /// The number of points.
-    fn len(&self) -> usize {
-        self.lens().iter().product()
     }
 
     /// The indices of point `j` on the six axes (the last fastest).
@@ -548,21 +503,15 @@ impl<T: Real + Send + Sync> Grid<T> {
 /// solved; exit code 1 when a point failed (its row carries the error).
 fn solve_and_write<T: Real + Send + Sync>(
     a: &ContactSweepArgs,
+    total: usize,
     p: T::Prec,
 ) -> Result<(), CliError> {
-    let points = usize::try_from(a.point_count()?).unwrap_or(usize::MAX);
-    super::bind_global_pool(points, &a.precision);
     let grid = Grid::<T>::new(a, p)?;
     let opts = Options::<T> {
-        method: a.method,
+        method: a.run.method,
         ..Default::default()
     };
     let keys = grid.keys();
-    if a.format == Format::Csv {
-        emit(&(keys.join(",") + "\n"))?;
-    }
-    let total = grid.len();
-    let bar = Progress::new("sweep contact", total);
     let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
         let (problems, c_rs): (Vec<_>, Vec<_>) =
             grid.problems(range.clone(), p).into_iter().unzip();
@@ -570,15 +519,21 @@ fn solve_and_write<T: Real + Send + Sync>(
         let solved = sweep::try_contacts(&problems, &opts);
         for ((r, c_r), j) in solved.iter().zip(c_rs).zip(range) {
             failed += usize::from(r.is_err());
-            let mut row = Row::new(out, a.format);
+            let mut row = Row::new(out, a.run.format);
             for (key, text) in keys.iter().zip(grid.texts(j)) {
                 row.text(key, text);
             }
             grid.push_results(&mut row, &keys[6..], r, c_r.as_ref());
             row.end();
         }
-        bar.advance(solved.len());
         failed
     };
-    write_in_order(total, solve, &bar, &a.precision)
+    write_in_order(
+        "sweep contact",
+        &keys,
+        a.run.format,
+        total,
+        solve,
+        &a.run.precision,
+    )
 }

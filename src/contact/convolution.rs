@@ -113,10 +113,12 @@ pub fn displacement<T: Real>(
     let p = x.prec();
     let sc = Scaled::new(sol, x, y);
     let limit = T::one(p).mul_pow2(T::bits(p) as i32 + FAR_LIMIT_LOG2);
-    let refuse = |bound| Error::Domain {
-        name: "field point (x, y)",
-        value: format!("({}, {})", x.to_decimal(), y.to_decimal()),
-        bound,
+    let refuse = |bound| {
+        Error::domain(
+            "field point (x, y)",
+            format!("({}, {})", x.to_decimal(), y.to_decimal()),
+            bound,
+        )
     };
     // hypot does not overflow before its result does (then ∞, refused as too far).
     let rho = sc.x.clone().hypot(&sc.y);

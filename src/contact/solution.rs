@@ -249,11 +249,7 @@ impl<T: Real> ContactProblem<T> {
             ("radius across the motion R2", &self.radius_across, &b1),
         ] {
             if !v.is_finite() || *v < T::min_positive(p) {
-                return Err(Error::Domain {
-                    name,
-                    value: short(r),
-                    bound: "(0, inf) with the curvature 1/(2R) a normal number of the working type (R up to about 2.2e307 at f64, 2.5e291 at double-double)",
-                });
+                return Err(Error::domain(name, short(r), "(0, inf) with the curvature 1/(2R) a normal number of the working type (R up to about 2.2e307 at f64, 2.5e291 at double-double)"));
             }
         }
         let ratio = self.radius_across.clone() / &self.radius_along;
@@ -299,11 +295,7 @@ impl<T: Real> ContactProblem<T> {
 fn fits<T: Real>(name: &'static str, x: Estimated<T>) -> Result<Estimated<T>> {
     let v = &x.value;
     if !(v.is_finite() && *v >= T::min_positive(v.prec())) {
-        return Err(Error::Domain {
-            name,
-            value: short(v),
-            bound: RESCALE,
-        });
+        return Err(Error::domain(name, short(v), RESCALE));
     }
     x.checked(name)
 }

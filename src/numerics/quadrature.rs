@@ -209,11 +209,11 @@ impl<T: Real> GaussLegendre<T> {
     pub fn get(n: usize, p: T::Prec) -> Result<Arc<Self>> {
         check_rule_bits(T::bits(p))?;
         if n == 0 || n > Self::max_nodes(p) {
-            return Err(Error::Domain {
-                name: "Gauss-Legendre node count n",
-                value: n.to_string(),
-                bound: "1 <= n <= max(4096, 2 x bits)",
-            });
+            return Err(Error::domain(
+                "Gauss-Legendre node count n",
+                n.to_string(),
+                "1 <= n <= max(4096, 2 x bits)",
+            ));
         }
         cached(n, p, |r: &Self| r.prec, || Self::compute(n, p))
     }
@@ -348,33 +348,33 @@ pub struct Quadrature<T> {
 /// breakpoints were decreasing (the integral then changes sign).
 fn setup<T: Real>(points: &[T], tol: &T) -> Result<(Vec<(T, T)>, bool)> {
     if points.len() < 2 {
-        return Err(Error::Domain {
-            name: "quadrature breakpoints",
-            value: format!("{} point(s)", points.len()),
-            bound: "at least two points (the endpoints)",
-        });
+        return Err(Error::domain(
+            "quadrature breakpoints",
+            format!("{} point(s)", points.len()),
+            "at least two points (the endpoints)",
+        ));
     }
     for x in points {
         crate::scalar::check_finite("quadrature breakpoint", x)?;
     }
     crate::scalar::check_finite("quadrature tolerance", tol)?;
     if tol.is_negative() {
-        return Err(Error::Domain {
-            name: "quadrature tolerance",
-            value: crate::scalar::short(tol),
-            bound: "tol >= 0",
-        });
+        return Err(Error::domain(
+            "quadrature tolerance",
+            crate::scalar::short(tol),
+            "tol >= 0",
+        ));
     }
     let reversed = points[0] > points[points.len() - 1];
     let monotone = points
         .windows(2)
         .all(|w| if reversed { w[0] > w[1] } else { w[0] < w[1] });
     if !monotone {
-        return Err(Error::Domain {
-            name: "quadrature breakpoints",
-            value: points.iter().map(short).collect::<Vec<_>>().join(", "),
-            bound: "strictly increasing or strictly decreasing",
-        });
+        return Err(Error::domain(
+            "quadrature breakpoints",
+            points.iter().map(short).collect::<Vec<_>>().join(", "),
+            "strictly increasing or strictly decreasing",
+        ));
     }
     let mut iv: Vec<(T, T)> = points
         .windows(2)

@@ -33,11 +33,11 @@ fn rel<T: Real>(x: &T, s: &T) -> T {
 fn check_tol<T: Real>(rel_tol: &T) -> Result<()> {
     crate::scalar::check_finite("series tolerance", rel_tol)?;
     if rel_tol.is_negative() {
-        return Err(Error::Domain {
-            name: "series tolerance",
-            value: crate::scalar::short(rel_tol),
-            bound: "rel_tol >= 0",
-        });
+        return Err(Error::domain(
+            "series tolerance",
+            crate::scalar::short(rel_tol),
+            "rel_tol >= 0",
+        ));
     }
     Ok(())
 }
@@ -108,5 +108,5 @@ where
 }
 
 #[cfg(test)]
-#[path = "series_tests.rs"]
+#[path = "../../tests/unit/series.rs"]
 mod tests;

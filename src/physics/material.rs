@@ -39,11 +39,7 @@ impl<T: Real> Material<T> {
         check_finite(NU_NAME, &nu)?;
         let p = nu.prec();
         if nu <= T::from_i64(-1, p) || nu > T::from_ratio(1, 2, p) {
-            return Err(Error::Domain {
-                name: NU_NAME,
-                value: short(&nu),
-                bound: NU_BOUND,
-            });
+            return Err(Error::domain(NU_NAME, short(&nu), NU_BOUND));
         }
         let one_minus_nu = T::one(p) - &nu;
         let gamma = gamma_of(&nu);
@@ -73,18 +69,10 @@ impl<T: Real> Material<T> {
     /// is the input as given, for error messages.
     pub(crate) fn from_exact(nu: &Rational, text: &str, p: T::Prec) -> Result<Self> {
         if *nu <= -1 || *nu > Rational::from((1, 2)) {
-            return Err(Error::Domain {
-                name: NU_NAME,
-                value: text.trim().to_string(),
-                bound: NU_BOUND,
-            });
+            return Err(Error::domain(NU_NAME, text.trim().to_string(), NU_BOUND));
         }
         let x: T = round_rational(nu, p);
-        Material::new(x.clone()).map_err(|_| Error::Domain {
-            name: NU_NAME,
-            value: rounds_to(text, &x),
-            bound: NU_BOUND,
-        })
+        Material::new(x.clone()).map_err(|_| Error::domain(NU_NAME, rounds_to(text, &x), NU_BOUND))
     }
 
     /// Poisson's ratio ν of the Green's function (4)–(6), as given (rounded once to the working
@@ -136,11 +124,7 @@ impl<T: Real> Material<T> {
         check_finite(MR_NAME, &mr)?;
         let p = mr.prec();
         if mr.is_negative() || mr >= T::one(p) {
-            return Err(Error::Domain {
-                name: MR_NAME,
-                value: short(&mr),
-                bound: MR_BOUND,
-            });
+            return Err(Error::domain(MR_NAME, short(&mr), MR_BOUND));
         }
         let gap = T::one(p) - &mr;
         Speed::new(self, mr, gap)
@@ -153,11 +137,7 @@ impl<T: Real> Material<T> {
         check_finite(GAP_NAME, &gap)?;
         let p = gap.prec();
         if !gap.is_positive() || gap > T::one(p) {
-            return Err(Error::Domain {
-                name: GAP_NAME,
-                value: short(&gap),
-                bound: GAP_BOUND,
-            });
+            return Err(Error::domain(GAP_NAME, short(&gap), GAP_BOUND));
         }
         let mr = T::one(p) - &gap;
         Speed::new(self, mr, gap)
@@ -170,11 +150,7 @@ impl<T: Real> Material<T> {
     pub fn parse_speed(&self, mr: &str) -> Result<Speed<T>> {
         let r = decimal_to_rational(mr)?;
         if !(0..1).contains(&r) {
-            return Err(Error::Domain {
-                name: MR_NAME,
-                value: mr.trim().to_string(),
-                bound: MR_BOUND,
-            });
+            return Err(Error::domain(MR_NAME, mr.trim().to_string(), MR_BOUND));
         }
         self.speed_from_exact(&r, mr)
     }
@@ -185,11 +161,7 @@ impl<T: Real> Material<T> {
     pub fn parse_gap(&self, gap: &str) -> Result<Speed<T>> {
         let g = decimal_to_rational(gap)?;
         if g <= 0 || g > 1 {
-            return Err(Error::Domain {
-                name: GAP_NAME,
-                value: gap.trim().to_string(),
-                bound: GAP_BOUND,
-            });
+            return Err(Error::domain(GAP_NAME, gap.trim().to_string(), GAP_BOUND));
         }
         self.speed_from_exact(&(Rational::from(1) - g), gap)
     }
@@ -320,11 +292,11 @@ impl<T: Real> Speed<T> {
         let mr2 = mr.square();
         let one_minus_mr2 = gap.clone() * (one + &mr);
         if one_minus_mr2 < T::min_positive(p) {
-            return Err(Error::Domain {
-                name: GAP_NAME,
-                value: short(&gap),
-                bound: "1 - M_R^2 a normal number of the working precision",
-            });
+            return Err(Error::domain(
+                GAP_NAME,
+                short(&gap),
+                "1 - M_R^2 a normal number of the working precision",
+            ));
         }
         let m2sq = mat.m1().clone() * &mr2;
         let m1sq = mat.gamma().clone() * &m2sq;

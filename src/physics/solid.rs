@@ -160,11 +160,7 @@ impl Given {
         if self.exact > 0 {
             return Ok(self);
         }
-        Err(Error::Domain {
-            name: self.name,
-            value: self.text,
-            bound: POSITIVE,
-        })
+        Err(Error::domain(self.name, self.text, POSITIVE))
     }
 
     /// Rounded once to precision `p`; refused when that is not a normal number there.
@@ -192,11 +188,11 @@ fn round_normal<T: Real>(q: &Rational, name: &'static str, text: &str, p: T::Pre
     } else {
         "overflows"
     };
-    Err(Error::Domain {
+    Err(Error::domain(
         name,
-        value: format!("{} ({why} {})", text, Precision::of::<T>(p)),
-        bound: "a normal number of the working precision (rescale, or use a wider precision)",
-    })
+        format!("{} ({why} {})", text, Precision::of::<T>(p)),
+        "a normal number of the working precision (rescale, or use a wider precision)",
+    ))
 }
 
 impl<T: Real> Solid<T> {
@@ -279,11 +275,11 @@ impl<T: Real> Solid<T> {
         let c2_squared = c2.exact.clone().square();
         let gamma = c2_squared.clone() / c1.exact.clone().square();
         if gamma >= Rational::from((3, 4)) {
-            return Err(Error::Domain {
-                name: "wave-speed ratio c2/c1",
-                value: format!("{}/{}", c2.text, c1.text),
-                bound: "(0, sqrt(3)/2)",
-            });
+            return Err(Error::domain(
+                "wave-speed ratio c2/c1",
+                format!("{}/{}", c2.text, c1.text),
+                "(0, sqrt(3)/2)",
+            ));
         }
         let nu_exact = nu_of_gamma(&gamma);
         let text = format!(
@@ -386,11 +382,7 @@ impl<T: Real> Solid<T> {
     /// cancellation leaves [`GUARD`] bits above the working precision (at most three passes).
     fn velocity(&self, v: &Given) -> Result<Speed<T>> {
         if v.exact < 0 {
-            return Err(Error::Domain {
-                name: V_NAME,
-                value: v.text.clone(),
-                bound: V_BOUND,
-            });
+            return Err(Error::domain(V_NAME, v.text.clone(), V_BOUND));
         }
         let p = self.material.nu().prec();
         let base = T::bits(p) + GUARD;
@@ -436,11 +428,11 @@ impl<T: Real> Solid<T> {
             }
             return Speed::new(&self.material, T::from_float(&mr, p), gap_t);
         }
-        Err(Error::Domain {
-            name: V_NAME,
-            value: v.text.clone(),
-            bound: "a velocity whose gap 1 - V/c_R is resolved within the supported precision",
-        })
+        Err(Error::domain(
+            V_NAME,
+            v.text.clone(),
+            "a velocity whose gap 1 - V/c_R is resolved within the supported precision",
+        ))
     }
 
     /// The refusal of a velocity at or above c_R, stating c_R (rounded down, so that the

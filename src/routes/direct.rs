@@ -496,11 +496,11 @@ pub fn s_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T
     let p = speed.mr().prec();
     let one = T::one(p);
     if axes.k > one {
-        return Err(Error::Domain {
-            name: "axis ratio k for the closed form (53)",
-            value: short(&axes.k),
-            bound: "(0, 1]",
-        });
+        return Err(Error::domain(
+            "axis ratio k for the closed form (53)",
+            short(&axes.k),
+            "(0, 1]",
+        ));
     }
     let eps2 = speed.one_minus_mr2().clone();
     let q = one - axes.k2.clone() * &eps2;

@@ -315,11 +315,7 @@ pub(crate) fn in_fixed_range<T: Real>(k: &T) -> bool {
 }
 
 fn domain<T: Real>(axes: &AxisRatio<T>, bound: &'static str) -> Error {
-    Error::Domain {
-        name: "axis ratio k for the method",
-        value: short(&axes.k),
-        bound,
-    }
+    Error::domain("axis ratio k for the method", short(&axes.k), bound)
 }
 
 /// What each method can give: the series and the adaptive subtracted route no derivatives

@@ -239,11 +239,11 @@ impl<T> Moments<T> {
 fn check_inputs<T: Real>(mc: &T, n_max: usize) -> Result<()> {
     check_positive("k^2 (moments)", mc)?;
     if n_max > MAX_INDEX {
-        return Err(Error::Domain {
-            name: "n_max (moments)",
-            value: n_max.to_string(),
-            bound: "n_max <= 1000000",
-        });
+        return Err(Error::domain(
+            "n_max (moments)",
+            n_max.to_string(),
+            "n_max <= 1000000",
+        ));
     }
     Ok(())
 }
@@ -399,11 +399,11 @@ pub(crate) fn table_at<W: Real>(mc: &W, top: usize, method: MomentMethod) -> Res
     match method {
         MomentMethod::Forward => {
             if e2.is_zero() {
-                return Err(Error::Domain {
-                    name: "e^2 = 1 - k^2 (forward recursion (40) divides by e^2)",
-                    value: "0".into(),
-                    bound: "e^2 != 0",
-                });
+                return Err(Error::domain(
+                    "e^2 = 1 - k^2 (forward recursion (40) divides by e^2)",
+                    "0".into(),
+                    "e^2 != 0",
+                ));
             }
             let (b, d) = ellipbd_mc(mc)?;
             m[0] = b.clone() + &d;
@@ -523,11 +523,11 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
         MomentMethod::BackwardGauss => {
             let a = e2.clone().abs();
             if a >= one {
-                return Err(Error::Domain {
-                    name: "e^2 (hypergeometric series in e^2)",
-                    value: short(e2),
-                    bound: "|e^2| < 1",
-                });
+                return Err(Error::domain(
+                    "e^2 (hypergeometric series in e^2)",
+                    short(e2),
+                    "|e^2| < 1",
+                ));
             }
             if gauss_terms(e2.to_f64(), n, bits) as usize >= MAX_TOP_TERMS {
                 check_top_terms(a.to_f64(), bits)?;
@@ -550,11 +550,11 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
         }
         MomentMethod::BackwardPfaff => {
             if e2.clone().mul_i64(2) >= one {
-                return Err(Error::Domain {
-                    name: "e^2 (cos^2 expansion of L_n, M_n)",
-                    value: short(e2),
-                    bound: "e^2 < 1/2",
-                });
+                return Err(Error::domain(
+                    "e^2 (cos^2 expansion of L_n, M_n)",
+                    short(e2),
+                    "e^2 < 1/2",
+                ));
             }
             let t = -(e2.clone() / mc);
             let a = t.clone().abs();
@@ -584,11 +584,11 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
             let l = wn * sl / (k * mc);
             Ok((m, l, jm.max(jl)))
         }
-        MomentMethod::Forward => Err(Error::Domain {
-            name: "moment method (top values)",
-            value: "forward".into(),
-            bound: "a backward method",
-        }),
+        MomentMethod::Forward => Err(Error::domain(
+            "moment method (top values)",
+            "forward".into(),
+            "a backward method",
+        )),
     }
 }
 
@@ -627,11 +627,11 @@ impl<F: FieldOps> KeForm<F> {
         let p = mc.prec();
         let e2 = F::one(p) - &mc;
         if e2.is_zero() {
-            return Err(Error::Domain {
-                name: "e^2 (exact form of (40))",
-                value: "0".into(),
-                bound: "e^2 != 0",
-            });
+            return Err(Error::domain(
+                "e^2 (exact form of (40))",
+                "0".into(),
+                "e^2 != 0",
+            ));
         }
         let inv_e2 = e2.clone().recip();
         let (z, o) = (F::zero(p), F::one(p));
@@ -715,28 +715,5 @@ fn log2_of<T: Real>(x: &T) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::scalar::{Field, Mp, MpPrec};
-
-    /// M_50, L_50 by their hypergeometric series alone (Gauss for |e²| ≤ 3/4, Pfaff for
-    /// e² < −3/4) agree with the table of [`moments`] (top values above n, then the recursion).
-    #[test]
-    fn single_index_series_agree_with_the_table() {
-        let p = MpPrec::new(128).expect("precision");
-        for mc_s in ["0.75", "3", "0.3"] {
-            let mc = Mp::parse(mc_s, p).expect("mc");
-            let tab = moments(&mc, 50).expect("table");
-            let e2 = Mp::one(p) - &mc;
-            let method = if e2.clone().abs().mul_i64(4) <= Mp::from_i64(3, p) {
-                MomentMethod::BackwardGauss
-            } else {
-                MomentMethod::BackwardPfaff
-            };
-            let (m, l, _) = top_values(&e2, &mc, 50, method).expect("series");
-            let rel = |a: &Mp, b: &Mp| ((a.clone() - b).abs() / &b.clone().abs()).to_f64();
-            let e = rel(&m, &tab.m()[50]).max(rel(&l, &tab.l()[50])) / Mp::epsilon(p).to_f64();
-            assert!(e <= 16.0, "k2 = {mc_s}: {e}");
-        }
-    }
-}
+#[path = "../../tests/unit/moments.rs"]
+mod tests;

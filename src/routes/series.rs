@@ -104,22 +104,18 @@ pub fn integrals<T: Real>(
         Some(t) => {
             crate::scalar::check_finite("series tolerance", t)?;
             if t.is_negative() {
-                return Err(Error::Domain {
-                    name: "series tolerance",
-                    value: short(t),
-                    bound: "rel_tol >= 0",
-                });
+                return Err(Error::domain("series tolerance", short(t), "rel_tol >= 0"));
             }
             t.clone().max_of(eps.clone().div_i64(8))
         }
         None => eps.clone().div_i64(4),
     };
     if opts.max_terms > MAX_INDEX || opts.max_terms == 0 {
-        return Err(Error::Domain {
-            name: "max_terms (series route)",
-            value: opts.max_terms.to_string(),
-            bound: "1 <= max_terms <= 1000000",
-        });
+        return Err(Error::domain(
+            "max_terms (series route)",
+            opts.max_terms.to_string(),
+            "1 <= max_terms <= 1000000",
+        ));
     }
     let q = speed.mr2().to_f64();
     let est = terms_for_ln_tol(q, RelError::of(&tol).log2() * std::f64::consts::LN_2);

@@ -505,11 +505,7 @@ pub fn check_positive<T: Real>(name: &'static str, x: &T) -> Result<()> {
     if x.is_positive() {
         Ok(())
     } else {
-        Err(Error::Domain {
-            name,
-            value: short(x),
-            bound: "(0, inf)",
-        })
+        Err(Error::domain(name, short(x), "(0, inf)"))
     }
 }
 

@@ -46,11 +46,7 @@ pub const MAX_MOMENT_INDEX: usize = 150;
 
 fn check_index(what: &'static str, n: usize, max: usize, bound: &'static str) -> Result<()> {
     if n == 0 || n > max {
-        return Err(Error::Domain {
-            name: what,
-            value: n.to_string(),
-            bound,
-        });
+        return Err(Error::domain(what, n.to_string(), bound));
     }
     Ok(())
 }
@@ -112,22 +108,22 @@ pub fn ke_condition(forms: &[KeTerm<RatFunc>], e2: &Rational) -> Result<Vec<(f64
     let p = MpPrec::new(128)?;
     let mc_q = Rational::from(1) - e2;
     if mc_q.cmp0() != std::cmp::Ordering::Greater || e2.cmp0() == std::cmp::Ordering::Equal {
-        return Err(Error::Domain {
-            name: "e^2 (condition of the K, E basis)",
-            value: e2.to_string(),
-            bound: "e^2 < 1, e^2 != 0",
-        });
+        return Err(Error::domain(
+            "e^2 (condition of the K, E basis)",
+            e2.to_string(),
+            "e^2 < 1, e^2 != 0",
+        ));
     }
     let mc = Mp::from_float(&Float::with_val(256, &mc_q), p);
     let n = forms.len().saturating_sub(1);
     let mom = moments(&mc, n)?;
     let (k, e) = ellipke_mc(&mc)?;
     let at = |f: &RatFunc| -> Result<Mp> {
-        let v = f.eval(e2).ok_or(Error::Domain {
-            name: "e^2 (condition of the K, E basis)",
-            value: e2.to_string(),
-            bound: "e^2 != 0",
-        })?;
+        let v = f.eval(e2).ok_or(Error::domain(
+            "e^2 (condition of the K, E basis)",
+            e2.to_string(),
+            "e^2 != 0",
+        ))?;
         Ok(Mp::from_float(&Float::with_val(256, &v), p).abs())
     };
     let mut out = Vec::with_capacity(forms.len());
