@@ -39,7 +39,7 @@
 //!
 //! **J0 from I1 and I2.** The integrands of I1 and I2 weighted by k² and 1 add up to J0's, so
 //! J0 = k² I1 + I2 at the solved k, from the integrals the ellipse solve returns; its bound, as
-//! a value at the exact root, is the larger of theirs plus 4ε (both are positive) plus k's, or
+//! a value at the exact root, is the larger of theirs compounded with three roundings (both are positive) plus k's, or
 //! the correlated bound plus its rounding (1 + 2w1 operations, w1 = k² I1/J0) where that is
 //! smaller. `tests/unit/direct.rs` checks it against an independent quadrature of J0 alone
 //! (both of its peaks in closed form).

@@ -46,7 +46,7 @@ pub struct IntegralOptions {
     /// Also ∂I1/∂k and ∂I2/∂k (differentiated under the integral sign on the same nodes).
     pub derivatives: bool,
     /// Also J0 of (32) (the approach integral): with the derivatives by the adaptive route,
-    /// otherwise as k² I1 + I2 from the route's I1, I2, with their bound plus 4ε.
+    /// otherwise as k² I1 + I2 from the route's I1, I2, with their bound and three roundings.
     pub j0: bool,
 }
 
@@ -140,7 +140,7 @@ impl<T: Real> Evaluator<T> {
     }
 
     /// J0 of (32) added to a route's result that lacks it, when asked for: k² I1 + I2 from the
-    /// route's own I1, I2 ([`j0_from_pair`]: their bound plus 4ε), which joins the
+    /// route's own I1, I2 ([`j0_from_pair`]: their bound and three roundings), which joins the
     /// k-derivatives' bound (`extra_error`, the larger of the two). Dropped when not asked for
     /// (the adaptive route computes it with the derivatives, on its own nodes).
     fn with_j0(&self, mut r: Evaluation<T>, axes: &AxisRatio<T>) -> Evaluation<T> {

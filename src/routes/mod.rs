@@ -403,7 +403,8 @@ pub(crate) const BEYOND_EXPONENT_RANGE: &str = "a k whose integrals stay within 
 /// positive and J0's relative error is at most the larger q of theirs compounded with the three
 /// roundings (k·I1, k·(k·I1), the sum; k is exact): (1 + q)(1 + γ3) − 1 = q + γ3 + q·γ3 with
 /// γ3 = [`RelError::rounding`] of 3 operations (1.5ε at `f64` and MPFR, 4.9ε at double-double);
-/// a pair that is not positive gets [`RelError::INFINITE`] (an error at the public boundary). Tested against an independent quadrature of J0 alone (both peaks in closed form),
+/// a pair that is not positive gets [`RelError::INFINITE`] (an error at the public boundary).
+/// Tested against an independent quadrature of J0 alone (both peaks in closed form),
 /// the adaptive route's own J0 and mpmath (`tests/unit/direct.rs`, `tests/identities.rs`).
 pub(crate) fn j0_from_pair<T: Real>(k: &T, i1: &T, i2: &T, pair_error: RelError) -> Estimated<T> {
     let value = k.clone() * &(k.clone() * i1) + i2;
