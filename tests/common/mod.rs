@@ -295,6 +295,35 @@ impl MpmathCase {
     }
 }
 
+/// A route's (I1, I2) against the mpmath rows whose axis ratio `keep` selects (inputs parsed at
+/// `p`): each within `bound` ε of the working precision, `count` rows in all.
+pub fn check_mpmath_rows<T: Real>(
+    label: &str,
+    p: T::Prec,
+    keep: impl Fn(&T) -> bool,
+    (bound, count): (f64, usize),
+    route: impl Fn(&Speed<T>, &AxisRatio<T>) -> (T, T),
+) {
+    let mut n = 0;
+    for c in mpmath_cases() {
+        let (sp, ax) = c.inputs::<T>(p);
+        if !keep(&ax.k) {
+            continue;
+        }
+        let (i1, i2) = route(&sp, &ax);
+        let e = c.error_eps(&i1, &i2);
+        assert!(
+            e <= bound,
+            "{label} nu={} M_R={} k={}: {e:.1} eps",
+            c.nu,
+            c.mr,
+            c.k
+        );
+        n += 1;
+    }
+    assert_eq!(n, count, "{label}: rows checked");
+}
+
 // ---------------------------------------------------------------------------------------------
 // Sweeps
 

@@ -12,7 +12,7 @@
 use crate::common;
 
 use common::{
-    assert_no_mixing, check_adaptive_row, integral_cases, integral_inputs, mp, mpmath_cases,
+    assert_no_mixing, check_adaptive_row, check_mpmath_rows, integral_cases, integral_inputs, mp,
     rel_eps, write_adaptive_reference, IntegralCase,
 };
 use moving_hertz::physics::Material;
@@ -170,24 +170,16 @@ fn setup_agrees_for_many_k() {
 /// Against the independent mpmath values (inputs given as decimals, parsed at each precision),
 /// the rows the route covers (k ≤ 1).
 fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
-    let mut n = 0;
-    for c in mpmath_cases() {
-        let (sp, ax) = c.inputs::<T>(p);
-        if ax.k > T::one(p) {
-            continue;
-        }
-        let r = fixed(&sp, &ax, false).expect("fast route");
-        let e = c.error_eps(&r.i1, &r.i2);
-        assert!(
-            e <= 16.0,
-            "{label} nu={} M_R={} k={}: {e:.1} eps",
-            c.nu,
-            c.mr,
-            c.k
-        );
-        n += 1;
-    }
-    assert_eq!(n, 10);
+    check_mpmath_rows::<T>(
+        label,
+        p,
+        |k| *k <= T::one(p),
+        (16.0, 10),
+        |sp, ax| {
+            let r = fixed(sp, ax, false).expect("fast route");
+            (r.i1, r.i2)
+        },
+    );
 }
 
 #[test]

@@ -13,7 +13,7 @@
 use crate::common;
 
 use common::{
-    check_adaptive_row, integral_cases, integral_inputs, mp, mpmath_cases, rel_eps,
+    check_adaptive_row, check_mpmath_rows, integral_cases, integral_inputs, mp, rel_eps,
     write_adaptive_reference, IntegralCase,
 };
 use moving_hertz::prelude::*;
@@ -142,24 +142,16 @@ fn a_layout_serves_k_up_to_five_quarters_of_its_k_ref() {
 
 /// The independent mpmath values with k > 1 (decimal inputs parsed at each precision).
 fn against_mpmath<T: Real>(p: T::Prec, label: &str) {
-    let mut n = 0;
-    for c in mpmath_cases() {
-        let (sp, ax) = c.inputs::<T>(p);
-        if ax.k <= T::one(p) {
-            continue;
-        }
-        let r = graded_at(&sp, &ax, false).expect("graded");
-        let e = c.error_eps(&r.i1, &r.i2);
-        assert!(
-            e <= 32.0,
-            "{label} nu={} M_R={} k={}: {e:.1} eps",
-            c.nu,
-            c.mr,
-            c.k
-        );
-        n += 1;
-    }
-    assert_eq!(n, 2);
+    check_mpmath_rows::<T>(
+        label,
+        p,
+        |k| *k > T::one(p),
+        (32.0, 2),
+        |sp, ax| {
+            let r = graded_at(sp, ax, false).expect("graded");
+            (r.i1, r.i2)
+        },
+    );
 }
 
 #[test]
