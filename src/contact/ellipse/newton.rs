@@ -170,6 +170,10 @@ impl<'a, T: Real> Newton<'a, T> {
             let (f, df, ci) = residual(self.evaluator, self.ratio, &lam, self.chord.as_ref())?;
             self.spent += 1;
             if f.is_zero() {
+                // The root itself: its derivatives (if evaluated) go to the stage above.
+                if self.chord.is_none() {
+                    self.hand_on(&lam, &df, &ci);
+                }
                 let shape = finish(lam.clone(), &lam, ci, self.ratio, T::zero(p), self.spent);
                 return Ok((shape, self.fresh_slope));
             }

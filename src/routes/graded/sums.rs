@@ -46,8 +46,8 @@ pub(crate) fn dot<T: Real>(w: &[T], x: &[T]) -> T {
 fn dot_wide<T: Real>(w: &[T], x: &[T]) -> T {
     let n = w.len();
     if n <= 8 {
-        let mut acc = T::zero(w[0].prec());
-        for (a, b) in w.iter().zip(x) {
+        let mut acc = w[0].clone() * &x[0];
+        for (a, b) in w[1..].iter().zip(&x[1..]) {
             acc += a.clone() * b;
         }
         acc
@@ -131,31 +131,55 @@ pub(crate) fn power_sums<T: Real>(
     let p = match kernel {
         Kernel::Left { k2, .. } | Kernel::Right { k2 } => k2.prec(),
     };
-    let table = || -> [T; CHUNK] { std::array::from_fn(|_| T::zero(p)) };
-    let [t0, t1, s0, s1, s2] = chunked_sums(nodes.len(), p, table, |i0, v| {
-        let m = CHUNK.min(nodes.len() - i0);
-        let v = &mut v[..m];
-        let xs = &nodes[i0..i0 + m];
-        let range = i0..i0 + m;
-        let (g0, g1, g2) = (&g[0][range.clone()], &g[1][range.clone()], &g[2][range]);
-        let zero = || T::zero(p);
-        if dk {
-            for (x, y) in xs.iter().zip(v.iter_mut()) {
-                *y = kernel.at(x).pow_m3_2_m5_2().1;
+    let n = nodes.len();
+    let [t0, t1, s0, s1, s2] = if std::mem::needs_drop::<T>() {
+        // Values that own memory (MPFR): the table filled afresh each chunk, with no zeros
+        // allocated to be overwritten.
+        chunked_sums(n, p, Vec::new, |i0, v: &mut Vec<T>| {
+            v.clear();
+            v.extend(nodes[i0..n.min(i0 + CHUNK)].iter().map(|x| match dk {
+                true => kernel.at(x).pow_m3_2_m5_2().1,
+                false => kernel.at(x).pow_m3_2(),
+            }));
+            chunk_dots(g, i0, v, dk)
+        })
+    } else {
+        let table = || -> [T; CHUNK] { std::array::from_fn(|_| T::zero(p)) };
+        chunked_sums(n, p, table, |i0, v| {
+            let m = CHUNK.min(n - i0);
+            let v = &mut v[..m];
+            let xs = &nodes[i0..i0 + m];
+            if dk {
+                for (x, y) in xs.iter().zip(v.iter_mut()) {
+                    *y = kernel.at(x).pow_m3_2_m5_2().1;
+                }
+            } else {
+                for (x, y) in xs.iter().zip(v.iter_mut()) {
+                    *y = kernel.at(x).pow_m3_2();
+                }
             }
-            [zero(), zero(), dot(g0, v), dot(g1, v), dot(g2, v)]
-        } else {
-            for (x, y) in xs.iter().zip(v.iter_mut()) {
-                *y = kernel.at(x).pow_m3_2();
-            }
-            [dot(g0, v), dot(g1, v), zero(), zero(), zero()]
-        }
-    });
+            chunk_dots(g, i0, v, dk)
+        })
+    };
     if !dk {
         return ([t0, t1], [s0, s1, s2]);
     }
     let w3 = [kernel.w3(&s0, &s1), kernel.w3(&s1, &s2)];
     (w3, [s0, s1, s2])
+}
+
+/// The sums of [`power_sums`] over the chunk from node i0, from its kernel powers `v`
+/// (x^{−5/2} with `dk`, else x^{−3/2}): [Σ g0 v, Σ g1 v, 0, 0, 0] or [0, 0, Σ g0 v, Σ g1 v, Σ g2 v].
+#[inline(always)]
+fn chunk_dots<T: Real>(g: [&[T]; 3], i0: usize, v: &[T], dk: bool) -> [T; 5] {
+    let range = i0..i0 + v.len();
+    let (g0, g1, g2) = (&g[0][range.clone()], &g[1][range.clone()], &g[2][range]);
+    let zero = || T::zero(v[0].prec());
+    if dk {
+        [zero(), zero(), dot(g0, v), dot(g1, v), dot(g2, v)]
+    } else {
+        [dot(g0, v), dot(g1, v), zero(), zero(), zero()]
+    }
 }
 
 /// `N` sums over `n` nodes from `chunk(i0, scratch)`, the sums of the [`CHUNK`] nodes from i0
