@@ -405,7 +405,7 @@ fn study_series(out: &Path) -> Result<(), CliError> {
     draw_series(out)?;
     let columns = "M_R|target|precision|terms|estimate|time|error reached|error estimate";
     let md = md_table(
-        &columns,
+        columns,
         rows.iter().map(|r| {
             let time = if r.time_ns.is_nan() {
                 "—".to_string()
