@@ -116,6 +116,42 @@ fn charts(out: &Path, charts: impl IntoIterator<Item = (String, String)>) -> Res
     Ok(())
 }
 
+/// A Markdown table: the header of the `|`-separated `columns`, its rule and a line per row of
+/// cells (an empty cell is left blank).
+fn md_table(columns: &str, rows: impl IntoIterator<Item = Vec<String>>) -> String {
+    let line = |cells: &[&str]| {
+        let cells = cells.iter().map(|c| {
+            if c.is_empty() {
+                " |".into()
+            } else {
+                format!(" {c} |")
+            }
+        });
+        format!("|{}\n", cells.collect::<String>())
+    };
+    let header: Vec<&str> = columns.split('|').collect();
+    let mut md = line(&header) + &format!("|{}\n", "---|".repeat(header.len()));
+    for row in rows {
+        md += &line(&row.iter().map(String::as_str).collect::<Vec<_>>());
+    }
+    md
+}
+
+/// A timing study's row in its Markdown table: the `lead` cells, then `cells` or, where the run
+/// failed, the failure and blank cells to the table's `width`.
+fn timed_row(lead: [String; 3], failure: &Option<String>, cells: Vec<String>) -> Vec<String> {
+    let width = lead.len() + cells.len();
+    let mut row = lead.to_vec();
+    match failure {
+        None => row.extend(cells),
+        Some(f) => {
+            row.push(format!("failed: {f}"));
+            row.resize(width, String::new());
+        }
+    }
+    row
+}
+
 fn study_rayleigh(out: &Path) -> Result<(), CliError> {
     let nus = rayleigh::nu_grid();
     note!(
@@ -144,14 +180,11 @@ fn study_rayleigh(out: &Path) -> Result<(), CliError> {
             .into_iter()
             .chain(rayleigh::closeups(&rows)),
     )?;
-    let mut md = String::from("| precision | method |");
-    for (r, _) in rayleigh::REGIONS {
-        md.push_str(&format!(" {r}: m1 / m2,m3 (ε) |"));
-    }
-    md.push_str("\n|---|---|---|---|---|---|\n");
-    for row in rayleigh::summary(&rows) {
-        md.push_str(&format!("| {} |\n", row.join(" | ")));
-    }
+    let regions = rayleigh::REGIONS.map(|(r, _)| format!("|{r}: m1 / m2,m3 (ε)"));
+    let md = md_table(
+        &format!("precision|method{}", regions.concat()),
+        rayleigh::summary(&rows).into_iter().map(Vec::from),
+    );
     text(out, "data/rayleigh_summary.md", &md)?;
     say!("{md}");
     say!(
@@ -185,29 +218,18 @@ fn study_integrals(out: &Path) -> Result<(), CliError> {
         },
     )?;
     draw_integrals(out)?;
-    say!("| M_R | method | precision | rel. error | estimate | time | work |");
-    say!("|---|---|---|---|---|---|---|");
-    for r in &rows {
-        match &r.failure {
-            None => say!(
-                "| {} | {} | {} | {:.1e} | {:.1e} | {:.3} µs | {} |",
-                r.mr,
-                r.method.label(),
-                r.precision.label(),
-                r.error,
-                r.estimate,
-                r.time_ns / 1e3,
-                r.work
-            ),
-            Some(f) => say!(
-                "| {} | {} | {} | failed: {} | | | |",
-                r.mr,
-                r.method.label(),
-                r.precision.label(),
-                f
-            ),
-        }
-    }
+    let columns = "M_R|method|precision|rel. error|estimate|time|work";
+    let table = rows.iter().map(|r| {
+        let lead = [r.mr.clone(), r.method.label().into(), r.precision.label()];
+        let cells = vec![
+            format!("{:.1e}", r.error),
+            format!("{:.1e}", r.estimate),
+            format!("{:.3} µs", r.time_ns / 1e3),
+            r.work.to_string(),
+        ];
+        timed_row(lead, &r.failure, cells)
+    });
+    super::output::emit(&md_table(columns, table))?;
     say!(
         "wrote {} and charts under {} (nu = {nu}, k = {k})",
         data.display(),
@@ -335,27 +357,21 @@ fn study_pareto(out: &Path) -> Result<(), CliError> {
         },
     )?;
     draw_pareto(out)?;
-    say!("| M_R | method | precision | error of k | estimate | time per solve |");
-    say!("|---|---|---|---|---|---|");
-    for r in &rows {
-        match &r.failure {
-            None => say!(
-                "| {} | {} | {} | {:.1e} | {:.1e} | {:.3} ms |",
-                r.mr,
-                r.method.label(),
-                r.precision.label(),
-                r.error,
-                r.estimate,
-                r.time_ns / 1e6
-            ),
-            Some(f) => say!(
-                "| {} | {} | {} | failed: {f} | | |",
-                r.mr,
-                r.method.label(),
-                r.precision.label()
-            ),
-        }
-    }
+    let columns = "M_R|method|precision|error of k|estimate|time per solve";
+    let table = rows.iter().map(|r| {
+        let lead = [
+            r.mr.to_string(),
+            r.method.label().into(),
+            r.precision.label(),
+        ];
+        let cells = vec![
+            format!("{:.1e}", r.error),
+            format!("{:.1e}", r.estimate),
+            format!("{:.3} ms", r.time_ns / 1e6),
+        ];
+        timed_row(lead, &r.failure, cells)
+    });
+    super::output::emit(&md_table(columns, table))?;
     say!("wrote {} and figures/pareto_*.svg", data.display());
     Ok(())
 }
@@ -387,29 +403,29 @@ fn study_series(out: &Path) -> Result<(), CliError> {
         },
     )?;
     draw_series(out)?;
-    let mut md = String::from(
-        "| M_R | target | precision | terms | estimate | time | error reached | error estimate |\n|---|---|---|---|---|---|---|---|\n",
+    let columns = "M_R|target|precision|terms|estimate|time|error reached|error estimate";
+    let md = md_table(
+        columns,
+        rows.iter().map(|r| {
+            let time = if r.time_ns.is_nan() {
+                "—".to_string()
+            } else if r.time_ns < 1e6 {
+                format!("{:.1} µs", r.time_ns / 1e3)
+            } else {
+                format!("{:.1} ms", r.time_ns / 1e6)
+            };
+            vec![
+                r.mr.to_string(),
+                format!("{:.0e}", r.target),
+                r.precision.label(),
+                r.terms.to_string(),
+                r.estimate.to_string(),
+                time,
+                format!("{:.1e}", r.error),
+                format!("{:.1e}", r.error_estimate),
+            ]
+        }),
     );
-    for r in &rows {
-        let time = if r.time_ns.is_nan() {
-            "—".to_string()
-        } else if r.time_ns < 1e6 {
-            format!("{:.1} µs", r.time_ns / 1e3)
-        } else {
-            format!("{:.1} ms", r.time_ns / 1e6)
-        };
-        md.push_str(&format!(
-            "| {} | {:.0e} | {} | {} | {} | {} | {:.1e} | {:.1e} |\n",
-            r.mr,
-            r.target,
-            r.precision.label(),
-            r.terms,
-            r.estimate,
-            time,
-            r.error,
-            r.error_estimate
-        ));
-    }
     text(out, "data/series_summary.md", &md)?;
     say!("{md}");
     say!(
@@ -461,10 +477,8 @@ fn growth_table(growth: &[series::Growth]) -> (String, Vec<Vec<String>>) {
             format!("{x:.4}")
         }
     };
-    let mut md = String::from(
-        "| k² | e² | predicted bits/step | precision | measured bits/step (L) | (M) | total loss at n (L) | predicted n | worst error (ε) | n studied |\n|---|---|---|---|---|---|---|---|---|---|\n",
-    );
-    let mut gcsv = Vec::new();
+    let columns = "k²|e²|predicted bits/step|precision|measured bits/step (L)|(M)|total loss at n (L)|predicted n|worst error (ε)|n studied";
+    let (mut md_rows, mut gcsv) = (Vec::new(), Vec::new());
     for g in growth {
         let loss = g.total_loss_n.map_or("—".to_string(), |n| n.to_string());
         let pred = g
@@ -472,19 +486,18 @@ fn growth_table(growth: &[series::Growth]) -> (String, Vec<Vec<String>>) {
             .map_or("—".to_string(), |n| format!("{n:.0}"));
         // A measured growth rate is shown where growth is predicted.
         let measured = |x: f64| opt(if g.predicted > 0.0 { x } else { f64::NAN });
-        md.push_str(&format!(
-            "| {} | {} | {:.4} | {} | {} | {} | {} | {} | {:.2e} | {} |\n",
-            g.mc,
-            1.0 - g.mc,
-            g.predicted,
+        md_rows.push(vec![
+            g.mc.to_string(),
+            (1.0 - g.mc).to_string(),
+            format!("{:.4}", g.predicted),
             g.precision.label(),
             measured(g.measured_l),
             measured(g.measured_m),
-            loss,
-            pred,
-            g.worst_eps,
-            g.n_max
-        ));
+            loss.clone(),
+            pred.clone(),
+            format!("{:.2e}", g.worst_eps),
+            g.n_max.to_string(),
+        ]);
         gcsv.push(vec![
             format!("{}", g.mc),
             g.precision.label(),
@@ -497,7 +510,7 @@ fn growth_table(growth: &[series::Growth]) -> (String, Vec<Vec<String>>) {
             g.n_max.to_string(),
         ]);
     }
-    (md, gcsv)
+    (md_table(columns, md_rows), gcsv)
 }
 
 /// The bits lost in the K, E basis over (n, e) and (n, k): CSV and charts.

@@ -90,7 +90,12 @@ pub fn depressed_cubic<T: Real>(nu: &T) -> (T, T) {
 /// it nearly vanishes (ν ≈ 0.263).
 pub fn cardano_discriminant<T: Real>(nu: &T) -> T {
     let (pp, qq) = depressed_cubic(nu);
-    qq.mul_pow2(-1).square() + pp.div_i64(3).powi(3)
+    discriminant(&pp, &qq)
+}
+
+/// (q/2)² + (p/3)³ of the depressed cubic's `pp` and `qq`.
+fn discriminant<T: Real>(pp: &T, qq: &T) -> T {
+    qq.clone().mul_pow2(-1).square() + pp.clone().div_i64(3).powi(3)
 }
 
 impl<T: Real> RayleighRoots<T> {
@@ -153,10 +158,11 @@ impl<T: Real> RayleighRoots<T> {
     pub fn closed_form(nu: &T, form: ClosedForm) -> Self {
         let pr = nu.prec();
         let (pp, qq) = depressed_cubic(nu);
+        let d = discriminant(&pp, &qq);
+        let complex_pair = !d.is_negative();
         let shift = T::from_ratio(8, 3, pr);
         let mut roots: Vec<Complex<T>> = match form {
             ClosedForm::ComplexCardano => {
-                let d = qq.clone().mul_pow2(-1).square() + pp.clone().div_i64(3).powi(3);
                 let sd = Complex::from_real(d).sqrt();
                 let mq2 = Complex::from_real(-(qq.mul_pow2(-1)));
                 let mut c = (mq2.clone() + &sd).cbrt();
@@ -177,7 +183,6 @@ impl<T: Real> RayleighRoots<T> {
                 out
             }
             ClosedForm::RealBranches => {
-                let d = qq.clone().mul_pow2(-1).square() + pp.clone().div_i64(3).powi(3);
                 if d.is_negative() {
                     let r = (-(pp.div_i64(3))).sqrt();
                     let one = T::one(pr);
@@ -226,7 +231,6 @@ impl<T: Real> RayleighRoots<T> {
         let m3 = roots.pop().unwrap_or_else(|| Complex::zero(pr));
         let m2 = roots.pop().unwrap_or_else(|| Complex::zero(pr));
         let m1 = roots.pop().unwrap_or_else(|| Complex::zero(pr)).re;
-        let complex_pair = !cardano_discriminant(nu).is_negative();
         let (m2, m3) = if complex_pair && m2.im.is_negative() {
             (m3, m2)
         } else {

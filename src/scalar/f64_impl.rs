@@ -5,6 +5,25 @@
 use super::{Field, FieldOps, Real};
 use crate::error::{Error, Result};
 
+/// The `f64` methods of [`Real`] that are `std`'s of the same name: unary ones, ones of a
+/// second `&f64`, and predicates.
+macro_rules! std_methods {
+    ($($unary:ident)*; $($binary:ident)*; $($pred:ident)*) => {
+        $(#[inline(always)]
+        fn $unary(self) -> f64 {
+            f64::$unary(self)
+        })*
+        $(#[inline(always)]
+        fn $binary(self, y: &f64) -> f64 {
+            f64::$binary(self, *y)
+        })*
+        $(#[inline(always)]
+        fn $pred(&self) -> bool {
+            f64::$pred(*self)
+        })*
+    };
+}
+
 impl FieldOps for f64 {
     type Prec = ();
     #[inline(always)]
@@ -57,13 +76,10 @@ impl FieldOps for f64 {
 }
 
 impl Field for f64 {
+    std_methods!(abs;;);
     #[inline(always)]
     fn is_negative(&self) -> bool {
         *self < 0.0
-    }
-    #[inline(always)]
-    fn abs(self) -> f64 {
-        f64::abs(self)
     }
     #[inline(always)]
     fn to_f64(&self) -> f64 {
@@ -165,101 +181,18 @@ impl Real for f64 {
                 * f64::from_bits(((1023 + (k - h)) as u64) << 52)
         }
     }
-    #[inline(always)]
-    fn is_finite(&self) -> bool {
-        f64::is_finite(*self)
-    }
-    #[inline(always)]
-    fn is_nan(&self) -> bool {
-        f64::is_nan(*self)
-    }
-    #[inline(always)]
-    fn floor(self) -> f64 {
-        f64::floor(self)
-    }
-    #[inline(always)]
-    fn round(self) -> f64 {
-        f64::round(self)
-    }
-    #[inline(always)]
-    fn sqrt(self) -> f64 {
-        f64::sqrt(self)
-    }
+    std_methods!(
+        floor round sqrt cbrt exp exp_m1 ln ln_1p sin cos atan asin acos tan sinh cosh tanh;
+        atan2 hypot powf;
+        is_finite is_nan
+    );
     #[inline(always)]
     fn recip_sqrt(self) -> f64 {
         1.0 / f64::sqrt(self)
     }
     #[inline(always)]
-    fn cbrt(self) -> f64 {
-        f64::cbrt(self)
-    }
-    #[inline(always)]
-    fn exp(self) -> f64 {
-        f64::exp(self)
-    }
-    #[inline(always)]
-    fn exp_m1(self) -> f64 {
-        f64::exp_m1(self)
-    }
-    #[inline(always)]
-    fn ln(self) -> f64 {
-        f64::ln(self)
-    }
-    #[inline(always)]
-    fn ln_1p(self) -> f64 {
-        f64::ln_1p(self)
-    }
-    #[inline(always)]
-    fn sin(self) -> f64 {
-        f64::sin(self)
-    }
-    #[inline(always)]
-    fn cos(self) -> f64 {
-        f64::cos(self)
-    }
-    #[inline(always)]
     fn sin_cos(self) -> (f64, f64) {
         f64::sin_cos(self)
-    }
-    #[inline(always)]
-    fn atan2(self, x: &f64) -> f64 {
-        f64::atan2(self, *x)
-    }
-    #[inline(always)]
-    fn atan(self) -> f64 {
-        f64::atan(self)
-    }
-    #[inline(always)]
-    fn asin(self) -> f64 {
-        f64::asin(self)
-    }
-    #[inline(always)]
-    fn acos(self) -> f64 {
-        f64::acos(self)
-    }
-    #[inline(always)]
-    fn tan(self) -> f64 {
-        f64::tan(self)
-    }
-    #[inline(always)]
-    fn sinh(self) -> f64 {
-        f64::sinh(self)
-    }
-    #[inline(always)]
-    fn cosh(self) -> f64 {
-        f64::cosh(self)
-    }
-    #[inline(always)]
-    fn tanh(self) -> f64 {
-        f64::tanh(self)
-    }
-    #[inline(always)]
-    fn hypot(self, y: &f64) -> f64 {
-        f64::hypot(self, *y)
-    }
-    #[inline(always)]
-    fn powf(self, y: &f64) -> f64 {
-        f64::powf(self, *y)
     }
     #[inline(always)]
     fn mul_add(self, a: &f64, b: &f64) -> f64 {

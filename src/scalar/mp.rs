@@ -26,6 +26,23 @@ pub struct Mp(pub Float);
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct MpPrec(u32);
 
+/// The methods of [`Real`] for `Mp` that are `rug`'s of the same name: unary ones, ones of a
+/// second `&Mp` (brought to the wider precision first), and predicates.
+macro_rules! rug_methods {
+    ($($unary:ident)*; $($binary:ident)*; $($pred:ident)*) => {
+        $(fn $unary(self) -> Mp {
+            Mp(self.0.$unary())
+        })*
+        $(fn $binary(mut self, y: &Mp) -> Mp {
+            harmonise(&mut self.0, &y.0);
+            Mp(self.0.$binary(&y.0))
+        })*
+        $(fn $pred(&self) -> bool {
+            self.0.$pred()
+        })*
+    };
+}
+
 impl MpPrec {
     /// Smallest supported precision (IEEE single's significand).
     pub const MIN_BITS: u32 = 24;
@@ -162,9 +179,7 @@ impl FieldOps for Mp {
         // One correct rounding of the exact ratio.
         Mp(Float::with_val(p.0, rug::Rational::from((num, den))))
     }
-    fn is_zero(&self) -> bool {
-        self.0.is_zero()
-    }
+    rug_methods!(recip;; is_zero);
     fn mul_i64(mut self, n: i64) -> Mp {
         self.0 *= n;
         self
@@ -176,17 +191,12 @@ impl FieldOps for Mp {
     fn square(&self) -> Mp {
         Mp(self.0.clone().square())
     }
-    fn recip(self) -> Mp {
-        Mp(self.0.recip())
-    }
 }
 
 impl Field for Mp {
+    rug_methods!(abs;;);
     fn is_negative(&self) -> bool {
         self.0.cmp0() == Some(Ordering::Less)
-    }
-    fn abs(self) -> Mp {
-        Mp(self.0.abs())
     }
     fn to_f64(&self) -> f64 {
         self.0.to_f64()
@@ -248,78 +258,15 @@ impl Real for Mp {
         self.0 <<= k;
         self
     }
-    fn is_finite(&self) -> bool {
-        self.0.is_finite()
-    }
-    fn is_nan(&self) -> bool {
-        self.0.is_nan()
-    }
-    fn floor(self) -> Mp {
-        Mp(self.0.floor())
-    }
-    fn round(self) -> Mp {
-        Mp(self.0.round())
-    }
-    fn sqrt(self) -> Mp {
-        Mp(self.0.sqrt())
-    }
-    fn recip_sqrt(self) -> Mp {
-        Mp(self.0.recip_sqrt())
-    }
-    fn cbrt(self) -> Mp {
-        Mp(self.0.cbrt())
-    }
-    fn exp(self) -> Mp {
-        Mp(self.0.exp())
-    }
-    fn exp_m1(self) -> Mp {
-        Mp(self.0.exp_m1())
-    }
-    fn ln(self) -> Mp {
-        Mp(self.0.ln())
-    }
-    fn ln_1p(self) -> Mp {
-        Mp(self.0.ln_1p())
-    }
-    fn sin(self) -> Mp {
-        Mp(self.0.sin())
-    }
-    fn cos(self) -> Mp {
-        Mp(self.0.cos())
-    }
+    rug_methods!(
+        floor round sqrt recip_sqrt cbrt exp exp_m1 ln ln_1p sin cos atan asin acos tan sinh cosh tanh;
+        atan2 hypot;
+        is_finite is_nan
+    );
     fn sin_cos(self) -> (Mp, Mp) {
         let c = Float::new(self.0.prec());
         let (s, c) = self.0.sin_cos(c);
         (Mp(s), Mp(c))
-    }
-    fn atan2(mut self, x: &Mp) -> Mp {
-        harmonise(&mut self.0, &x.0);
-        Mp(self.0.atan2(&x.0))
-    }
-    fn atan(self) -> Mp {
-        Mp(self.0.atan())
-    }
-    fn asin(self) -> Mp {
-        Mp(self.0.asin())
-    }
-    fn acos(self) -> Mp {
-        Mp(self.0.acos())
-    }
-    fn tan(self) -> Mp {
-        Mp(self.0.tan())
-    }
-    fn sinh(self) -> Mp {
-        Mp(self.0.sinh())
-    }
-    fn cosh(self) -> Mp {
-        Mp(self.0.cosh())
-    }
-    fn tanh(self) -> Mp {
-        Mp(self.0.tanh())
-    }
-    fn hypot(mut self, y: &Mp) -> Mp {
-        harmonise(&mut self.0, &y.0);
-        Mp(self.0.hypot(&y.0))
     }
     fn powf(mut self, y: &Mp) -> Mp {
         harmonise(&mut self.0, &y.0);

@@ -190,34 +190,31 @@ fn push_decimal(t: &mut String, decimals: &HashMap<u64, String>, v: f64) {
 /// The two charts: e against A1/B1 (one line per M_R) and e against M_R (one line per A1/B1).
 /// Draws the solutions of (33) (Fig. 2 of the paper); no arithmetic beyond plotting.
 pub fn charts(nu: &str, by_ratio: &[Point], by_speed: &[Point]) -> Vec<(String, String)> {
-    let mut c1 = Chart::new(
+    // e against one of M_R, A1/B1 on the unit square, a line per value of the other.
+    let unit = |title: String, x: &str, y: &str| {
+        let mut c = Chart::new(title, x, y);
+        c.x_range = Some((0.0, 1.0));
+        c.y_range = Some((0.0, 1.0));
+        c
+    };
+    let mut c1 = unit(
         format!("Eccentricity against A1/B1 (ν = {nu}), after the paper's Fig. 2"),
         "A1/B1 = R2/R1 (curvature along / across the motion)",
         "eccentricity e = (1 − (b/a)²)^(1/2)",
     );
-    c1.x_range = Some((0.0, 1.0));
-    c1.y_range = Some((0.0, 1.0));
-    for mr in SPEEDS {
-        let pts = by_ratio
-            .iter()
-            .filter(|q| q.mr == mr)
-            .map(|q| (q.ratio, q.e_f64))
-            .collect();
-        c1.push(Series::new(format!("M_R = {mr}"), pts, Style::Line));
-    }
-    let mut c2 = Chart::new(
+    let mut c2 = unit(
         format!("Eccentricity against the speed, for fixed A1/B1 (ν = {nu})"),
         "M_R = V/c_R",
         "eccentricity e",
     );
-    c2.x_range = Some((0.0, 1.0));
-    c2.y_range = Some((0.0, 1.0));
+    for mr in SPEEDS {
+        let pts = by_ratio.iter().filter(|q| q.mr == mr);
+        let pts = pts.map(|q| (q.ratio, q.e_f64)).collect();
+        c1.push(Series::new(format!("M_R = {mr}"), pts, Style::Line));
+    }
     for r in RATIOS {
-        let pts = by_speed
-            .iter()
-            .filter(|q| q.ratio == r)
-            .map(|q| (q.mr, q.e_f64))
-            .collect();
+        let pts = by_speed.iter().filter(|q| q.ratio == r);
+        let pts = pts.map(|q| (q.mr, q.e_f64)).collect();
         c2.push(Series::new(format!("A1/B1 = {r}"), pts, Style::Line));
     }
     // The approach to the Rayleigh speed on a log axis: 1 − e against 1 − M_R.

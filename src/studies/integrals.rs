@@ -113,11 +113,7 @@ fn measure<T: Real>(
     let mr = speed_label(exact);
     match run_route::<T>(method, &prepared) {
         Ok(r) => {
-            let bits = 600;
-            let err = |got: &T, want: &Float| {
-                let d = Float::with_val(bits, &got.to_float(bits) - want) / want;
-                d.abs().to_f64()
-            };
+            let err = |got: &T, want: &Float| super::rel_error(got, want, 600);
             let error = err(&r.i1.value, &reference.0).max(err(&r.i2.value, &reference.1));
             let time_ns = median_ns(budget_ms, || {
                 run_route::<T>(method, &prepared).map(|r| r.work)

@@ -146,6 +146,14 @@ impl Table {
     }
 }
 
+/// |got − want|/|want|, the difference formed and divided at `bits` bits (enough above both
+/// precisions that it is exact or rounded once), to `f64`: the error of a study's result
+/// against its MPFR reference. Implements no equation of the paper.
+pub fn rel_error<T: moving_hertz::scalar::Real>(got: &T, want: &rug::Float, bits: u32) -> f64 {
+    let d = rug::Float::with_val(bits, &got.to_float(bits) - want) / want;
+    d.abs().to_f64()
+}
+
 /// The correct decimal digits of a result with relative error `err`: −log₁₀ err, 0 for an
 /// error of 1 or more, and `exact` (the digits of the working precision) for an error of 0.
 /// The accuracy axis of the studies' charts (a linear axis of digits, on which an exact result

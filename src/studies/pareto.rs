@@ -75,8 +75,7 @@ fn measure<T: Real>(case: &Case<'_>, p: T::Prec, label: Precision) -> Row {
     };
     match solve_ellipse(&sp, &r, &opts) {
         Ok(s) => {
-            let bits = 1600;
-            let err = Float::with_val(bits, &s.k().value.to_float(bits) - reference) / reference;
+            let error = super::rel_error(&s.k().value, reference, 1600);
             let time_ns = median_ns(budget_ms, || {
                 solve_ellipse(&sp, &r, &opts).map(|s| s.iterations())
             });
@@ -84,7 +83,7 @@ fn measure<T: Real>(case: &Case<'_>, p: T::Prec, label: Precision) -> Row {
                 mr,
                 method,
                 precision: label,
-                error: err.abs().to_f64(),
+                error,
                 estimate: s.k().error.to_f64(),
                 time_ns,
                 failure: None,

@@ -181,31 +181,18 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
         v.sort_by(|a, b| a.0.total_cmp(&b.0));
         v
     };
-    for &prec in &precs {
-        let l = prec.label();
-        merge.push(Series::new(
-            format!("real-branches {l}"),
-            near(prec, NU_STAR, "real-branches", false),
-            Style::LineMarkers,
-        ));
-        p0.push(Series::new(
-            format!("complex-cardano {l}"),
-            near(prec, 0.4, "complex-cardano", true),
-            Style::LineMarkers,
-        ));
-    }
-    for &prec in &precs {
-        let l = prec.label();
-        merge.push(Series::new(
-            format!("default {l}"),
-            near(prec, NU_STAR, "default", false),
-            Style::Dashed,
-        ));
-        p0.push(Series::new(
-            format!("default {l}"),
-            near(prec, 0.4, "default", true),
-            Style::Dashed,
-        ));
+    // Each close-up's closed form at every precision, then the default's, dashed.
+    for (m_merge, m_p0, style) in [
+        ("real-branches", "complex-cardano", Style::LineMarkers),
+        ("default", "default", Style::Dashed),
+    ] {
+        for &prec in &precs {
+            let l = prec.label();
+            let at_merge = near(prec, NU_STAR, m_merge, false);
+            merge.push(Series::new(format!("{m_merge} {l}"), at_merge, style));
+            let at_p0 = near(prec, 0.4, m_p0, true);
+            p0.push(Series::new(format!("{m_p0} {l}"), at_p0, style));
+        }
     }
     vec![
         ("rayleigh_near_merge.svg".to_string(), merge.to_svg()),

@@ -89,9 +89,9 @@ fn reference(mr: f64) -> Result<(Float, Float)> {
     Ok((r.i1.to_float(420), r.i2.to_float(420)))
 }
 
+/// The error against a reference, at 440 bits.
 fn rel_err<T: Real>(got: &T, want: &Float) -> f64 {
-    let d = Float::with_val(440, &got.to_float(440) - want);
-    Float::with_val(64, d / want).abs().to_f64()
+    super::rel_error(got, want, 440)
 }
 
 fn terms_at<T: Real>(

@@ -157,9 +157,9 @@ fn integral_error<T: Real>(p: T::Prec, nu: f64, mr: f64, k: f64, method: Method)
     rel(&got.i1.value, &r1).max(rel(&got.i2.value, &r2))
 }
 
+/// The error against a reference, at 320 bits.
 fn rel<T: Real>(got: &T, want: &Float) -> f64 {
-    let d = Float::with_val(320, &got.to_float(320) - want) / want;
-    d.abs().to_f64()
+    super::rel_error(got, want, 320)
 }
 
 /// I1, I2 by a fixed 64-point Gauss–Legendre rule on [0, π/2] in α (the naive quadrature of

@@ -86,11 +86,7 @@ fn int_poly(c: &[Integer], v: Variable, style: Style, descending: bool) -> Strin
             out.push_str(if neg { " - " } else { " + " });
         }
         let abs = Integer::from(a.abs_ref());
-        let mul = match style {
-            Style::Latex => "\\,",
-            Style::Text => " ",
-            _ => "*",
-        };
+        let (mul, _) = operators(style);
         if k == 0 {
             let _ = write!(out, "{abs}");
         } else if abs == 1 {
@@ -100,6 +96,15 @@ fn int_poly(c: &[Integer], v: Variable, style: Style, descending: bool) -> Strin
         }
     }
     out
+}
+
+/// The signs of a product and a power as `style` writes them.
+fn operators(style: Style) -> (&'static str, &'static str) {
+    match style {
+        Style::Latex => ("\\,", "^"),
+        Style::Text => (" ", "^"),
+        _ => ("*", "**"),
+    }
 }
 
 fn terms(c: &[Integer]) -> usize {
@@ -139,11 +144,7 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
     let neg = r.cmp0() == Ordering::Less;
     let (a, b) = (Integer::from(r.numer().abs_ref()), r.denom().clone());
     let latex = style == Style::Latex;
-    let (mul, pow) = match style {
-        Style::Latex => ("\\,", "^"),
-        Style::Text => (" ", "^"),
-        _ => ("*", "**"),
-    };
+    let (mul, pow) = operators(style);
     let has_den = b != 1 || !bases.is_empty();
     // Numerator: [A ·] [x^k ·] P.
     let mut num_parts: Vec<String> = Vec::new();
@@ -249,18 +250,10 @@ fn json_list(p: &Poly) -> String {
 pub fn render(title: &str, items: &[Named], style: Style) -> String {
     let mut out = String::new();
     match style {
-        Style::Text => {
-            let _ = writeln!(out, "# {title}");
-            for it in items {
-                let _ = writeln!(
-                    out,
-                    "{} = {}",
-                    it.name,
-                    expression(&it.value, it.var, it.xpow, style)
-                );
+        Style::Text | Style::Sympy => {
+            if style == Style::Text {
+                let _ = writeln!(out, "# {title}");
             }
-        }
-        Style::Sympy => {
             for it in items {
                 let e = expression(&it.value, it.var, it.xpow, style);
                 let _ = writeln!(out, "{} = {e}", it.name);
