@@ -140,10 +140,18 @@ impl<T: Real> ShapeSolver<T> {
         }
         // The Halley step, unless rounding the inputs to f64 moved the root by more than
         // ~1e-15 (k's sensitivity to the gap's relative change is about 1/4), where two chord
-        // steps are cheaper than the attempt and a Newton step.
+        // steps are cheaper than the attempt and a Newton step. A nonzero input within 2^53 of
+        // the f64 range's ends (a gap that underflows there) counts as moved: no Halley step.
         let moved = |x: &T| {
             let x64 = x.to_f64();
-            (x.clone() - T::from_f64(x64, p)).abs().to_f64() / x64.abs().max(f64::MIN_POSITIVE)
+            if x.is_zero() {
+                return 0.0;
+            } else if !(x64.abs() >= f64::MIN_POSITIVE * 2f64.powi(53)
+                && x64.abs() <= f64::MAX / 4.0)
+            {
+                return f64::INFINITY;
+            }
+            (x.clone() - T::from_f64(x64, p)).abs().to_f64() / x64.abs()
         };
         let speed = self.top.speed();
         let perturbation = moved(ratio) + moved(speed.material().nu()) + moved(speed.gap());

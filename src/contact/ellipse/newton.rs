@@ -152,11 +152,14 @@ impl<'a, T: Real> Newton<'a, T> {
         self.ratio.prec()
     }
 
-    /// Chord steps with the derivatives `c` handed on from below (relative error r, the seed
-    /// within `seed_err`) when two of them bring the seed's error to ε/64: r²·64·seed_err ≤ ε.
+    /// Chord steps with the derivatives `c` handed on from below (relative error r at the seed,
+    /// the seed within `seed_err`) when the error r·seed_err of one chord step is one that a
+    /// Newton step then ends, 64(r·seed_err)² ≤ ε: the chord path evaluates the k-derivatives
+    /// no more often than Newton's ([`Self::plan_chord`] keeps the slope while the next chord
+    /// step is expected to stop).
     fn adopt_slope(&mut self, c: Chord<T>, seed_err: &T) {
         let r = c.rel_err.clone() + &(self.lam.clone() - &c.lam).abs();
-        if r.square() * &seed_err.clone().mul_i64(64) <= self.eps {
+        if (r * seed_err).square().mul_i64(64) <= self.eps {
             self.chord = Some(c);
         }
     }
@@ -169,11 +172,11 @@ impl<'a, T: Real> Newton<'a, T> {
             let lam = self.lam.clone();
             let (f, df, ci) = residual(self.evaluator, self.ratio, &lam, self.chord.as_ref())?;
             self.spent += 1;
+            let fresh = self.chord.is_none();
+            if fresh {
+                self.hand_on(&lam, &df, &ci);
+            }
             if f.is_zero() {
-                // The root itself: its derivatives (if evaluated) go to the stage above.
-                if self.chord.is_none() {
-                    self.hand_on(&lam, &df, &ci);
-                }
                 let shape = finish(lam.clone(), &lam, ci, self.ratio, T::zero(p), self.spent);
                 return Ok((shape, self.fresh_slope));
             }
@@ -191,15 +194,11 @@ impl<'a, T: Real> Newton<'a, T> {
             // How far behind the derivative of this step lies (0 for a Newton step).
             let age = (self.chord.as_ref())
                 .map_or_else(|| T::zero(p), |c| (lam.clone() - &c.lam).abs() + &c.rel_err);
-            let fresh = self.chord.is_none();
-            if fresh {
-                self.hand_on(&lam, &df, &ci);
-            }
             self.lam = next;
             if let Some(shape) = self.converged(&lam, ci, &step, &age, &scale, was_newton) {
                 return Ok((shape, self.fresh_slope));
             }
-            self.plan_chord(&step, &scale, was_newton, fresh);
+            self.plan_chord(&step, &age, &scale, was_newton, fresh);
             self.last_step = Some(step);
         }
         Err(Error::NoConvergence {
@@ -301,15 +300,22 @@ impl<'a, T: Real> Newton<'a, T> {
 
     /// The chord step at the end: when the next evaluation is expected to be the last
     /// (64δ³ ≤ ε), it skips the k-derivatives and steps with this iterate's F′ (the stop counts
-    /// the derivative's age). A handed-on slope is kept while the steps are full ones.
+    /// the derivative's age). A slope handed on from below (positive `rel_err`) is kept while
+    /// the steps are full ones and the next chord step, whose error is about age·δ, is expected
+    /// to stop: 64·age²·δ ≤ ε·scale² (the stop's test one step ahead); else the next iterate
+    /// evaluates the derivatives, whose Newton step ends the stage.
     #[inline]
-    fn plan_chord(&mut self, step: &T, scale: &T, newton: bool, fresh: bool) {
+    fn plan_chord(&mut self, step: &T, age: &T, scale: &T, newton: bool, fresh: bool) {
         let past_first = self.seeded || self.spent >= 2;
         if self.allow_chord && newton && past_first && fresh {
             if (step.square() * step).mul_i64(64) <= self.eps.clone() * &scale.square() * scale {
                 self.chord = self.fresh_slope.clone();
             }
         } else if !newton || !self.allow_chord {
+            self.chord = None;
+        } else if (self.chord.as_ref()).is_some_and(|c| c.rel_err.is_positive())
+            && (age.clone().square() * step).mul_i64(64) > self.eps.clone() * &scale.square()
+        {
             self.chord = None;
         }
     }
