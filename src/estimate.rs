@@ -295,9 +295,9 @@ impl fmt::Display for RelError {
 
 impl RelError {
     /// Appends the bound's text (ASCII) as [`fmt::Display`] writes it (three significant
-    /// digits), without a string of its own (the `sweep` commands' rows): a bound in the
-    /// range of [`RelError::decimal_in_f64`] (every bound of an `f64` result) as `d.dde±x`
-    /// straight from its three digits, any other by [`RelError::text`].
+    /// digits), without a string of its own (the `sweep` commands' rows): a bound whose three
+    /// digits fit an `f64`'s decimal range (every bound of an `f64` result) as `d.dde±x`
+    /// straight from those digits, any other through the general decimal text.
     pub fn push_text(&self, out: &mut Vec<u8>) {
         if let Some((mant, exp10)) = self.decimal_in_f64(2) {
             // "d.dde-xxx": three digits, a point, "e", a sign and at most 3 digits (|exp10|

@@ -262,7 +262,8 @@ fn worth<T: Real>(points: usize, x: &T) -> usize {
 const WORK_PER_THREAD_NS: f64 = 2e6;
 
 /// How many threads a job of `points` sweep points at `precision` keeps busy: its estimated
-/// work over [`WORK_PER_THREAD_NS`], at least 1 (callers take the smaller of this and the
+/// work over 2 ms (the least work worth a thread of its own: starting, waking and first
+/// touches of memory cost tens to hundreds of microseconds a thread), at least 1 (callers take the smaller of this and the
 /// pool's threads). The cost of a point is a floor of what a sweep point costs (about 2 µs at
 /// `f64`, 20 µs at double-double, 100 µs at 128 bits and more above: docs/precision.md), so
 /// that a job is never given more threads than it can use. Implements no equation of the
