@@ -1,48 +1,21 @@
-//! The full moving-punch Hertz solution.
-//!
-//! With g = −πΓ (g(0) = 1 − ν) and I1, I2, J0 in the normalisation of (37), the displacement
-//! under the pressure p = p0 (1 − x²/a² − y²/b²)^{1/2} is, from (26),
+//! The full moving-punch Hertz solution: from the solved k and I1, I2 (with g = −πΓ, in the
+//! normalisation of (37)), the closed forms of (26), (31) and the corrected (28), (30), (32)
+//! (`docs/theory.md`, "Galin's theorem and the Hertz relations"; `docs/errata.md` #4):
 //!
 //! ```text
-//! u_z = d0 − A1 x² − B1 y²,   d0 = p0 b J0/(4μ),   A1 = p0 k I2/(4μ a),   B1 = p0 k I1/(4μ a),
-//! J0 = ∫_0^π g(V sin φ)/(k² cos²φ + sin²φ)^{1/2} dφ,
+//! given the load:      a = (3P I1/(8π μ B1))^{1/3},  b = k a,  p0 = 3P/(2π a b),  d0 = p0 b J0/(4μ);
+//! given the approach:  a = (d0 I1/(B1 J0))^{1/2},    p0 = 4μ a B1/(k I1),  P = (2/3)π p0 a b;
+//! J0 = k² I1 + I2.
 //! ```
 //!
-//! and the load is P = (2/3)π p0 a b (31). The paper's (28), (30) and (32) print these with Γ in
-//! place of g and disagree with each other: (28)₁ and (32) differ by a factor −π² and (30) lacks
-//! the factor π (`docs/errata.md`). In terms of Γ: d0 = −π p0 b/(4μ) ∫Γ/(…)^{1/2},
-//! A1 = −π p0 k/(4μa) ∫Γ sin²φ/(…)^{3/2}.
-//!
-//! Given the load: a = (3P I1/(8π μ B1))^{1/3}, b = k a, p0 = 3P/(2π a b), d0 = p0 b J0/(4μ).
-//! Given the approach: a = (d0 I1/(B1 J0))^{1/2}, p0 = 4μ a B1/(k I1), P = (2/3)π p0 a b.
-//! In the static limit these are Johnson's (Contact Mechanics §4.2) with E* = 2μ/(1 − ν):
-//! A1 = p0 b (K − E)/(E* e² a²), d0 = p0 b K/E* (tested to a few ε in `tests/contact.rs`).
-//!
-//! **Error bounds.** The closed forms are evaluated at [`Real::Wide`] from the inputs and the
-//! computed k, I1, I2, and each result rounded once, so that its rounding is one operation of
-//! the working type ([`Real::ROUNDING`]·ε: ε/2 at `f64` and MPFR, 1.625ε at double-double) plus
-//! the wide operations' (counted in `rounded`). Each returned quantity carries a bound on its
-//! relative error (relative to its exact value for the inputs as given), that rounding plus
-//! the smaller of two honest bounds on the shape's error:
-//!
-//! * the separate bound: the ellipse's bounds on k and I1, the bound on J0, the sensitivity of
-//!   I1 and J0 to k (|k I1′/I1| ≈ 3, |k J0′/J0| ≤ 1, from the computed derivatives), added as
-//!   the closed form combines them: a = (·)^{1/3} divides I1's error by 3, p0 adds those of a
-//!   and b, d0 = 3P J0/(8π μ a) those of a and J0, and so on;
-//! * the correlated bound (`ShapeErrors` below): k's error and the integrals' errors at the
-//!   computed k are one error seen three ways (the solve makes Ĩ2/Ĩ1 = A1/B1), so each size's
-//!   error is written to first order as a combination of the integrals' errors at the computed
-//!   k and the residual of (33), each counted once with its actual sensitivity, plus a
-//!   second-order term and the same roundings. It is the tighter one wherever the
-//!   derivatives are known; `tests/references.rs` prints the worst error/bound of each
-//!   quantity against independent references.
-//!
-//! **J0 from I1 and I2.** The integrands of I1 and I2 weighted by k² and 1 add up to J0's, so
-//! J0 = k² I1 + I2 at the solved k, from the integrals the ellipse solve returns; its bound, as
-//! a value at the exact root, is the larger of theirs compounded with three roundings (both are positive) plus k's, or
-//! the correlated bound plus its rounding (1 + 2w1 operations, w1 = k² I1/J0) where that is
-//! smaller. `tests/unit/direct.rs` checks it against an independent quadrature of J0 alone
-//! (both of its peaks in closed form).
+//! **Error bounds.** The closed forms are evaluated at [`Real::Wide`] and each result rounded
+//! once ([`Real::ROUNDING`]·ε plus the wide operations', counted in `rounded`). Each quantity's
+//! bound is that rounding plus the smaller of two bounds on the shape's error: the separate one
+//! (the bounds on k, I1 and J0 times their sensitivities, added as the closed form combines
+//! them) and the correlated one (`ShapeErrors`: k's error and the integrals' are one error seen
+//! three ways, counted once). J0's bound is the pair's compounded with three roundings plus
+//! k's, or the correlated one where smaller. `tests/references.rs` prints the worst error/bound
+//! of each quantity against independent references.
 
 use super::convolution;
 use super::ellipse::{solve_ellipse, Ellipse, Options};

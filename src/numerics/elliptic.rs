@@ -3,40 +3,18 @@
 //! (A.8), and the incomplete F(β, ·), E(β, ·) of (52)–(53) (whose bracket is (π/2)(1 − Λ₀), see
 //! [`heuman_lambda_c_mc`]).
 //!
-//! # Convention
-//!
 //! Every function takes the **parameter** `m = k²` (DLMF §19, mpmath, scipy), never the modulus,
-//! and has a form taking the **complementary parameter** `mc = 1 − m` directly (suffix `_mc`).
-//! In the application `m = e² = 1 − k_axis²` and `mc = k_axis²` for the axis ratio
-//! `k_axis = b/a ∈ [10⁻⁶, 10⁶]`: `m` ranges over `(−10¹², 1)`, and forming `mc` as `1 − m`
-//! would lose every digit when `k_axis` is tiny, so the `_mc` forms are the primary ones. The
-//! m-forms compute `mc = 1 − m` (exact for `m ≥ 1/2`) and call them.
+//! and has a form taking the **complementary parameter** `mc = 1 − m` (suffix `_mc`), the
+//! primary one: in the application `mc = k_axis²` for the axis ratio `k_axis ∈ [10⁻⁶, 10⁶]`, and
+//! forming it as `1 − m` would lose every digit when `k_axis` is tiny.
 //!
-//! # Algorithms
-//!
-//! * Complete integrals: Bulirsch's general complete integral [`cel`] (R. Bulirsch, Numer. Math.
-//!   13 (1969) 305–315), an AGM-like iteration which for `a, b, p > 0` adds only positive
-//!   quantities, so that K, E, B = (E − mc·K)/m and D = (K − E)/m are each accurate to a few ε
-//!   for every `mc > 0`, including `mc → 0`, `mc → 1` and `mc ≫ 1`. K alone is
-//!   π / (2 AGM(1, √mc)) (the same accuracy, cheaper).
-//! * Incomplete integrals: Carlson's R_F and R_D (DLMF 19.25.5, 19.25.9–10) by the duplication
-//!   theorem followed by a Taylor series of an order chosen from the working precision (see
-//!   [`carlson_rf`]); the amplitude is reduced to `|φ'| ≤ π/2` exactly with
-//!   `F(φ + jπ) = F(φ) + 2jK`, `E(φ + jπ) = E(φ) + 2jE`.
-//!
-//! Every tolerance is derived from the working precision (`T::epsilon_root`, `T::bits`), every
-//! constant is made at the precision of the input, and every loop stops when its tolerance is
-//! reached, when it stops making progress, or at a cap (then [`Error::NoConvergence`]).
-//!
-//! # Accuracy
-//!
-//! Every function within 8 ε of the working precision (16 ε at double-double), ε = 2^(1 − bits),
-//! asserted by `tests/elliptic.rs` against mpmath at 380 digits (`tools/gen_elliptic.py`); the
-//! measured worst errors per function and precision are in `docs/calibration.md`.
-//!
-//! No item of this module implements a formula of the paper: they are the elliptic integrals (DLMF
-//! §19) in which (42)–(43) and (52)–(53) are written, each accurate to a few ε
-//! (`tests/elliptic.rs`, against mpmath at 330 digits and more).
+//! Complete integrals by Bulirsch's [`cel`] (Numer. Math. 13 (1969) 305–315), which adds only
+//! positive quantities for `a, b, p > 0`, and K alone by the AGM; incomplete ones by Carlson's
+//! R_F and R_D (DLMF 19.25.5, 19.25.9–10) with the duplication theorem and a Taylor series of
+//! an order chosen from the working precision. Tolerances come from the working precision and
+//! every loop has a cap ([`Error::NoConvergence`]). Every function is within 8 ε of the working
+//! precision (16 ε at double-double) against mpmath (`tests/elliptic.rs`); the measured worst
+//! errors are in `docs/calibration.md`.
 
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, short, Real};

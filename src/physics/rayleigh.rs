@@ -1,31 +1,13 @@
-//! The Rayleigh function (6) and the roots of its rationalised cubic (section 6 of the paper).
+//! The Rayleigh function (6) and the roots of its rationalised cubic (section 6 of the paper):
+//! R = x(x − m1)(x − m2)(x − m3)/D with x = M2², D = (2 − x)² + 4√((1 − γx)(1 − x)) (the paper
+//! prints (2 − x)⁴, `docs/errata.md` #1) and (1 − ν)P(x) = (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8
+//! (`docs/theory.md`). m1 = (c_R/c2)² ∈ (0, 1) is the Rayleigh root; m2, m3 are real below
+//! ν* ≈ 0.2631, where they merge, and complex conjugates above.
 //!
-//! With x = M2² and γ = (c2/c1)², the Rayleigh function is
-//! R = (2 − x)² − 4√((1 − γx)(1 − x)). Multiplying by its conjugate
-//! D = (2 − x)² + 4√((1 − γx)(1 − x)) gives
-//!
-//! ```text
-//! R·D = (2 − x)⁴ − 16(1 − γx)(1 − x) = x·P(x),
-//! P(x) = x³ − 8x² + 8(3 − 2γ)x − 16(1 − γ) = (x − m1)(x − m2)(x − m3),
-//! ```
-//!
-//! so R = x(x − m1)(x − m2)(x − m3)/D. The paper prints the denominator as
-//! (2 − M2²)⁴ + 4√(...) — a misprint for (2 − M2²)² (see `docs/errata.md`). In terms of ν,
-//! (1 − ν)·P(x) = (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8, whose coefficients are formed with
-//! one rounding each; Vieta then gives m2 + m3 = 8 − m1 and m2·m3 = 8/((1 − ν)m1), which is all
-//! that G (45) needs.
-//!
-//! m1 = (c_R/c2)² ∈ (0, 1) is the Rayleigh root. The other two are real for ν below
-//! ν* ≈ 0.2631 (where the cubic's discriminant vanishes and they merge) and a complex-conjugate
-//! pair above it.
-//!
-//! Two closed forms ([`ClosedForm`]) and one default ([`RayleighRoots::new`]) are offered; their
-//! accuracy is charted in `docs/rayleigh.md`. The default seeds m1 in `f64`, polishes it by Halley
-//! steps on the cubic in the wide type (≥ twice the working precision), takes m2, m3 from the
-//! deflated quadratic there and rounds once: ≤ 4 ε relative for m1, and for m2, m3 relative to
-//! their modulus, over the whole range −1 < ν ≤ 1/2 including the merge point, where any
-//! working-precision method loses half its digits (the roots are a square-root function of the
-//! coefficients there).
+//! Two closed forms ([`ClosedForm`]) and one default ([`RayleighRoots::new`]: an `f64` seed,
+//! Halley steps in the wide type, the deflated quadratic there, one rounding) are offered;
+//! `docs/rayleigh.md` charts their accuracy. The default is within 4 ε relative for m1, and for
+//! m2, m3 relative to their modulus, for every −1 < ν ≤ 1/2, the merge point included.
 
 use crate::error::{Error, Result};
 use crate::scalar::{short, Complex, Real};

@@ -1,38 +1,17 @@
-//! Taylor coefficients of the normalised Green's function, (35)–(36) of the paper, corrected.
+//! Taylor coefficients of the normalised Green's function, (35)–(36) of the paper, corrected
+//! (`docs/errata.md` #2): [`GreenSeries`] runs the recurrence `docs/theory.md` states ("The
+//! series route"), c_l = G_l·x0^l from c_0 = 1 − ν, for any scale x0, in about 25 field
+//! operations a step (no factorial is formed):
 //!
-//! g = −πΓ as a function of x = M2² (the squared shear Mach number of the speed component V sin φ
-//! normal to the ray) satisfies, with the monic Rayleigh cubic P and D = (2 − x)² + 4√(…):
-//!
-//! ```text
-//! −P(x)·g(x) = √(1 − γx)(2 − x)² + 4(1 − γx)√(1 − x).
-//! ```
-//!
-//! Expanding the square roots by the binomial series √(1 − z) = Σ b_l z^l
-//! (b_0 = 1, b_l = −(2l − 3)!!/(2^l l!), i.e. b_{l+1} = b_l (2l − 1)/(2l + 2)) and matching powers
-//! gives, for g = Σ G_l x^l and any scale x0 with c_l = G_l x0^l,
-//!
-//! ```text
-//! c_l = (1 − ν)/8 · [ r_l − 8 x0² c_{l−2} + x0³ c_{l−3} ] + (2 − ν) x0 c_{l−1},
-//! r_l = 4u_l − 4x0 u_{l−1} + x0² u_{l−2} + 4v_l − 4γx0 v_{l−1},
-//! u_l = b_l (γ x0)^l,  v_l = b_l x0^l,
-//! ```
-//!
-//! (terms with negative index are zero). It starts at c_0 = 1 − ν and is the paper's (36) divided
-//! by M2² with x0 = M2²; the paper's printed f2 is wrong (27 for 67, `docs/errata.md` #2).
-//!
-//! * x0 = M2² gives the paper's f_n (coefficients of sin^{2n} φ).
+//! * x0 = M2² gives the paper's f_n (coefficients of sin^{2n} φ);
 //! * x0 = 1 gives F_n (coefficients of x^n), exact in `rug::Rational` for rational ν, and as
-//!   rational functions of ν over [`crate::symbolic::RatFunc`] ([`crate::symbolic::green_coefficients`]).
-//! * x0 = m1 gives the scaled h_n = f_n / M_R^{2n}, which tend to a constant (the pole of g at
-//!   x = m1 dominates): they neither overflow nor underflow for any n (the f_n themselves decay like
-//!   M_R^{2n} and F_n grow like m1^{−n}, overflowing `f64` beyond n ≈ 2700).
+//!   rational functions of ν over [`crate::symbolic::RatFunc`] ([`crate::symbolic::green_coefficients`]);
+//! * x0 = m1 gives the scaled h_n = f_n / M_R^{2n} ([`SpeedCoefficients`]), which tend to πG(1)
+//!   and neither overflow nor underflow for any n.
 //!
-//! No factorial or double factorial is formed: each step costs about 25 field operations.
-//!
-//! **Stability.** The homogeneous part has characteristic roots x0/m1, x0/m2, x0/m3; the wanted
-//! solution is the dominant one (g has its nearest singularity at the simple pole x = m1), so the
-//! forward recurrence is stable: the relative rounding error of c_n stays a few ε (measured against
-//! the exact rational run in `tests/series_coefficients.rs`).
+//! The wanted solution is the dominant one (g's nearest singularity is the simple pole x = m1),
+//! so the forward recurrence is stable: each c_n within a few ε (`tests/series_coefficients.rs`,
+//! against the exact rational run).
 
 use crate::scalar::{Field, FieldOps};
 

@@ -1,14 +1,9 @@
 //! The direct route of sections 6–7: I1 and I2 by quadrature of (46)–(47), plain or with the
-//! singular part of I2 subtracted by (48) and integrated in closed form by (53).
+//! singular part of I2 subtracted by (48) and integrated in closed form by (53) (both stated in
+//! `docs/theory.md`; (53) takes the incomplete integrals at modulus k, `docs/errata.md` #6).
 //!
-//! **Variables.** In the normalisation of (37) (see [`crate::routes`]),
-//!
-//! ```text
-//! I1 = 2π ∫_0^{π/2} G(t) sin²α / ((1 − t) Δ³) dα,   I2 = 2π ∫_0^{π/2} G(t) cos²α / ((1 − t) Δ³) dα,
-//! t = M_R² cos²α,   1 − t = ε² + M_R² sin²α,   ε² = 1 − M_R²,   Δ² = cos²α + k² sin²α,
-//! ```
-//!
-//! split at α = π/4 and written with w = tan α on the left half and v = cot α on the right:
+//! **Variables.** In the normalisation of (37), split at α = π/4 and written with w = tan α on
+//! the left half and v = cot α on the right (t = M_R² cos²α, ε² = 1 − M_R²):
 //!
 //! ```text
 //! left:  F_L(w) = 2π G(t) √(1 + w²) / ((ε² + w²)(1 + k²w²)^{3/2}),  t = M_R²/(1 + w²),
@@ -17,39 +12,20 @@
 //!        I1 += ∫_0^1 F_R dv,     I2 += ∫_0^1 v² F_R dv.
 //! ```
 //!
-//! No trigonometric function is needed at a node, every factor is positive, and the three
-//! length scales of the problem appear as plain numbers: ε (the width of the peak of 1/(1 − t) at
-//! α = 0, which makes I2 ~ 1/ε as M_R → 1), k (the width of the peak of Δ⁻³ at α = π/2 when
-//! k < 1) and 1/k (at α = 0 when k > 1). The quadrature panels are graded geometrically about
-//! each of them, so the work grows like log(1/ε) + |log k|, not like 1/ε or 1/k (and like |log k|
-//! alone once the pole is taken out, below).
+//! No trigonometric function is needed at a node, every factor is positive, and the length
+//! scales ε (the Rayleigh pole's peak at α = 0), k and 1/k (the peaks of Δ⁻³) are plain numbers:
+//! the panels are graded geometrically about each, so the work grows like log(1/ε) + |log k|.
 //!
-//! **Subtraction.** I2 = 2π G(M_R²) S + 2π ∫ (G(t) − G(M_R²)) cos²α/((1 − t)Δ³) dα (48), with
-//! S = ∫_0^{π/2} cos²α/((1 − M_R² cos²α)Δ³) dα in closed form (53) — checked against quadrature
-//! (`tests/unit/direct.rs`, `docs/errata.md`): the incomplete integrals take the *modulus k* (the axis
-//! ratio, complementary to e) and β = arccos M_R, and (53) holds as printed for k²(1 − M_R²) < 1.
-//! The remaining integrand is bounded (G(t) − G(M_R²) vanishes like sin²α where 1/(1 − t) peaks),
-//! so the quadrature needs an absolute accuracy ~tol·I2 on an O(1) quantity instead of a
-//! relative one on a peak of height 1/ε².
-//!
-//! **The pole and the k-peak in closed form** ([`quadrature`], [`contact_integrals`], and the
-//! tests' reference quadrature of J0 alone; not the subtracted form (48), which keeps its own
-//! treatment).
-//! Every left integrand is n(s)/(s + ε²), s = w², with n analytic near [0, 1]; with s0 = −ε²
-//! (where t = 1, the Rayleigh pole),
+//! **The pole in closed form** ([`quadrature`], [`contact_integrals`]; not the subtracted form
+//! (48)). Every left integrand is n(s)/(s + ε²), s = w², with n analytic near [0, 1]; with
+//! s0 = −ε² (t = 1),
 //!
 //! ```text
 //! ∫_0^1 n(s)/(s + ε²) dw = n(s0)·atan(1/ε)/ε + ∫_0^1 (n(s) − n(s0))/(s − s0) dw,
 //! ```
 //!
 //! the divided difference formed by the product rule without cancellation, so that no panel is
-//! graded about ε (taken where ε ≤ 1/2 and kε ≤ 1/2). The tests' reference quadrature of J0
-//! alone (`tests/unit/direct.rs`) treats J0's right integrand b(σ)(σ + k²)^{−1/2}
-//! (σ = v²) alike about σ0 = −k², where ∫_0^1 (σ + k²)^{−1/2} dv = asinh(1/k) (taken
-//! where k² is below ε of the working precision; above, the panels graded about k number at
-//! most a quarter of the working bits). The work then depends on neither 1 − M_R nor k once
-//! they are small:
-//! J0 at 256 bits takes the same nodes at 1 − M_R = 10⁻³⁰ and 10⁻¹⁰⁰⁰⁰⁰ (`tests/unit/direct.rs`).
+//! graded about ε (taken where ε ≤ 1/2 and kε ≤ 1/2).
 
 use super::{beyond_exponent_range, AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};

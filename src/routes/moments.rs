@@ -1,77 +1,17 @@
-//! The moments of section 5 and the appendix:
+//! The moments of section 5 and the appendix, as functions of the complementary parameter
+//! `mc = k²` (exact input, as in [`crate::numerics::elliptic`]):
 //!
 //! ```text
 //! L_n = ∫_0^{π/2} cos^{2n}α / Δ³ dα   (39),      M_n = ∫_0^{π/2} cos^{2n}α / Δ dα   (41),
-//! Δ² = 1 − e² sin²α = cos²α + k² sin²α,   e² = 1 − k²  (negative when k > 1),
+//! Δ² = cos²α + k² sin²α,   e² = 1 − k²  (negative when k > 1),
 //! ```
 //!
-//! and the differences D_n = L_n − L_{n+1} = ∫ cos^{2n}α sin²α / Δ³ dα that the series (37) for I1
-//! needs (formed as (M_n − L_{n+1})/k² when k > 1: for large k, L_n and L_{n+1} agree to about
-//! log₂(k²) bits, M_n and L_{n+1} do not). Everything is a function of the complementary parameter `mc = k²` (exact input), as in
-//! [`crate::numerics::elliptic`].
-//!
-//! # The recursion (40) = (A.2), (A.7) and its starting values (42) = (A.8)
-//!
-//! For n ≥ 2, with c = 2e² − 1 = e² − k²,
-//!
-//! ```text
-//! (2n−1)e² M_n = 2(n−1)c M_{n−1} + (2n−3)k² M_{n−2},
-//! (2n−1)e² L_n = 4(n−1)M_{n−1} − 2(2n−3)M_{n−2} + 2(n−1)c L_{n−1} + (2n−3)k² L_{n−2},
-//! ```
-//!
-//! checked against quadrature (`tests/moments.rs`; the intermediate (A.6) is misprinted, see
-//! `docs/errata.md` #7). The starting values L0 = E/k², L1 = (K − E)/e², M0 = K,
-//! M1 = (E − k²K)/e² are taken as B/k² + D, D, B + D, B from Bulirsch's cel
-//! ([`crate::numerics::elliptic::ellipbd_mc`]): formed as printed, L1 and M1 lose log₂(1/e²) bits
-//! to cancellation as e → 0 (`tests/moments.rs` shows it).
-//!
-//! # Stability: which direction, where
-//!
-//! For large n the homogeneous part of both recursions tends to e²X_n = (2e² − 1)X_{n−1} +
-//! (1 − e²)X_{n−2}, with characteristic roots 1 and r = −k²/e². Both solutions carry the same
-//! power n^{−1/2}, so the wanted one (≈ √(π/4n), the root 1) is dominant iff |r| < 1 iff
-//! e² > 1/2. Hence:
-//!
-//! * e² > 1/2 (k² < 1/2): **forward** is stable; the parasitic solution decays like |r|^n.
-//! * e² < 1/2, including every e² < 0 (k > 1): forward amplifies relative errors by |r|^n =
-//!   (k²/|e²|)^n — catastrophic as e → 0, slow (e^{n/k²}) for large k; **backward** is stable.
-//! * e² = 1/2: |r| = 1, errors accumulate additively in either direction.
-//!
-//! `docs/series.md` measures the growth against the prediction.
-//!
-//! # Methods ([`MomentMethod`]) and the default ([`moments`])
-//!
-//! * [`MomentMethod::Forward`]: the paper's recursion from the cel starting values.
-//! * [`MomentMethod::BackwardGauss`]: backward recursion from top values given by the
-//!   hypergeometric series in e²,
-//!   M_n = W_n ₂F₁(½, ½; n+1; e²), L_n = W_n ₂F₁(3/2, ½; n+1; e²), W_n = ∫cos^{2n} = (π/2)·C(2n,n)/4^n,
-//!   whose term ratio is about e²·j/(n + j): very fast at the top of a long table, and convergent
-//!   for |e²| < 1 (used for −3/4 ≤ e² < 1/2).
-//! * [`MomentMethod::BackwardPfaff`]: backward from top values by the cos² expansion
-//!   Δ² = k²(1 + (e²/k²)cos²α) (Pfaff's transformation of the same ₂F₁),
-//!   M_n = (W_n/k) ₂F₁(½, n+½; n+1; t), L_n = (W_n/k³) ₂F₁(3/2, n+½; n+1; t), t = −e²/k² = 1 − 1/k²,
-//!   positive terms with ratio → t: for e² < 0, at a cost of about bits/log₂(1/t) ≈ bits·k²/1.44
-//!   terms.
-//!
-//! The default [`moments`] picks, from e² and n_max ([`plan`]): forward for e² ≥ 1/2; backward
-//! with Gauss top values for −3/4 ≤ e² < 1/2; for e² < −3/4 the cheaper of forward (with
-//! n·log₂(k²/|e²|) extra guard bits to absorb the slow growth) and Pfaff-backward. It runs at the
-//! working precision plus guard bits (2⌈log₂(n_max + 2)⌉ + 12, plus the growth or the
-//! top-series length) and rounds once, so that the accumulation of rounding errors over
-//! 10⁵ steps and the cancellation in D_n (a relative loss of about 2n) are absorbed.
-//!
-//! **Accuracy** (`tests/moments.rs`, against mpmath's ₂F₁ at 110 digits and the exact form
-//! below): M_n, L_n and D_n within 8 ε (measured worst 0.5 ε, i.e. correctly rounded or nearly,
-//! mean 0.18 ε) for n ≤ 10⁴ at f64, double-double, MPFR 53, 128 and 256 bits, for k from
-//! 9.5·10⁻⁷ to 10⁶ (0 ≤ e < 1 and e² down to −10¹²). Without guard bits even the stable
-//! direction accumulates 0.1–0.6·n ε over n steps, and more than n ε at e² = 1/2
-//! (`docs/series.md`); the 2⌈log₂ n⌉ guard bits cover that.
-//!
-//! # Exact form
-//!
-//! [`KeForm`] runs (40) on coefficient pairs: L_n = α_n K + β_n E, M_n = γ_n K + δ_n E, exactly
-//! in `rug::Rational` for rational e². (|α_n|K + |β_n|E)/L_n is the condition number of any
-//! evaluation in the K, E basis (the forward recursion is one): [`ke_condition_bits`].
+//! and the differences D_n = L_n − L_{n+1} that the series (37) for I1 needs. `docs/theory.md`
+//! states the recursion (40) and its starting values (42); `docs/series.md` its stability (forward
+//! for e² > 1/2, backward below), the three [`MomentMethod`]s, the default's choice ([`plan`]),
+//! the guard bits and the measured accuracy (every M_n, L_n, D_n within 8 ε, `tests/moments.rs`).
+//! [`KeForm`] runs (40) on the coefficients of K and E, exactly over `rug::Rational`;
+//! [`ke_condition_bits`] is the condition number of any evaluation in that basis.
 
 use super::guard::{ceil_log2, run_guarded, zeros, GuardedJob};
 use crate::error::{Error, Result};
@@ -86,7 +26,7 @@ pub(crate) const MAX_INDEX: usize = 1_000_000;
 /// Cap on the terms of a top-value series ([`Error::TermCap`] beyond).
 pub(crate) const MAX_TOP_TERMS: usize = 20_000_000;
 
-/// How the moment table is computed; see the module docs.
+/// How the moment table is computed (`docs/series.md`, "The default").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum MomentMethod {
@@ -249,7 +189,7 @@ fn check_inputs<T: Real>(mc: &T, n_max: usize) -> Result<()> {
 }
 
 /// M_n, L_n (n ≤ n_max + 1) and D_n (n ≤ n_max) for k² = `mc` > 0, each within 8 ε of the working
-/// precision (module docs: the measured accuracy, and the method chosen by [`plan`]).
+/// precision (`docs/series.md`: the measured accuracy; the method chosen by [`plan`]).
 ///
 /// Work: O(n_max) operations at the working precision plus the guard bits of the plan, plus the
 /// top-value series (at most 2·10⁷ terms), plus one cel.
@@ -268,7 +208,7 @@ pub fn moments<T: Real>(mc: &T, n_max: usize) -> Result<Moments<T>> {
 /// working precision itself, as the paper's recursion would run). D_n is formed before the final
 /// rounding.
 ///
-/// Accuracy: as analysed in the module docs — stable methods hold a few ε·n before guarding;
+/// Accuracy: as analysed in `docs/series.md` — stable methods hold a few ε·n before guarding;
 /// [`MomentMethod::Forward`] for e² < 1/2 loses log₂|k²/e²| bits per step.
 ///
 /// Errors: as [`moments`]; also [`Error::Domain`] for the forward recursion at e² = 0 (it divides
@@ -352,7 +292,7 @@ impl<W: Real> Table<W> {
 ///
 /// Written once over [`FieldOps`]: the forward table ([`moments_with`]), the exact and symbolic
 /// K, E form ([`KeForm`]) and [`crate::symbolic`] all run this code. Each step rounds about ten
-/// times; whether the errors grow is the direction's stability (module docs).
+/// times; whether the errors grow is the direction's stability (`docs/series.md`).
 #[derive(Clone, Debug)]
 pub(crate) struct ForwardStep<F: FieldOps> {
     mc: F,

@@ -1,31 +1,11 @@
-//! The series route of section 5: I1 and I2 by (37),
-//!
-//! ```text
-//! I1 = 2 Σ f_n D_n,   D_n = L_n − L_{n+1} = ∫cos^{2n}α sin²α/Δ³ dα,     I2 = 2 Σ f_n L_{n+1},
-//! ```
-//!
-//! in the normalisation of (37) (π times the paper's (34), `docs/errata.md` #3), with f_n the
-//! coefficients of g = −πΓ (35)–(36) ([`SpeedCoefficients`]) and the moments of
-//! [`super::moments`].
-//!
-//! **Truncation control.** With h_n = f_n/M_R^{2n} decreasing to H = πG(1) > 0 and the moments
-//! decreasing in n, every term is positive and, after the term of index n,
-//!
-//! ```text
-//! Σ_{j>n} f_j D_j ≤ max(h_n, H)·D_n·Σ_{j>n} M_R^{2j} = t_n · (max(h_n, H)/h_n) · M_R²/(1 − M_R²)
-//! ```
-//!
-//! (likewise for I2 with L_{n+1}). The sum stops when both bounds are below the tolerance
-//! (default ε/4 of the working precision) times the partial sums. The number of terms needed is
-//! about ln(2 tol (1 − M_R²)/M_R²)/ln M_R² — 26 at f64 and M_R = 1/2, ≈ 2·10⁴ at M_R = 0.999:
-//! beyond the cap ([`SeriesOptions::max_terms`], default 10⁵) the route returns
-//! [`Error::TermCap`] with that estimate instead of working for minutes.
-//!
-//! **Precision.** Everything (the Rayleigh root, h_n, the powers, the moments, the sums) runs at
-//! the working precision plus the guard bits of the moment [`plan`] (2⌈log₂ N⌉ + 12 and more where
-//! the moments need it), then rounds once: the result is within about ε of the working precision
-//! plus the tail bound (`tests/series_route.rs`: ≤ 2 ε measured against quadrature of (46)–(47) at
-//! higher precision and against the static limit (43)).
+//! The series route of section 5: I1 = 2 Σ f_n D_n and I2 = 2 Σ f_n L_{n+1} by (37), with f_n
+//! the coefficients of g = −πΓ (35)–(36) ([`SpeedCoefficients`]) and the moments of
+//! [`super::moments`]. `docs/series.md` derives the tail bound that stops the sums (every term
+//! positive; default tolerance ε/4 of the working precision times the partial sums) and
+//! measures the terms needed; beyond the cap ([`SeriesOptions::max_terms`], default 10⁵) the
+//! route returns [`Error::TermCap`] with the estimate instead of working for minutes.
+//! Everything runs at the working precision plus the guard bits of the moment [`plan`], then
+//! rounds once: within about ε plus the tail bound (`tests/series_route.rs`: ≤ 2 ε measured).
 
 use super::coefficients::SpeedCoefficients;
 use super::guard::{run_guarded, GuardedJob};

@@ -1,37 +1,19 @@
-//! The scalar layer: the traits every formula of the crate is generic over, and their backends.
+//! The scalar layer: the traits every formula of the crate is generic over, and their backends
+//! (`docs/design.md`, "The scalar layer" and "The backends", says why they are shaped so).
 //!
-//! * [`FieldOps`] — exact or rounded field arithmetic (`+ − × ÷`) and construction of integers
-//!   and integer ratios *at a precision*, without ordering: what the exact recurrences (36) and
-//!   (40) need. Implemented by every type below and by the rational functions of
-//!   [`crate::symbolic`].
-//! * [`Field`] — [`FieldOps`] plus comparison, sign and the nearest `f64`. Implemented by `f64`,
-//!   [`Dd`], [`Mp`] and `rug::Rational` (exact).
-//! * [`Real`] — a rounded real number type: precision queries (ε, bits), constants (π, ln 2) made at
-//!   the working precision, decimal parsing and printing at the working precision, and the
-//!   elementary functions the crate uses (sqrt, cbrt, exp, ln, sin, cos, atan2, ...). Implemented by
-//!   `f64`, [`Dd`] (double-double over `twofloat`) and [`Mp`] (MPFR through `rug`).
+//! * [`FieldOps`] — field arithmetic and integers and integer ratios *at a precision*, without
+//!   ordering: what the exact recurrences (36) and (40) need.
+//! * [`Field`] — [`FieldOps`] plus comparison, sign and the nearest `f64`: `f64`, [`Dd`], [`Mp`]
+//!   and `rug::Rational` (exact).
+//! * [`Real`] — a rounded real type: precision queries, constants and decimal text at the
+//!   working precision, elementary functions. `f64` (IEEE, libm within about 1 ulp), [`Dd`]
+//!   (about 2⁻¹⁰⁴) and [`Mp`] (MPFR, correctly rounded).
 //! * [`Complex`] — a complex number over any [`Real`], with principal square and cube roots.
 //!
-//! # How precision travels
-//!
-//! Values are not `Copy` (an MPFR number owns a heap buffer) and each value knows its precision:
-//! [`FieldOps::prec`] returns a small `Copy` token (`()` for `f64`, [`Dd`] and `Rational`, an
-//! [`MpPrec`] holding the bit count for [`Mp`]). Generic code reads the token from an input and
-//! passes it to every constructor: `T::from_ratio(1, 3, p)`, `T::pi(p)`, `T::epsilon(p)`. No
-//! constant ever enters a computation as an `f64` decimal literal.
-//!
-//! Arithmetic operators take the left operand by value and the right one by value or by
-//! reference (`a + &b`); generic code writes `a.clone() * &b` when it needs `a` again. For `f64`
-//! and [`Dd`] the clone is a copy; for [`Mp`] it is the one allocation the result needs anyway.
-//!
-//! Mixing precisions: an [`Mp`] operation on operands of different precisions is carried out at
-//! the larger one (so no accuracy is lost silently) and counted; [`mixed_precision_events`]
-//! returns the count, and the test suite asserts it stays zero through every computation.
-//!
-//! No item of this module implements a formula of the paper: the traits and backends are what every
-//! formula is written over; each backend states its accuracy (`f64`: IEEE correctly rounded `+ − ×
-//! ÷ sqrt`, libm's elementary functions within about 1 ulp; [`Dd`]: about 2⁻¹⁰⁴; [`Mp`]: correctly
-//! rounded).
+//! Values are not `Copy` and each knows its precision: [`FieldOps::prec`] returns a `Copy` token
+//! that generic code passes to every constructor (`T::from_ratio(1, 3, p)`, `T::pi(p)`). An
+//! [`Mp`] operation on mixed precisions runs at the larger one and is counted
+//! ([`mixed_precision_events`]; the tests assert zero).
 
 mod complex;
 mod dd;

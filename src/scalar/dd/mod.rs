@@ -1,35 +1,10 @@
 //! Double-double arithmetic: [`Dd`], a wrapper over [`twofloat::TwoFloat`] that is accurate to
 //! about 2^-104 relative for `+ − × ÷`, `sqrt` and every elementary function of [`Real`].
-//!
-//! What comes from `twofloat` and what is ours:
-//!
-//! * **Storage, addition and subtraction** are `twofloat`'s (Joldes, Muller & Popescu 2017,
-//!   Algorithm 6: relative error ≤ 3·2^-106).
-//! * **Multiplication** is ours: `twofloat` forms the exact product with `f64::mul_add`, which on
-//!   the default x86-64 target (no `fma` target feature) is a call into libm's *software* fma —
-//!   about 11× slower than the hardware instruction. Here the error-free product
-//!   ([`two_prod`]) uses the hardware FMA — inlined when the crate is compiled with it
-//!   (`-C target-cpu=native`), otherwise detected once at run time and issued by inline
-//!   assembly — and Dekker's splitting on processors without one, out of line so that the FMA
-//!   path stays a load, a compare and the instruction (a processor without FMA pays a call a
-//!   product). Both are exact, so results are the same bit
-//!   for bit. The `dd_arith` bench measures the variants.
-//! * **Division** is ours: `twofloat`'s `TwoFloat / TwoFloat` is accurate only to ~1e-16. We use
-//!   the three-quotient long division (as in Hida, Li & Bailey's QD library), error ≈ 2^-105,
-//!   with the two correction quotients multiplied by 1/b.hi rather than divided by b.hi.
-//! * **sqrt, cbrt, exp, expm1, ln, ln1p, sin, cos, atan2** are ours (twofloat's `ln` is ~1e-12,
-//!   its `atan2` ~1e-16): an `f64` seed and one Newton or Halley step at double-double, or table
-//!   reduction and a Taylor series whose constants are computed once from MPFR.
-//!
-//! `Dd::EPSILON` is `2^-105` (twofloat reports `f64::MIN_POSITIVE`). Decimal text is parsed and
-//! printed through MPFR, exactly: "0.2" becomes the double-double nearest to 1/5, not to the
-//! `f64` 0.2.
-//!
-//! Accuracy, measured against MPFR at 256 bits over 10^4+ random arguments by
-//! `tests/dd_accuracy.rs`: see `docs/design.md` for the table.
-//!
-//! No item of this module implements a formula of the paper: they are the double-double arithmetic
-//! every formula runs on, to the accuracies above.
+//! Storage, addition and subtraction are `twofloat`'s; multiplication (the error-free product
+//! [`two_prod`] on the hardware FMA where there is one, Dekker's splitting elsewhere: the same
+//! bits), division, the elementary functions and decimal text (exactly, through MPFR) are ours,
+//! for the reasons and with the measured accuracy in `docs/design.md` ("Double-double";
+//! `tests/dd_accuracy.rs`). `Dd::EPSILON` is `2^-105`.
 
 mod eft;
 mod elementary;
