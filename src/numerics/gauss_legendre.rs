@@ -25,24 +25,15 @@
 //!    with the precision falling term by term. The weight follows from the same expansion,
 //!    w = 2/((1 − x²) P_n'(x)²) with P_n'(x̃ + sη*) = f'(η*)/s.
 //!
-//! Work for a rule of n nodes at p bits: n²/2 fixed-point steps of `O(p/64)` word operations and
-//! `O(n·p/80)` products at falling precision, against `O(n²)` p-bit products (about
-//! log₂(p/53) + 1 passes of the recurrence a node) for Newton on the recurrence at the target
-//! precision (`reference_build`); `benches/precision_scaling.rs` measures both. The nodes are
-//! independent of one another and are built on every core (`numerics::shares::map_on_threads`:
-//! a rule is often built inside a `OnceLock` initializer, where the threads must not take other
-//! jobs while they wait). Rules are built
-//! once per (n, precision) and kept (`raw_rule`); a rule built at a higher precision is
-//! rounded down for a lower one.
-//!
-//! Accuracy: the values are computed at the target precision plus `GUARD` bits and rounded
-//! once by the caller; `tests/quadrature.rs` compares them with `reference_build` (Newton on the
-//! recurrence at the guard precision) at 256 and 1024 bits.
-//!
-//! No item of this module implements a formula of the paper: they build the Gauss–Legendre rules
-//! under the quadrature routes, nodes and weights correctly rounded or one ulp off
-//! (`tests/quadrature.rs`, against a rule built 64 bits higher and against Newton on the three-term
-//! recurrence).
+//! A rule of n nodes at p bits costs n²/2 fixed-point steps of `O(p/64)` word operations and
+//! `O(n·p/80)` products at falling precision, against `O(n²)` p-bit products for Newton on the
+//! recurrence at the target precision (`reference_build`; `benches/precision_scaling.rs`
+//! measures both). The nodes are independent and built on every core
+//! (`numerics::shares::map_on_threads`); rules are kept per (n, precision) (`raw_rule`), and one
+//! built at a higher precision is rounded down for a lower one. The values are computed `GUARD`
+//! bits beyond the target and rounded once by the caller: every node and weight correctly
+//! rounded or one ulp off (`tests/quadrature.rs`, against `reference_build` at 256 and 1024 bits).
+//! No item of this module implements a formula of the paper.
 
 use crate::error::{Error, Result};
 use crate::numerics::shares::map_on_threads;

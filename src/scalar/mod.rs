@@ -13,7 +13,9 @@
 //! Values are not `Copy` and each knows its precision: [`FieldOps::prec`] returns a `Copy` token
 //! that generic code passes to every constructor (`T::from_ratio(1, 3, p)`, `T::pi(p)`). An
 //! [`Mp`] operation on mixed precisions runs at the larger one and is counted
-//! ([`mixed_precision_events`]; the tests assert zero).
+//! ([`mixed_precision_events`]; the tests assert zero). No item of this module implements a
+//! formula of the paper: the traits and backends are what every formula is written over, each
+//! backend to the accuracy stated above.
 
 mod complex;
 mod dd;

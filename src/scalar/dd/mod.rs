@@ -4,7 +4,8 @@
 //! [`two_prod`] on the hardware FMA where there is one, Dekker's splitting elsewhere: the same
 //! bits), division, the elementary functions and decimal text (exactly, through MPFR) are ours,
 //! for the reasons and with the measured accuracy in `docs/design.md` ("Double-double";
-//! `tests/dd_accuracy.rs`). `Dd::EPSILON` is `2^-105`.
+//! `tests/dd_accuracy.rs`). `Dd::EPSILON` is `2^-105`. No item of this module implements a
+//! formula of the paper: they are the double-double arithmetic every formula runs on.
 
 mod eft;
 mod elementary;
