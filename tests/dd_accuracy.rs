@@ -345,31 +345,3 @@ fn trigonometric() {
         6.0,
     );
 }
-
-#[test]
-fn hyperbolic() {
-    unary(
-        "tanh",
-        18,
-        |r| r.dd_log(-8.0, 1.5, true),
-        |x| x.tanh(),
-        |x| x.tanh(),
-        6.0,
-    );
-    unary(
-        "sinh",
-        19,
-        |r| r.dd_log(-8.0, 2.0, true),
-        |x| x.sinh(),
-        |x| x.sinh(),
-        6.0,
-    );
-    unary(
-        "cosh",
-        20,
-        |r| r.dd_in(-200.0, 200.0),
-        |x| x.cosh(),
-        |x| x.cosh(),
-        6.0,
-    );
-}

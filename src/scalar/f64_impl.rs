@@ -182,8 +182,8 @@ impl Real for f64 {
         }
     }
     std_methods!(
-        floor round sqrt cbrt exp exp_m1 ln ln_1p sin cos atan asin acos tan sinh cosh tanh;
-        atan2 hypot powf;
+        floor round sqrt cbrt exp exp_m1 ln ln_1p sin cos atan asin acos;
+        atan2 hypot;
         is_finite is_nan
     );
     #[inline(always)]
@@ -193,18 +193,6 @@ impl Real for f64 {
     #[inline(always)]
     fn sin_cos(self) -> (f64, f64) {
         f64::sin_cos(self)
-    }
-    #[inline(always)]
-    fn mul_add(self, a: &f64, b: &f64) -> f64 {
-        // A plain multiply-add: f64::mul_add is a libm call unless FMA is compiled in.
-        #[cfg(target_feature = "fma")]
-        {
-            f64::mul_add(self, *a, *b)
-        }
-        #[cfg(not(target_feature = "fma"))]
-        {
-            self * a + b
-        }
     }
     #[inline(always)]
     fn with_prec(&self, _: ()) -> f64 {

@@ -304,52 +304,6 @@ pub trait Real: Field {
         let s = ((Self::one(p) - &self) * (Self::one(p) + &self)).sqrt();
         s.atan2(&self)
     }
-    /// Tangent.
-    fn tan(self) -> Self {
-        let (s, c) = self.sin_cos();
-        s / c
-    }
-    /// Hyperbolic sine, accurate near zero: (m + m/(m+1))/2 with m = e^|x| − 1 (all terms
-    /// positive, no cancellation), sign restored.
-    fn sinh(self) -> Self {
-        let neg = self.is_negative();
-        let m = self.abs().exp_m1();
-        let r = if m.is_finite() {
-            let p = m.prec();
-            let d = m.clone() / (m.clone() + Self::one(p));
-            (m + d).mul_pow2(-1)
-        } else {
-            m
-        };
-        if neg {
-            -r
-        } else {
-            r
-        }
-    }
-    /// Hyperbolic cosine.
-    fn cosh(self) -> Self {
-        let e = self.exp();
-        let p = e.prec();
-        (e.clone() + Self::one(p) / e).mul_pow2(-1)
-    }
-    /// Hyperbolic tangent, accurate near zero.
-    fn tanh(self) -> Self {
-        let p = self.prec();
-        // tanh x = m / (m + 2) with m = e^(2x) - 1; for large |x| use the sign.
-        let neg = self.is_negative();
-        let m = self.abs().mul_pow2(1).exp_m1();
-        let t = if m.is_finite() {
-            m.clone() / (m + Self::from_i64(2, p))
-        } else {
-            Self::one(p)
-        };
-        if neg {
-            -t
-        } else {
-            t
-        }
-    }
     /// √(x² + y²) without undue overflow.
     fn hypot(self, y: &Self) -> Self {
         let a = self.abs();
@@ -361,14 +315,6 @@ pub trait Real: Field {
         let r = small / &big;
         let p = r.prec();
         big * (Self::one(p) + r.square()).sqrt()
-    }
-    /// `self^y` for real `y` (positive base).
-    fn powf(self, y: &Self) -> Self {
-        (self.ln() * y).exp()
-    }
-    /// `self * a + b`, rounded once where the backend can.
-    fn mul_add(self, a: &Self, b: &Self) -> Self {
-        self * a + b
     }
     /// The same value at another precision (rounded when narrowing).
     fn with_prec(&self, p: Self::Prec) -> Self {

@@ -11,8 +11,7 @@
 
 use super::{Field, FieldOps, Real};
 use crate::error::{Error, Result};
-use rug::float::{Constant, Round};
-use rug::ops::PowAssign;
+use rug::float::Constant;
 use rug::Float;
 use std::cmp::Ordering;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
@@ -259,7 +258,7 @@ impl Real for Mp {
         self
     }
     rug_methods!(
-        floor round sqrt recip_sqrt cbrt exp exp_m1 ln ln_1p sin cos atan asin acos tan sinh cosh tanh;
+        floor round sqrt recip_sqrt cbrt exp exp_m1 ln ln_1p sin cos atan asin acos;
         atan2 hypot;
         is_finite is_nan
     );
@@ -267,17 +266,6 @@ impl Real for Mp {
         let c = Float::new(self.0.prec());
         let (s, c) = self.0.sin_cos(c);
         (Mp(s), Mp(c))
-    }
-    fn powf(mut self, y: &Mp) -> Mp {
-        harmonise(&mut self.0, &y.0);
-        self.0.pow_assign(&y.0);
-        self
-    }
-    fn mul_add(mut self, a: &Mp, b: &Mp) -> Mp {
-        harmonise(&mut self.0, &a.0);
-        harmonise(&mut self.0, &b.0);
-        self.0.mul_add_round(&a.0, &b.0, Round::Nearest);
-        self
     }
     fn with_prec(&self, p: MpPrec) -> Mp {
         Mp(Float::with_val(p.0, &self.0))
