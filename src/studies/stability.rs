@@ -275,53 +275,39 @@ fn recursion_map<T: Real>(p: T::Prec, label: Precision, tick: &mut impl FnMut())
     )
 }
 
+/// The relative error of (I1, I2) at `T` by `method`, or by the naive rule where `None`, at ν = 0.2.
+fn cell_error<T: Real<Prec = ()>>(method: Option<Method>, mr: f64, k: f64) -> f64 {
+    match method {
+        Some(m) => integral_error::<T>((), 0.2, mr, k, m),
+        None => naive_error::<T>((), 0.2, mr, k),
+    }
+}
+
 /// All maps at f64 and double-double; `tick` is called after each cell.
 /// Measures the methods for (6), (37) and (40) against 256-bit references or more.
 pub fn run(mut tick: impl FnMut()) -> Vec<DigitMap> {
+    let kinds = [
+        ("series", "Series (37)", Some(Method::Series)),
+        ("naive_quadrature", "64-point Gauss–Legendre in α", None),
+        (
+            "quadrature",
+            "Graded quadrature (crate)",
+            Some(Method::Adaptive),
+        ),
+    ];
     let mut out = Vec::new();
-    let nu = 0.2;
-    out.push(integral_map(
-        Precision::F64,
-        "series",
-        "Series (37)",
-        |mr, k| integral_error::<f64>((), nu, mr, k, Method::Series),
-        &mut tick,
-    ));
-    out.push(integral_map(
-        Precision::DoubleDouble,
-        "series",
-        "Series (37)",
-        |mr, k| integral_error::<Dd>((), nu, mr, k, Method::Series),
-        &mut tick,
-    ));
-    out.push(integral_map(
-        Precision::F64,
-        "naive_quadrature",
-        "64-point Gauss–Legendre in α",
-        |mr, k| naive_error::<f64>((), nu, mr, k),
-        &mut tick,
-    ));
-    out.push(integral_map(
-        Precision::DoubleDouble,
-        "naive_quadrature",
-        "64-point Gauss–Legendre in α",
-        |mr, k| naive_error::<Dd>((), nu, mr, k),
-        &mut tick,
-    ));
-    out.push(integral_map(
-        Precision::F64,
-        "quadrature",
-        "Graded quadrature (crate)",
-        |mr, k| integral_error::<f64>((), nu, mr, k, Method::Adaptive),
-        &mut tick,
-    ));
-    out.push(integral_map(
-        Precision::DoubleDouble,
-        "quadrature",
-        "Graded quadrature (crate)",
-        |mr, k| integral_error::<Dd>((), nu, mr, k, Method::Adaptive),
-        &mut tick,
-    ));
+    for (name, what, method) in kinds {
+        let f64_err = |mr, k| cell_error::<f64>(method, mr, k);
+        out.push(integral_map(Precision::F64, name, what, f64_err, &mut tick));
+        let dd_err = |mr, k| cell_error::<Dd>(method, mr, k);
+        out.push(integral_map(
+            Precision::DoubleDouble,
+            name,
+            what,
+            dd_err,
+            &mut tick,
+        ));
+    }
     out.push(recursion_map::<f64>((), Precision::F64, &mut tick));
     out.push(recursion_map::<Dd>((), Precision::DoubleDouble, &mut tick));
     out
