@@ -14,20 +14,15 @@
 //!   pool (a sweep of several blocks already runs them on every core: a solve inside it keeps
 //!   its loops on its own thread; a sweep of one block runs it on the caller's thread).
 //!
-//! The helpers are not `rayon`'s global pool, and the calling thread never takes other work
-//! while it waits for them: a rule or a layout is often built inside a `OnceLock` initializer,
-//! and a thread that took another job there could meet the same `OnceLock`. The work given to
-//! the helpers never waits for other work, so they cannot deadlock; on a thread of any `rayon`
-//! pool (where `rayon` would make a waiting thread take its own pool's jobs) the one-time work
-//! runs on scoped threads started for it instead.
+//! The calling thread never takes other work while it waits for the helpers, and on a thread of
+//! any `rayon` pool the one-time work runs on scoped threads instead: a rule or a layout is often
+//! built inside a `OnceLock` initializer (`docs/design.md`, "Many cores", says why both matter).
 //!
 //! **Same bits on any number of threads.** Each item is computed by the same operations whatever
-//! share it falls in, and sums are formed afterwards in item order (the chunk sums of
-//! `routes::graded::power_sums` added in chunk order), so that a result does not depend on the
-//! number of threads; `tests/high_precision.rs` (`node_loops_on_threads_give_the_same_bits`)
-//! compares solves on the cores with solves on a single thread, bit for bit. The threads take the
-//! shares from a common list, so that a share whose thread cannot be started (or starts late)
-//! is taken by another.
+//! share it falls in, and sums are formed afterwards in item order, so that a result does not
+//! depend on the number of threads (`tests/high_precision.rs`,
+//! `node_loops_on_threads_give_the_same_bits`). The threads take the shares from a common list,
+//! so that a share whose thread cannot be started (or starts late) is taken by another.
 //!
 //! No item of this module implements a formula of the paper.
 

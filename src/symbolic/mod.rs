@@ -18,9 +18,9 @@
 //! sympy input or JSON; [`ke_condition`] evaluates the condition number of the K, E basis from
 //! the closed forms and [`pole_terms`] their pole at e² = 0 (the cancellation).
 //!
-//! Cost: F_30 and α_50, β_50 each take a few milliseconds (`benches/symbolic.rs`); the work grows
-//! about as n³ (degree n numerators, coefficients of O(n) digits, n steps), hence the bounds
-//! [`MAX_COEFFICIENT_INDEX`] and [`MAX_MOMENT_INDEX`].
+//! The work grows about as n³ (degree n numerators, coefficients of O(n) digits, n steps;
+//! `benches/symbolic.rs` measures it), hence the bounds [`MAX_COEFFICIENT_INDEX`] and
+//! [`MAX_MOMENT_INDEX`].
 
 mod poly;
 mod ratfunc;
