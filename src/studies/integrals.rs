@@ -5,8 +5,10 @@
 use super::median_ns;
 use super::svg::{Chart, Series, Style};
 use moving_hertz::routes::AxisRatio;
-use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
-use moving_hertz::{integrals, ExactInputs, IntegralOptions, Integrals, Method, Route, Speed};
+use moving_hertz::scalar::{Mp, MpPrec, Precision, Real};
+use moving_hertz::{
+    integrals, with_precision, ExactInputs, IntegralOptions, Integrals, Method, Route, Speed,
+};
 use rug::Float;
 
 type Prepared<T> = (Speed<T>, AxisRatio<T>);
@@ -167,29 +169,10 @@ pub fn run(
         progress(mr);
         let inputs = ExactInputs::parse(nu, mr, k)?;
         for method in METHODS {
-            rows.push(measure::<f64>(
-                &inputs,
-                (),
-                Precision::F64,
-                method,
-                budget_ms,
-            ));
-            rows.push(measure::<Dd>(
-                &inputs,
-                (),
-                Precision::DoubleDouble,
-                method,
-                budget_ms,
-            ));
-            for bits in [128u32, 256] {
-                let p = MpPrec::clamped(bits);
-                rows.push(measure::<Mp>(
-                    &inputs,
-                    p,
-                    Precision::Mpfr(p),
-                    method,
-                    budget_ms,
-                ));
+            for prec in super::precisions(&[128, 256]) {
+                rows.push(with_precision!(prec, T, p => {
+                    measure::<T>(&inputs, p, prec, method, budget_ms)
+                }));
             }
         }
     }

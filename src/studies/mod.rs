@@ -11,7 +11,7 @@ pub mod series;
 pub mod stability;
 pub mod svg;
 
-use moving_hertz::scalar::Precision;
+use moving_hertz::scalar::{MpPrec, Precision};
 use std::io::{IoSlice, Write};
 use std::path::Path;
 use std::time::Instant;
@@ -170,6 +170,18 @@ pub fn correct_digits(err: f64, exact: f64) -> f64 {
 /// digits of its unit roundoff). Implements no equation of the paper.
 pub fn full_digits(bits: u32) -> f64 {
     (bits as f64 - 1.0) * std::f64::consts::LOG10_2
+}
+
+/// f64, double-double and MPFR at each of `mpfr_bits`, in that order: the precisions a study
+/// runs at.
+pub fn precisions(mpfr_bits: &[u32]) -> Vec<Precision> {
+    let mpfr = mpfr_bits
+        .iter()
+        .map(|&b| Precision::Mpfr(MpPrec::clamped(b)));
+    [Precision::F64, Precision::DoubleDouble]
+        .into_iter()
+        .chain(mpfr)
+        .collect()
 }
 
 /// Median wall time of `f` in nanoseconds, over enough repetitions to fill about `budget_ms`

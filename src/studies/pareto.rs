@@ -6,8 +6,8 @@
 use super::median_ns;
 use super::svg::{Chart, Series, Style};
 use moving_hertz::physics::Material;
-use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
-use moving_hertz::{solve_ellipse, Method, Options};
+use moving_hertz::scalar::{Mp, MpPrec, Precision, Real};
+use moving_hertz::{solve_ellipse, with_precision, Method, Options};
 use rug::Float;
 
 /// One measurement.
@@ -120,11 +120,8 @@ pub fn run(
                 reference: &reference,
                 budget_ms,
             };
-            rows.push(measure::<f64>(&case, (), Precision::F64));
-            rows.push(measure::<Dd>(&case, (), Precision::DoubleDouble));
-            for bits in MPFR_BITS {
-                let p = MpPrec::clamped(bits);
-                rows.push(measure::<Mp>(&case, p, Precision::Mpfr(p)));
+            for prec in super::precisions(&MPFR_BITS) {
+                rows.push(with_precision!(prec, T, p => measure::<T>(&case, p, prec)));
             }
         }
     }

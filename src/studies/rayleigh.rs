@@ -7,7 +7,7 @@
 
 use super::svg::{Chart, Series, Style};
 use moving_hertz::physics::{ClosedForm, RayleighRoots};
-use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
+use moving_hertz::scalar::{Mp, MpPrec, Precision, Real};
 use rug::Float;
 
 /// One measurement.
@@ -102,11 +102,8 @@ fn measure_at<T: Real>(p: T::Prec, label: Precision, nus: &[f64], out: &mut Vec<
 /// few percent.
 pub fn run(nus: &[f64]) -> Vec<RootError> {
     let mut out = Vec::new();
-    measure_at::<f64>((), Precision::F64, nus, &mut out);
-    measure_at::<Dd>((), Precision::DoubleDouble, nus, &mut out);
-    for bits in [128u64, 256] {
-        let p = MpPrec::clamped(bits as u32);
-        measure_at::<Mp>(p, Precision::Mpfr(p), nus, &mut out);
+    for prec in super::precisions(&[128, 256]) {
+        moving_hertz::with_precision!(prec, T, p => measure_at::<T>(p, prec, nus, &mut out));
     }
     out
 }

@@ -398,15 +398,10 @@ fn slope(pts: &[(f64, f64)]) -> f64 {
     sxy / sxx
 }
 
-/// The precisions of the recursion study.
+/// The precisions of the recursion study: f64, double-double, MPFR 128 and 256 bits.
 /// For the study of (40); exact.
 pub fn recursion_precisions() -> Vec<Precision> {
-    vec![
-        Precision::F64,
-        Precision::DoubleDouble,
-        Precision::Mpfr(MpPrec::clamped(128)),
-        Precision::Mpfr(MpPrec::clamped(256)),
-    ]
+    super::precisions(&[128, 256])
 }
 
 /// Runs the forward study for every k² of [`FORWARD_MC`] at every precision of
