@@ -1,17 +1,11 @@
 //! The moving-load surface Green's function: Γ of (5), its regular part G of (44)–(45) and the
 //! normalised g = −πΓ whose Taylor series (35) starts at f0 = 1 − ν.
 //!
-//! Everything is evaluated through the rationalised form
-//!
-//! ```text
-//! Γ = √(1 − γx)·D / (π (x − m1)(x² − (m2 + m3)x + m2 m3)),   D = (2 − x)² + 4√((1 − γx)(1 − x)),
-//! x − m1 = −m1(1 − M_R²),   so   Γ = −G/(1 − M_R²),   G = √(1 − γx)·D / (π m1 (x² − s x + q)),
-//! ```
-//!
-//! with s = m2 + m3 = 8 − m1 and q = m2 m3 = 8/((1 − ν)m1) real for every ν. No term cancels:
-//! not as V → 0, where the printed (5) divides two vanishing quantities (R → 0), nor as
-//! V → c_R, where the pole is carried exactly by 1 − M_R² = (1 − M_R)(1 + M_R). Relative
-//! accuracy: a few ε for every 0 ≤ M_R < 1 (tests/green.rs).
+//! Everything is evaluated through the rationalised form (44)–(45) (`docs/theory.md`), with
+//! m2 + m3 = 8 − m1 and m2 m3 = 8/((1 − ν)m1) real for every ν. No term cancels: not as V → 0,
+//! where the printed (5) divides two vanishing quantities, nor as V → c_R, where the pole is
+//! carried exactly by 1 − M_R² = (1 − M_R)(1 + M_R). Relative accuracy: a few ε for every
+//! 0 ≤ M_R < 1 (`tests/rayleigh.rs`, `green_function_static_limit_and_reference`).
 
 use super::material::{Material, Speed};
 use crate::scalar::Real;
