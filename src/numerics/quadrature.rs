@@ -475,34 +475,12 @@ fn midpoint<T: Real>(a: &T, b: &T) -> Option<T> {
 /// [`Error::NoConvergence`] (with evaluations spent and the relative estimate reached) when the
 /// evaluation cap is hit or a panel with a non-negligible estimate is too narrow to split.
 pub fn integrate<T: Real, F: FnMut(&T) -> T>(
-    f: F,
-    points: &[T],
-    tol: &T,
-    limits: Limits,
-) -> Result<Quadrature<T>> {
-    integrate_plus(f, points, &T::zero(tol.prec()), tol, limits)
-}
-
-/// `c + ∫f` by [`integrate`], the tolerance judged against the sum: the total estimate at most
-/// `max(tol·|c + I|, 4ε·(|c| + Σ|I_panel|)) + min_positive`. For a remainder integrand after a
-/// part `c` has been taken out in closed form, whose own integral may be small or cancel: its
-/// accuracy matters relative to the whole, and its rounding (a few ε of the terms it was formed
-/// from) need not reach a few ε of itself. The returned error is that of the quadrature
-/// (`c`'s rounding is the caller's). Accuracy and errors as [`integrate`].
-pub(crate) fn integrate_plus<T: Real, F: FnMut(&T) -> T>(
     mut f: F,
     points: &[T],
-    offset: &T,
     tol: &T,
     limits: Limits,
 ) -> Result<Quadrature<T>> {
-    let q = integrate_vec_plus(
-        |x: &T| [f(x)],
-        points,
-        std::array::from_ref(offset),
-        tol,
-        limits,
-    )?;
+    let q = integrate_vec(|x: &T| [f(x)], points, tol, limits)?;
     let ([value], [error]) = (q.values, q.errors);
     Ok(Quadrature {
         value,
@@ -528,8 +506,10 @@ pub(crate) fn integrate_vec<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
 }
 
 /// `c_c + ∫f_c` for each component by [`integrate_vec`], each threshold judged against the
-/// sum, `max(tol·|c_c + I_c|, 4ε·(|c_c| + Σ|I_c,panel|)) + min_positive` (as [`integrate_plus`]).
-/// The returned values include the `c_c`, the errors are the quadrature's.
+/// sum, `max(tol·|c_c + I_c|, 4ε·(|c_c| + Σ|I_c,panel|)) + min_positive`: for a remainder
+/// integrand after a part `c_c` has been taken out in closed form, whose accuracy matters
+/// relative to the whole. The returned values include the `c_c`, the errors are the
+/// quadrature's (`c_c`'s rounding is the caller's).
 pub(crate) fn integrate_vec_plus<T: Real, const N: usize, F: FnMut(&T) -> [T; N]>(
     mut f: F,
     points: &[T],

@@ -15,7 +15,7 @@ use moving_hertz::routes::{direct, AxisRatio, Evaluation};
 // adaptive route's five integrals)
 
 use super::{limits, DirectSetup};
-use crate::numerics::quadrature::{integrate, integrate_plus};
+use crate::numerics::quadrature::{integrate, integrate_vec_plus, Quadrature};
 use crate::routes::beyond_exponent_range;
 
 impl<T: Real> DirectSetup<T> {
@@ -78,6 +78,30 @@ struct RightPeak<T: Real> {
     e0: T,
     g0: T,
     value: T,
+}
+
+/// `c + ∫f` to relative tolerance `tol` judged against the sum (the one-component
+/// `integrate_vec_plus`): the reference's remainder integrands after a closed-form part.
+fn integrate_plus<T: Real>(
+    mut f: impl FnMut(&T) -> T,
+    points: &[T],
+    offset: &T,
+    tol: &T,
+    limits: crate::numerics::quadrature::Limits,
+) -> Result<Quadrature<T>> {
+    let q = integrate_vec_plus(
+        |x: &T| [f(x)],
+        points,
+        std::array::from_ref(offset),
+        tol,
+        limits,
+    )?;
+    let ([value], [error]) = (q.values, q.errors);
+    Ok(Quadrature {
+        value,
+        error,
+        evaluations: q.evaluations,
+    })
 }
 
 /// J0 of (32) alone, J0 = ∫_0^π g(V sin φ)/(k² cos²φ + sin²φ)^{1/2} dφ in the variables of the
