@@ -67,15 +67,9 @@ pub fn depressed_cubic<T: Real>(nu: &T) -> (T, T) {
     (pp, qq)
 }
 
-/// The discriminant quantity (q/2)² + (p/3)³: negative when the three roots are real.
-/// Of the Rayleigh cubic (6); a few ε absolute relative to (q/2)², so its sign is unreliable where
-/// it nearly vanishes (ν ≈ 0.263).
-pub fn cardano_discriminant<T: Real>(nu: &T) -> T {
-    let (pp, qq) = depressed_cubic(nu);
-    discriminant(&pp, &qq)
-}
-
-/// (q/2)² + (p/3)³ of the depressed cubic's `pp` and `qq`.
+/// (q/2)² + (p/3)³ of the depressed cubic's `pp` and `qq`: negative when the three roots are
+/// real; a few ε absolute relative to (q/2)², so its sign is unreliable where it nearly
+/// vanishes (ν ≈ 0.263).
 fn discriminant<T: Real>(pp: &T, qq: &T) -> T {
     qq.clone().mul_pow2(-1).square() + pp.clone().div_i64(3).powi(3)
 }
