@@ -173,7 +173,7 @@ pub fn full_digits(bits: u32) -> f64 {
 }
 
 /// f64, double-double and MPFR at each of `mpfr_bits`, in that order: the precisions a study
-/// runs at.
+/// runs at. Implements no equation of the paper.
 pub fn precisions(mpfr_bits: &[u32]) -> Vec<Precision> {
     let mpfr = mpfr_bits
         .iter()
