@@ -667,6 +667,8 @@ fn push_row<T: Real>(
     t: &[&str; 3],
     r: &moving_hertz::Result<Ellipse<T>>,
 ) {
+    // Room for the whole row first, so that its cells never reallocate.
+    out.reserve(ROW_BYTES);
     let mut row = Row::new(out, format);
     for (key, cell) in keys.iter().zip(t) {
         row.open(key);
@@ -686,6 +688,10 @@ fn push_row<T: Real>(
     row.end();
 }
 
+/// Room for a row of `sweep` at `f64` (its longest: three inputs of up to 24 bytes, two
+/// decimals of 24, two bounds of 10, the labels and count, in JSON their keys and quotes).
+const ROW_BYTES: usize = 256;
+
 /// One line of the output being written: CSV cells, or a JSON object's members (an empty cell
 /// is left out of the object). The one writer of the `sweep` commands' cells: numbers with
 /// every digit of the working precision ([`Real::push_decimal`]), bounds with three
@@ -698,7 +704,7 @@ pub(super) struct Row<'a> {
 
 impl<'a> Row<'a> {
     /// A line begun in `out` (in JSON its brace); [`Row::end`] ends it.
-    #[inline]
+    #[inline(always)]
     pub(super) fn new(out: &'a mut Vec<u8>, format: Format) -> Self {
         let json = format == Format::Jsonl;
         if json {
@@ -712,7 +718,7 @@ impl<'a> Row<'a> {
     }
 
     /// Ends the line (in JSON the closing brace).
-    #[inline]
+    #[inline(always)]
     pub(super) fn end(self) {
         if self.json {
             self.out.push(b'}');
@@ -721,7 +727,7 @@ impl<'a> Row<'a> {
     }
 
     /// The separator before every cell but the first, and in JSON the key.
-    #[inline]
+    #[inline(always)]
     fn open(&mut self, key: &str) {
         if !self.first {
             self.out.push(b',');
@@ -735,7 +741,7 @@ impl<'a> Row<'a> {
 
     /// A cell that needs no quoting or escaping in either format (a number, a label), written
     /// by `write` (in JSON as a string).
-    #[inline]
+    #[inline(always)]
     fn number(&mut self, key: &str, write: impl FnOnce(&mut Vec<u8>)) {
         self.open(key);
         if self.json {
@@ -748,32 +754,32 @@ impl<'a> Row<'a> {
     }
 
     /// A value with every digit of the working precision.
-    #[inline]
+    #[inline(always)]
     pub(super) fn value<T: Real>(&mut self, key: &str, x: &T) {
         self.number(key, |o| x.push_decimal(o));
     }
 
     /// A value and its bound under the two `keys`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn estimated<T: Real>(&mut self, keys: [&str; 2], x: &Estimated<T>) {
         self.value(keys[0], &x.value);
         self.number(keys[1], |o| x.error.push_text(o));
     }
 
     /// A label (ASCII, no comma or quote: an axis, a route).
-    #[inline]
+    #[inline(always)]
     pub(super) fn label(&mut self, key: &str, label: &str) {
         self.number(key, |o| o.extend_from_slice(label.as_bytes()));
     }
 
     /// A count, in decimal digits.
-    #[inline]
+    #[inline(always)]
     pub(super) fn count(&mut self, key: &str, n: usize) {
         self.number(key, |o| push_count(o, n));
     }
 
     /// A cell of any text: quoted where CSV or JSON needs it; an empty one is left out of JSON.
-    #[inline]
+    #[inline(always)]
     pub(super) fn text(&mut self, key: &str, v: &str) {
         if self.json && v.is_empty() {
             return;
@@ -784,7 +790,7 @@ impl<'a> Row<'a> {
 
     /// The cells of a point that failed: empty under `empty` (the result's columns), and the
     /// error under `error`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn failed(&mut self, empty: &[&str], err: &moving_hertz::Error) {
         for key in empty {
             self.text(key, "");
