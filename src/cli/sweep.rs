@@ -617,9 +617,10 @@ fn solve_and_write<T: Real + Send + Sync>(
     // is solved.
     let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
         let mut failed = 0;
-        for (j, r) in range.clone().zip(grid.solve(range, &opts)) {
+        // Read in place (each result is a few hundred bytes: not moved out).
+        for (j, r) in range.clone().zip(&grid.solve(range, &opts)) {
             failed += usize::from(r.is_err());
-            push_row(out, a.run.format, &keys, &grid.texts(j), &r);
+            push_row(out, a.run.format, &keys, &grid.texts(j), r);
         }
         failed
     };
