@@ -415,7 +415,8 @@ impl<T: Real> SpeedGiven<T> {
     /// The speed in the material `mat` (of the point's ν), from its M_R, gap or velocity
     /// ([`Material::speed`], [`Material::speed_from_gap`], [`Material::parse_speed`],
     /// [`Solid::speed_from_velocity`], and their typed errors): what [`ellipses`] solves a
-    /// point at, and what [`ellipses_at`] takes formed. Equations as those.
+    /// point at, and what [`ellipses_at`] takes formed. Equations and accuracy (of M_R and its
+    /// gap 1 − M_R) as those.
     pub fn speed_in(&self, mat: &Material<T>) -> Result<Speed<T>> {
         match self {
             SpeedGiven::Mr(mr) => mat.speed(mr.clone()),
