@@ -1,14 +1,15 @@
 //! The calibration driver of the sweep (docs/calibration.md, "Sweeps"): an A1/B1 curve of
 //! POINTS points (default 1,000; 10^LO … 10^HI, log-spaced) at ν = 0.25, M_R = 0.9 (or the gap
 //! 1 − M_R = GAP, the speeds of `sweep --gap`: tools/sweep_point_cost.sh), solved one point at a time
-//! (`indep`), by `sweep::ellipses` on THREADS threads (`sweep`; default 1), or neither (`none`: the fixed costs
+//! (`indep`), by `sweep::ellipses` on THREADS threads (`sweep`; default 1), by `sweep::ellipses_at`
+//! at the one speed formed once (`at`, as the `sweep` command solves), or neither (`none`: the fixed costs
 //! alone, after the same warm-up); prints the evaluations at the working precision. Per-point
 //! instruction counts come from running it under callgrind and subtracting `none`:
 //!
 //! `valgrind --tool=callgrind target/release/examples/sweep_cost f64 sweep -3 0`
 //!
 //! Run: `cargo run --release --example sweep_cost -- PRECISION MODE LO HI [THREADS [POINTS [GAP]]]`
-//! (PRECISION f64, dd or bits; MODE indep, sweep or none). `tools/python_bench.py` times the
+//! (PRECISION f64, dd or bits; MODE indep, sweep, at or none). `tools/python_bench.py` times the
 //! Python package's sweep against `f64 sweep -3 3 2 1000000`.
 
 use moving_hertz::prelude::*;
@@ -55,6 +56,18 @@ fn run<T: Real + Send + Sync>(
         }
         "sweep" => {
             for r in pool.install(|| sweep::ellipses(&points, &opts)) {
+                evaluations += r?.iterations();
+            }
+        }
+        "at" => {
+            let formed = Ok(speed.clone());
+            let at: Vec<_> = (ratios.iter())
+                .map(|ratio| sweep::AtSpeed {
+                    speed: &formed,
+                    ratio,
+                })
+                .collect();
+            for r in pool.install(|| sweep::ellipses_at(&at, &opts)) {
                 evaluations += r?.iterations();
             }
         }

@@ -19,6 +19,10 @@
 //! one A1/B1), of up to four earlier roots of the block, and from the static ellipse when that
 //! does not converge within a few evaluations. The higher stages run as in
 //! [`crate::solve_ellipse`], so that the ladder's accuracy is unchanged.
+//! [`ellipses`] forms the speed of each block's points in that block; [`ellipses_at`] takes
+//! speeds the caller formed once, so that one speed serves every block of its points (its fixed
+//! rule's set-up, the grid seed's nodes and the graded route's node values built once a speed
+//! rather than once a block) with the same results.
 //!
 //! **Threads bound to CPUs.** The operating system may run two threads of a pool on one CPU
 //! for milliseconds while another CPU idles, so that a sweep of a few milliseconds gains
@@ -143,17 +147,49 @@ where
                         material = Some((&pt.nu, Material::new(pt.nu.clone())));
                     }
                     let speed = match material.as_ref().map(|(_, m)| m) {
-                        Some(Ok(mat)) => pt.speed_of(mat),
+                        Some(Ok(mat)) => pt.speed.speed_in(mat),
                         Some(Err(e)) => Err(e.clone()),
-                        None => Material::new(pt.nu.clone()).and_then(|m| pt.speed_of(&m)),
+                        None => Material::new(pt.nu.clone()).and_then(|m| pt.speed.speed_in(&m)),
                     };
                     &last.insert((pt, speed)).1
                 }
             };
-            *slot = match speed {
-                Ok(sp) => run.solve(sp, &pt.ratio),
-                Err(e) => Err(e.clone()),
-            };
+            *slot = run.solve_at(speed, &pt.ratio);
+        }
+    })
+}
+
+/// One point of [`ellipses_at`]: A1/B1 at a speed the caller formed once for every point that
+/// shares it, or the error of forming it (which becomes the point's result).
+#[derive(Debug)]
+pub struct AtSpeed<'s, T: Real> {
+    /// The speed and its material ([`SpeedGiven::speed_in`]), or the error that forming them
+    /// gave.
+    pub speed: &'s Result<Speed<T>>,
+    /// A1/B1 = R2/R1 > 0.
+    pub ratio: &'s T,
+}
+
+/// [`ellipses`] at speeds the caller formed: the same blocks, continuation and results, bit for
+/// bit, as [`ellipses`] gives for the same (ν, speed, A1/B1). A speed shared by many points (the
+/// same one, or clones of it, which share its set-ups and solve cache) serves them in every
+/// block and on every thread: its fixed rule's set-up and the grid seed's nodes are built once
+/// for all of them rather than once a block (what a speed keeps depends on the speed alone,
+/// never on the solve that filled it, so that the results do not depend on which block ran
+/// first). The `sweep` command solves its grid so, a speed kept while its points are being
+/// solved. One result per point, in input order.
+/// Implements (33) per point, each within its own bound as [`crate::solve_ellipse`].
+pub fn ellipses_at<T>(points: &[AtSpeed<'_, T>], opts: &Options<T>) -> Vec<Result<Ellipse<T>>>
+where
+    T: Real + Send + Sync,
+{
+    let worth = points
+        .first()
+        .map_or(1, |pt| worth::<T>(points.len(), pt.ratio));
+    in_blocks(points, worth, |block, out| {
+        let mut run = Run::new(opts);
+        for (pt, slot) in block.iter().zip(out) {
+            *slot = run.solve_at(pt.speed, pt.ratio);
         }
     })
 }
@@ -375,11 +411,14 @@ fn unsolved() -> Error {
     }
 }
 
-impl<T: Real> EllipsePoint<T> {
-    /// The point's speed in the material of its ν, from its M_R, gap or velocity (their typed
-    /// errors).
-    fn speed_of(&self, mat: &Material<T>) -> Result<Speed<T>> {
-        match &self.speed {
+impl<T: Real> SpeedGiven<T> {
+    /// The speed in the material `mat` (of the point's ν), from its M_R, gap or velocity
+    /// ([`Material::speed`], [`Material::speed_from_gap`], [`Material::parse_speed`],
+    /// [`Solid::speed_from_velocity`], and their typed errors): what [`ellipses`] solves a
+    /// point at, and what [`ellipses_at`] takes formed. Equations and accuracy (of M_R and its
+    /// gap 1 − M_R) as those.
+    pub fn speed_in(&self, mat: &Material<T>) -> Result<Speed<T>> {
+        match self {
             SpeedGiven::Mr(mr) => mat.speed(mr.clone()),
             SpeedGiven::Gap(gap) => mat.speed_from_gap(gap.clone()),
             SpeedGiven::Text(mr) => mat.parse_speed(mr),
@@ -406,6 +445,15 @@ impl<'o, T: Real> Run<'o, T> {
             opts,
             solver: None,
             trail: Trail::default(),
+        }
+    }
+
+    /// [`Run::solve`] at a speed that may have failed to form (its error is the result).
+    #[inline]
+    fn solve_at(&mut self, speed: &Result<Speed<T>>, ratio: &T) -> Result<Ellipse<T>> {
+        match speed {
+            Ok(sp) => self.solve(sp, ratio),
+            Err(e) => Err(e.clone()),
         }
     }
 

@@ -206,6 +206,69 @@ fn same_bits_on_one_four_and_sixteen_threads() {
     check_reproducible(&grid::<Mp>(p, 20, 2.0)[..3 * BLOCK]);
 }
 
+/// k, e, their bounds and the evaluation count of every point, as text (for comparisons bit for
+/// bit), or its error.
+fn full_bits<T: Real>(r: &[moving_hertz::Result<Ellipse<T>>]) -> Vec<String> {
+    r.iter()
+        .map(|e| match e {
+            Ok(e) => format!(
+                "{} {} {} {} {}",
+                e.k().value.to_decimal(),
+                e.k().error,
+                e.e().value.to_decimal(),
+                e.e().error,
+                e.iterations()
+            ),
+            Err(e) => e.to_string(),
+        })
+        .collect()
+}
+
+/// `ellipses_at` at speeds formed once for all their points (each curve's speed shared by
+/// every block of it, and warmed beforehand by a sweep of the points in reverse order) gives
+/// the bits of `ellipses`, whose blocks form their own speeds: k, e, their bounds and the
+/// evaluation count of every point, on 1 and 4 threads; a speed that failed to form (ν = 0.7)
+/// is its points' error.
+fn check_shared_speeds<T: Real + Send + Sync>(p: T::Prec, per_curve: usize) {
+    let x = |v: f64| T::from_f64(v, p);
+    let mut pts = grid::<T>(p, per_curve, 3.0);
+    let ratios: Vec<T> = pts[..per_curve].iter().map(|pt| pt.ratio.clone()).collect();
+    pts.extend(EllipsePoint::grid(
+        &[x(0.7)],
+        &[SpeedGiven::Mr(x(0.5))],
+        &ratios,
+    ));
+    let opts = Options::default();
+    let own = full_bits(&on_threads(2, || sweep::ellipses(&pts, &opts)));
+    let speeds: Vec<_> = (pts.chunks(per_curve))
+        .map(|c| Material::new(c[0].nu.clone()).and_then(|m| c[0].speed.speed_in(&m)))
+        .collect();
+    let at: Vec<_> = (pts.iter().enumerate())
+        .map(|(j, pt)| sweep::AtSpeed {
+            speed: &speeds[j / per_curve],
+            ratio: &pt.ratio,
+        })
+        .collect();
+    let reversed: Vec<_> = (at.iter().rev())
+        .map(|a| sweep::AtSpeed {
+            speed: a.speed,
+            ratio: a.ratio,
+        })
+        .collect();
+    on_threads(4, || sweep::ellipses_at(&reversed, &opts));
+    for threads in [1, 4] {
+        let shared = full_bits(&on_threads(threads, || sweep::ellipses_at(&at, &opts)));
+        assert_eq!(own, shared, "{threads} threads");
+    }
+    assert!(own[own.len() - 1].contains("nu"), "{}", own[own.len() - 1]);
+}
+
+#[test]
+fn shared_speeds_give_the_bits_of_ellipses() {
+    check_shared_speeds::<f64>((), 3 * BLOCK + 5);
+    check_shared_speeds::<Dd>((), BLOCK + 7);
+}
+
 /// A sweep called while another thread of its pool is busy with unrelated work finishes on
 /// the free thread (its blocks are spawned jobs that a busy thread never has to take), with the
 /// same bits as on one thread: the busy thread here waits for the sweep's own end, which a

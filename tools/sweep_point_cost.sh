@@ -9,10 +9,12 @@
 # point adds: its solve, its row, writing it; the axes' values, start-up and the ratio axis are
 # shared and cancel); a warm single solve's is examples/sweep_cost's `indep` (1,000
 # `solve_ellipse` calls at one gap, A1/B1 from 1e-2 to 1e2) less its `none`, over 1,000, at
-# each of the three gaps added. Times: the same differences of the processes' CPU time (user +
-# system, least of 5 runs each, one thread, output to /dev/null): CPU time, not wall time, so
-# that a loaded machine's waits are left out (its caches are shared all the same: re-run on an
-# idle machine for times to quote).
+# each of the three gaps added; the library's part of a sweep point, `sweep::ellipses_at` at the
+# warm speed (examples/sweep_cost `at` less `none`, the same 1,000 points), likewise. Times: the
+# same differences of the processes' CPU time (user + system, least of 5 runs each, one thread,
+# output to /dev/null; the single solves timed over 10,000 points, so that each difference is
+# milliseconds): CPU time, not wall time, so that a loaded machine's waits are left out (its
+# caches are shared all the same: re-run on an idle machine for times to quote).
 #
 # Run from the repository root: bash tools/sweep_point_cost.sh > docs/data/sweep_point_cost.txt
 # (builds the binary and the example; about two minutes under valgrind.)
@@ -49,6 +51,13 @@ done
 solve_ir=$((total / 3))
 echo "warm solve_ellipse, mean of the three gaps  $solve_ir"
 awk -v a="$sweep_ir" -v b="$solve_ir" 'BEGIN { printf "sweep / warm solve  %.3f\n", a / b }'
+at_total=0
+for g in $GAPS; do
+  at=$(count "$EX" f64 at -2 2 1 1000 "$g")
+  none=$(count "$EX" f64 none -2 2 1 1000 "$g")
+  at_total=$((at_total + (at - none) / 1000))
+done
+echo "sweep::ellipses_at at a warm speed (the solve alone, no row), mean of the three gaps  $((at_total / 3))"
 echo
 echo "CPU time a point (user + system, least of 5 runs, 1 thread)"
 cpu_us() { # least CPU time of 5 runs of the command, in microseconds
@@ -70,9 +79,9 @@ sweep_ns=$(((t4 - t1) * 1000 / 30000))
 echo "sweep (whole process, marginal)  $sweep_ns ns"
 sum=0
 for g in $GAPS; do
-  indep=$(cpu_us "$EX" f64 indep -2 2 1 1000 "$g")
-  none=$(cpu_us "$EX" f64 none -2 2 1 1000 "$g")
-  ns=$(((indep - none) * 1000 / 1000))
+  indep=$(cpu_us "$EX" f64 indep -2 2 1 10000 "$g")
+  none=$(cpu_us "$EX" f64 none -2 2 1 10000 "$g")
+  ns=$(((indep - none) * 1000 / 10000))
   sum=$((sum + ns))
   echo "warm solve_ellipse at gap $g  $ns ns"
 done

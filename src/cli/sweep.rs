@@ -9,10 +9,12 @@ use super::pipeline;
 use super::progress::Progress;
 use super::CliError;
 use moving_hertz::scalar::{short, Precision, Real};
-use moving_hertz::sweep::{self, EllipsePoint, SpeedGiven, BLOCK};
-use moving_hertz::{with_precision, Ellipse, Estimated, Material, Method, Options};
+use moving_hertz::sweep::{self, AtSpeed, SpeedGiven, BLOCK};
+use moving_hertz::{with_precision, Ellipse, Estimated, Material, Method, Options, Speed};
 use rayon::prelude::*;
 use rug::{Float, Rational};
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock, PoisonError};
 
 /// The most points one sweep solves (checked before any work).
 pub const POINT_CAP: usize = 10_000_000;
@@ -406,44 +408,138 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
 
 /// The grid's three axes, each value with its text, in the order ν, speed, ratio (ratio
 /// fastest): its points are formed a block at a time, so that a sweep holds one batch of points
-/// and rows, not all of them.
-struct Grid<T> {
+/// and rows, not all of them; each (ν, speed) pair's speed is formed once, when its first block
+/// is solved, and shared by every block of its points ([`sweep::ellipses_at`]: its set-ups
+/// and solve cache built once a speed, not once a block), until its last point is taken.
+struct Grid<T: Real> {
     nus: Vec<(String, T)>,
     speeds: Vec<(String, SpeedGiven<T>)>,
     ratios: Vec<(String, T)>,
+    /// The materials of the ν in use, by index of ν.
+    materials: Live<moving_hertz::Result<Material<T>>>,
+    /// The speeds of the (ν, speed) pairs in use, by index of the pair (ν slowest).
+    formed: Live<moving_hertz::Result<Speed<T>>>,
 }
 
 impl<T: Real> Grid<T> {
-    /// The grid with each value's text as its output cell in `format`: quoted where CSV or
-    /// JSON needs it, once a value rather than once a row.
-    fn cells(self, format: Format) -> Self {
-        let cell = |text: String| {
-            let mut out = Vec::new();
-            push_cell(&mut out, format == Format::Jsonl, &text);
-            String::from_utf8_lossy(&out).into_owned()
-        };
+    /// The grid of these axes with each value's text as its output cell in `format`: quoted
+    /// where CSV or JSON needs it, once a value rather than once a row.
+    fn new(
+        nus: Vec<(String, T)>,
+        speeds: Vec<(String, SpeedGiven<T>)>,
+        ratios: Vec<(String, T)>,
+        format: Format,
+    ) -> Self {
         Grid {
-            nus: self.nus.into_iter().map(|(t, x)| (cell(t), x)).collect(),
-            speeds: self.speeds.into_iter().map(|(t, x)| (cell(t), x)).collect(),
-            ratios: self.ratios.into_iter().map(|(t, x)| (cell(t), x)).collect(),
+            nus: cells(nus, format),
+            speeds: cells(speeds, format),
+            ratios: cells(ratios, format),
+            materials: Live::default(),
+            formed: Live::default(),
         }
     }
 
-    /// The `j`-th point (ratio fastest) and the text of its ν, speed and ratio (their cells,
-    /// after [`Grid::cells`]).
-    fn point(&self, j: usize) -> (EllipsePoint<T>, [&str; 3]) {
+    /// The text of the `j`-th point's ν, speed and ratio (their cells).
+    fn texts(&self, j: usize) -> [&str; 3] {
         let (nr, ns) = (self.ratios.len(), self.speeds.len());
-        let (nu, speed, ratio) = (
-            &self.nus[j / (nr * ns)],
-            &self.speeds[(j / nr) % ns],
-            &self.ratios[j % nr],
-        );
-        let pt = EllipsePoint {
-            nu: nu.1.clone(),
-            speed: speed.1.clone(),
-            ratio: ratio.1.clone(),
+        [
+            &self.nus[j / (nr * ns)].0,
+            &self.speeds[(j / nr) % ns].0,
+            &self.ratios[j % nr].0,
+        ]
+    }
+
+    /// The speed of the (ν, speed) pair `pair`, taken for `n` of its points: formed by the
+    /// first block that takes it (in the material of its ν, itself formed once for every speed
+    /// of that ν), the same one for every block after, and dropped from the grid once all its
+    /// points are taken.
+    fn speed(&self, pair: usize, n: usize) -> Arc<OnceLock<moving_hertz::Result<Speed<T>>>> {
+        self.formed.take(pair, self.ratios.len(), n)
+    }
+
+    /// The speed of `pair` in the material of its ν.
+    fn form(&self, pair: usize) -> moving_hertz::Result<Speed<T>> {
+        let ns = self.speeds.len();
+        let (nu, given) = (pair / ns, &self.speeds[pair % ns].1);
+        let material = self.materials.take(nu, ns, 1);
+        let material = material.get_or_init(|| Material::new(self.nus[nu].1.clone()));
+        given.speed_in(material.as_ref().map_err(Clone::clone)?)
+    }
+
+    /// The ellipses of the points `range`, solved by [`sweep::ellipses_at`] at the grid's
+    /// shared speeds.
+    fn solve(
+        &self,
+        range: std::ops::Range<usize>,
+        opts: &Options<T>,
+    ) -> Vec<moving_hertz::Result<Ellipse<T>>>
+    where
+        T: Send + Sync,
+    {
+        let nr = self.ratios.len();
+        let Some(last) = range.end.checked_sub(1) else {
+            return Vec::new();
         };
-        (pt, [&nu.0, &speed.0, &ratio.0])
+        let first = range.start / nr;
+        let taken: Vec<_> = (first..=last / nr)
+            .map(|pair| {
+                let n = range.end.min((pair + 1) * nr) - range.start.max(pair * nr);
+                self.speed(pair, n)
+            })
+            .collect();
+        let speeds: Vec<_> = (taken.iter().zip(first..))
+            .map(|(s, pair)| s.get_or_init(|| self.form(pair)))
+            .collect();
+        let points: Vec<_> = range
+            .map(|j| AtSpeed {
+                speed: speeds[j / nr - first],
+                ratio: &self.ratios[j % nr].1,
+            })
+            .collect();
+        sweep::ellipses_at(&points, opts)
+    }
+}
+
+/// An axis's values with each text as its output cell in `format` (quoted where CSV or JSON
+/// needs it).
+fn cells<X>(axis: Vec<(String, X)>, format: Format) -> Vec<(String, X)> {
+    let cell = |text: String| {
+        let mut out = Vec::new();
+        push_cell(&mut out, format == Format::Jsonl, &text);
+        String::from_utf8_lossy(&out).into_owned()
+    };
+    axis.into_iter().map(|(t, x)| (cell(t), x)).collect()
+}
+
+/// Values that many points share, each formed on first use and kept while points of it are
+/// still to be taken (a count of points given with the first take): the sweep holds those of
+/// the points being solved only, whatever its size, and forms each once whatever the order in
+/// which the threads take its points.
+struct Live<V>(Mutex<HashMap<usize, Taken<V>>>);
+
+/// A value of [`Live`] and the count of its points not yet taken.
+type Taken<V> = (Arc<OnceLock<V>>, usize);
+
+impl<V> Default for Live<V> {
+    fn default() -> Self {
+        Live(Mutex::new(HashMap::new()))
+    }
+}
+
+impl<V> Live<V> {
+    /// The value of `key`, of `total` points in all, taken for `n` of them: dropped from here
+    /// once all are taken (the takers' handles keep it while they use it).
+    fn take(&self, key: usize, total: usize, n: usize) -> Arc<OnceLock<V>> {
+        let mut live = self.0.lock().unwrap_or_else(PoisonError::into_inner);
+        let (value, left) = live
+            .entry(key)
+            .or_insert_with(|| (Arc::new(OnceLock::new()), total));
+        *left = left.saturating_sub(n);
+        let value = value.clone();
+        if *left == 0 {
+            live.remove(&key);
+        }
+        value
     }
 }
 
@@ -464,11 +560,7 @@ fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError
             (text, given)
         })
         .collect();
-    Ok(Grid {
-        nus,
-        speeds,
-        ratios,
-    })
+    Ok(Grid::new(nus, speeds, ratios, a.run.format))
 }
 
 /// The values of `--nu` at `p`, refused before any work, naming the text,
@@ -498,7 +590,7 @@ fn solve_and_write<T: Real + Send + Sync>(
     total: usize,
     p: T::Prec,
 ) -> Result<(), CliError> {
-    let grid = points::<T>(a, p)?.cells(a.run.format);
+    let grid = points::<T>(a, p)?;
     let opts = Options::<T> {
         method: a.run.method,
         ..Default::default()
@@ -524,11 +616,11 @@ fn solve_and_write<T: Real + Send + Sync>(
     // The rows of the points `range` and their count of failed points, formed where the block
     // is solved.
     let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
-        let (block, texts): (Vec<_>, Vec<_>) = range.map(|j| grid.point(j)).unzip();
         let mut failed = 0;
-        for (r, t) in sweep::ellipses(&block, &opts).iter().zip(&texts) {
+        // Read in place (each result is a few hundred bytes: not moved out).
+        for (j, r) in range.clone().zip(&grid.solve(range, &opts)) {
             failed += usize::from(r.is_err());
-            push_row(out, a.run.format, &keys, t, r);
+            push_row(out, a.run.format, &keys, &grid.texts(j), r);
         }
         failed
     };
@@ -576,6 +668,8 @@ fn push_row<T: Real>(
     t: &[&str; 3],
     r: &moving_hertz::Result<Ellipse<T>>,
 ) {
+    // Room for the whole row first, so that its cells never reallocate.
+    out.reserve(ROW_BYTES);
     let mut row = Row::new(out, format);
     for (key, cell) in keys.iter().zip(t) {
         row.open(key);
@@ -595,6 +689,10 @@ fn push_row<T: Real>(
     row.end();
 }
 
+/// Room for a row of `sweep` at `f64` (its longest: three inputs of up to 24 bytes, two
+/// decimals of 24, two bounds of 10, the labels and count, in JSON their keys and quotes).
+const ROW_BYTES: usize = 256;
+
 /// One line of the output being written: CSV cells, or a JSON object's members (an empty cell
 /// is left out of the object). The one writer of the `sweep` commands' cells: numbers with
 /// every digit of the working precision ([`Real::push_decimal`]), bounds with three
@@ -607,7 +705,7 @@ pub(super) struct Row<'a> {
 
 impl<'a> Row<'a> {
     /// A line begun in `out` (in JSON its brace); [`Row::end`] ends it.
-    #[inline]
+    #[inline(always)]
     pub(super) fn new(out: &'a mut Vec<u8>, format: Format) -> Self {
         let json = format == Format::Jsonl;
         if json {
@@ -621,7 +719,7 @@ impl<'a> Row<'a> {
     }
 
     /// Ends the line (in JSON the closing brace).
-    #[inline]
+    #[inline(always)]
     pub(super) fn end(self) {
         if self.json {
             self.out.push(b'}');
@@ -630,7 +728,7 @@ impl<'a> Row<'a> {
     }
 
     /// The separator before every cell but the first, and in JSON the key.
-    #[inline]
+    #[inline(always)]
     fn open(&mut self, key: &str) {
         if !self.first {
             self.out.push(b',');
@@ -644,7 +742,7 @@ impl<'a> Row<'a> {
 
     /// A cell that needs no quoting or escaping in either format (a number, a label), written
     /// by `write` (in JSON as a string).
-    #[inline]
+    #[inline(always)]
     fn number(&mut self, key: &str, write: impl FnOnce(&mut Vec<u8>)) {
         self.open(key);
         if self.json {
@@ -657,32 +755,32 @@ impl<'a> Row<'a> {
     }
 
     /// A value with every digit of the working precision.
-    #[inline]
+    #[inline(always)]
     pub(super) fn value<T: Real>(&mut self, key: &str, x: &T) {
         self.number(key, |o| x.push_decimal(o));
     }
 
     /// A value and its bound under the two `keys`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn estimated<T: Real>(&mut self, keys: [&str; 2], x: &Estimated<T>) {
         self.value(keys[0], &x.value);
         self.number(keys[1], |o| x.error.push_text(o));
     }
 
     /// A label (ASCII, no comma or quote: an axis, a route).
-    #[inline]
+    #[inline(always)]
     pub(super) fn label(&mut self, key: &str, label: &str) {
         self.number(key, |o| o.extend_from_slice(label.as_bytes()));
     }
 
     /// A count, in decimal digits.
-    #[inline]
+    #[inline(always)]
     pub(super) fn count(&mut self, key: &str, n: usize) {
         self.number(key, |o| push_count(o, n));
     }
 
     /// A cell of any text: quoted where CSV or JSON needs it; an empty one is left out of JSON.
-    #[inline]
+    #[inline(always)]
     pub(super) fn text(&mut self, key: &str, v: &str) {
         if self.json && v.is_empty() {
             return;
@@ -693,7 +791,7 @@ impl<'a> Row<'a> {
 
     /// The cells of a point that failed: empty under `empty` (the result's columns), and the
     /// error under `error`.
-    #[inline]
+    #[inline(always)]
     pub(super) fn failed(&mut self, empty: &[&str], err: &moving_hertz::Error) {
         for key in empty {
             self.text(key, "");

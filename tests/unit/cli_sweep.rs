@@ -40,3 +40,25 @@ fn json_strings_are_escaped_as_serde_json_escapes_them() {
         assert_eq!(out, serde_json::Value::from(s).to_string(), "{s:?}");
     }
 }
+
+/// A value of [`super::Live`] is one value for every take while points of it remain (so that
+/// the blocks of a (ν, speed) pair share one speed, formed once), dropped from the store once
+/// the last of its points is taken (the takers' handles keep it), and formed anew if taken
+/// after that; keys are independent.
+#[test]
+fn a_live_value_is_shared_until_its_last_point_is_taken() {
+    use std::sync::Arc;
+    let live = super::Live::<usize>::default();
+    let first = live.take(3, 100, 64);
+    assert_eq!(*first.get_or_init(|| 7), 7);
+    let other = live.take(4, 100, 10);
+    assert!(!Arc::ptr_eq(&first, &other));
+    let second = live.take(3, 100, 30);
+    assert!(Arc::ptr_eq(&first, &second));
+    assert_eq!(second.get(), Some(&7));
+    let last = live.take(3, 100, 6);
+    assert!(Arc::ptr_eq(&first, &last));
+    assert_eq!(live.0.lock().unwrap().len(), 1, "key 3 dropped, key 4 kept");
+    let again = live.take(3, 100, 1);
+    assert!(!Arc::ptr_eq(&first, &again) && again.get().is_none());
+}
