@@ -5,7 +5,7 @@
 
 use crate::error::Result;
 use crate::physics::Speed;
-use crate::routes::graded::GradedBody;
+use crate::routes::graded::{GradedBody, GradedSetup};
 use crate::routes::{Evaluation, Method};
 use crate::scalar::{Dd, Real};
 use std::sync::{Arc, OnceLock};
@@ -31,6 +31,8 @@ struct Kept<T: Real> {
     grid: OnceLock<Slots<Option<(f64, f64)>>>,
     /// The graded route's node values by plan (units, pole subtracted), each on first use.
     graded: OnceLock<Slots<Arc<GradedBody<T>>>>,
+    /// The graded route's layouts by cell of k (`graded::layout_cell`), each on first use.
+    layouts: OnceLock<Slots<Result<GradedSetup<T>>>>,
 }
 
 impl<T: Real> SolveCache<T> {
@@ -42,6 +44,7 @@ impl<T: Real> SolveCache<T> {
             probe: [OnceLock::new(), OnceLock::new()],
             grid: OnceLock::new(),
             graded: OnceLock::new(),
+            layouts: OnceLock::new(),
         }))
     }
 
@@ -77,6 +80,29 @@ impl<T: Real> SolveCache<T> {
         }
         let body = Arc::new(build()?);
         Ok(slot.get_or_init(|| body).clone())
+    }
+
+    /// The graded route's layout for cell `cell` (below [`GRADED_UNITS`]), built by `build` on
+    /// first use: a function of the cell alone, so that what it returns does not depend on the
+    /// evaluations before.
+    pub(crate) fn graded_layout(
+        &self,
+        cell: usize,
+        build: impl FnOnce() -> Result<GradedSetup<T>>,
+    ) -> Result<&GradedSetup<T>> {
+        let slots = self
+            .0
+            .layouts
+            .get_or_init(|| (0..GRADED_UNITS).map(|_| OnceLock::new()).collect());
+        let Some(slot) = slots.get(cell) else {
+            let bound = "a cell of 1 <= k <= 2^180";
+            return Err(crate::Error::domain(
+                "graded layout cell",
+                cell.to_string(),
+                bound,
+            ));
+        };
+        slot.get_or_init(build).as_ref().map_err(Clone::clone)
     }
 
     /// The slots of the seed grid's `n` nodes.
