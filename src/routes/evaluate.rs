@@ -270,12 +270,8 @@ impl<T: Real> Evaluator<T> {
         let sp = &self.speed;
         let g = sp
             .solve_cache()
-            .graded_layout(cell, || GradedSetup::for_cell(sp, cell))?;
-        if dk {
-            g.integrals_with_dk(axes)
-        } else {
-            g.integrals(axes)
-        }
+            .graded_layout(cell, |c| GradedSetup::for_cell(sp, c))?;
+        g.eval(axes, dk)
     }
 
     /// The ellipse solve's evaluation at a Newton iterate: I1, I2 and, with `dk`, their

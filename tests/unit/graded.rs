@@ -22,11 +22,7 @@ use moving_hertz::routes::{direct, graded, AxisRatio, Evaluation};
 /// The graded rule on the layout of k's cell, with the k-derivatives when `dk` asks for them.
 fn graded_at<T: Real>(sp: &Speed<T>, ax: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
     let setup = graded::GradedSetup::for_cell(sp, graded::layout_cell(&ax.k)?)?;
-    if dk {
-        setup.integrals_with_dk(ax)
-    } else {
-        setup.integrals(ax)
-    }
+    setup.eval(ax, dk)
 }
 
 const NUS: [f64; 4] = [-0.9, 0.0, 0.25, 0.5];
@@ -105,7 +101,7 @@ fn setup_against_reference<T: Real>(p: T::Prec, label: &str) {
         let edge = graded::GradedSetup::laid_out(&sp, k_max, cell).expect("edge layout");
         let wide = graded::GradedSetup::for_cell(&sp, cell + 4).expect("wide layout");
         for (setup, which) in [(edge, "edge"), (wide, "wide")] {
-            let r = setup.integrals_with_dk(&ax).expect("graded setup");
+            let r = setup.eval(&ax, true).expect("graded setup");
             let e = rel_eps(&r.i1, &c.i1).max(rel_eps(&r.i2, &c.i2));
             let d = rel_eps(&r.di1_dk(), &c.d1).max(rel_eps(&r.di2_dk(), &c.d2));
             let d = if T::bits(p) <= 128 { d } else { 0.0 };
@@ -119,7 +115,7 @@ fn setup_against_reference<T: Real>(p: T::Prec, label: &str) {
         let small = graded::GradedSetup::for_cell(&sp, 2).unwrap();
         let beyond = AxisRatio::new(T::from_ratio(2, 1, p)).unwrap();
         assert!(matches!(
-            small.integrals(&beyond),
+            small.eval(&beyond, false),
             Err(moving_hertz::Error::Domain { .. })
         ));
     }

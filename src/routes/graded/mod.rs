@@ -406,15 +406,12 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 #[derive(Clone, Debug)]
 pub struct GradedSetup<T: Real> {
     k_max: T,
-    /// The node values, shared by the layouts of one speed with the same plan
-    /// ([`crate::contact::SolveCache`]): they depend on the plan's units and on whether the
-    /// pole is subtracted, not on k_max itself.
-    body: Arc<GradedBody<T>>,
+    body: GradedBody<T>,
 }
 
 /// The node values of a [`GradedSetup`].
-#[derive(Debug)]
-pub(crate) struct GradedBody<T: Real> {
+#[derive(Clone, Debug)]
+struct GradedBody<T: Real> {
     left: LeftHalf<T>,
     /// The right nodes' σ, f, σ·f, σ²·f (4 × the node count).
     right: Vec<T>,
@@ -506,38 +503,28 @@ fn left_tables<T: Real>(
 }
 
 impl<T: Real> GradedSetup<T> {
-    /// The layout of [`layout_cell`] `cell` (2 ≤ `cell` ≤ [`K_MAX_LOG2`] + 2): the one that
-    /// serves every k of the cell, 1 ≤ k ≤ sinh(`cell`·ln 2), on `cell` units of ln 2 (or more,
-    /// where ε or δ asks for them), the pole subtracted when sinh(`cell`·ln 2)·ε ≤ 1/4. Kept
-    /// per speed ([`crate::Evaluator`]): a function of the cell alone, so that what an
-    /// evaluation at k returns depends on k alone.
-    /// The k-independent part of (46)–(47), G of (45) to a few ε at each node.
+    /// The layout of [`layout_cell`] `cell`, serving 1 ≤ k ≤ sinh(`cell`·ln 2): a function of
+    /// the cell alone. The k-independent part of (46)–(47), G of (45) to a few ε at each node.
     pub(crate) fn for_cell(speed: &Speed<T>, cell: usize) -> Result<Self> {
         Self::laid_out(speed, cell_top(cell, speed.mr().prec()), cell)
     }
 
-    /// The layout serving 1 ≤ k ≤ `k_max` (k_max ≤ sinh(`k_units`·ln 2)): `k_units` units of
-    /// ln 2 for the k-peak, raised where ε (the pole not subtracted) or δ lies lower; the pole
-    /// subtracted when k_max·ε ≤ 1/4. Lays out the panels and evaluates G at their nodes: the
-    /// [`left_plan`] for C = max(`k_units`, ⌈asinh(1/min(ε, δ))/ln 2⌉) units of ln 2 on the
-    /// left (without ε when the pole is subtracted: module docs), and [`panel_nodes`] on the
-    /// right. The k-independent part of (46)–(47), G of (45) to a few ε at each node.
+    /// The layout serving 1 ≤ k ≤ `k_max` ≤ sinh(`k_units`·ln 2), the pole subtracted when
+    /// k_max·ε ≤ 1/4: the [`left_plan`] for max(`k_units`, ⌈asinh(1/min(ε, δ))/ln 2⌉) units of
+    /// ln 2 on the left (without ε when the pole is subtracted), [`panel_nodes`] on the right,
+    /// G at the nodes. The k-independent part of (46)–(47), G of (45) to a few ε at each node.
     pub(crate) fn laid_out(speed: &Speed<T>, k_max: T, k_units: usize) -> Result<Self> {
         let p = k_max.prec();
         let rules = Rules::<T>::get(p)?;
         let (eps2, d2) = (speed.one_minus_mr2(), T::one(p) - speed.m2sq());
-        // The scale a of w = a sinh x: at most the lowest singularity height for every
-        // k ≤ k_max (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points
-        // ±iδ), made 1/sinh(C ln 2) for the plan's whole number C of units ln 2.
-        // log₂(1/a) from the exponents: ε² and δ² can lie below the f64 range at MPFR.
-        // The pole at ±iε is subtracted when k ε ≤ 1/4 for every k served (module docs).
+        // a of w = a sinh x at most the lowest singularity height (±i/k, ±iε, ±iδ); log₂(1/a)
+        // from the exponents: ε² and δ² can lie below the f64 range at MPFR.
         let subtract = (k_max.square() * eps2).mul_pow2(4) <= T::one(p);
         let lg = |x: &T| RelError::of(x).log2();
         let pole_scale = if subtract { 0.0 } else { -lg(eps2) / 2.0 };
         let other = pole_scale.max(-lg(&d2) / 2.0);
         let units = k_units.max(units_for_log2(other));
-        let build = || GradedBody::new(&rules, &SpeedConsts::new(speed), units, subtract, p);
-        let body = speed.solve_cache().graded_body(units, subtract, build)?;
+        let body = GradedBody::new(&rules, &SpeedConsts::new(speed), units, subtract, p)?;
         Ok(GradedSetup { k_max, body })
     }
 }
@@ -550,22 +537,16 @@ fn cell_top<T: Real>(c: usize, p: T::Prec) -> T {
 }
 
 /// The layout cell of `k` (1 ≤ k ≤ 2^180, else [`Error::Domain`]): the least c ≥ 2 with
-/// k ≤ sinh(c ln 2), the number of units of ln 2 whose map w = a sinh x, a = 1/sinh(c ln 2),
-/// keeps the branch points ±i/k of u^{−3/2} at |Im x| ≥ π/2 (module docs). A fixed grid in
-/// ln k (cell c holds sinh((c − 1) ln 2) < k ≤ sinh(c ln 2), about an octave), so that the
-/// layout serving k, and every bit of an evaluation there, depends on k alone. Exact
-/// comparisons in the working type: c = ⌊log₂ k⌋ + 2, or one more just below the next power
-/// of 2.
+/// k ≤ sinh(c ln 2) (a = 1/sinh(c ln 2) ≤ 1/k: module docs), ⌊log₂ k⌋ + 2 or one more just
+/// below a power of 2, by exact comparisons: a fixed grid in ln k.
 pub(crate) fn layout_cell<T: Real>(k: &T) -> Result<usize> {
     check_k(k)?;
     // ⌊log₂ k⌋ from k's nearest f64 (off by one only where it rounds up to a power of 2).
-    let e = ((k.to_f64().to_bits() >> 52) as i32 - 1023).max(0) as usize;
-    let p = k.prec();
-    let mut c = e + 2;
-    if c > 2 && *k <= cell_top(c - 1, p) {
+    let mut c = ((k.to_f64().to_bits() >> 52) as i32 - 1021).max(2) as usize;
+    if c > 2 && *k <= cell_top(c - 1, k.prec()) {
         c -= 1;
     }
-    if *k > cell_top(c, p) {
+    if *k > cell_top(c, k.prec()) {
         c += 1;
     }
     Ok(c)
@@ -590,11 +571,8 @@ impl<T: Real> GradedBody<T> {
         // Right: σ, f, σ·f, σ²·f.
         let (right_s, right_w) = rules.right()?;
         let nr = right_s.len();
-        let mut right = Vec::with_capacity(4 * nr);
-        right.extend(right_s.iter().cloned());
-        right.extend(right_w.iter().cloned());
-        right.extend(right_s.iter().cloned());
-        right.extend(right_s.iter().cloned());
+        let tables = [right_s, right_w, right_s, right_s];
+        let mut right: Vec<T> = tables.iter().flat_map(|t| t.iter().cloned()).collect();
         {
             let (rs, rest) = right.split_at_mut(nr);
             let (rf, rest) = rest.split_at_mut(nr);
@@ -620,22 +598,12 @@ impl<T: Real> GradedBody<T> {
 
 impl<T: Real> GradedSetup<T> {
     /// I1, I2 of (34) in the normalisation of (37) at `axes` by graded fixed panels (module
-    /// docs); [`Error::Domain`] above the layout's k_max. Accuracy: relative error below
-    /// [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: the [`left_plan`] for x up to
+    /// docs) and, with `dk`, dI1/dk, dI2/dk differentiated under the integral sign on the same
+    /// nodes (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵); [`Error::Domain`] above the layout's k_max. Accuracy:
+    /// relative error below [`BOUND_EPS`]·ε (the reported `error_estimate`), the derivatives'
+    /// of the same order (positive integrands). Work: the [`left_plan`] for x up to
     /// asinh(1/min(1/k_max, ε, δ)) plus [`panel_nodes`] nodes. Implements (46)–(47).
-    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-        self.eval(axes, false)
-    }
-
-    /// I1, I2 (as [`GradedSetup::integrals`]) and dI1/dk, dI2/dk differentiated under the
-    /// integral sign on the same nodes (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵), their relative error of the
-    /// same order (positive integrands), at `axes`.
-    /// Implements (46)–(47) and their k-derivatives.
-    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-        self.eval(axes, true)
-    }
-
-    fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
+    pub(crate) fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         check_k(&axes.k)?;
         if axes.k > self.k_max {
             return Err(Error::Domain {
