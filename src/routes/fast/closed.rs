@@ -88,29 +88,18 @@ pub(crate) fn next_moment<T: Real>(nj: &T, k2: &T, r1: &T, inv: &T, ratio: &T) -
     r1.clone() * inv - k2.clone() * ratio * nj
 }
 
-/// Synthetic division by σ − x0, twice, in one descending pass: P(σ) = P(x0) + (σ − x0) Q(σ) for
-/// P = Σ b_j σ^j and, with `dk`, Q(σ) = Q(x0) + (σ − x0) Q2(σ); writes the coefficients of Q
-/// (ascending, `q.len() = b.len() − 1`) and of Q2 (`q2.len() = b.len() − 2`, empty without `dk`)
-/// and returns P(x0) and Q(x0) (zero without `dk`). Horner's scheme for each.
-fn divide_twice<T: Real>(b: &[T], x0: &T, q: &mut [T], q2: &mut [T], dk: bool) -> (T, T) {
-    let zero = || T::zero(x0.prec());
+/// Synthetic division by σ − x0: P(σ) = P(x0) + (σ − x0) Q(σ) for P = Σ b_j σ^j; writes the
+/// coefficients of Q (ascending, `q.len() = b.len() − 1`) and returns P(x0).
+pub(crate) fn synthetic_division<T: Real>(b: &[T], x0: &T, q: &mut [T]) -> T {
     let Some((last, rest)) = b.split_last() else {
-        return (zero(), zero());
+        return T::zero(x0.prec());
     };
-    let top = rest.len();
     let mut acc = last.clone();
-    let mut acc2 = zero();
-    for i in (0..top).rev() {
+    for i in (0..rest.len()).rev() {
         q[i] = acc.clone();
-        if dk && i + 1 == top {
-            acc2 = acc.clone();
-        } else if dk {
-            q2[i] = acc2.clone();
-            acc2 = acc2 * x0 + &q[i];
-        }
         acc = acc * x0 + &rest[i];
     }
-    (acc, acc2)
+    acc
 }
 
 /// The closed-form parts of the right half: ∫ P W3, ∫ σ P W3 and, when `dk`, ∫ P W5, ∫ σ P W5
@@ -138,7 +127,13 @@ pub(crate) fn right_closed_forms<T: Real>(
     let j_max = b.len();
     let (q, rest) = scratch.split_at_mut(j_max.saturating_sub(1));
     let q2 = &mut rest[..if dk { j_max.saturating_sub(2) } else { 0 }];
-    let (pv, qv) = divide_twice(b, &-k2.clone(), q, q2, dk);
+    let x0 = -k2.clone();
+    let pv = synthetic_division(b, &x0, q);
+    let qv = if dk {
+        synthetic_division(q, &x0, q2)
+    } else {
+        T::zero(p)
+    };
     let (m0, p0, n0, r1) = moment_bases(k, k2);
     // ∫ R W3 = R(−k²) M_0 + …, ∫ σ R W3 = R(−k²) N_0 − k² R(−k²) M_0 + … for R = P, Q.
     let kpv = k2.clone() * &pv;
