@@ -264,7 +264,7 @@ impl<T: Real> Evaluator<T> {
 
     /// The graded rule at k > 1 on the layout of k's cell ([`graded::layout_cell`]), built on
     /// first use and kept with the speed (shared by its clones): a function of k alone.
-    #[inline]
+    #[inline(never)]
     pub(crate) fn graded(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         let cell = graded::layout_cell(&axes.k)?;
         let sp = &self.speed;
