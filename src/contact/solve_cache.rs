@@ -1,18 +1,18 @@
 //! What the ellipse solves at one speed keep with it (`Speed::solve_cache`): the speed at the
 //! precision ladder's lower stages, the ellipse solve's seed grid and k = 1 probe, and the
-//! graded route's node values. Each slot is filled on first use and never changes, so that what a solve returns
+//! graded route's layouts. Each slot is filled on first use and never changes, so that what a solve returns
 //! does not depend on the solves before it (`tests/solve_cache.rs`).
 
 use crate::error::Result;
 use crate::physics::Speed;
-use crate::routes::graded::GradedBody;
+use crate::routes::graded::GradedSetup;
 use crate::routes::{Evaluation, Method};
 use crate::scalar::{Dd, Real};
 use std::sync::{Arc, OnceLock};
 
 /// What the ellipse solves at one speed keep, with the speed and shared by its clones: the speed
 /// at `f64` and double-double (the lower ladder stages, whose set-ups then serve every solve),
-/// the grid seed's nodes and the graded route's node values.
+/// the grid seed's nodes and the graded route's layouts.
 #[derive(Clone, Debug)]
 pub(crate) struct SolveCache<T: Real>(Arc<Kept<T>>);
 
@@ -29,8 +29,8 @@ struct Kept<T: Real> {
     /// kept).
     probe: [OnceLock<Evaluation<T>>; 2],
     grid: OnceLock<Slots<Option<(f64, f64)>>>,
-    /// The graded route's node values by plan (units, pole subtracted), each on first use.
-    graded: OnceLock<Slots<Arc<GradedBody<T>>>>,
+    /// The graded route's layouts by cell of k (`graded::layout_cell`), each on first use.
+    layouts: OnceLock<Slots<Result<GradedSetup<T>>>>,
 }
 
 impl<T: Real> SolveCache<T> {
@@ -41,7 +41,7 @@ impl<T: Real> SolveCache<T> {
             at_dd: OnceLock::new(),
             probe: [OnceLock::new(), OnceLock::new()],
             grid: OnceLock::new(),
-            graded: OnceLock::new(),
+            layouts: OnceLock::new(),
         }))
     }
 
@@ -55,28 +55,23 @@ impl<T: Real> SolveCache<T> {
         self.0.at_dd.get_or_init(|| speed.at(()).ok()).as_ref()
     }
 
-    /// The graded route's node values for a plan of `units` (`subtract`: the pole subtracted),
-    /// built by `build` on first use and shared by every layout at this speed with that plan
-    /// (the same values as a layout built anew); plans of [`GRADED_UNITS`] units or more are
-    /// not kept.
-    pub(crate) fn graded_body(
+    /// The graded route's layout for cell `cell`, built by `build(cell)` on first use: a
+    /// function of the cell alone, so that what it returns does not depend on the evaluations
+    /// before (a cell beyond [`GRADED_CELLS`] gets the last, whose range then refuses its k).
+    pub(crate) fn graded_layout(
         &self,
-        units: usize,
-        subtract: bool,
-        build: impl FnOnce() -> Result<GradedBody<T>>,
-    ) -> Result<Arc<GradedBody<T>>> {
+        cell: usize,
+        build: impl FnOnce(usize) -> Result<GradedSetup<T>>,
+    ) -> Result<&GradedSetup<T>> {
         let slots = self
             .0
-            .graded
-            .get_or_init(|| (0..2 * GRADED_UNITS).map(|_| OnceLock::new()).collect());
-        let Some(slot) = slots.get(2 * units + usize::from(subtract)) else {
-            return build().map(Arc::new);
-        };
-        if let Some(body) = slot.get() {
-            return Ok(body.clone());
-        }
-        let body = Arc::new(build()?);
-        Ok(slot.get_or_init(|| body).clone())
+            .layouts
+            .get_or_init(|| (0..GRADED_CELLS).map(|_| OnceLock::new()).collect());
+        let c = cell.min(GRADED_CELLS - 1);
+        slots[c]
+            .get_or_init(|| build(c))
+            .as_ref()
+            .map_err(Clone::clone)
     }
 
     /// The slots of the seed grid's `n` nodes.
@@ -96,6 +91,5 @@ impl<T: Real> SolveCache<T> {
     }
 }
 
-/// The plans a speed keeps graded node values for: up to 191 units of ln 2 (k ≤ 2^180 needs
-/// at most about 183).
-const GRADED_UNITS: usize = 192;
+/// The layout cells a speed keeps (`graded::layout_cell`: k ≤ 2^180 lies in cell 182 or below).
+const GRADED_CELLS: usize = 183;

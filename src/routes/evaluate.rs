@@ -32,7 +32,6 @@ use crate::estimate::RelError;
 use crate::numerics::quadrature::name_the_input;
 use crate::physics::Speed;
 use crate::scalar::{short, Precision, Real};
-use std::cell::RefCell;
 
 /// Options of [`integrals`] and [`Evaluator`]; every field has a default.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -73,7 +72,6 @@ pub struct Evaluator<T: Real + 'static> {
     opts: IntegralOptions,
     /// The tolerance at the working precision (`None`: its floor).
     tol: Option<T>,
-    graded: RefCell<Option<GradedSetup<T>>>,
 }
 
 /// I1, I2 of (34) (normalisation of (37)) at the axis ratio `k` = b/a for the speed (and
@@ -124,7 +122,6 @@ impl<T: Real> Evaluator<T> {
             speed: speed.clone(),
             opts,
             tol,
-            graded: RefCell::new(None),
         })
     }
 
@@ -265,25 +262,16 @@ impl<T: Real> Evaluator<T> {
         }
     }
 
-    /// The graded rule at k > 1 from the kept layout, laid out anew (for 9/8 of this k, so
-    /// that iterates up to 45/32 k reuse it) when k lies outside its range.
-    #[inline]
+    /// The graded rule at k > 1 on the layout of k's cell ([`graded::layout_cell`]), built on
+    /// first use and kept with the speed (shared by its clones): a function of k alone.
+    #[inline(never)]
     pub(crate) fn graded(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-        let mut kept = self.graded.borrow_mut();
-        let g = match kept.take() {
-            Some(g) if g.covers(&axes.k) => kept.insert(g),
-            _ => {
-                let p = axes.k.prec();
-                let k_ref = (axes.k.clone() * &T::from_ratio(9, 8, p))
-                    .min_of(T::one(p).mul_pow2(graded::K_MAX_LOG2));
-                kept.insert(GradedSetup::new(&self.speed, &k_ref)?)
-            }
-        };
-        if dk {
-            g.integrals_with_dk(axes)
-        } else {
-            g.integrals(axes)
-        }
+        let cell = graded::layout_cell(&axes.k)?;
+        let sp = &self.speed;
+        let g = sp
+            .solve_cache()
+            .graded_layout(cell, |c| GradedSetup::for_cell(sp, c))?;
+        g.eval(axes, dk)
     }
 
     /// The ellipse solve's evaluation at a Newton iterate: I1, I2 and, with `dk`, their

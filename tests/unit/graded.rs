@@ -19,14 +19,10 @@ use common::{
 use moving_hertz::prelude::*;
 use moving_hertz::routes::{direct, graded, AxisRatio, Evaluation};
 
-/// The graded rule laid out for this k, with the k-derivatives when `dk` asks for them.
+/// The graded rule on the layout of k's cell, with the k-derivatives when `dk` asks for them.
 fn graded_at<T: Real>(sp: &Speed<T>, ax: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-    let setup = graded::GradedSetup::new(sp, &ax.k)?;
-    if dk {
-        setup.integrals_with_dk(ax)
-    } else {
-        setup.integrals(ax)
-    }
+    let setup = graded::GradedSetup::for_cell(sp, graded::layout_cell(&ax.k)?)?;
+    setup.eval(ax, dk)
 }
 
 const NUS: [f64; 4] = [-0.9, 0.0, 0.25, 0.5];
@@ -91,49 +87,43 @@ fn integrals_and_derivatives_match_the_adaptive_reference() {
     common::assert_no_mixing();
 }
 
-/// A layout made for another k_ref serves every 1 ≤ k ≤ (5/4)·k_ref within the same bound:
-/// the edge k = (5/4)·k_ref and a layout for a 16 times larger k (the Newton iterates of the
-/// ellipse solve reuse one layout). The derivatives are checked as above (≤ 128 bits).
+/// A layout serves every 1 ≤ k ≤ its k_max within the same bound: the edge, k_max = k (1 +
+/// 2^-30) on the fewest units for k (the pole subtracted when k·ε ≤ 1/4), and the layout of a
+/// cell four above k's (a 16 times larger k). The derivatives are checked as above (≤ 128 bits).
 fn setup_against_reference<T: Real>(p: T::Prec, label: &str) {
     let bound = graded::BOUND_EPS as f64;
     let mut worst = 0.0f64;
     for c in cases() {
         let (sp, ax) = integral_inputs::<T>(c.nu, c.mr, c.k, p);
         let k = T::from_f64(c.k, p);
-        // (4/5)(1 + 2^-30): the edge up to the rounding of k_ref·5/4.
-        let edge = (k.clone() * &T::from_f64(0.8 * (1.0 + 2f64.powi(-30)), p)).max_of(T::one(p));
-        let wide = (k.clone().mul_i64(16)).min_of(T::from_i64(1 << 40, p));
-        for k_ref in [edge, wide] {
-            let setup = graded::GradedSetup::new(&sp, &k_ref).expect("layout");
-            assert!(setup.covers(&k));
-            let r = setup.integrals_with_dk(&ax).expect("graded setup");
+        let cell = graded::layout_cell(&k).unwrap();
+        let k_max = k.clone() * &T::from_f64(1.0 + 2f64.powi(-30), p);
+        let edge = graded::GradedSetup::laid_out(&sp, k_max, cell).expect("edge layout");
+        let wide = graded::GradedSetup::for_cell(&sp, cell + 4).expect("wide layout");
+        for (setup, which) in [(edge, "edge"), (wide, "wide")] {
+            let r = setup.eval(&ax, true).expect("graded setup");
             let e = rel_eps(&r.i1, &c.i1).max(rel_eps(&r.i2, &c.i2));
             let d = rel_eps(&r.di1_dk(), &c.d1).max(rel_eps(&r.di2_dk(), &c.d2));
             let d = if T::bits(p) <= 128 { d } else { 0.0 };
-            let at = format!(
-                "{label} nu={} M_R={} k={} k_ref={}",
-                c.nu,
-                c.mr,
-                c.k,
-                k_ref.to_f64()
-            );
+            let at = format!("{label} nu={} M_R={} k={} {which}", c.nu, c.mr, c.k);
             assert!(e <= bound, "{at}: error {e:.2} eps");
             assert!(d <= 4.0 * bound, "{at}: dI/dk error {d:.2} eps");
             worst = worst.max(e).max(d);
         }
-        // Beyond the layout's range: a typed error, not a silently worse value.
-        let small = graded::GradedSetup::new(&sp, &T::one(p)).unwrap();
-        let beyond = AxisRatio::new(T::from_ratio(3, 2, p)).unwrap();
+        // Beyond the layout's range (cell 2 ends at sinh(2 ln 2) = 15/8): a typed error, not
+        // a silently worse value.
+        let small = graded::GradedSetup::for_cell(&sp, 2).unwrap();
+        let beyond = AxisRatio::new(T::from_ratio(2, 1, p)).unwrap();
         assert!(matches!(
-            small.integrals(&beyond),
+            small.eval(&beyond, false),
             Err(moving_hertz::Error::Domain { .. })
         ));
     }
-    println!("{label}: layouts for other k_ref, worst {worst:.2} eps");
+    println!("{label}: layouts of other cells, worst {worst:.2} eps");
 }
 
 #[test]
-fn a_layout_serves_k_up_to_five_quarters_of_its_k_ref() {
+fn a_layout_serves_every_k_up_to_its_top() {
     setup_against_reference::<f64>((), "f64");
     setup_against_reference::<Dd>((), "dd");
     setup_against_reference::<Mp>(mp(128), "mpfr128");
@@ -187,8 +177,8 @@ fn domain_and_extremes() {
     }
 }
 
-/// Both sides of the pole subtraction's threshold kε = 1/4 (the layout for k_ref subtracts when
-/// (5/4)·k_ref·ε ≤ 1/4): k = 1.1^j across it at two speeds, at `f64` and double-double, I1, I2
+/// Both sides of the pole subtraction's threshold kε = 1/4 (the layout of cell c subtracts when
+/// sinh(c ln 2)·ε ≤ 1/4): k = 1.1^j across it at two speeds, at `f64` and double-double, I1, I2
 /// within the reported estimate and dI/dk within 4·BOUND_EPS·ε of the adaptive route at 160
 /// bits (its derivatives taken under the integral sign).
 #[test]
@@ -264,6 +254,53 @@ fn gaps_below_the_f64_range() {
             );
         }
     }
+}
+
+/// What an evaluation at k > 1 returns depends on k alone, not on the evaluations before it at
+/// the same speed (whose layouts the speed keeps): k_b evaluated after k_a by one evaluator
+/// gives the same bits as k_b by an evaluator at a speed made anew, at `f64`, double-double and
+/// 256 bits, for pairs in one cell and across cells, in both orders.
+#[test]
+fn an_evaluation_depends_on_k_alone() {
+    use moving_hertz::{Evaluator, IntegralOptions};
+    fn check<T: Real>(p: T::Prec) {
+        let opts = IntegralOptions {
+            derivatives: true,
+            ..Default::default()
+        };
+        let bits = T::bits(p);
+        let hex = |r: &moving_hertz::Integrals<T>| {
+            let h = |x: &T| x.to_float(bits).to_string_radix(16, None);
+            let d = |x: &Option<moving_hertz::Estimated<T>>| x.as_ref().map(|e| h(&e.value));
+            (h(&r.i1.value), h(&r.i2.value), d(&r.di1_dk), d(&r.di2_dk))
+        };
+        let mat = Material::<T>::parse("0.25", p).unwrap();
+        // Cells: 1.2, 1.5, 1.6 in cell 2, 3 in 3, 300 in 10, 1000 in 11.
+        let pairs = [
+            ("1.2", "1.6"),
+            ("1.6", "1.2"),
+            ("3", "1.5"),
+            ("1.5", "3"),
+            ("1000", "300"),
+        ];
+        for mr in ["0.5", "0.9999"] {
+            for (a, b) in pairs {
+                let (ka, kb) = (T::parse(a, p).unwrap(), T::parse(b, p).unwrap());
+                let warm = Evaluator::new(&mat.parse_speed(mr).unwrap(), opts).unwrap();
+                warm.at(&ka).unwrap();
+                let after = hex(&warm.at(&kb).unwrap());
+                let fresh = Evaluator::new(&mat.parse_speed(mr).unwrap(), opts).unwrap();
+                let alone = hex(&fresh.at(&kb).unwrap());
+                assert_eq!(
+                    after, alone,
+                    "M_R = {mr}: k = {b} after k = {a}, {bits} bits"
+                );
+            }
+        }
+    }
+    check::<f64>(());
+    check::<Dd>(());
+    check::<Mp>(mp(256));
 }
 
 /// The automatic choice answers k > 1 by the graded panels when their bound meets the tolerance.

@@ -11,7 +11,7 @@
 //! the right half in v = cot α. On the left every singularity of the integrand lies on the
 //! imaginary w-axis (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points ±iδ,
 //! ±i√(1 − γc), and the zeros of Q′ near ±0.8i–±i, complex only slightly off the axis for
-//! ν > 0.26) at heights ≥ a, a ≤ min(4/(5k), ε, δ). The map w = a sinh x sends every point iy,
+//! ν > 0.26) at heights ≥ a, a ≤ min(1/k, ε, δ). The map w = a sinh x sends every point iy,
 //! y ≥ a, to the line Im x = π/2: in x the integrand is analytic in the strip |Im x| < π/2
 //! whatever k and ε are, and decays like e^{−2x} past the k-peak. The left half, x from 0 to
 //! asinh(1/a), is cut into panels whose lengths are whole multiples ℓ·ln 2 of ln 2, ℓ = 1…8
@@ -38,7 +38,7 @@
 //! I2_L = a0 · atan(1/ε)/ε + ∫_0^1 (a(s) − a0)/h dw,      I1_L = ∫_0^1 a(s) dw − ε² I2_L
 //! ```
 //!
-//! (s/h = 1 − ε²/h), and the panels stop at a ≤ min(4/(5k), δ): the pole left is removable, and
+//! (s/h = 1 − ε²/h), and the panels stop at a ≤ min(1/k, δ): the pole left is removable, and
 //! the work no longer grows with log(1/ε) — at 4096 bits a gap of 10⁻⁵⁰⁰⁰ costs what 10⁻¹⁰ does,
 //! where the panels reaching ε would need 3.8·10⁶ nodes. I1_L is not formed as the fast route
 //! does (a0 (1 − ε atan(1/ε)) + ∫ s (a − a0)/h dw), which cancels like k when k is large. The
@@ -46,13 +46,16 @@
 //! term a0 π/(2ε) (≤ 1/(2π) of it), and ε² I2_L ≈ a0 πε/2 against ∫ a dw ≈ a0/k (≤ 0.4 of it).
 //! The k-derivatives take ∂a0/∂k = 3k ε² a0/(1 − k²ε²) out of ∂a/∂k = −3k s a/u the same way.
 //! Above kε = 1/4 the pole lies among the k-peak's scales and the panels reach down to ε
-//! (at most two units of ln 2 beyond 4/(5k)).
+//! (at most two units of ln 2 beyond 1/k).
 //!
 //! **Cost.** The plan's left nodes + [`panel_nodes`] evaluations of G (two square roots and
-//! one division each); [`GradedSetup`] keeps the layout for every k up to 5/4 of the k it was
-//! laid out for, so that a further k costs one square root and one division a node (the ellipse
-//! solve's Newton iterates). The Gauss–Legendre rules come from the shared cache. Node counts
-//! and timings: docs/performance.md.
+//! one division each). The layouts lie on a fixed grid in ln k: the cell c
+//! ([`layout_cell`], about an octave) holds sinh((c − 1) ln 2) < k ≤ sinh(c ln 2), and its
+//! [`GradedSetup`] (c units of ln 2, a = 1/sinh(c ln 2) ≤ 1/k) serves every k of it, so that a
+//! further k of the cell costs one square root and one division a node (the ellipse solve's
+//! Newton iterates) and what an evaluation returns depends on k alone. Each speed keeps the
+//! layouts it met. The Gauss–Legendre rules come from the shared cache. Node counts and
+//! timings: docs/performance.md.
 //!
 //! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^180 ([`K_MAX_LOG2`]), else
 //! [`Error::Domain`]. The left half's x-range, and with it the work, grows like log₂ k (and like
@@ -60,7 +63,7 @@
 //!
 //! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
 //! checked against the adaptive route at 400 bits in `tests/unit/graded.rs`, with the derivatives and
-//! with layouts for another k_ref. The measured worst errors, and the margin of the node counts
+//! with layouts for other cells. The measured worst errors, and the margin of the node counts
 //! of [`left_nodes`], are in docs/calibration.md.
 
 use super::guard::{run_guarded, GuardedJob};
@@ -389,8 +392,8 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 }
 
 /// The k-independent part of the graded route for one material and speed: panels laid out for
-/// an axis ratio `k_ref`, G at every node. It serves every 1 ≤ k ≤ (5/4)·k_ref with the same
-/// accuracy bound (module docs: the map's scale a is at most 4/(5 k_ref), so every branch point
+/// axis ratios up to `k_max`, G at every node. It serves every 1 ≤ k ≤ k_max with the same
+/// accuracy bound (module docs: the map's scale a is at most 1/k_max, so every branch point
 /// of u^{−3/2} stays at |Im x| ≥ π/2; smaller k only moves them away), so that Newton's method on
 /// (33) pays the square roots and the division of G once and then one square root and one
 /// division a node per k.
@@ -403,15 +406,12 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 #[derive(Clone, Debug)]
 pub struct GradedSetup<T: Real> {
     k_max: T,
-    /// The node values, shared by the layouts of one speed with the same plan
-    /// ([`crate::contact::SolveCache`]): they depend on the plan's units and on whether the
-    /// pole is subtracted, not on k_ref itself.
-    body: Arc<GradedBody<T>>,
+    body: GradedBody<T>,
 }
 
 /// The node values of a [`GradedSetup`].
-#[derive(Debug)]
-pub(crate) struct GradedBody<T: Real> {
+#[derive(Clone, Debug)]
+struct GradedBody<T: Real> {
     left: LeftHalf<T>,
     /// The right nodes' σ, f, σ·f, σ²·f (4 × the node count).
     right: Vec<T>,
@@ -424,7 +424,7 @@ enum LeftHalf<T: Real> {
     Resolved(Vec<T>),
     /// s, F = (2/m1) D′ √e1/Q′ (so that a = F·u^{−3/2}), 1/h and the weight, one after the
     /// other (4 × the node count), with the pole's closed-form constants: the panels stop at
-    /// min(4/(5 k_max), δ), below which only the subtracted pole lies (module docs).
+    /// min(1/k_max, δ), below which only the subtracted pole lies (module docs).
     Subtracted {
         nodes: Vec<T>,
         /// The speed's constants: ε², the pole's strength and atan(1/ε)/ε among them.
@@ -503,32 +503,53 @@ fn left_tables<T: Real>(
 }
 
 impl<T: Real> GradedSetup<T> {
-    /// Lays out the panels for `k_ref` (1 ≤ k_ref ≤ 2^180, else [`Error::Domain`]) and evaluates
-    /// G at their nodes: the [`left_plan`] for C = ⌈asinh(1/min(4/(5 k_ref), ε, δ))/ln 2⌉
-    /// units of ln 2 on the left (without ε when the pole is subtracted, (5/4) k_ref ε ≤ 1/4:
-    /// module docs), and [`panel_nodes`] on the right.
-    /// The k-independent part of (46)–(47), G of (45) to a few ε at each node.
-    pub fn new(speed: &Speed<T>, k_ref: &T) -> Result<Self> {
-        check_k(k_ref)?;
-        let p = k_ref.prec();
-        let one = T::one(p);
+    /// The layout of [`layout_cell`] `cell`, serving 1 ≤ k ≤ sinh(`cell`·ln 2): a function of
+    /// the cell alone. The k-independent part of (46)–(47), G of (45) to a few ε at each node.
+    pub(crate) fn for_cell(speed: &Speed<T>, cell: usize) -> Result<Self> {
+        Self::laid_out(speed, cell_top(cell, speed.mr().prec()), cell)
+    }
+
+    /// The layout serving 1 ≤ k ≤ `k_max` ≤ sinh(`k_units`·ln 2), the pole subtracted when
+    /// k_max·ε ≤ 1/4: the [`left_plan`] for max(`k_units`, ⌈asinh(1/min(ε, δ))/ln 2⌉) units of
+    /// ln 2 on the left (without ε when the pole is subtracted), [`panel_nodes`] on the right,
+    /// G at the nodes. The k-independent part of (46)–(47), G of (45) to a few ε at each node.
+    pub(crate) fn laid_out(speed: &Speed<T>, k_max: T, k_units: usize) -> Result<Self> {
+        let p = k_max.prec();
         let rules = Rules::<T>::get(p)?;
-        let sc = SpeedConsts::new(speed);
-        // The scale a of w = a sinh x: at most the lowest singularity height for every
-        // k ≤ (5/4) k_ref (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points
-        // ±iδ), made 1/sinh(C ln 2) for the plan's whole number C of units ln 2.
-        // log₂(1/a) from the exponents: ε² and δ² can lie below the f64 range at MPFR.
-        let k_max = k_ref.clone() * &T::from_ratio(5, 4, p);
-        // The pole at ±iε is subtracted when k ε ≤ 1/4 for every k served (module docs).
-        let subtract = (k_max.square() * &sc.eps2).mul_pow2(4) <= one;
+        let (eps2, d2) = (speed.one_minus_mr2(), T::one(p) - speed.m2sq());
+        // a of w = a sinh x at most the lowest singularity height (±i/k, ±iε, ±iδ); log₂(1/a)
+        // from the exponents: ε² and δ² can lie below the f64 range at MPFR.
+        let subtract = (k_max.square() * eps2).mul_pow2(4) <= T::one(p);
         let lg = |x: &T| RelError::of(x).log2();
-        let pole_scale = if subtract { 0.0 } else { -lg(&sc.eps2) / 2.0 };
-        let inv_a = lg(&k_max).max(pole_scale).max(-lg(&sc.d2) / 2.0);
-        let units = units_for_log2(inv_a);
-        let build = || GradedBody::new(&rules, &sc, units, subtract, p);
-        let body = speed.solve_cache().graded_body(units, subtract, build)?;
+        let pole_scale = if subtract { 0.0 } else { -lg(eps2) / 2.0 };
+        let other = pole_scale.max(-lg(&d2) / 2.0);
+        let units = k_units.max(units_for_log2(other));
+        let body = GradedBody::new(&rules, &SpeedConsts::new(speed), units, subtract, p)?;
         Ok(GradedSetup { k_max, body })
     }
+}
+
+/// The top of layout cell `c`: sinh(c ln 2) = 2^(c−1) − 2^(−c−1) (exact up to c = 26 at
+/// `f64`; rounded once beyond).
+fn cell_top<T: Real>(c: usize, p: T::Prec) -> T {
+    let one = T::one(p);
+    one.clone().mul_pow2(c as i32 - 1) - &one.mul_pow2(-(c as i32) - 1)
+}
+
+/// The layout cell of `k` (1 ≤ k ≤ 2^180, else [`Error::Domain`]): the least c ≥ 2 with
+/// k ≤ sinh(c ln 2) (a = 1/sinh(c ln 2) ≤ 1/k: module docs), ⌊log₂ k⌋ + 2 or one more just
+/// below a power of 2, by exact comparisons: a fixed grid in ln k.
+pub(crate) fn layout_cell<T: Real>(k: &T) -> Result<usize> {
+    check_k(k)?;
+    // ⌊log₂ k⌋ from k's nearest f64 (off by one only where it rounds up to a power of 2).
+    let mut c = ((k.to_f64().to_bits() >> 52) as i32 - 1021).max(2) as usize;
+    if c > 2 && *k <= cell_top(c - 1, k.prec()) {
+        c -= 1;
+    }
+    if *k > cell_top(c, k.prec()) {
+        c += 1;
+    }
+    Ok(c)
 }
 
 impl<T: Real> GradedBody<T> {
@@ -550,11 +571,8 @@ impl<T: Real> GradedBody<T> {
         // Right: σ, f, σ·f, σ²·f.
         let (right_s, right_w) = rules.right()?;
         let nr = right_s.len();
-        let mut right = Vec::with_capacity(4 * nr);
-        right.extend(right_s.iter().cloned());
-        right.extend(right_w.iter().cloned());
-        right.extend(right_s.iter().cloned());
-        right.extend(right_s.iter().cloned());
+        let tables = [right_s, right_w, right_s, right_s];
+        let mut right: Vec<T> = tables.iter().flat_map(|t| t.iter().cloned()).collect();
         {
             let (rs, rest) = right.split_at_mut(nr);
             let (rf, rest) = rest.split_at_mut(nr);
@@ -579,35 +597,19 @@ impl<T: Real> GradedBody<T> {
 }
 
 impl<T: Real> GradedSetup<T> {
-    /// Whether `k` lies in the range this layout serves, 1 ≤ k ≤ (5/4)·k_ref.
-    /// The range of (46)–(47) in k this layout serves; an exact comparison.
-    pub fn covers(&self, k: &T) -> bool {
-        *k >= T::one(k.prec()) && *k <= self.k_max
-    }
-
     /// I1, I2 of (34) in the normalisation of (37) at `axes` by graded fixed panels (module
-    /// docs); [`Error::Domain`] outside [`Self::covers`]. Accuracy: relative error below
-    /// [`BOUND_EPS`]·ε (the reported `error_estimate`). Work: the [`left_plan`] for x up to
-    /// asinh(1/min(4/(5k), ε, δ)) plus [`panel_nodes`] nodes. Implements (46)–(47).
-    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-        self.eval(axes, false)
-    }
-
-    /// I1, I2 (as [`GradedSetup::integrals`]) and dI1/dk, dI2/dk differentiated under the
-    /// integral sign on the same nodes (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵), their relative error of the
-    /// same order (positive integrands), at `axes`.
-    /// Implements (46)–(47) and their k-derivatives.
-    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-        self.eval(axes, true)
-    }
-
-    fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
+    /// docs) and, with `dk`, dI1/dk, dI2/dk differentiated under the integral sign on the same
+    /// nodes (∂Δ⁻³/∂k = −3k sin²α Δ⁻⁵); [`Error::Domain`] above the layout's k_max. Accuracy:
+    /// relative error below [`BOUND_EPS`]·ε (the reported `error_estimate`), the derivatives'
+    /// of the same order (positive integrands). Work: the [`left_plan`] for x up to
+    /// asinh(1/min(1/k_max, ε, δ)) plus [`panel_nodes`] nodes. Implements (46)–(47).
+    pub(crate) fn eval(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         check_k(&axes.k)?;
         if axes.k > self.k_max {
             return Err(Error::Domain {
                 name: "axis ratio k for this graded layout",
                 value: short(&axes.k),
-                bound: "[1, 5/4 k_ref]",
+                bound: "[1, the top of the layout's cell]",
             });
         }
         let p = axes.k.prec();
