@@ -2,7 +2,7 @@
 //! about half the working precision above 1024 bits) lifted to the working precision by chord
 //! steps with the stage below's F′, or at double-double by one Halley step.
 
-use super::newton::{residual, solve_core, Chord, Handed, Stage};
+use super::newton::{residual, Chord, Handed, Newton};
 use super::seed::lowest_stage;
 use super::Shape;
 use crate::error::{Error, Result};
@@ -54,7 +54,8 @@ impl<T: Real> ShapeSolver<T> {
             return Ok(shape);
         }
         // The stops bound the error by about 2|λ|·tol: a step at ε from the root meets tol.
-        let refined = solve_core(&self.top, ratio, Stage::from(Some(&shape.k), None))?.0;
+        let refined = Newton::new(&self.top, ratio, Some(&shape.k), None, true).run(None, false)?;
+        let refined = refined.0;
         if refined.error_estimate <= wanted {
             return Ok(refined);
         }
@@ -99,13 +100,7 @@ impl<T: Real> ShapeSolver<T> {
         let Some((seed, seed_slope, halley)) = self.below(ratio, guess) else {
             return lowest_stage(&self.top, ratio, allow_chord, tol, None);
         };
-        let stage = Stage {
-            seed_slope,
-            halley,
-            allow_chord,
-            ..Stage::from(Some(&seed), tol)
-        };
-        solve_core(&self.top, ratio, stage)
+        Newton::new(&self.top, ratio, Some(&seed), tol, allow_chord).run(seed_slope, halley)
     }
 
     /// The stage below p bits, lifted to p: its root, its F′ with the bounds on both, and
@@ -126,14 +121,11 @@ impl<T: Real> ShapeSolver<T> {
         let (s64, c64) = lowest_stage(ev64, &ratio.to_f64(), false, None, guess).ok()?;
         if bits > 106 {
             let seed_dd = Dd::from_f64(s64.k, ());
-            let from_f64 = Stage {
-                seed_slope: c64.as_ref().map(|c| lift(c, (), (F64_SLOPE, F64_SEED))),
-                allow_chord: false,
-                ..Stage::from(Some(&seed_dd), None)
-            };
+            let handed = c64.as_ref().map(|c| lift(c, (), (F64_SLOPE, F64_SEED)));
             let ratio_dd = Dd::from_float(&ratio.to_float(bits), ());
             let ev_dd = self.lower(&self.stage_dd, |s| s.solve_cache().at_dd(s));
-            if let Some(Ok((s, c))) = ev_dd.map(|ev| solve_core(ev, &ratio_dd, from_f64)) {
+            let stage_dd = |ev| Newton::new(ev, &ratio_dd, Some(&seed_dd), None, false);
+            if let Some(Ok((s, c))) = ev_dd.map(|ev| stage_dd(ev).run(handed, false)) {
                 let seed = T::from_float(&s.k.to_float(106), p);
                 return Some((seed, c.map(|c| lift(&c, p, (DD_SLOPE, DD_SEED))), false));
             }

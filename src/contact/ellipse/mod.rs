@@ -31,7 +31,6 @@
 //! `tests/edges.rs` (|ln k| up to 2878).
 
 mod finish;
-mod halley;
 mod ladder;
 mod newton;
 mod seed;

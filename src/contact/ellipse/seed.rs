@@ -2,8 +2,7 @@
 //! else the grid seed (an `f64` solve by a fixed-rule method), else the static Hertz ellipse in
 //! closed form, with the k = 1 probe that tells on which side of k = 1 the root lies.
 
-use super::halley::secant_partner;
-use super::newton::{solve_core, Handed, Newton, Stage, MAX_EVALUATIONS};
+use super::newton::{residual, Chord, Handed, Newton, MAX_EVALUATIONS};
 use super::{shape_residual, shape_slope};
 use crate::error::Result;
 use crate::routes::evaluate::Evaluator;
@@ -17,11 +16,11 @@ use std::sync::OnceLock;
 const GUESS_EVALUATIONS: usize = 8;
 
 /// The ladder's lowest stage: from `guess` when it converges within [`GUESS_EVALUATIONS`],
-/// else, at the `f64` working precision, from the grid seed ([`grid_seed`], whose nodes count
-/// in the shape's iterations), else from the static ellipse (a stage that hands its
-/// derivatives on starts there: its evaluations give the Halley step its secant). `allow_chord`: whether its last evaluation may
-/// skip the k-derivatives (not when it hands them on). A seeded stage that hands on derivatives
-/// from one evaluation gets a secant partner for the Halley step above it.
+/// else, at `f64` by a fixed rule with `allow_chord`, from the grid seed ([`grid_seed`], whose
+/// nodes count in the shape's iterations), else from the static ellipse. `allow_chord`:
+/// whether its last evaluation may skip the k-derivatives (not when it hands them on). A
+/// seeded stage that hands on derivatives from one evaluation gets a secant partner for the
+/// Halley step above: one more evaluation with derivatives at [`PARTNER_STEP`] from its root.
 #[inline]
 pub(super) fn lowest_stage<S: Real>(
     ev: &Evaluator<S>,
@@ -32,14 +31,17 @@ pub(super) fn lowest_stage<S: Real>(
 ) -> Handed<S> {
     let run = |seed: f64, budget| {
         let seed = S::from_f64(seed, ratio.prec());
-        let stage = Stage {
-            allow_chord,
-            budget,
-            ..Stage::from(Some(&seed), tol.clone())
-        };
-        let (shape, slope) = solve_core(ev, ratio, stage)?;
+        let mut newton = Newton::new(ev, ratio, Some(&seed), tol.clone(), allow_chord);
+        newton.budget = budget;
+        let (shape, slope) = newton.run(None, false)?;
         let slope = match slope {
-            Some(c) if !allow_chord && c.before.is_none() => Some(secant_partner(ev, ratio, c)),
+            Some(mut c) if !allow_chord && c.before.is_none() => {
+                let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, ratio.prec());
+                if let Ok((_, df, ci)) = residual(ev, ratio, &lam, None) {
+                    c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
+                }
+                Some(c)
+            }
             other => other,
         };
         Ok((shape, slope))
@@ -50,16 +52,16 @@ pub(super) fn lowest_stage<S: Real>(
         }
     }
     if let Some((k, nodes)) = allow_chord.then(|| grid_seed(ev, ratio)).flatten() {
-        let (mut shape, slope) = run(k, MAX_EVALUATIONS)?;
+        let (mut shape, slope): (_, Option<Chord<S>>) = run(k, MAX_EVALUATIONS)?;
         shape.iterations += nodes;
         return Ok((shape, slope));
     }
-    let stage = Stage {
-        allow_chord,
-        ..Stage::from(None, tol.clone())
-    };
-    solve_core(ev, ratio, stage)
+    Newton::new(ev, ratio, None, tol.clone(), allow_chord).run(None, false)
 }
+
+/// The secant partner's distance in λ: √r for derivatives of relative error r ~ 2⁻⁴⁰, where
+/// the secant's rounding and truncation errors balance.
+const PARTNER_STEP: f64 = 9.5367431640625e-7; // 2^-20
 
 /// The static Hertz ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a
 /// few per cent of the static root down to 10⁻⁶), the k ≫ 1 form ([`static_seed_wide`]) from
