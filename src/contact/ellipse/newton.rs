@@ -317,7 +317,8 @@ impl<'a, T: Real> Newton<'a, T> {
     /// (δ = −F/F′; error ≤ (|ΔF″|/2F′)δ² + |δ|³, required ≤ ε·scale/4) and I1, I2 carried to
     /// second order (error ½|ΔI″|dk²/I, required ≤ ε). `None`, and a Newton step instead,
     /// when a bound misses. Its control arithmetic runs in `f64`, which holds every quantity
-    /// at double-double.
+    /// at double-double. Out of line: it runs at double-double only.
+    #[inline(never)]
     fn halley_step(&mut self, c: &Chord<T>, (f2, f2_err): (f64, f64)) -> Result<Option<Shape<T>>> {
         let lam = self.lam.clone();
         let (f, df, ci) = residual(self.evaluator, self.ratio, &lam, None)?;

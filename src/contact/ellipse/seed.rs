@@ -19,8 +19,7 @@ const GUESS_EVALUATIONS: usize = 8;
 /// else, at `f64` by a fixed rule with `allow_chord`, from the grid seed ([`grid_seed`], whose
 /// nodes count in the shape's iterations), else from the static ellipse. `allow_chord`:
 /// whether its last evaluation may skip the k-derivatives (not when it hands them on). A
-/// seeded stage that hands on derivatives from one evaluation gets a secant partner for the
-/// Halley step above: one more evaluation with derivatives at [`PARTNER_STEP`] from its root.
+/// seeded stage that hands on derivatives from one evaluation gets a [`secant_partner`].
 #[inline]
 pub(super) fn lowest_stage<S: Real>(
     ev: &Evaluator<S>,
@@ -35,13 +34,7 @@ pub(super) fn lowest_stage<S: Real>(
         newton.budget = budget;
         let (shape, slope) = newton.run(None, false)?;
         let slope = match slope {
-            Some(mut c) if !allow_chord && c.before.is_none() => {
-                let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, ratio.prec());
-                if let Ok((_, df, ci)) = residual(ev, ratio, &lam, None) {
-                    c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
-                }
-                Some(c)
-            }
+            Some(c) if !allow_chord && c.before.is_none() => Some(secant_partner(ev, ratio, c)),
             other => other,
         };
         Ok((shape, slope))
@@ -52,11 +45,23 @@ pub(super) fn lowest_stage<S: Real>(
         }
     }
     if let Some((k, nodes)) = allow_chord.then(|| grid_seed(ev, ratio)).flatten() {
-        let (mut shape, slope): (_, Option<Chord<S>>) = run(k, MAX_EVALUATIONS)?;
+        let (mut shape, slope) = run(k, MAX_EVALUATIONS)?;
         shape.iterations += nodes;
         return Ok((shape, slope));
     }
     Newton::new(ev, ratio, None, tol.clone(), allow_chord).run(None, false)
+}
+
+/// A seeded stage that hands on derivatives from one evaluation leaves no earlier iterate for
+/// the Halley step's secant above: one more evaluation with derivatives at [`PARTNER_STEP`]
+/// from its root supplies it (unchanged if that evaluation fails).
+#[inline(never)]
+fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Chord<S> {
+    let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, ratio.prec());
+    if let Ok((_, df, ci)) = residual(ev, ratio, &lam, None) {
+        c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
+    }
+    c
 }
 
 /// The secant partner's distance in λ: √r for derivatives of relative error r ~ 2⁻⁴⁰, where
