@@ -39,9 +39,8 @@ pub(super) fn residual<T: Real>(
     Ok((f, c.df.clone(), ci))
 }
 
-/// Derivatives kept for chord steps: dI1/dk, dI2/dk and F′ at λ, F′'s relative error when it
-/// comes from a lower precision, and the iterate before (λ, F′, dI1/dk, dI2/dk) for the Halley
-/// step's secant second derivatives.
+/// Derivatives kept for chord steps: dI1/dk, dI2/dk and F′ at λ, F′'s relative error (from a
+/// lower precision), and the iterate before (λ, F′, dI1/dk, dI2/dk) for the Halley step.
 #[derive(Clone)]
 pub(super) struct Chord<T> {
     pub(super) lam: T,
@@ -53,7 +52,7 @@ pub(super) struct Chord<T> {
 }
 
 impl<T: Real> Chord<T> {
-    /// The derivatives of `ci` at λ, exact for this precision.
+    /// The derivatives of `ci` at λ.
     pub(super) fn at(lam: T, df: T, ci: &Evaluation<T>, before: Option<[T; 4]>) -> Self {
         let (di1, di2, rel_err) = (ci.di1_dk(), ci.di2_dk(), T::zero(lam.prec()));
         Chord {
@@ -67,12 +66,10 @@ impl<T: Real> Chord<T> {
     }
 }
 
-/// One stage's iteration: its inputs (`allow_chord`: whether the last evaluation may skip the
-/// k-derivatives, not for a stage that hands them on; `eps`: ε or the tolerance asked for) and
-/// its state (the bracket F(lo) < 0 < F(hi), the chord step's derivatives, the last ones
-/// evaluated, the unbracketed reach, doubled after each step cut to it, and the λ a step
-/// longer than 2 may reach: the fixed rules' k ≤ 2^180, and k⁴ ≥ 2⁸ times the smallest
-/// normal number).
+/// One stage's iteration: `eps` (ε or the tolerance), `allow_chord` (whether the last
+/// evaluation may skip the k-derivatives: not for a stage that hands them on), the bracket
+/// F(lo) < 0 < F(hi), the chord step's derivatives, the last ones evaluated, the unbracketed
+/// reach, and the λ a step longer than 2 may reach (k ≤ 2^180, k⁴ ≥ 2⁸ × the least normal).
 pub(super) struct Newton<'a, T: Real + 'static> {
     pub(super) ratio: &'a T,
     pub(super) evaluator: &'a Evaluator<T>,
@@ -133,9 +130,9 @@ impl<'a, T: Real> Newton<'a, T> {
         self.ratio.prec()
     }
 
-    /// Runs the stage: the k = 1 probe (unseeded), the Halley step when `halley` and the
-    /// handed-on derivatives `handed` (with the bound on the seed's error) allow it, else chord
-    /// steps with them when 64(r·seed_err)² ≤ ε, then the safeguarded iteration.
+    /// Runs the stage: the k = 1 probe (unseeded); with derivatives `handed` on from below
+    /// (and the bound on the seed's error) the Halley step when `halley` and they allow it,
+    /// else chord steps with them when 64(r·seed_err)² ≤ ε; then the safeguarded iteration.
     #[inline]
     pub(super) fn run(mut self, handed: Option<(Chord<T>, T)>, halley: bool) -> Handed<T> {
         if !self.seeded && self.evaluator.method() != Method::Adaptive {
@@ -239,9 +236,8 @@ impl<'a, T: Real> Newton<'a, T> {
         }
     }
 
-    /// Keeps this iterate's derivatives for the next stage; a stage that hands them on (no
-    /// chord steps) also keeps, of the two iterates with derivatives before, the one whose
-    /// distance D from this one minimises the secant's error bound r/D + D (r = 2¹²ε).
+    /// Keeps this iterate's derivatives for the next stage, and, in a stage that hands them on,
+    /// of the two iterates before the one minimising the secant's bound r/D + D (r = 2¹²ε).
     #[inline]
     fn hand_on(&mut self, lam: &T, df: &T, ci: &Evaluation<T>) {
         let r = self.eps.clone().mul_i64(4096);
@@ -263,9 +259,8 @@ impl<'a, T: Real> Newton<'a, T> {
     }
 
     /// The stops after a step from `lam_old` (whose integrals `ci` [`finish`] carries): the
-    /// step at rounding level or stalled near it; or, once converging (seeded, or after two
-    /// steps), a full step δ leaves an error ~δ·max(δ, age) with 64δ·max(δ, age) ≤ ε·scale²
-    /// and the integrals' carry ≤ ε.
+    /// step at rounding level or stalled near it; or, once converging, a full step δ with
+    /// 64δ·max(δ, age) ≤ ε·scale² and the integrals' carry ≤ ε.
     #[inline]
     fn converged(
         &self,
@@ -312,12 +307,11 @@ impl<'a, T: Real> Newton<'a, T> {
         }
     }
 
-    /// The double-double Halley step from the `f64` root λ0, one evaluation with derivatives:
-    /// with F″, I″ by secants between the `f64` stage's last two iterates, h = δ − F″δ²/(2F′)
-    /// (δ = −F/F′; error ≤ (|ΔF″|/2F′)δ² + |δ|³, required ≤ ε·scale/4) and I1, I2 carried to
-    /// second order (error ½|ΔI″|dk²/I, required ≤ ε). `None`, and a Newton step instead,
-    /// when a bound misses. Its control arithmetic runs in `f64`, which holds every quantity
-    /// at double-double. Out of line: it runs at double-double only.
+    /// The Halley step from the `f64` root λ0 at double-double, one evaluation with
+    /// derivatives: with F″ by secant ([`f_second`]), h = δ − F″δ²/(2F′) (δ = −F/F′; error
+    /// ≤ (|ΔF″|/2F′)δ² + |δ|³, required ≤ ε·scale/4) and I1, I2 carried to second order
+    /// ([`carry_second`]). `None`, and a Newton step instead, when a bound misses. Its control
+    /// arithmetic runs in `f64`, which holds every quantity at double-double.
     #[inline(never)]
     fn halley_step(&mut self, c: &Chord<T>, (f2, f2_err): (f64, f64)) -> Result<Option<Shape<T>>> {
         let lam = self.lam.clone();
@@ -352,9 +346,8 @@ impl<'a, T: Real> Newton<'a, T> {
 }
 
 /// F″ at λ0 by the secant between the lower stage's last two iterates (`c`, `c.before`) and
-/// its bound 2r|F′|/D + (1 + |F″|)(D + |λ0 − λ_c|) (rounding over their distance D, the
-/// truncation with |F‴| ≤ 1 + |F″|); `None` when the bound exceeds 0.1. It needs no
-/// evaluation at λ0, so that a stage decides before evaluating whether the Halley step can work.
+/// its bound 2r|F′|/D + (1 + |F″|)(D + |λ0 − λ_c|) (|F‴| ≤ 1 + |F″|); `None` when the bound
+/// exceeds 0.1. It needs no evaluation at λ0.
 pub(super) fn f_second<T: Real>(c: &Chord<T>, lam0: &T) -> Option<(f64, f64)> {
     let b = c.before.as_ref()?;
     let (la, lb) = (b[0].to_f64(), c.lam.to_f64());
