@@ -174,26 +174,20 @@ impl<'a, T: Real> Newton<'a, T> {
                 let shape = finish(lam.clone(), &lam, ci, self.ratio, T::zero(p), self.spent);
                 return Ok((shape, self.fresh_slope));
             }
-            *(if f.is_negative() {
-                &mut self.lo
+            if f.is_negative() {
+                self.lo = Some(lam.clone());
             } else {
-                &mut self.hi
-            }) = Some(lam.clone());
+                self.hi = Some(lam.clone());
+            }
             let (next, was_newton, cut) = self.next_iterate(&f, &df);
             if cut {
                 self.reach = self.reach.clone().mul_pow2(1);
             }
             let step = (next.clone() - &lam).abs();
-            let scale = lam.clone().abs().max_of(T::one(p));
-            // How far behind the derivative of this step lies (0 for a Newton step).
-            let age = (self.chord.as_ref())
-                .map_or_else(|| T::zero(p), |c| (lam.clone() - &c.lam).abs() + &c.rel_err);
             self.lam = next;
-            if let Some(shape) = self.converged(&lam, ci, &step, &age, &scale, was_newton) {
+            if let Some(shape) = self.stop_or_plan(&lam, ci, step, was_newton, fresh) {
                 return Ok((shape, self.fresh_slope));
             }
-            self.plan_chord(&step, &age, &scale, was_newton, fresh);
-            self.last_step = Some(step);
         }
         Err(Error::NoConvergence {
             what: "Newton iteration for the axis ratio k",
@@ -258,53 +252,54 @@ impl<'a, T: Real> Newton<'a, T> {
         self.fresh_slope = Some(Chord::at(lam.clone(), df.clone(), ci, before));
     }
 
-    /// The stops after a step from `lam_old` (whose integrals `ci` [`finish`] carries): the
-    /// step at rounding level or stalled near it; or, once converging, a full step δ with
-    /// 64δ·max(δ, age) ≤ ε·scale² and the integrals' carry ≤ ε.
+    /// After a full (`newton`) or cut step δ from `lam_old`, whose integrals `ci` [`finish`]
+    /// carries, the stops: δ at rounding level or stalled near it; or, once converging, a
+    /// full step with 64δ·max(δ, age) ≤ ε·scale² (age: how far behind the step's derivative
+    /// lies) and the integrals' carry ≤ ε. Else the chord step: when the next evaluation is
+    /// expected to be the last (64δ³ ≤ ε) it steps with this iterate's F′; a slope handed on
+    /// from below (positive `rel_err`) is kept while the steps are full and 64·age²·δ ≤ ε·scale².
     #[inline]
-    fn converged(
-        &self,
+    fn stop_or_plan(
+        &mut self,
         lam_old: &T,
         ci: Evaluation<T>,
-        step: &T,
-        age: &T,
-        scale: &T,
+        step: T,
         newton: bool,
+        fresh: bool,
     ) -> Option<Shape<T>> {
-        let eps = &self.eps;
-        let small = *step <= scale.clone() * &eps.clone().mul_i64(4);
+        let (eps, p) = (&self.eps, self.prec());
+        let scale = lam_old.clone().abs().max_of(T::one(p));
+        let age = (self.chord.as_ref()).map_or_else(
+            || T::zero(p),
+            |c| (lam_old.clone() - &c.lam).abs() + &c.rel_err,
+        );
+        let small = step <= scale.clone() * &eps.clone().mul_i64(4);
         let stalled = (self.last_step.as_ref())
-            .is_some_and(|s| step >= s && *step <= scale.clone() * &eps.clone().mul_i64(64));
+            .is_some_and(|s| step >= *s && step <= scale.clone() * &eps.clone().mul_i64(64));
         let done = |err: T| finish(self.lam.clone(), lam_old, ci, self.ratio, err, self.spent);
         if small || stalled {
-            return Some(done(step.clone()));
+            return Some(done(step));
         }
         let projected = step.clone() * &step.clone().max_of(age.clone()).mul_i64(64);
         let quadratic = self.seeded || self.spent >= 3;
-        let carry = carry_error(step, &age.clone().mul_i64(8));
+        let carry = carry_error(&step, &age.clone().mul_i64(8));
         if newton && quadratic && projected <= eps.clone() * &scale.square() && carry <= *eps {
-            return Some(done(projected / scale));
+            return Some(done(projected / &scale));
         }
-        None
-    }
-
-    /// The chord step at the end: when the next evaluation is expected to be the last
-    /// (64δ³ ≤ ε) it steps with this iterate's F′. A slope handed on from below (positive
-    /// `rel_err`) is kept while the steps are full ones and 64·age²·δ ≤ ε·scale².
-    #[inline]
-    fn plan_chord(&mut self, step: &T, age: &T, scale: &T, newton: bool, fresh: bool) {
         let past_first = self.seeded || self.spent >= 2;
         if self.allow_chord && newton && past_first && fresh {
-            if (step.square() * step).mul_i64(64) <= self.eps.clone() * &scale.square() * scale {
+            if (step.square() * &step).mul_i64(64) <= eps.clone() * &scale.square() * &scale {
                 self.chord = self.fresh_slope.clone();
             }
         } else if !newton || !self.allow_chord {
             self.chord = None;
         } else if (self.chord.as_ref()).is_some_and(|c| c.rel_err.is_positive())
-            && (age.clone().square() * step).mul_i64(64) > self.eps.clone() * &scale.square()
+            && (age.square() * &step).mul_i64(64) > eps.clone() * &scale.square()
         {
             self.chord = None;
         }
+        self.last_step = Some(step);
+        None
     }
 
     /// The Halley step from the `f64` root λ0 at double-double, one evaluation with
