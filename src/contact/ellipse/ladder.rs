@@ -93,19 +93,13 @@ impl<T: Real> ShapeSolver<T> {
     /// `allow_chord`: whether the last evaluation may skip the k-derivatives (not for a stage
     /// that hands them on).
     fn climb(&self, ratio: &T, tol: Option<T>, guess: Option<f64>, allow_chord: bool) -> Handed<T> {
-        let bits = T::bits(ratio.prec());
-        match (bits > 53).then(|| self.below(ratio, guess)).flatten() {
-            Some((seed, handed, halley)) => {
-                Newton::new(&self.top, ratio, Some(&seed), tol, allow_chord).run(handed, halley)
-            }
-            None => lowest_stage(
-                &self.top,
-                ratio,
-                allow_chord,
-                tol,
-                guess.filter(|_| bits <= 53),
-            ),
+        if T::bits(ratio.prec()) <= 53 {
+            return lowest_stage(&self.top, ratio, allow_chord, tol, guess);
         }
+        let Some((seed, handed, halley)) = self.below(ratio, guess) else {
+            return lowest_stage(&self.top, ratio, allow_chord, tol, None);
+        };
+        Newton::new(&self.top, ratio, Some(&seed), tol, allow_chord).run(handed, halley)
     }
 
     /// The stage below p bits, lifted to p: its root, its F′ with the bounds on both, and
@@ -115,10 +109,9 @@ impl<T: Real> ShapeSolver<T> {
     /// evaluation with derivatives, which serve the stage above. `None` when the stages fail.
     fn below(&self, ratio: &T, guess: Option<f64>) -> Option<Lifted<T>> {
         let (p, bits) = (ratio.prec(), T::bits(ratio.prec()));
-        if let Some(lifted) = (bits > MID_ABOVE_BITS).then(|| self.below_mid(ratio, guess)) {
-            if lifted.is_some() {
-                return lifted;
-            }
+        let mid = (bits > MID_ABOVE_BITS).then(|| self.below_mid(ratio, guess));
+        if let Some(lifted) = mid.flatten() {
+            return Some(lifted);
         }
         let ev64 = self.lower(&self.stage64, |s| s.solve_cache().at_f64(s))?;
         let (s64, c64) = lowest_stage(ev64, &ratio.to_f64(), false, None, guess).ok()?;
