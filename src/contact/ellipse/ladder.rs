@@ -2,13 +2,13 @@
 //! about half the working precision above 1024 bits) lifted to the working precision by chord
 //! steps with the stage below's F′, or at double-double by one Halley step.
 
-use super::newton::{residual, Chord, Handed, Newton};
+use super::newton::{newton_options, residual, Chord, Handed, Newton};
 use super::seed::lowest_stage;
 use super::Shape;
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::physics::Speed;
-use crate::routes::evaluate::{Evaluator, IntegralOptions};
+use crate::routes::evaluate::Evaluator;
 use crate::routes::Method;
 use crate::scalar::{Dd, Real};
 use std::cell::OnceCell;
@@ -186,15 +186,6 @@ impl<T: Real> ShapeSolver<T> {
 /// A lower stage's result at the precision above: its root, its F′ with the bound on its
 /// relative error and the bound on the root's, and whether the Halley step may be tried.
 type Lifted<T> = (T, Option<(Chord<T>, T)>, bool);
-
-/// The integral options of a Newton iterate: the method, with k-derivatives.
-fn newton_options(method: Method) -> IntegralOptions {
-    IntegralOptions {
-        method,
-        derivatives: true,
-        ..Default::default()
-    }
-}
 
 /// log₂ of the bounds on a lower stage's F′ (relative; a margin over the fixed rules'
 /// measured derivative errors) and on its root's error in λ (`docs/calibration.md`).

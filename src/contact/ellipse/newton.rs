@@ -9,7 +9,7 @@ use super::{shape_residual, shape_slope, Shape};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::routes::evaluate::Evaluator;
-use crate::routes::{fast, AxisRatio, Evaluation, Method};
+use crate::routes::{fast, AxisRatio, Evaluation, IntegralOptions, Method};
 use crate::scalar::{short, Real};
 
 /// A stage's result: the shape and the derivatives it hands on to the stage above.
@@ -17,6 +17,15 @@ pub(super) type Handed<T> = Result<(Shape<T>, Option<Chord<T>>)>;
 
 /// The bound on one stage's evaluations.
 pub(super) const MAX_EVALUATIONS: usize = 200;
+
+/// The integral options of a Newton iterate: the method, with k-derivatives.
+pub(super) fn newton_options(method: Method) -> IntegralOptions {
+    IntegralOptions {
+        method,
+        derivatives: true,
+        ..Default::default()
+    }
+}
 
 /// F, F′ and the integrals at λ; with `chord` (derivatives kept from an earlier iterate or a
 /// lower stage) the derivatives are not evaluated, and their relative error grows by ≲ 8|Δλ|.

@@ -2,11 +2,11 @@
 //! else the grid seed (an `f64` solve by a fixed-rule method), else the static Hertz ellipse in
 //! closed form, with the k = 1 probe that tells on which side of k = 1 the root lies.
 
-use super::newton::{residual, Chord, Handed, Newton, MAX_EVALUATIONS};
+use super::newton::{newton_options, residual, Chord, Handed, Newton, MAX_EVALUATIONS};
 use super::{shape_residual, shape_slope};
 use crate::error::Result;
 use crate::routes::evaluate::Evaluator;
-use crate::routes::{AxisRatio, IntegralOptions, Method};
+use crate::routes::{AxisRatio, Method};
 use crate::scalar::Real;
 use std::sync::OnceLock;
 
@@ -205,12 +205,7 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, u
 
 /// ln(I2/I1) and its λ-derivative F′ at λ, by the fixed rules on an evaluator of its own.
 fn grid_node<S: Real>(ev: &Evaluator<S>, lam: f64) -> Option<(f64, f64)> {
-    let opts = IntegralOptions {
-        method: Method::Auto,
-        derivatives: true,
-        ..Default::default()
-    };
-    let own = Evaluator::new(ev.speed(), opts).ok()?;
+    let own = Evaluator::new(ev.speed(), newton_options(Method::Auto)).ok()?;
     let one = S::one(ev.speed().mr().prec());
     let ax = AxisRatio::new(S::from_f64(lam.exp(), one.prec())).ok()?;
     let ci = own.for_newton(&ax, true).ok()?;
