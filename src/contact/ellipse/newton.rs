@@ -300,10 +300,10 @@ impl<'a, T: Real> Newton<'a, T> {
             if (step.square() * &step).mul_i64(64) <= eps.clone() * &scale.square() * &scale {
                 self.chord = self.fresh_slope.clone();
             }
-        } else if !newton || !self.allow_chord {
-            self.chord = None;
-        } else if (self.chord.as_ref()).is_some_and(|c| c.rel_err.is_positive())
-            && (age.square() * &step).mul_i64(64) > eps.clone() * &scale.square()
+        } else if !newton
+            || !self.allow_chord
+            || (self.chord.as_ref()).is_some_and(|c| c.rel_err.is_positive())
+                && (age.square() * &step).mul_i64(64) > eps.clone() * &scale.square()
         {
             self.chord = None;
         }
