@@ -25,8 +25,8 @@ fn carry<T: Real>(ci: &mut Evaluation<T>, k_old: &T, k: &T) {
     ci.extra_error += &moved.mul_i64(8);
 }
 
-/// Above this |ln k| the solve ends with a Newton step in k itself ([`finish`]); below, e^λ's
-/// rounding (≤ |λ|ε/2 = 4ε) stays in k and its bound (`docs/calibration.md`).
+/// Above this |ln k| the solve ends with a Newton step in k itself; below, e^λ's rounding
+/// (≤ |λ|ε/2 = 4ε) stays in k and its bound (`docs/calibration.md`).
 const STEP_IN_K_ABOVE: f64 = 8.0;
 
 /// The shape at λ from the integrals `ci` evaluated at `lam_old`, carried to k = e^λ, with
@@ -67,11 +67,12 @@ pub(super) fn finish<T: Real>(
     carry(&mut ci, &stepped, &k);
     let through_f = (ci.error_estimate.clone().mul_i64(2) + &eps.clone().mul_i64(4)) / &floor;
     let df_error = (ci.extra_error.clone() + &ci.error_estimate).mul_i64(8) / &floor;
-    let second = (last_step.abs() + &delta.clone().abs())
-        .square()
-        .mul_i64(16);
+    let second = (last_step.abs() + &delta.clone().abs()).square();
     Shape {
-        error_estimate: through_f + &(delta.abs() * &df_error) + &second + &eps.mul_i64(4),
+        error_estimate: through_f
+            + &(delta.abs() * &df_error)
+            + &second.mul_i64(16)
+            + &eps.mul_i64(4),
         k,
         integrals: ci,
         iterations,

@@ -2,13 +2,13 @@
 //! about half the working precision above 1024 bits) lifted to the working precision by chord
 //! steps with the stage below's F′, or at double-double by one Halley step.
 
-use super::newton::{residual, solve_core, Chord, Handed, Stage};
+use super::newton::{newton_options, residual, Chord, Handed, Newton};
 use super::seed::lowest_stage;
 use super::Shape;
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::physics::Speed;
-use crate::routes::evaluate::{Evaluator, IntegralOptions};
+use crate::routes::evaluate::Evaluator;
 use crate::routes::Method;
 use crate::scalar::{Dd, Real};
 use std::cell::OnceCell;
@@ -54,7 +54,8 @@ impl<T: Real> ShapeSolver<T> {
             return Ok(shape);
         }
         // The stops bound the error by about 2|λ|·tol: a step at ε from the root meets tol.
-        let refined = solve_core(&self.top, ratio, Stage::from(Some(&shape.k), None))?.0;
+        let refined = Newton::new(&self.top, ratio, Some(&shape.k), None, true).run(None, false)?;
+        let refined = refined.0;
         if refined.error_estimate <= wanted {
             return Ok(refined);
         }
@@ -88,60 +89,54 @@ impl<T: Real> ShapeSolver<T> {
     }
 
     /// The ladder: at `f64` the plain solve; above, the working precision from the root and F′
-    /// of the stage below ([`Self::below`]) — one Halley step or two chord steps at
-    /// double-double, a few chord steps above — or alone if the stages below fail.
-    /// `allow_chord`: whether the last evaluation may skip the k-derivatives (false for a stage
+    /// of the stage below ([`Self::below`]), or alone if the stages below fail.
+    /// `allow_chord`: whether the last evaluation may skip the k-derivatives (not for a stage
     /// that hands them on).
     fn climb(&self, ratio: &T, tol: Option<T>, guess: Option<f64>, allow_chord: bool) -> Handed<T> {
         if T::bits(ratio.prec()) <= 53 {
             return lowest_stage(&self.top, ratio, allow_chord, tol, guess);
         }
-        let Some((seed, seed_slope, halley)) = self.below(ratio, guess) else {
+        let Some((seed, handed, halley)) = self.below(ratio, guess) else {
             return lowest_stage(&self.top, ratio, allow_chord, tol, None);
         };
-        let stage = Stage {
-            seed_slope,
-            halley,
-            allow_chord,
-            ..Stage::from(Some(&seed), tol)
-        };
-        solve_core(&self.top, ratio, stage)
+        Newton::new(&self.top, ratio, Some(&seed), tol, allow_chord).run(handed, halley)
     }
 
     /// The stage below p bits, lifted to p: its root, its F′ with the bounds on both, and
-    /// whether the Halley step may be tried. Above [`MID_ABOVE_BITS`] the same solve at
-    /// m = p/2 + [`MID_GUARD_BITS`] bits, whose root and F′ (~2^-m) leave one or two chord steps
-    /// at p; else the `f64` stage (inputs rounded to `f64`, the speed by its gap), above 106
-    /// bits followed by the double-double stage. Each ends on an evaluation with derivatives,
-    /// so that they serve the stage above. `None` when the stages fail.
+    /// whether the Halley step may be tried: above [`MID_ABOVE_BITS`] the solve at
+    /// m = p/2 + [`MID_GUARD_BITS`] bits ([`Self::below_mid`]), else the `f64` stage (inputs
+    /// rounded to `f64`), above 106 bits followed by the double-double stage. Each ends on an
+    /// evaluation with derivatives, which serve the stage above. `None` when the stages fail.
     fn below(&self, ratio: &T, guess: Option<f64>) -> Option<Lifted<T>> {
-        let p = ratio.prec();
-        let bits = T::bits(p);
-        if bits > MID_ABOVE_BITS {
-            if let Some(lifted) = self.below_mid(ratio, guess) {
-                return Some(lifted);
-            }
+        let (p, bits) = (ratio.prec(), T::bits(ratio.prec()));
+        let mid = (bits > MID_ABOVE_BITS).then(|| self.below_mid(ratio, guess));
+        if let Some(lifted) = mid.flatten() {
+            return Some(lifted);
         }
         let ev64 = self.lower(&self.stage64, |s| s.solve_cache().at_f64(s))?;
         let (s64, c64) = lowest_stage(ev64, &ratio.to_f64(), false, None, guess).ok()?;
         if bits > 106 {
-            let seed_dd = Dd::from_f64(s64.k, ());
-            let from_f64 = Stage {
-                seed_slope: c64.as_ref().map(|c| lift(c, (), (F64_SLOPE, F64_SEED))),
-                allow_chord: false,
-                ..Stage::from(Some(&seed_dd), None)
-            };
+            let (seed_dd, handed) = (
+                Dd::from_f64(s64.k, ()),
+                c64.as_ref().map(|c| lift(c, (), F64_BOUNDS)),
+            );
             let ratio_dd = Dd::from_float(&ratio.to_float(bits), ());
             let ev_dd = self.lower(&self.stage_dd, |s| s.solve_cache().at_dd(s));
-            if let Some(Ok((s, c))) = ev_dd.map(|ev| solve_core(ev, &ratio_dd, from_f64)) {
+            let stage_dd = |ev| Newton::new(ev, &ratio_dd, Some(&seed_dd), None, false);
+            if let Some(Ok((s, c))) = ev_dd.map(|ev| stage_dd(ev).run(handed, false)) {
                 let seed = T::from_float(&s.k.to_float(106), p);
-                return Some((seed, c.map(|c| lift(&c, p, (DD_SLOPE, DD_SEED))), false));
+                return Some((seed, c.map(|c| lift(&c, p, DD_BOUNDS)), false));
             }
         }
-        // The Halley step, unless rounding the inputs to f64 moved the root by more than
-        // ~1e-15 (k's sensitivity to the gap's relative change is about 1/4), where two chord
-        // steps are cheaper than the attempt and a Newton step. A nonzero input within 2^53 of
-        // the f64 range's ends (a gap that underflows there) counts as moved: no Halley step.
+        let halley = bits <= 106 && self.kept_by_f64(ratio);
+        let slope = c64.map(|c| lift(&c, p, F64_BOUNDS));
+        Some((T::from_f64(s64.k, p), slope, halley))
+    }
+
+    /// Whether rounding the inputs to `f64` moved the root by less than ~1e-15 (k's
+    /// sensitivity to the gap's relative change is about 1/4), where the Halley step from the
+    /// `f64` root pays; a nonzero input within 2^53 of the f64 range's ends counts as moved.
+    fn kept_by_f64(&self, ratio: &T) -> bool {
         let moved = |x: &T| {
             let x64 = x.to_f64();
             if x.is_zero() {
@@ -151,16 +146,13 @@ impl<T: Real> ShapeSolver<T> {
             {
                 return f64::INFINITY;
             }
-            (x.clone() - T::from_f64(x64, p)).abs().to_f64() / x64.abs()
+            (x.clone() - T::from_f64(x64, x.prec())).abs().to_f64() / x64.abs()
         };
         let speed = self.top.speed();
-        let perturbation = moved(ratio) + moved(speed.material().nu()) + moved(speed.gap());
-        let halley = bits <= 106 && perturbation <= 1e-15;
-        let slope = c64.map(|c| lift(&c, p, (F64_SLOPE, F64_SEED)));
-        Some((T::from_f64(s64.k, p), slope, halley))
+        moved(ratio) + moved(speed.material().nu()) + moved(speed.gap()) <= 1e-15
     }
 
-    /// The half-precision stage of [`Self::below`]: its root is bounded by its estimate and
+    /// The half-precision stage of [`Self::below`]: its root bounded by its estimate and
     /// 2^(11−m), its F′ by 2^(16−m) (the double-double stage's margins in bits); a stage that
     /// ended on a chord step gets its derivatives by one more evaluation at its precision.
     fn below_mid(&self, ratio: &T, guess: Option<f64>) -> Option<Lifted<T>> {
@@ -185,9 +177,8 @@ impl<T: Real> ShapeSolver<T> {
             }
         };
         let m = T::bits(pm) as i32;
-        let seed_err = (s.error_estimate.with_prec(p)).max_of(T::one(p).mul_pow2(11 - m));
-        let (mut chord, _) = lift(&c, p, (0.0, 0.0));
-        chord.rel_err = T::one(p).mul_pow2(16 - m);
+        let (chord, seed_err) = lift(&c, p, (16 - m, 11 - m));
+        let seed_err = (s.error_estimate.with_prec(p)).max_of(seed_err);
         Some((s.k.with_prec(p), Some((chord, seed_err)), false))
     }
 }
@@ -196,23 +187,12 @@ impl<T: Real> ShapeSolver<T> {
 /// relative error and the bound on the root's, and whether the Halley step may be tried.
 type Lifted<T> = (T, Option<(Chord<T>, T)>, bool);
 
-/// The integral options of a Newton iterate: the method, with k-derivatives.
-fn newton_options(method: Method) -> IntegralOptions {
-    IntegralOptions {
-        method,
-        derivatives: true,
-        ..Default::default()
-    }
-}
+/// log₂ of the bounds on a lower stage's F′ (relative; a margin over the fixed rules'
+/// measured derivative errors) and on its root's error in λ (`docs/calibration.md`).
+const F64_BOUNDS: (i32, i32) = (-40, -48);
+const DD_BOUNDS: (i32, i32) = (-90, -95);
 
-/// Bounds on a lower stage's F′ (relative; a margin over the fixed rules' measured
-/// derivative errors) and on its root's error in λ (`docs/calibration.md`).
-const F64_SLOPE: f64 = 9.094947017729282e-13; // 2^-40
-const F64_SEED: f64 = 3.552713678800501e-15; // 2^-48
-const DD_SLOPE: f64 = 8.077935669463161e-28; // 2^-90
-const DD_SEED: f64 = 2.524354896707238e-29; // 2^-95
-
-/// Above this precision the stage below is the solve at about half of it ([`ShapeSolver::below_mid`]).
+/// Above this precision the stage below is the solve at about half of it.
 const MID_ABOVE_BITS: u32 = 1024;
 
 /// Bits of the half-precision stage beyond half: a chord step's error ~2^-2m, 64 times that
@@ -220,16 +200,16 @@ const MID_ABOVE_BITS: u32 = 1024;
 const MID_GUARD_BITS: u32 = 32;
 
 /// A stage's derivatives carried to the next stage's precision `p`, with the bounds
-/// `(slope_err, seed_err)` on its F′ and root.
-fn lift<S: Real, T: Real>(c: &Chord<S>, p: T::Prec, errs: (f64, f64)) -> (Chord<T>, T) {
+/// 2^slope on its F′ (relative) and 2^seed on its root (in λ), `(slope, seed)` = `log2`.
+fn lift<S: Real, T: Real>(c: &Chord<S>, p: T::Prec, log2: (i32, i32)) -> (Chord<T>, T) {
     let up = |x: &S| T::from_float(&x.to_float(S::bits(x.prec())), p);
     let chord = Chord {
         lam: up(&c.lam),
         di1: up(&c.di1),
         di2: up(&c.di2),
         df: up(&c.df),
-        rel_err: T::from_f64(errs.0, p),
+        rel_err: T::one(p).mul_pow2(log2.0),
         before: c.before.as_ref().map(|b| [0, 1, 2, 3].map(|i| up(&b[i]))),
     };
-    (chord, T::from_f64(errs.1, p))
+    (chord, T::one(p).mul_pow2(log2.1))
 }

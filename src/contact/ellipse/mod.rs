@@ -1,37 +1,17 @@
 //! The shape of the contact ellipse, (33): given ν, M_R and the curvature ratio
 //! A1/B1 = R2/R1 (R1 the punch's radius of curvature along the motion, R2 across it), the axis
-//! ratio k = b/a (a along the motion, b across) solves
+//! ratio k = b/a (a along the motion, b across) solves I2(k)/I1(k) = A1/B1.
 //!
-//! ```text
-//! I2(k)/I1(k) = A1/B1.
-//! ```
-//!
-//! The solve runs in five stages, in the order they run:
-//!
-//! 1. **Check the inputs** (this file: [`check_ratio`], `checked_options`), before any work.
-//! 2. **Seed** (`seed.rs`): the caller's seed or a neighbour's root; else, for an `f64` solve
-//!    by a fixed-rule method, the root of the cubic through ln(I2/I1) and its slope at two
-//!    nodes of a grid in ln k kept with the speed; else the static Hertz ellipse in closed
-//!    form, and above k = 1 one evaluation at k = 1 (kept with the speed) tells the root's side.
-//! 3. **Safeguarded Newton** (`newton.rs`) on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, at the
-//!    ladder's lowest stage (`f64`): F increases with k (checked over ν, M_R and
-//!    10⁻⁶ ≤ A1/B1 ≤ 10⁶ in `tests/contact.rs`), so a step leaving the bracket of known signs
-//!    is replaced by bisection; the last evaluation skips the k-derivatives (a chord step).
-//! 4. **Lift through the precision ladder** (`ladder.rs`): the root and F′ of the stage below
-//!    (`f64`, double-double above 106 bits, p/2 + 32 bits above 1024) start the working
-//!    precision, which takes chord steps with that F′ — at double-double one Halley step
-//!    (`halley.rs`). The lower stages' speeds are kept with the speed
-//!    (`contact/solve_cache.rs`).
-//! 5. **Final step and error bound** (`finish.rs`): I1, I2 carried to the root, a Newton step in
-//!    k itself where |ln k| is large, and the bound on k.
-//!
-//! Thresholds and what each tactic beside Newton's method saves: `docs/calibration.md`.
-//! Tests: `tests/contact.rs` (k within 10ε of a 320-bit adaptive-quadrature solve at `f64`,
-//! double-double and 256 bits), `tests/high_precision.rs` (2048 to 8192 bits),
-//! `tests/edges.rs` (|ln k| up to 2878).
+//! The stages, in the order they run (a file each): check the inputs (this file); seed
+//! (`seed.rs`: the caller's or a neighbour's root, the grid seed, or the static ellipse and the
+//! k = 1 probe); safeguarded Newton in λ = ln k at the ladder's lowest stage (`newton.rs`);
+//! lift through the precision ladder (`ladder.rs`: `f64`, double-double above 106 bits,
+//! p/2 + 32 bits above 1024, the lower stages' speeds kept in `contact/solve_cache.rs`); the
+//! final step and error bound (`finish.rs`). Thresholds, and what each tactic beside Newton's
+//! method saves: `docs/calibration.md`, "The ellipse solve". Tests: `tests/contact.rs` (k
+//! within 10ε of a 320-bit quadrature solve), `tests/high_precision.rs`, `tests/edges.rs`.
 
 mod finish;
-mod halley;
 mod ladder;
 mod newton;
 mod seed;
@@ -55,8 +35,7 @@ pub enum MajorAxis {
 }
 
 impl MajorAxis {
-    /// `along` or `across`.
-    /// Names the axis of (33)'s major-axis convention; exact.
+    /// `along` or `across`; exact.
     pub fn label(&self) -> &'static str {
         match self {
             MajorAxis::Along => "along",
@@ -76,17 +55,14 @@ pub struct Options<T> {
     /// The series and the adaptive subtracted routes give no k-derivatives and are refused.
     pub method: Method,
     /// A starting value for k, positive and finite (else [`Error::NotFinite`] or
-    /// [`Error::Domain`] before any work). Without one (the default) the solve starts from the
-    /// grid seed (at `f64`, by the fixed rules) or the static ellipse; with one, from the seed rounded
-    /// to `f64`, falling back to those when Newton's method does not converge from it within a
-    /// few evaluations. Either way, above `f64` the solve climbs the precision ladder (the
-    /// module docs of `contact::ellipse`).
+    /// [`Error::Domain`] before any work), rounded to `f64`, where the solve falls back to its
+    /// own start (the default: the grid seed or the static ellipse) when Newton's method does
+    /// not converge from it within a few evaluations.
     pub seed: Option<T>,
     /// The relative accuracy wanted for k; `None` (the default) asks for the working
     /// precision's floor (a few ε). A tolerance below 4ε is refused before any work
     /// ([`Error::Unreachable`]); one above 2⁻²⁰ ≈ 10⁻⁶ is met as 2⁻²⁰ (the loosest the
-    /// stopping rules' error model covers). Either way every bound returned holds: k's, and
-    /// I1's and I2's, which include their carry from the last evaluation to the root.
+    /// stopping rules' error model covers). Every bound returned holds either way.
     pub tolerance: Option<RelError>,
 }
 
@@ -100,9 +76,7 @@ impl<T> Default for Options<T> {
     }
 }
 
-/// The solved shape of the contact ellipse (33), each quantity with a bound on its error, read
-/// through methods of the same names (the fields are the solve's, so that they stay consistent
-/// with each other).
+/// The solved shape of the contact ellipse (33), each quantity with a bound on its error.
 #[derive(Clone, Debug)]
 #[non_exhaustive]
 pub struct Ellipse<T: Real> {
@@ -134,19 +108,18 @@ impl<T: Real> Ellipse<T> {
     }
 
     /// I1, I2 of (34) at the solution (normalisation of (37)) with their k-derivatives (when
-    /// known to at least one digit) and the route of the last evaluation, each with the bound
-    /// of the solve (which includes the carry from the last evaluation to the root).
+    /// known to at least one digit) and the route of the last evaluation, with the solve's
+    /// bounds (which include the carry from the last evaluation to the root).
     pub fn integrals(&self) -> &Integrals<T> {
         &self.integrals
     }
 
     /// Evaluations of the integrals at the working precision: Newton's iterates (and the k = 1
-    /// probe's) and, at `f64`, the distinct nodes the grid seed read (2–4 on the cost target's
-    /// cells; each is evaluated once per speed and kept with it, and counts whether kept or
-    /// not, so that the count does not depend on the solves before). Above `f64`
-    /// the precision ladder's lower stages come on top: an evaluation at `f64` or
+    /// probe's) and, at `f64`, the distinct nodes the grid seed read (kept with the speed, and
+    /// counted whether kept or not, so that the count does not depend on the solves before).
+    /// The precision ladder's lower stages are not counted (an evaluation at `f64` or
     /// double-double costs a small fraction of one at the working precision, one at the
-    /// half-precision stage above 1024 bits about a fifth.
+    /// half-precision stage above 1024 bits about a fifth).
     pub fn iterations(&self) -> usize {
         self.iterations
     }
@@ -176,21 +149,19 @@ impl<T: Real> Shape<T> {
         // formed at the working precision (which holds any bound without underflow).
         let de2 = q.square().mul_i64(2) * &self.error_estimate;
         let root = de2.clone().sqrt();
-        let de = if e.is_positive() {
-            (de2 / e.clone().mul_i64(2)).min_of(root)
-        } else {
-            root
+        let de = match e.is_positive() {
+            true => (de2 / e.clone().mul_i64(2)).min_of(root),
+            false => root,
         };
         let e_err = de + &(T::epsilon(p).mul_i64(4) * &e);
         if !(self.k.is_finite() && self.error_estimate.is_finite() && e_err.is_finite()) {
+            let (k, estimate) = (short(&self.k), short(&self.error_estimate));
+            let reached = format!("k = {k}, estimate {estimate}");
+            let (what, iterations) = ("the axis ratio k", self.iterations);
             return Err(Error::NoConvergence {
-                what: "the axis ratio k",
-                iterations: self.iterations,
-                reached: format!(
-                    "k = {}, estimate {}",
-                    short(&self.k),
-                    short(&self.error_estimate)
-                ),
+                what,
+                iterations,
+                reached,
             });
         }
         let integrals = self.integrals.without_poor_extras().publish(&self.k)?;
@@ -204,56 +175,46 @@ impl<T: Real> Shape<T> {
     }
 }
 
-/// Checks a curvature ratio A1/B1 = R2/R1: positive, finite and within the supported range
-/// [10⁻¹⁰⁰, 10¹⁰⁰] ([`RATIO_RANGE`]), before any work.
-/// The domain of the shape equation (33) as solved here; exact comparisons on the value as given.
+/// Checks a curvature ratio A1/B1 = R2/R1, the domain of (33) as solved here: positive, finite
+/// and within [`RATIO_RANGE`], by exact comparisons on the value as given.
 pub fn check_ratio<T: Real>(ratio: &T) -> Result<()> {
     check_finite("curvature ratio A1/B1", ratio)?;
-    if !ratio.is_positive() {
-        return Err(Error::Domain {
-            name: "curvature ratio A1/B1 = R2/R1",
-            value: short(ratio),
-            bound: "(0, inf)",
-        });
-    }
     // Compared in f64, so that the decimal ends typed at any precision are inside.
     let (lo, hi) = RATIO_RANGE;
-    let r = ratio.to_f64();
-    if !(lo..=hi).contains(&r) {
-        return Err(Error::Domain {
-            name: "curvature ratio A1/B1 = R2/R1",
-            value: short(ratio),
-            bound: "[1e-100, 1e100], the supported range (beyond it the axis ratio k passes 1e-50 or 1e50, where the quadrature overflows f64 and takes a minute at 256 bits)",
-        });
-    }
-    Ok(())
+    let bound = if !ratio.is_positive() {
+        "(0, inf)"
+    } else if !(lo..=hi).contains(&ratio.to_f64()) {
+        "[1e-100, 1e100], the supported range (beyond it the axis ratio k passes 1e-50 or 1e50, where the quadrature overflows f64 and takes a minute at 256 bits)"
+    } else {
+        return Ok(());
+    };
+    Err(Error::domain(
+        "curvature ratio A1/B1 = R2/R1",
+        short(ratio),
+        bound,
+    ))
 }
 
 /// The supported curvature ratios A1/B1: a solve inside costs at most about 100 solves at
-/// A1/B1 ~ 1 at 256 bits and a few at `f64` (evidence: `docs/calibration.md`).
+/// A1/B1 ~ 1 at 256 bits and a few at `f64` (`docs/calibration.md`).
 pub const RATIO_RANGE: (f64, f64) = (1e-100, 1e100);
 
 /// Solves (33), I2(k)/I1(k) = A1/B1, for the axis ratio k = b/a at the working precision of
-/// `ratio` = A1/B1 = R2/R1, for the material and speed of `speed`.
-///
-/// Without a seed (the default) the solve climbs the precision ladder above `f64`
-/// (the precision ladder of the module docs): a few evaluations of the integrals at the
-/// working precision, no search.
+/// `ratio` = A1/B1 = R2/R1, for the material and speed of `speed`: above `f64` by the
+/// precision ladder of the module docs, a few evaluations at the working precision.
 ///
 /// Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit quadrature solve,
-/// `tests/contact.rs`; within 4ε where |ln k| is large, up to 2878 at 256 bits,
-/// `tests/edges.rs`), I1, I2 at k to a few ε, with error bounds that include their carry
-/// from the last evaluation to the root (`every_bound_holds_at_any_tolerance`). The bound on k
-/// is for the inputs as represented at the working precision: near the Rayleigh speed k is
-/// ill-conditioned in M_R (condition number ~M_R/(4(1 − M_R))) but well conditioned in the gap
-/// 1 − M_R, which a speed made by [`crate::physics::Material::parse_speed`] or
+/// `tests/contact.rs`; within 4ε where |ln k| is large, `tests/edges.rs`), I1, I2 at k to a
+/// few ε, with bounds that include their carry from the last evaluation to the root. The bound
+/// on k is for the inputs as represented: near the Rayleigh speed k is ill-conditioned in M_R
+/// (condition number ~M_R/(4(1 − M_R))) but well conditioned in the gap 1 − M_R, which a speed
+/// made by [`crate::physics::Material::parse_speed`] or
 /// [`crate::physics::Material::speed_from_gap`] carries to within ε.
 ///
-/// Errors: [`Error::Domain`] for a ratio that is not positive and finite;
+/// Errors, before any work: [`Error::Domain`] for a ratio that is not positive and finite;
 /// [`Error::Unsupported`] for the series or the adaptive subtracted method (no
-/// k-derivatives); [`Error::Precision`] above 32,768 bits (the
-/// rules' limit), before any work; [`Error::Unreachable`] for a tolerance below 4ε;
-/// [`Error::NoConvergence`] if Newton's method fails (not observed).
+/// k-derivatives); [`Error::Precision`] above 32,768 bits; [`Error::Unreachable`] for a
+/// tolerance below 4ε. [`Error::NoConvergence`] if Newton's method fails (not observed).
 pub fn solve_ellipse<T: Real>(
     speed: &Speed<T>,
     ratio: &T,
@@ -266,11 +227,8 @@ pub fn solve_ellipse<T: Real>(
         .publish()
 }
 
-/// The checks of [`solve_ellipse`] that the options and the precision decide, before any work:
-/// a precision the quadrature rules are built for (at most
-/// [`crate::numerics::quadrature::MAX_RULE_BITS`]), a method that gives k-derivatives, a
-/// tolerance not below 4ε, a seed that is a positive finite number. Returns the tolerance at
-/// the working precision `p` (`None`: its floor).
+/// The checks of [`solve_ellipse`] that the options and the precision `p` decide, before any
+/// work; returns the tolerance at `p` (`None`: its floor).
 pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<Option<T>> {
     crate::numerics::quadrature::check_rule_bits(T::bits(p))?;
     if let Some(seed) = &opts.seed {
@@ -293,17 +251,12 @@ pub(crate) fn checked_options<T: Real>(opts: &Options<T>, p: T::Prec) -> Result<
             });
         }
     }
-    Ok(opts.tolerance.map(|t| {
-        t.min(RelError::pow2(LOOSEST_TOLERANCE_LOG2))
-            .to_real::<T>(p)
-    }))
+    let loosest = RelError::pow2(LOOSEST_TOLERANCE_LOG2);
+    Ok(opts.tolerance.map(|t| t.min(loosest).to_real::<T>(p)))
 }
 
-/// The loosest tolerance on k the solve works to, 2⁻²⁰ ≈ 10⁻⁶: a looser one is met as this
-/// one. The stopping rules' error model (an error ~δ² after a Newton step δ) and the
-/// integrals' carry from the last iterate to the root (`finish::carry_error`) hold for the
-/// steps they allow here; at `f64` a solve to 2⁻²⁰ costs about
-/// two evaluations fewer than one to the working precision's floor.
+/// The loosest tolerance on k the solve works to, 2⁻²⁰ ≈ 10⁻⁶ (`docs/calibration.md`): a
+/// looser one is met as this one.
 const LOOSEST_TOLERANCE_LOG2: i64 = -20;
 
 /// F(λ) = ln(I2/(I1·A1/B1)) of the shape equation (33), whose root in λ = ln k the solve finds

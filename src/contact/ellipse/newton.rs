@@ -1,6 +1,7 @@
 //! Stage 3: Newton's method on F(λ) = ln(I2/(I1·A1/B1)), λ = ln k, inside a bracket of known
-//! signs (bisection when a step leaves it), with chord steps — evaluations without the
-//! k-derivatives, stepping with an F′ in hand — where that F′ is close enough.
+//! signs (bisection when a step leaves it), with chord steps (evaluations without the
+//! k-derivatives, stepping with an F′ in hand) and, at double-double, the Halley step from the
+//! `f64` root. Thresholds and what each tactic saves: `docs/calibration.md`.
 
 use super::finish::{carry_error, finish};
 use super::seed::static_seed;
@@ -8,7 +9,7 @@ use super::{shape_residual, shape_slope, Shape};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
 use crate::routes::evaluate::Evaluator;
-use crate::routes::{fast, AxisRatio, Evaluation};
+use crate::routes::{fast, AxisRatio, Evaluation, IntegralOptions, Method};
 use crate::scalar::{short, Real};
 
 /// A stage's result: the shape and the derivatives it hands on to the stage above.
@@ -16,6 +17,15 @@ pub(super) type Handed<T> = Result<(Shape<T>, Option<Chord<T>>)>;
 
 /// The bound on one stage's evaluations.
 pub(super) const MAX_EVALUATIONS: usize = 200;
+
+/// The integral options of a Newton iterate: the method, with k-derivatives.
+pub(super) fn newton_options(method: Method) -> IntegralOptions {
+    IntegralOptions {
+        method,
+        derivatives: true,
+        ..Default::default()
+    }
+}
 
 /// F, F′ and the integrals at λ; with `chord` (derivatives kept from an earlier iterate or a
 /// lower stage) the derivatives are not evaluated, and their relative error grows by ≲ 8|Δλ|.
@@ -29,109 +39,87 @@ pub(super) fn residual<T: Real>(
     let ax = AxisRatio::new(lam.clone().exp())?;
     let mut ci = ev.for_newton(&ax, chord.is_none())?;
     let f = shape_residual(&ci, ratio);
-    let df = match chord {
-        Some(c) => {
-            ci.dk = Some([c.di1.clone(), c.di2.clone()]);
-            let age = (lam.clone() - &c.lam).abs().mul_i64(8) + &c.rel_err;
-            ci.extra_error = age + &T::epsilon(ratio.prec()).mul_i64(fast::DK_BOUND_EPS);
-            c.df.clone()
-        }
-        None => shape_slope(&ax.k, &ci),
+    let Some(c) = chord else {
+        return Ok((f, shape_slope(&ax.k, &ci), ci));
     };
-    Ok((f, df, ci))
+    ci.dk = Some([c.di1.clone(), c.di2.clone()]);
+    let age = (lam.clone() - &c.lam).abs().mul_i64(8) + &c.rel_err;
+    ci.extra_error = age + &T::epsilon(ratio.prec()).mul_i64(fast::DK_BOUND_EPS);
+    Ok((f, c.df.clone(), ci))
 }
 
-/// How one stage runs: its seed (`None`: the static ellipse), the derivatives handed on from
-/// below with a bound on the seed's error, whether its last evaluation may skip the
-/// k-derivatives, whether it tries the Halley step, the tolerance on k (`None`: ε) and its
-/// evaluation budget.
-pub(super) struct Stage<'s, T: Real> {
-    pub(super) seed: Option<&'s T>,
-    pub(super) seed_slope: Option<(Chord<T>, T)>,
-    pub(super) allow_chord: bool,
-    pub(super) halley: bool,
-    pub(super) tol: Option<T>,
-    pub(super) budget: usize,
+/// Derivatives kept for chord steps: dI1/dk, dI2/dk and F′ at λ, F′'s relative error (from a
+/// lower precision), and the iterate before (λ, F′, dI1/dk, dI2/dk) for the Halley step.
+#[derive(Clone)]
+pub(super) struct Chord<T> {
+    pub(super) lam: T,
+    pub(super) di1: T,
+    pub(super) di2: T,
+    pub(super) df: T,
+    pub(super) rel_err: T,
+    pub(super) before: Option<[T; 4]>,
 }
 
-impl<'s, T: Real> Stage<'s, T> {
-    /// A stage from `seed`, chord steps allowed, no derivatives handed on.
-    pub(super) fn from(seed: Option<&'s T>, tol: Option<T>) -> Self {
-        Stage {
-            seed,
-            seed_slope: None,
-            allow_chord: true,
-            halley: false,
-            tol,
-            budget: MAX_EVALUATIONS,
+impl<T: Real> Chord<T> {
+    /// The derivatives of `ci` at λ.
+    pub(super) fn at(lam: T, df: T, ci: &Evaluation<T>, before: Option<[T; 4]>) -> Self {
+        let (di1, di2, rel_err) = (ci.di1_dk(), ci.di2_dk(), T::zero(lam.prec()));
+        Chord {
+            lam,
+            di1,
+            di2,
+            df,
+            rel_err,
+            before,
         }
     }
 }
 
-/// Runs one stage: the k = 1 probe (unseeded), the Halley step when the stage asks for it and the handed-on derivatives
-/// allow it ([`super::halley`]), else chord steps with them when they are close enough, then
-/// the safeguarded iteration. Returns the shape and the last derivatives evaluated.
-#[inline]
-pub(super) fn solve_core<T: Real>(ev: &Evaluator<T>, ratio: &T, stage: Stage<'_, T>) -> Handed<T> {
-    let mut newton = Newton::new(ev, ratio, &stage);
-    if stage.seed.is_none() && ev.method() != crate::routes::Method::Adaptive {
-        newton.probe_k_one()?;
-    }
-    if let Some((c, err)) = stage.seed_slope {
-        if newton.seeded && c.df.is_positive() && c.df.is_finite() {
-            if stage.halley && super::halley::f_second(&c, &newton.lam).is_some() {
-                if let Some(shape) = newton.halley_step(&c)? {
-                    return Ok((shape, None));
-                }
-            } else {
-                newton.adopt_slope(c, &err);
-            }
-        }
-    }
-    newton.iterate()
-}
-
-/// One stage's iteration state.
+/// One stage's iteration: `eps` (ε or the tolerance), `allow_chord` (whether the last
+/// evaluation may skip the k-derivatives: not for a stage that hands them on), the bracket
+/// F(lo) < 0 < F(hi), the chord step's derivatives, the last ones evaluated, the unbracketed
+/// reach, and the λ a step longer than 2 may reach (k ≤ 2^180, k⁴ ≥ 2⁸ × the least normal).
 pub(super) struct Newton<'a, T: Real + 'static> {
     pub(super) ratio: &'a T,
     pub(super) evaluator: &'a Evaluator<T>,
-    /// The stopping rules' unit: ε, or the tolerance asked for.
     pub(super) eps: T,
     seeded: bool,
     allow_chord: bool,
+    pub(super) budget: usize,
     pub(super) lam: T,
-    /// The bracket in λ, F(lo) < 0 < F(hi), grown as evaluations reveal signs.
     pub(super) lo: Option<T>,
     pub(super) hi: Option<T>,
     last_step: Option<T>,
-    /// Derivatives for a chord step at the next evaluation (none: a Newton step).
     chord: Option<Chord<T>>,
-    /// The last derivatives evaluated, handed to the next stage.
     fresh_slope: Option<Chord<T>>,
     pub(super) spent: usize,
-    budget: usize,
-    /// The longest unbracketed step: 2, doubled after each step cut to it.
     reach: T,
-    /// The λ a step longer than 2 may reach: the fixed rules' k ≤ 2^180, and k⁴ ≥ 2⁸ times the
-    /// smallest normal number ([`AxisRatio`]'s range with a margin).
     lam_range: (f64, f64),
 }
 
 impl<'a, T: Real> Newton<'a, T> {
-    fn new(evaluator: &'a Evaluator<T>, ratio: &'a T, stage: &Stage<'_, T>) -> Self {
+    /// A stage from `seed` (`None`: the static ellipse) to `tol` (`None`: ε).
+    pub(super) fn new(
+        evaluator: &'a Evaluator<T>,
+        ratio: &'a T,
+        seed: Option<&T>,
+        tol: Option<T>,
+        allow_chord: bool,
+    ) -> Self {
         let p = ratio.prec();
-        let k0 = match stage.seed {
+        let k0 = match seed {
             Some(s) if s.is_positive() && s.is_finite() => s.clone(),
             _ => T::from_f64(static_seed(ratio.to_f64()), p),
         };
-        let eps = T::epsilon(p);
-        let ln2 = std::f64::consts::LN_2;
+        let (eps, ln2) = (T::epsilon(p), std::f64::consts::LN_2);
+        let min_log2 = RelError::of(&T::min_positive(p)).log2();
         Newton {
             ratio,
             evaluator,
-            eps: stage.tol.clone().map_or(eps.clone(), |t| t.max_of(eps)),
-            seeded: stage.seed.is_some(),
-            allow_chord: stage.allow_chord,
+            eps: tol.map_or(eps.clone(), |t| t.max_of(eps)),
+            seeded: seed.is_some(),
+            allow_chord,
+            budget: MAX_EVALUATIONS,
             lam: k0.ln(),
             lo: None,
             hi: None,
@@ -139,10 +127,9 @@ impl<'a, T: Real> Newton<'a, T> {
             chord: None,
             fresh_slope: None,
             spent: 0,
-            budget: stage.budget,
             reach: T::from_i64(2, p),
             lam_range: (
-                (RelError::of(&T::min_positive(p)).log2() + 8.0) / 4.0 * ln2,
+                (min_log2 + 8.0) / 4.0 * ln2,
                 crate::routes::graded::K_MAX_LOG2 as f64 * ln2,
             ),
         }
@@ -152,16 +139,32 @@ impl<'a, T: Real> Newton<'a, T> {
         self.ratio.prec()
     }
 
-    /// Chord steps with the derivatives `c` handed on from below (relative error r at the seed,
-    /// the seed within `seed_err`) when the error r·seed_err of one chord step is one that a
-    /// Newton step then ends, 64(r·seed_err)² ≤ ε: the chord path evaluates the k-derivatives
-    /// no more often than Newton's ([`Self::plan_chord`] keeps the slope while the next chord
-    /// step is expected to stop).
-    fn adopt_slope(&mut self, c: Chord<T>, seed_err: &T) {
-        let r = c.rel_err.clone() + &(self.lam.clone() - &c.lam).abs();
-        if (r * seed_err).square().mul_i64(64) <= self.eps {
-            self.chord = Some(c);
+    /// Runs the stage: the k = 1 probe (unseeded); with derivatives `handed` on from below
+    /// (and the bound on the seed's error) the Halley step when `halley` and they allow it,
+    /// else chord steps with them when 64(r·seed_err)² ≤ ε; then the safeguarded iteration.
+    #[inline]
+    pub(super) fn run(mut self, handed: Option<(Chord<T>, T)>, halley: bool) -> Handed<T> {
+        if !self.seeded && self.evaluator.method() != Method::Adaptive {
+            self.probe_k_one()?;
         }
+        if let Some((c, seed_err)) = handed {
+            if self.seeded && c.df.is_positive() && c.df.is_finite() {
+                match halley.then(|| f_second(&c, &self.lam)).flatten() {
+                    Some(f2) => {
+                        if let Some(shape) = self.halley_step(&c, f2)? {
+                            return Ok((shape, None));
+                        }
+                    }
+                    None => {
+                        let r = c.rel_err.clone() + &(self.lam.clone() - &c.lam).abs();
+                        if (r * &seed_err).square().mul_i64(64) <= self.eps {
+                            self.chord = Some(c);
+                        }
+                    }
+                }
+            }
+        }
+        self.iterate()
     }
 
     /// Evaluate, step, stop, until the budget is spent.
@@ -190,16 +193,10 @@ impl<'a, T: Real> Newton<'a, T> {
                 self.reach = self.reach.clone().mul_pow2(1);
             }
             let step = (next.clone() - &lam).abs();
-            let scale = lam.clone().abs().max_of(T::one(p));
-            // How far behind the derivative of this step lies (0 for a Newton step).
-            let age = (self.chord.as_ref())
-                .map_or_else(|| T::zero(p), |c| (lam.clone() - &c.lam).abs() + &c.rel_err);
             self.lam = next;
-            if let Some(shape) = self.converged(&lam, ci, &step, &age, &scale, was_newton) {
+            if let Some(shape) = self.stop_or_plan(&lam, ci, step, was_newton, fresh) {
                 return Ok((shape, self.fresh_slope));
             }
-            self.plan_chord(&step, &age, &scale, was_newton, fresh);
-            self.last_step = Some(step);
         }
         Err(Error::NoConvergence {
             what: "Newton iteration for the axis ratio k",
@@ -209,10 +206,9 @@ impl<'a, T: Real> Newton<'a, T> {
     }
 
     /// The next iterate: the Newton (or chord) step inside the bracket, else bisection;
-    /// unbracketed, the step cut to the reach (2, doubled after each cut while the longer step
-    /// stays in `lam_range`: far from the root F grows like 2|λ|, so a root at |λ| = L takes
-    /// about log₂ L cut steps) and never past a known end. Returns the iterate, whether it is
-    /// a full Newton step (which the stopping rules assume) and whether it was cut.
+    /// unbracketed, the step cut to the reach (2 where the longer step leaves `lam_range`) and
+    /// never past a known end.
+    /// Returns the iterate, whether it is a full Newton step and whether it was cut.
     #[inline]
     fn next_iterate(&self, f: &T, df: &T) -> (T, bool, bool) {
         let lam = &self.lam;
@@ -243,10 +239,8 @@ impl<'a, T: Real> Newton<'a, T> {
         }
     }
 
-    /// Keeps this iterate's derivatives for the next stage; a stage that hands them on (no
-    /// chord steps) also keeps, of the two iterates with derivatives before, the one whose
-    /// distance D from this one minimises the secant's error bound r/D + D (r = 2¹²ε, in the
-    /// working type) for the Halley step above.
+    /// Keeps this iterate's derivatives for the next stage, and, in a stage that hands them on,
+    /// of the two iterates before the one minimising the secant's bound r/D + D (r = 2¹²ε).
     #[inline]
     fn hand_on(&mut self, lam: &T, df: &T, ci: &Evaluation<T>) {
         let r = self.eps.clone().mul_i64(4096);
@@ -267,83 +261,152 @@ impl<'a, T: Real> Newton<'a, T> {
         self.fresh_slope = Some(Chord::at(lam.clone(), df.clone(), ci, before));
     }
 
-    /// The stopping rules after a step of length `step` from `lam_old` (whose integrals `ci`
-    /// [`finish`] carries to the new iterate): the step at rounding level or stalled near it;
-    /// or, once converging (seeded, or after two steps), a step δ leaves an error ~δ² (δ·age
-    /// for a chord step) and 64δ·max(δ, age) ≤ ε·scale², with the integrals' carry ≤ ε.
+    /// After a full (`newton`) or cut step δ from `lam_old`, whose integrals `ci` [`finish`]
+    /// carries, the stops: δ at rounding level or stalled near it; or, once converging, a
+    /// full step with 64δ·max(δ, age) ≤ ε·scale² (age: how far behind the step's derivative
+    /// lies) and the integrals' carry ≤ ε. Else the chord step: when the next evaluation is
+    /// expected to be the last (64δ³ ≤ ε) it steps with this iterate's F′; a slope handed on
+    /// from below (positive `rel_err`) is kept while the steps are full and 64·age²·δ ≤ ε·scale².
     #[inline]
-    fn converged(
-        &self,
+    fn stop_or_plan(
+        &mut self,
         lam_old: &T,
         ci: Evaluation<T>,
-        step: &T,
-        age: &T,
-        scale: &T,
+        step: T,
         newton: bool,
+        fresh: bool,
     ) -> Option<Shape<T>> {
-        let eps = &self.eps;
-        let small = *step <= scale.clone() * &eps.clone().mul_i64(4);
+        let (eps, p) = (&self.eps, self.prec());
+        let scale = lam_old.clone().abs().max_of(T::one(p));
+        let age = (self.chord.as_ref()).map_or_else(
+            || T::zero(p),
+            |c| (lam_old.clone() - &c.lam).abs() + &c.rel_err,
+        );
+        let small = step <= scale.clone() * &eps.clone().mul_i64(4);
         let stalled = (self.last_step.as_ref())
-            .is_some_and(|s| step >= s && *step <= scale.clone() * &eps.clone().mul_i64(64));
+            .is_some_and(|s| step >= *s && step <= scale.clone() * &eps.clone().mul_i64(64));
         let done = |err: T| finish(self.lam.clone(), lam_old, ci, self.ratio, err, self.spent);
         if small || stalled {
-            return Some(done(step.clone()));
+            return Some(done(step));
         }
         let projected = step.clone() * &step.clone().max_of(age.clone()).mul_i64(64);
         let quadratic = self.seeded || self.spent >= 3;
-        let carry = carry_error(step, &age.clone().mul_i64(8));
+        let carry = carry_error(&step, &age.clone().mul_i64(8));
         if newton && quadratic && projected <= eps.clone() * &scale.square() && carry <= *eps {
-            return Some(done(projected / scale));
+            return Some(done(projected / &scale));
         }
-        None
-    }
-
-    /// The chord step at the end: when the next evaluation is expected to be the last
-    /// (64δ³ ≤ ε), it skips the k-derivatives and steps with this iterate's F′ (the stop counts
-    /// the derivative's age). A slope handed on from below (positive `rel_err`) is kept while
-    /// the steps are full ones and the next chord step, whose error is about age·δ, is expected
-    /// to stop: 64·age²·δ ≤ ε·scale² (the stop's test one step ahead); else the next iterate
-    /// evaluates the derivatives, whose Newton step ends the stage.
-    #[inline]
-    fn plan_chord(&mut self, step: &T, age: &T, scale: &T, newton: bool, fresh: bool) {
         let past_first = self.seeded || self.spent >= 2;
         if self.allow_chord && newton && past_first && fresh {
-            if (step.square() * step).mul_i64(64) <= self.eps.clone() * &scale.square() * scale {
+            if (step.square() * &step).mul_i64(64) <= eps.clone() * &scale.square() * &scale {
                 self.chord = self.fresh_slope.clone();
             }
-        } else if !newton || !self.allow_chord {
-            self.chord = None;
-        } else if (self.chord.as_ref()).is_some_and(|c| c.rel_err.is_positive())
-            && (age.clone().square() * step).mul_i64(64) > self.eps.clone() * &scale.square()
+        } else if !newton
+            || !self.allow_chord
+            || (self.chord.as_ref()).is_some_and(|c| c.rel_err.is_positive())
+                && (age.square() * &step).mul_i64(64) > eps.clone() * &scale.square()
         {
             self.chord = None;
         }
+        self.last_step = Some(step);
+        None
     }
-}
 
-/// Derivatives kept for chord steps: dI1/dk, dI2/dk and F′ at λ, with F′'s relative error
-/// when it comes from a lower precision, and the iterate before (λ, F′, dI1/dk, dI2/dk) for
-/// the Halley step's secant second derivatives.
-#[derive(Clone)]
-pub(super) struct Chord<T> {
-    pub(super) lam: T,
-    pub(super) di1: T,
-    pub(super) di2: T,
-    pub(super) df: T,
-    pub(super) rel_err: T,
-    pub(super) before: Option<[T; 4]>,
-}
-
-impl<T: Real> Chord<T> {
-    /// The derivatives of `ci` at λ, exact for this precision.
-    pub(super) fn at(lam: T, df: T, ci: &Evaluation<T>, before: Option<[T; 4]>) -> Self {
-        Chord {
-            di1: ci.di1_dk(),
-            di2: ci.di2_dk(),
-            df,
-            rel_err: T::zero(lam.prec()),
-            before,
-            lam,
+    /// The Halley step from the `f64` root λ0 at double-double, one evaluation with
+    /// derivatives: with F″ by secant ([`f_second`]), h = δ − F″δ²/(2F′) (δ = −F/F′; error
+    /// ≤ (|ΔF″|/2F′)δ² + |δ|³, required ≤ ε·scale/4) and I1, I2 carried to second order
+    /// ([`carry_second`]). `None`, and a Newton step instead, when a bound misses. Its control
+    /// arithmetic runs in `f64`, which holds every quantity at double-double.
+    #[inline(never)]
+    fn halley_step(&mut self, c: &Chord<T>, (f2, f2_err): (f64, f64)) -> Result<Option<Shape<T>>> {
+        let lam = self.lam.clone();
+        let (f, df, ci) = residual(self.evaluator, self.ratio, &lam, None)?;
+        self.spent += 1;
+        if !(df.is_positive() && df.is_finite()) {
+            return Ok(None);
         }
+        let p = self.prec();
+        let newton = -(f.clone() / &df);
+        let (nf, dff) = (newton.to_f64().abs(), df.to_f64());
+        let err = f2_err / (2.0 * dff) * nf * nf + nf * nf * nf;
+        let scale = lam.clone().abs().max_of(T::one(p));
+        if err.is_finite() && err <= self.eps.to_f64() * scale.to_f64() / 4.0 {
+            let h = newton.clone() - T::from_f64(f2, p) * newton.square() / df.clone().mul_i64(2);
+            let dk = (lam.clone() + &h).exp() - &lam.clone().exp();
+            if let Some(ints) = carry_second(c, &lam, &dk, &ci, self.eps.to_f64()) {
+                let (root, err) = (lam.clone() + h, T::from_f64(err, p));
+                return Ok(Some(finish(
+                    root.clone(),
+                    &root,
+                    ints,
+                    self.ratio,
+                    err,
+                    self.spent,
+                )));
+            }
+        }
+        self.lam = lam - f / &df;
+        Ok(None)
     }
+}
+
+/// F″ at λ0 by the secant between the lower stage's last two iterates (`c`, `c.before`) and
+/// its bound 2r|F′|/D + (1 + |F″|)(D + |λ0 − λ_c|) (|F‴| ≤ 1 + |F″|); `None` when the bound
+/// exceeds 0.1. It needs no evaluation at λ0.
+pub(super) fn f_second<T: Real>(c: &Chord<T>, lam0: &T) -> Option<(f64, f64)> {
+    let b = c.before.as_ref()?;
+    let (la, lb) = (b[0].to_f64(), c.lam.to_f64());
+    let d = (lb - la).abs();
+    if d == 0.0 {
+        return None;
+    }
+    let f2 = (c.df.to_f64() - b[1].to_f64()) / (lb - la);
+    let off = (lam0.to_f64() - lb).abs();
+    let f2_err = 2.0 * c.rel_err.to_f64() * c.df.to_f64().abs() / d + (1.0 + f2.abs()) * (d + off);
+    (f2_err.is_finite() && f2_err <= 0.1).then_some((f2, f2_err))
+}
+
+/// I1, I2 of `ints` at λ0 carried by `dk` to second order, with I″ by secants between the
+/// lower stage's iterates, of bound 2r|I′|/Δk + 100(I/k³)(Δk + |k0 − k_c|) (|k³I‴| ≤ 100 I
+/// assumed: 60 for I1 ∝ ln k/k³); `None` when the carry's error exceeds `eps`.
+fn carry_second<T: Real>(
+    c: &Chord<T>,
+    lam0: &T,
+    dk: &T,
+    ints: &Evaluation<T>,
+    eps: f64,
+) -> Option<Evaluation<T>> {
+    let b = c.before.as_ref()?;
+    let p = lam0.prec();
+    let (ka, kb, k0) = (
+        b[0].to_f64().exp(),
+        c.lam.to_f64().exp(),
+        lam0.to_f64().exp(),
+    );
+    let (dkc, r, dkf) = (kb - ka, c.rel_err.to_f64(), dk.to_f64());
+    let reach = dkc.abs() + (k0 - kb).abs();
+    let carry = |i: &T, di: T, dia: &T, dib: &T| {
+        let ipp_err =
+            2.0 * r * dib.to_f64().abs() / dkc.abs() + 100.0 * i.to_f64() * reach / k0.powi(3);
+        let c2 = T::from_f64((dib.to_f64() - dia.to_f64()) / dkc / 2.0, p);
+        let val = i.clone() + (di.clone() + c2.clone() * dk) * dk;
+        (
+            val,
+            di + c2.mul_i64(2) * dk,
+            0.5 * ipp_err * dkf * dkf / i.to_f64(),
+        )
+    };
+    let (i1, di1, e1) = carry(&ints.i1, ints.di1_dk(), &b[2], &c.di1);
+    let (i2, di2, e2) = carry(&ints.i2, ints.di2_dk(), &b[3], &c.di2);
+    if !(e1.is_finite() && e2.is_finite() && e1.max(e2) <= eps) {
+        return None;
+    }
+    let carried = T::from_f64(e1.max(e2), p);
+    Some(Evaluation {
+        i1,
+        i2,
+        dk: Some([di1, di2]),
+        error_estimate: ints.error_estimate.clone() + &carried,
+        extra_error: ints.extra_error.clone() + &carried.sqrt(),
+        ..ints.clone()
+    })
 }

@@ -2,12 +2,11 @@
 //! else the grid seed (an `f64` solve by a fixed-rule method), else the static Hertz ellipse in
 //! closed form, with the k = 1 probe that tells on which side of k = 1 the root lies.
 
-use super::halley::secant_partner;
-use super::newton::{solve_core, Handed, Newton, Stage, MAX_EVALUATIONS};
+use super::newton::{newton_options, residual, Chord, Handed, Newton, MAX_EVALUATIONS};
 use super::{shape_residual, shape_slope};
 use crate::error::Result;
 use crate::routes::evaluate::Evaluator;
-use crate::routes::{AxisRatio, IntegralOptions, Method};
+use crate::routes::{AxisRatio, Method};
 use crate::scalar::Real;
 use std::sync::OnceLock;
 
@@ -17,11 +16,10 @@ use std::sync::OnceLock;
 const GUESS_EVALUATIONS: usize = 8;
 
 /// The ladder's lowest stage: from `guess` when it converges within [`GUESS_EVALUATIONS`],
-/// else, at the `f64` working precision, from the grid seed ([`grid_seed`], whose nodes count
-/// in the shape's iterations), else from the static ellipse (a stage that hands its
-/// derivatives on starts there: its evaluations give the Halley step its secant). `allow_chord`: whether its last evaluation may
-/// skip the k-derivatives (not when it hands them on). A seeded stage that hands on derivatives
-/// from one evaluation gets a secant partner for the Halley step above it.
+/// else, at `f64` by a fixed rule with `allow_chord`, from the grid seed ([`grid_seed`], whose
+/// nodes count in the shape's iterations), else from the static ellipse. `allow_chord`:
+/// whether its last evaluation may skip the k-derivatives (not when it hands them on). A
+/// seeded stage that hands on derivatives from one evaluation gets a [`secant_partner`].
 #[inline]
 pub(super) fn lowest_stage<S: Real>(
     ev: &Evaluator<S>,
@@ -32,12 +30,9 @@ pub(super) fn lowest_stage<S: Real>(
 ) -> Handed<S> {
     let run = |seed: f64, budget| {
         let seed = S::from_f64(seed, ratio.prec());
-        let stage = Stage {
-            allow_chord,
-            budget,
-            ..Stage::from(Some(&seed), tol.clone())
-        };
-        let (shape, slope) = solve_core(ev, ratio, stage)?;
+        let mut newton = Newton::new(ev, ratio, Some(&seed), tol.clone(), allow_chord);
+        newton.budget = budget;
+        let (shape, slope) = newton.run(None, false)?;
         let slope = match slope {
             Some(c) if !allow_chord && c.before.is_none() => Some(secant_partner(ev, ratio, c)),
             other => other,
@@ -54,33 +49,36 @@ pub(super) fn lowest_stage<S: Real>(
         shape.iterations += nodes;
         return Ok((shape, slope));
     }
-    let stage = Stage {
-        allow_chord,
-        ..Stage::from(None, tol.clone())
-    };
-    solve_core(ev, ratio, stage)
+    Newton::new(ev, ratio, None, tol.clone(), allow_chord).run(None, false)
 }
 
-/// The static Hertz ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30 (within a
-/// few per cent of the static root down to 10⁻⁶), the k ≫ 1 form ([`static_seed_wide`]) from
-/// 30 on; the speed lowers k further, which Newton follows.
+/// A seeded stage that hands on derivatives from one evaluation leaves no earlier iterate for
+/// the Halley step's secant above: one more evaluation with derivatives at [`PARTNER_STEP`]
+/// from its root supplies it (unchanged if that evaluation fails).
+#[inline(never)]
+fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Chord<S> {
+    let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, ratio.prec());
+    if let Ok((_, df, ci)) = residual(ev, ratio, &lam, None) {
+        c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
+    }
+    c
+}
+
+/// The secant partner's distance in λ: √r for derivatives of relative error r ~ 2⁻⁴⁰, where
+/// the secant's rounding and truncation errors balance.
+const PARTNER_STEP: f64 = 9.5367431640625e-7; // 2^-20
+
+/// The static Hertz ellipse: Hamrock & Brewe's k ≈ (A1/B1)^(2/π) below A1/B1 = 30, the k ≫ 1
+/// form ([`static_seed_wide`]) from 30 on (`docs/calibration.md`).
 #[inline]
 pub(super) fn static_seed(ratio: f64) -> f64 {
-    if !(ratio.is_finite() && ratio > 0.0) {
-        return 1.0;
-    }
-    if ratio >= ASYMPTOTIC_SEED_RATIO {
-        return static_seed_wide(ratio);
-    }
-    let k = ratio.powf(std::f64::consts::FRAC_2_PI);
-    if k.is_finite() && k > 0.0 {
-        k
-    } else {
-        1.0
-    }
+    let k = match ratio.is_finite() && ratio >= ASYMPTOTIC_SEED_RATIO {
+        true => static_seed_wide(ratio),
+        false => ratio.powf(std::f64::consts::FRAC_2_PI),
+    };
+    Some(k).filter(|k| k.is_finite() && *k > 0.0).unwrap_or(1.0)
 }
 
-/// From this ratio on the static seed is the k ≫ 1 form (`docs/calibration.md`).
 const ASYMPTOTIC_SEED_RATIO: f64 = 30.0;
 
 /// The static root for A1/B1 ≥ 30 from (33)'s k ≫ 1 form at rest, A1/B1 = k²/(ln 4k − 1)
@@ -96,12 +94,11 @@ fn static_seed_wide(ratio: f64) -> f64 {
 
 impl<T: Real> Newton<'_, T> {
     /// The k = 1 probe, for an unseeded start above k = 1 with A1/B1 below
-    /// [`PROBE_BELOW_RATIO`] or the seed's k0·√(1 − M_R²) below [`PROBE_BELOW_SEED_K_EPS`]:
-    /// the root may lie below 1, where the fixed rule applies, while iterates above pay graded
-    /// layouts. One evaluation at k = 1 tells the side and starts Newton from there with the
-    /// bracket's end at λ = 0: from above, not above the seed nor (away from the Rayleigh
-    /// speed) more than e² below it; from below, at most e² below 1.
-    // Out of line: it never runs on a seeded start, the common one.
+    /// [`PROBE_BELOW_RATIO`] or the seed's k0·√(1 − M_R²) below [`PROBE_BELOW_SEED_K_EPS`]
+    /// (`docs/calibration.md`): one evaluation at k = 1 (kept with the speed) tells the root's
+    /// side and starts Newton from there with the bracket's end at λ = 0: from above, not above
+    /// the seed nor (away from the Rayleigh speed) more than e² below it; from below, at most
+    /// e² below 1. Out of line: it never runs on a seeded start, the common one.
     #[inline(never)]
     pub(super) fn probe_k_one(&mut self) -> Result<()> {
         // In the working type: √(1 − M_R²) may lie below the f64 range at MPFR.
@@ -129,13 +126,9 @@ impl<T: Real> Newton<'_, T> {
         let (f, df) = (shape_residual(&ci, self.ratio), shape_slope(&one, &ci));
         let newton = (df.is_positive() && df.is_finite()).then(|| -(f.clone() / &df));
         if f.is_negative() {
-            if let Some(n) = newton {
-                let below_seed = n.min_of(self.lam.clone());
-                self.lam = if near_rayleigh {
-                    below_seed
-                } else {
-                    below_seed.max_of(self.lam.clone() - &two)
-                };
+            if let Some(n) = newton.map(|n| n.min_of(self.lam.clone())) {
+                let far = (!near_rayleigh).then(|| self.lam.clone() - &two);
+                self.lam = far.map_or_else(|| n.clone(), |floor| n.clone().max_of(floor));
             }
             self.lo = Some(zero);
         } else {
@@ -146,29 +139,24 @@ impl<T: Real> Newton<'_, T> {
     }
 }
 
-/// Below this A1/B1 an unseeded start above k = 1 first evaluates at k = 1
-/// (`docs/calibration.md`).
+/// The probe's thresholds: an unseeded start above k = 1 with A1/B1 below the first, or at
+/// any A1/B1 with the static seed's k0·√(1 − M_R²) below the second (near the Rayleigh speed
+/// the root falls far below the static seed).
 const PROBE_BELOW_RATIO: f64 = 30.0;
-
-/// ... and at any A1/B1 when the static seed's k0·√(1 − M_R²) is below this: near the
-/// Rayleigh speed the root falls far below the static seed (`docs/calibration.md`).
 const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
 
-/// The seed grid's spacing in λ = ln k and its nodes' range, |λ| ≤ `GRID_HALF`·`GRID_STEP`.
+/// The seed grid's spacing in λ = ln k, its nodes' range |λ| ≤ `GRID_HALF`·`GRID_STEP`, and
+/// the cells a seed may visit before it gives up (a root off the grid, a failed evaluation).
 const GRID_STEP: f64 = 0.5;
 const GRID_HALF: i64 = 32;
-
-/// The cells a grid seed may visit before it gives up (a root off the grid, a failed
-/// evaluation): the static seed's cell, then Newton's pick from the nearer end.
 const GRID_VISITS: usize = 4;
 
-/// The start of an `f64` stage at a speed whose method is a fixed rule: the root of the cubic
-/// through ln(I2/I1) and its λ-derivative at the two nodes of a grid in λ (spacing ½, kept
-/// with the speed, each node evaluated once per speed on first use) around the root, within
-/// ~1e-5 of it (`docs/calibration.md`), from where Newton needs two evaluations. A node's
-/// values depend on its λ alone (its own evaluator), so that the seed does not depend on which
-/// solves the speed served before. Returns the seed and the distinct nodes read (kept or evaluated now);
-/// `None` above `f64`, for the adaptive method, and where the root lies off the grid.
+/// The start of an `f64` stage by a fixed rule (`docs/calibration.md`, "The grid seed"): the
+/// root of the cubic through ln(I2/I1) and its λ-derivative at the two nodes of a grid in λ
+/// around the root, from the static seed's cell, then Newton's pick from the nearer end. Each
+/// node is evaluated on an evaluator of its own, once per speed, so that the seed does not
+/// depend on the solves before. Returns the seed and the distinct nodes read; `None` above
+/// `f64`, for the adaptive method, and where the root lies off the grid.
 pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, usize)> {
     if S::bits(ratio.prec()) > 53 || !matches!(ev.method(), Method::Auto | Method::Fixed) {
         return None;
@@ -217,12 +205,7 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, u
 
 /// ln(I2/I1) and its λ-derivative F′ at λ, by the fixed rules on an evaluator of its own.
 fn grid_node<S: Real>(ev: &Evaluator<S>, lam: f64) -> Option<(f64, f64)> {
-    let opts = IntegralOptions {
-        method: Method::Auto,
-        derivatives: true,
-        ..Default::default()
-    };
-    let own = Evaluator::new(ev.speed(), opts).ok()?;
+    let own = Evaluator::new(ev.speed(), newton_options(Method::Auto)).ok()?;
     let one = S::one(ev.speed().mr().prec());
     let ax = AxisRatio::new(S::from_f64(lam.exp(), one.prec())).ok()?;
     let ci = own.for_newton(&ax, true).ok()?;
@@ -232,8 +215,8 @@ fn grid_node<S: Real>(ev: &Evaluator<S>, lam: f64) -> Option<(f64, f64)> {
 }
 
 /// The root t ∈ [0, 1] of the cubic Hermite interpolant through y(0) = ya ≤ 0 ≤ y(1) = yb
-/// with slopes da, db (per unit t), by Newton's method from the chord's root, safeguarded to
-/// [0, 1]; `None` if it does not settle within eight steps.
+/// with slopes da, db, by Newton's method from the chord's root clamped to [0, 1]; `None` if it
+/// does not settle within eight steps.
 fn cubic_root(ya: f64, yb: f64, da: f64, db: f64) -> Option<f64> {
     // y(t) = ya + da·t + c2·t² + c3·t³.
     let c3 = da + db - 2.0 * (yb - ya);
