@@ -14,7 +14,8 @@
 //! set-up built again: a single solve at a new speed).
 //!
 //! Run: `cargo bench --bench ellipse -- --warm-up-time 1 --measurement-time 3`
-//! (`-- ellipse_cells` for the cells only).
+//! (`-- ellipse_cells` for the cells only). The cells' medians, with the command that
+//! regenerates them: docs/data/ellipse_cells_bench.txt.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
