@@ -54,24 +54,18 @@ pub enum Moduli<T> {
 }
 
 impl<X> Moduli<X> {
-    /// Each modulus and the density as `given` takes them with their names.
-    fn given(self, given: impl Fn(&'static str, X) -> Result<Given>) -> Result<Moduli<Given>> {
-        Ok(match self {
+    /// The stiffness (E or μ) with its name, and the density.
+    fn parts(self) -> (&'static str, X, X) {
+        match self {
             Moduli::Youngs {
                 youngs_modulus,
                 density,
-            } => Moduli::Youngs {
-                youngs_modulus: given(E_NAME, youngs_modulus)?,
-                density: given(RHO_NAME, density)?,
-            },
+            } => (E_NAME, youngs_modulus, density),
             Moduli::Shear {
                 shear_modulus,
                 density,
-            } => Moduli::Shear {
-                shear_modulus: given(MU_NAME, shear_modulus)?,
-                density: given(RHO_NAME, density)?,
-            },
-        })
+            } => (MU_NAME, shear_modulus, density),
+        }
     }
 }
 
@@ -202,8 +196,15 @@ impl<T: Real> Solid<T> {
     /// working precision; [`Error::NotFinite`] for NaN or ∞. μ is correctly rounded, c1, c2
     /// within 1 ε, c_R within 2 ε.
     pub fn new(material: &Material<T>, moduli: Moduli<T>) -> Result<Solid<T>> {
-        let moduli = moduli.given(|name, x| Given::value(name, &x))?;
-        Solid::from_moduli(material.clone(), exact_value(material.nu()), moduli)
+        let (name, stiffness, density) = moduli.parts();
+        let stiffness = Given::value(name, &stiffness)?;
+        let density = Given::value(RHO_NAME, &density)?;
+        Solid::from_moduli(
+            material.clone(),
+            exact_value(material.nu()),
+            stiffness,
+            density,
+        )
     }
 
     /// The half-space whose Poisson's ratio is the decimal text `nu` (as [`Material::parse`])
@@ -212,8 +213,10 @@ impl<T: Real> Solid<T> {
     /// c_R within 2 ε of the values of the exact inputs.
     pub fn parse(nu: &str, moduli: Moduli<&str>, p: T::Prec) -> Result<Solid<T>> {
         let material = Material::parse(nu, p)?;
-        let moduli = moduli.given(Given::text)?;
-        Solid::from_moduli(material, decimal_to_rational(nu)?, moduli)
+        let (name, stiffness, density) = moduli.parts();
+        let stiffness = Given::text(name, stiffness)?;
+        let density = Given::text(RHO_NAME, density)?;
+        Solid::from_moduli(material, decimal_to_rational(nu)?, stiffness, density)
     }
 
     /// The half-space whose dilatational and shear wave speeds are `c1` and `c2` (m/s),
@@ -235,34 +238,25 @@ impl<T: Real> Solid<T> {
         Solid::from_speeds(c1, c2, p)
     }
 
-    /// From the material, its exact ν and the moduli: μ and ρ rounded once, the speeds from
-    /// the exact μ/ρ.
+    /// From the material, its exact ν, the stiffness (E or μ) and the density: μ and ρ
+    /// rounded once, the speeds from the exact μ/ρ.
     fn from_moduli(
         material: Material<T>,
         nu_exact: Rational,
-        moduli: Moduli<Given>,
+        stiffness: Given,
+        rho: Given,
     ) -> Result<Self> {
         let p = material.nu().prec();
-        let (mu, rho) = match moduli {
-            Moduli::Youngs {
-                youngs_modulus,
-                density,
-            } => {
-                let e = youngs_modulus.positive()?;
-                let mu = shear_from_youngs(&e.exact, &nu_exact);
-                let text = format!("{} (from E = {})", short_rational(&mu), e.text);
-                let mu = Given {
-                    name: MU_NAME,
-                    exact: mu,
-                    text,
-                };
-                (mu, density)
-            }
-            Moduli::Shear {
-                shear_modulus,
-                density,
-            } => (shear_modulus, density),
-        };
+        let mut mu = stiffness.positive()?;
+        if mu.name == E_NAME {
+            let exact = shear_from_youngs(&mu.exact, &nu_exact);
+            let text = format!("{} (from E = {})", short_rational(&exact), mu.text);
+            mu = Given {
+                name: MU_NAME,
+                exact,
+                text,
+            };
+        }
         let (mu, rho) = (mu.positive()?, rho.positive()?);
         let c2_squared = shear_speed_squared(&mu.exact, &rho.exact);
         let (mu, rho) = (mu.round::<T>(p)?, rho.round::<T>(p)?);

@@ -13,31 +13,17 @@ use rug::Float;
 
 type Prepared<T> = (Speed<T>, AxisRatio<T>);
 
-/// Runs a route on inputs already rounded to the working precision (so that timings do not
+/// Runs `method` on inputs already rounded to the working precision (so that timings do not
 /// include the conversion of the inputs nor the material's Rayleigh roots), at the working
-/// precision's floor, without the automatic choice of [`moving_hertz::integrals`].
-fn run_route<T: Real>(route: Route, (s, a): &Prepared<T>) -> moving_hertz::Result<Integrals<T>> {
-    let method = match route {
-        Route::Series => Method::Series,
-        Route::Adaptive => Method::Adaptive,
-        Route::AdaptiveSubtracted => Method::AdaptiveSubtracted,
-        // The same speed made anew each time (a speed keeps its fixed-rule set-up): the cost
-        // of one call at a new speed, as the other routes'.
-        Route::FixedRule | Route::GradedRule => {
-            let fresh = s.material().speed_from_gap(s.gap().clone())?;
-            let opts = IntegralOptions {
-                method: Method::Fixed,
-                ..Default::default()
-            };
-            return integrals(&fresh, &a.k, &opts);
-        }
-        other => {
-            return Err(moving_hertz::Error::Domain {
-                name: "route",
-                value: other.label().into(),
-                bound: "series, adaptive, adaptive-subtracted, fixed-rule or graded-rule",
-            })
-        }
+/// precision's floor. The fixed rule runs at a speed made anew each time (a speed keeps its
+/// fixed-rule set-up): the cost of one call at a new speed, as the other routes'.
+fn run_route<T: Real>(method: Method, (s, a): &Prepared<T>) -> moving_hertz::Result<Integrals<T>> {
+    let fresh;
+    let s = if method == Method::Fixed {
+        fresh = s.material().speed_from_gap(s.gap().clone())?;
+        &fresh
+    } else {
+        s
     };
     let opts = IntegralOptions {
         method,
@@ -69,12 +55,13 @@ pub struct Row {
 
 /// The speeds of the study: 0.1, 0.5, 0.9, 0.99, 0.999, 0.9999, 1 − 10^-8.
 pub const SPEEDS: [&str; 7] = ["0.1", "0.5", "0.9", "0.99", "0.999", "0.9999", "0.99999999"];
-/// The routes compared (k ≤ 1: the graded rule does not apply).
-pub const METHODS: [Route; 4] = [
-    Route::Series,
-    Route::Adaptive,
-    Route::AdaptiveSubtracted,
-    Route::FixedRule,
+/// The routes compared (k ≤ 1: the graded rule does not apply), each with the method that
+/// runs it alone.
+pub const METHODS: [(Route, Method); 4] = [
+    (Route::Series, Method::Series),
+    (Route::Adaptive, Method::Adaptive),
+    (Route::AdaptiveSubtracted, Method::AdaptiveSubtracted),
+    (Route::FixedRule, Method::Fixed),
 ];
 
 /// I1, I2 at 512 bits by the fixed rule, for inputs held exactly (the inputs as rounded to the
@@ -90,67 +77,55 @@ fn reference(inputs: &ExactInputs) -> moving_hertz::Result<(Float, Float)> {
     Ok((r.i1.value.to_float(600), r.i2.value.to_float(600)))
 }
 
+/// The row of `route` at precision `label`: its error against the 512-bit reference, its
+/// estimate, work and median time, or why it failed.
 fn measure<T: Real>(
     exact: &ExactInputs,
     p: T::Prec,
     label: Precision,
-    method: Route,
+    (route, method): (Route, Method),
     budget_ms: f64,
 ) -> Row {
-    let Ok(inputs) = exact.rounded::<T>(p) else {
-        return failed(exact, method, label, "inputs not representable".into());
-    };
-    let reference = match reference(&inputs) {
-        Ok(r) => r,
-        Err(e) => return failed(exact, method, label, e.to_string()),
-    };
-    let prepared = match inputs
-        .at::<T>(p)
-        .and_then(|(s, k)| Ok((s, AxisRatio::new(k)?)))
-    {
-        Ok(x) => x,
-        Err(e) => return failed(exact, method, label, e.to_string()),
-    };
-    let reference = &reference;
-    let mr = speed_label(exact);
-    match run_route::<T>(method, &prepared) {
-        Ok(r) => {
-            let err = |got: &T, want: &Float| super::rel_error(got, want, 600);
-            let error = err(&r.i1.value, &reference.0).max(err(&r.i2.value, &reference.1));
-            let time_ns = median_ns(budget_ms, || {
-                run_route::<T>(method, &prepared).map(|r| r.work)
-            });
-            Row {
-                mr,
-                method,
-                precision: label,
-                error,
-                estimate: r.i1.error.to_f64(),
-                time_ns,
-                work: r.work,
-                failure: None,
-            }
-        }
-        Err(e) => failed(exact, method, label, e.to_string()),
-    }
-}
-
-/// The speed as the charts look it up: M_R rounded to the nearest `f64` (0.1 prints as 0.1).
-fn speed_label(exact: &ExactInputs) -> String {
-    format!("{}", rug::Float::with_val(53, exact.mr()).to_f64())
-}
-
-fn failed(exact: &ExactInputs, method: Route, precision: Precision, why: String) -> Row {
-    Row {
-        mr: speed_label(exact),
-        method,
-        precision,
+    let mut row = Row {
+        // The speed as the charts look it up: M_R rounded to the nearest `f64` (0.1 prints as 0.1).
+        mr: format!("{}", rug::Float::with_val(53, exact.mr()).to_f64()),
+        method: route,
+        precision: label,
         error: f64::NAN,
         estimate: f64::NAN,
         time_ns: f64::NAN,
         work: 0,
-        failure: Some(why),
+        failure: None,
+    };
+    if let Err(why) = timed::<T>(exact, p, method, budget_ms, &mut row) {
+        row.failure = Some(why);
     }
+    row
+}
+
+/// Fills `row`'s error, estimate, work and time for `method` at precision `p`.
+fn timed<T: Real>(
+    exact: &ExactInputs,
+    p: T::Prec,
+    method: Method,
+    budget_ms: f64,
+    row: &mut Row,
+) -> Result<(), String> {
+    let text = |e: moving_hertz::Error| e.to_string();
+    let inputs = (exact.rounded::<T>(p)).map_err(|_| "inputs not representable".to_string())?;
+    let (r1, r2) = reference(&inputs).map_err(text)?;
+    let prepared = (inputs.at::<T>(p))
+        .and_then(|(s, k)| Ok((s, AxisRatio::new(k)?)))
+        .map_err(text)?;
+    let r = run_route::<T>(method, &prepared).map_err(text)?;
+    let err = |got: &T, want: &Float| super::rel_error(got, want, 600);
+    row.error = err(&r.i1.value, &r1).max(err(&r.i2.value, &r2));
+    row.estimate = r.i1.error.to_f64();
+    row.work = r.work;
+    row.time_ns = median_ns(budget_ms, || {
+        run_route::<T>(method, &prepared).map(|r| r.work)
+    });
+    Ok(())
 }
 
 /// Runs the study at ν = `nu`, k = `k` (exact decimal text) over [`SPEEDS`], for every method at
@@ -190,8 +165,11 @@ pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
             let work = table.text(i, "work")?;
             Ok(Row {
                 mr: table.text(i, "mr")?,
-                method: (METHODS.into_iter().find(|m| m.label() == method))
-                    .ok_or_else(|| table.at(i, format!("no route {method:?}")))?,
+                method: (METHODS
+                    .into_iter()
+                    .map(|(r, _)| r)
+                    .find(|r| r.label() == method))
+                .ok_or_else(|| table.at(i, format!("no route {method:?}")))?,
                 precision: table.precision(i, "precision")?,
                 error: table.number(i, "rel_error")?,
                 estimate: table.number(i, "error_estimate")?,
@@ -217,7 +195,7 @@ pub fn charts(rows: &[Row]) -> Vec<(String, String)> {
             "correct digits of I1, I2, −log₁₀(relative error)",
         )
         .log(true, false);
-        for (look, m) in METHODS.into_iter().enumerate() {
+        for (look, (m, _)) in METHODS.into_iter().enumerate() {
             let sel: Vec<&Row> = (rows.iter())
                 .filter(|r| r.mr == key && r.method == m)
                 .collect();
@@ -274,7 +252,7 @@ fn cost_chart(rows: &[Row]) -> String {
         "time per evaluation (ns)",
     )
     .log(true, true);
-    for m in METHODS {
+    for (m, _) in METHODS {
         let sel: Vec<&Row> = (rows.iter())
             .filter(|r| r.method == m && r.precision == Precision::F64)
             .collect();

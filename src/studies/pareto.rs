@@ -44,53 +44,40 @@ struct Case<'a> {
     budget_ms: f64,
 }
 
+/// The row of `case` at precision `label`: the error of k against the reference, the solve's
+/// estimate and median time, or why it failed.
 fn measure<T: Real>(case: &Case<'_>, p: T::Prec, label: Precision) -> Row {
-    let Case {
-        nu,
-        mr,
-        ratio,
-        method,
-        reference,
-        budget_ms,
-    } = *case;
-    let fail = |why: String| Row {
-        mr,
-        method,
+    let mut row = Row {
+        mr: case.mr,
+        method: case.method,
         precision: label,
         error: f64::NAN,
         estimate: f64::NAN,
         time_ns: f64::NAN,
-        failure: Some(why),
+        failure: None,
     };
-    let Ok(mat) = Material::new(T::from_f64(nu, p)) else {
-        return fail("material".into());
-    };
-    let Ok(sp) = mat.speed(T::from_f64(mr, p)) else {
-        return fail("speed".into());
-    };
-    let r = T::from_f64(ratio, p);
+    if let Err(why) = timed::<T>(case, p, &mut row) {
+        row.failure = Some(why);
+    }
+    row
+}
+
+/// Fills `row`'s error, estimate and time for `case` at precision `p`.
+fn timed<T: Real>(case: &Case<'_>, p: T::Prec, row: &mut Row) -> Result<(), String> {
+    let mat = Material::new(T::from_f64(case.nu, p)).map_err(|_| "material")?;
+    let sp = mat.speed(T::from_f64(case.mr, p)).map_err(|_| "speed")?;
+    let r = T::from_f64(case.ratio, p);
     let opts = Options {
-        method,
+        method: case.method,
         ..Default::default()
     };
-    match solve_ellipse(&sp, &r, &opts) {
-        Ok(s) => {
-            let error = super::rel_error(&s.k().value, reference, 1600);
-            let time_ns = median_ns(budget_ms, || {
-                solve_ellipse(&sp, &r, &opts).map(|s| s.iterations())
-            });
-            Row {
-                mr,
-                method,
-                precision: label,
-                error,
-                estimate: s.k().error.to_f64(),
-                time_ns,
-                failure: None,
-            }
-        }
-        Err(e) => fail(e.to_string()),
-    }
+    let s = solve_ellipse(&sp, &r, &opts).map_err(|e| e.to_string())?;
+    row.error = super::rel_error(&s.k().value, case.reference, 1600);
+    row.estimate = s.k().error.to_f64();
+    row.time_ns = median_ns(case.budget_ms, || {
+        solve_ellipse(&sp, &r, &opts).map(|s| s.iterations())
+    });
+    Ok(())
 }
 
 /// Runs the study at ν = 0.2, A1/B1 = 0.5 (exact binary inputs) for every method in `methods`.

@@ -73,8 +73,14 @@ fn measure_at<T: Real>(p: T::Prec, label: Precision, nus: &[f64], out: &mut Vec<
             continue;
         };
         let nu_t = T::from_f64(nu, p);
-        let mut push = |method, r: &RayleighRoots<T>| {
-            let (m1, m23) = errors(r, &reference);
+        let closed = |form| Some(RayleighRoots::closed_form(&nu_t, form));
+        for (method, roots) in [
+            ("complex-cardano", closed(ClosedForm::ComplexCardano)),
+            ("real-branches", closed(ClosedForm::RealBranches)),
+            ("default", RayleighRoots::new(&nu_t).ok()),
+        ] {
+            let Some(r) = roots else { continue };
+            let (m1, m23) = errors(&r, &reference);
             out.push(RootError {
                 nu,
                 precision: label,
@@ -82,17 +88,6 @@ fn measure_at<T: Real>(p: T::Prec, label: Precision, nus: &[f64], out: &mut Vec<
                 m1,
                 m23,
             });
-        };
-        push(
-            "complex-cardano",
-            &RayleighRoots::closed_form(&nu_t, ClosedForm::ComplexCardano),
-        );
-        push(
-            "real-branches",
-            &RayleighRoots::closed_form(&nu_t, ClosedForm::RealBranches),
-        );
-        if let Ok(d) = RayleighRoots::new(&nu_t) {
-            push("default", &d);
         }
     }
 }
@@ -197,29 +192,19 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
     ]
 }
 
-/// The worst error per (precision, method, root group, ν region), as Markdown table rows.
+/// The worst error per (precision, method, root group, ν region), as Markdown table rows:
+/// the precision, the method and a cell per region of [`REGIONS`].
 /// Tabulates the errors of the roots of (6) as measured.
-pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
+pub fn summary(rows: &[RootError]) -> Vec<Vec<String>> {
     let mut out = Vec::new();
-    let precs = precisions(rows);
-    for prec in precs {
+    for prec in precisions(rows) {
         for method in ["complex-cardano", "real-branches", "default"] {
-            let mut cells = [
-                prec.label(),
-                method.to_string(),
-                String::new(),
-                String::new(),
-                String::new(),
-                String::new(),
-            ];
-            for (k, (_, inside)) in REGIONS.iter().enumerate() {
-                let sel: Vec<&RootError> = rows
-                    .iter()
-                    .filter(|r| r.precision == prec && r.method == method && inside(r.nu))
-                    .collect();
-                let w1 = sel.iter().map(|r| r.m1).fold(0.0, f64::max);
-                let w23 = sel.iter().map(|r| r.m23).fold(0.0, f64::max);
-                cells[2 + k] = format!("{} / {}", fmt_eps(w1), fmt_eps(w23));
+            let mut cells = vec![prec.label(), method.to_string()];
+            for (_, inside) in REGIONS {
+                let sel = (rows.iter())
+                    .filter(|r| r.precision == prec && r.method == method && inside(r.nu));
+                let (w1, w23) = sel.fold((0.0f64, 0.0f64), |(a, b), r| (a.max(r.m1), b.max(r.m23)));
+                cells.push(format!("{} / {}", fmt_eps(w1), fmt_eps(w23)));
             }
             out.push(cells);
         }

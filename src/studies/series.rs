@@ -566,24 +566,23 @@ pub fn condition_map(k_side: bool) -> Result<ConditionMap> {
 /// The heat map of bits lost in L_n (colour capped at 256 bits).
 /// Draws the condition of (40)–(42); no arithmetic beyond plotting.
 pub fn condition_chart(map: &ConditionMap, k_side: bool) -> (String, String) {
+    let (range, y_label, side) = if k_side {
+        (
+            "k > 1",
+            "k − 1, k = b/a > 1 (log scale; e² = 1 − k² < 0)",
+            "k",
+        )
+    } else {
+        ("0 < e < 1", "eccentricity e = √(1 − k²)", "e")
+    };
     let h = Heatmap {
-        title: if k_side {
-            "Bits lost in the K, E basis: log₂((|α_n|K + |β_n|E)/L_n), k > 1".into()
-        } else {
-            "Bits lost in the K, E basis: log₂((|α_n|K + |β_n|E)/L_n), 0 < e < 1".into()
-        },
+        title: format!("Bits lost in the K, E basis: log₂((|α_n|K + |β_n|E)/L_n), {range}"),
         x_label: "n (log scale)".into(),
-        y_label: if k_side {
-            "k − 1, k = b/a > 1 (log scale; e² = 1 − k² < 0)".into()
-        } else {
-            "eccentricity e = √(1 − k²)".into()
-        },
+        y_label: y_label.into(),
         z_label: "bits lost (colour capped at 256)".into(),
         xs: map.ns.iter().map(|&n| n as f64).collect(),
         ys: map.params.clone(),
-        z: map
-            .bits_l
-            .iter()
+        z: (map.bits_l.iter())
             .map(|r| r.iter().map(|v| v.min(256.0)).collect())
             .collect(),
         x_log: true,
@@ -591,12 +590,5 @@ pub fn condition_chart(map: &ConditionMap, k_side: bool) -> (String, String) {
         z_range: (0.0, 256.0),
         missing: "no value".into(),
     };
-    (
-        if k_side {
-            "recursion_bits_lost_k.svg".into()
-        } else {
-            "recursion_bits_lost_e.svg".into()
-        },
-        h.to_svg(),
-    )
+    (format!("recursion_bits_lost_{side}.svg"), h.to_svg())
 }

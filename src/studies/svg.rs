@@ -83,7 +83,7 @@ impl Series {
 }
 
 /// A 2-D chart.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct Chart {
     /// Title above the plot (broken into lines to fit the canvas).
     pub title: String,
@@ -128,15 +128,9 @@ impl Chart {
             title: title.into(),
             x_label: x_label.into(),
             y_label: y_label.into(),
-            x_log: false,
-            y_log: false,
-            x_range: None,
-            y_range: None,
-            x_ticks: None,
-            series: Vec::new(),
-            notes: Vec::new(),
             width: 760.0,
             height: 480.0,
+            ..Chart::default()
         }
     }
     /// Sets log scales.
@@ -188,29 +182,19 @@ impl Chart {
         // Grid and ticks.
         let (ml, mt, pw, ph) = (f.ml, f.mt, f.pw, f.ph);
         for (v, label) in x_ticks {
-            let x = px(v);
+            let (x, bottom) = (px(v), mt + ph);
             let _ = write!(
                 o,
-                r##"<line x1="{x:.1}" y1="{mt}" x2="{x:.1}" y2="{:.1}" stroke="#e6e6e6"/>"##,
-                mt + ph
-            );
-            let _ = write!(
-                o,
-                r#"<text x="{x:.1}" y="{:.1}" text-anchor="middle">{}</text>"#,
-                mt + ph + 16.0,
+                r##"<line x1="{x:.1}" y1="{mt}" x2="{x:.1}" y2="{bottom:.1}" stroke="#e6e6e6"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{}</text>"##,
+                bottom + 16.0,
                 esc(&label)
             );
         }
         for (v, label) in ya.ticks() {
-            let y = py(v);
+            let (y, right) = (py(v), ml + pw);
             let _ = write!(
                 o,
-                r##"<line x1="{ml}" y1="{y:.1}" x2="{:.1}" y2="{y:.1}" stroke="#e6e6e6"/>"##,
-                ml + pw
-            );
-            let _ = write!(
-                o,
-                r#"<text x="{:.1}" y="{:.1}" text-anchor="end">{}</text>"#,
+                r##"<line x1="{ml}" y1="{y:.1}" x2="{right:.1}" y2="{y:.1}" stroke="#e6e6e6"/><text x="{:.1}" y="{:.1}" text-anchor="end">{}</text>"##,
                 ml - 6.0,
                 y + 4.0,
                 esc(&label)
