@@ -1,25 +1,9 @@
 //! The half-space in physical units: Poisson's ratio with the shear or Young's modulus and the
 //! density, or the two body-wave speeds; its wave speeds c1, c2, c_R in m/s; and a punch speed
-//! from the velocity V in m/s.
-//!
-//! The formulas (each written once below, generic over [`Field`] where they are rational and
-//! over [`Real`] where they take a root):
-//!
-//! * μ = E/(2(1 + ν)) (isotropic elasticity);
-//! * c2 = √(μ/ρ) and c1 = c2/√γ with γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)) (the speeds of (5));
-//! * ν = (1 − 2γ)/(2(1 − γ)) from γ = (c2/c1)² (the inverse of γ(ν));
-//! * c_R = c2·(c_R/c2) with c_R/c2 = √m1, the Rayleigh root of (6);
-//! * M_R = V/c_R and 1 − M_R = (c_R − V)/c_R (sections 5–6 of the paper).
-//!
-//! **Exact inputs.** Every input, decimal text or a value of the working type, is taken as its
-//! exact rational value: μ, c2² = μ/ρ, c1² = c2²/γ and, from (c1, c2), γ and ν are formed
-//! exactly; the square roots and the Rayleigh root are taken 64 bits above the working
-//! precision, and each result is rounded once. The gap 1 − M_R of a velocity is formed at a
-//! precision raised by the bits its cancellation costs (V close to c_R), so that it is accurate
-//! to a few ε of the working precision however close V is to c_R, as
-//! [`Material::parse_speed`] forms the gap of a decimal M_R exactly.
-//!
-//! Units: any consistent system; SI (Pa, kg/m³) gives speeds in m/s, and the names below say so.
+//! from the velocity V in m/s. The relations (μ = E/(2(1 + ν)), c2 = √(μ/ρ), c1 = c2/√γ,
+//! c_R = c2·√m1, M_R = V/c_R), and how every input is taken exactly and each result rounded
+//! once: `docs/theory.md`, "Physical units". Each formula is written once below, generic over
+//! [`Field`] where it is rational. Units: any consistent system; SI gives m/s.
 
 use super::material::{gamma_of, nu_of_gamma, round_rational, Material, Speed};
 use super::rayleigh::RayleighRoots;

@@ -162,19 +162,17 @@ pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
     (0..table.rows.len())
         .map(|i| {
             let (method, failure) = (table.text(i, "method")?, table.text(i, "failure")?);
-            let work = table.text(i, "work")?;
+            let route = METHODS.into_iter().find(|(r, _)| r.label() == method);
             Ok(Row {
                 mr: table.text(i, "mr")?,
-                method: (METHODS
-                    .into_iter()
-                    .map(|(r, _)| r)
-                    .find(|r| r.label() == method))
-                .ok_or_else(|| table.at(i, format!("no route {method:?}")))?,
+                method: route
+                    .ok_or_else(|| table.at(i, format!("no route {method:?}")))?
+                    .0,
                 precision: table.precision(i, "precision")?,
                 error: table.number(i, "rel_error")?,
                 estimate: table.number(i, "error_estimate")?,
                 time_ns: table.number(i, "time_ns")?,
-                work: (work.parse()).map_err(|_| table.at(i, format!("work = {work:?}")))?,
+                work: table.number(i, "work")?,
                 failure: (!failure.is_empty()).then_some(failure),
             })
         })

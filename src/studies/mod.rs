@@ -133,8 +133,8 @@ impl Table {
             .ok_or_else(|| format!("{}: no column {name}", self.path))?;
         Ok(self.rows[i][j].clone())
     }
-    /// The number in row `i`, column `name` (`NaN` reads as NaN).
-    pub fn number(&self, i: usize, name: &str) -> Result<f64, String> {
+    /// The number in row `i`, column `name` (a float, `NaN` reading as NaN, or a count).
+    pub fn number<F: std::str::FromStr>(&self, i: usize, name: &str) -> Result<F, String> {
         let t = self.text(i, name)?;
         t.parse()
             .map_err(|_| self.at(i, format!("{name} = {t:?} is not a number")))

@@ -1,16 +1,9 @@
-//! Studies of the series route of section 5 (`moving-hertz study series`,
-//! `moving-hertz study recursion`):
-//!
-//! * [`terms_study`]: the number of terms the series (37) needs against M_R for target accuracies
-//!   10⁻⁸, 10⁻¹⁵ (f64), 10⁻³⁰ (double-double, MPFR 128) and 10⁻⁷⁰ (MPFR 256), the time per
-//!   evaluation, and the error reached against a 420-bit reference;
-//! * [`forward_study`]: the relative error of the paper's forward recursion (40) in L_n, M_n
-//!   against n at f64, double-double, 128 and 256 bits, measured against the exact form
-//!   α_n K + β_n E, and the measured growth rate against the predicted log₂|k²/e²| bits per step;
-//! * [`condition_map`]: the bits lost by any evaluation in the K, E basis, log₂ of
-//!   (|α_n|K + |β_n|E)/L_n, over (n, e) and (n, k > 1).
-//!
-//! Inputs are dyadic (exact at every precision), so one reference serves all precisions.
+//! Studies of the series route of section 5 (`moving-hertz study series`, `study recursion`;
+//! findings in `docs/series.md`): the terms the series (37) needs against M_R and their cost
+//! ([`terms_study`]), the error growth of the forward recursion (40) against the exact form
+//! α_n K + β_n E ([`forward_study`]) and the bits any evaluation in the K, E basis loses
+//! ([`condition_map`]). Inputs are dyadic (exact at every precision), so one reference serves
+//! all precisions.
 
 use super::median_ns;
 use super::svg::{Chart, Heatmap, Series, Style};
@@ -157,19 +150,14 @@ fn series_label(target: f64, prec: Precision) -> String {
 /// charts are drawn from. An error names the line that does not read.
 /// Reads the terms of (37) back; no arithmetic.
 pub fn rows_from_csv(table: &super::Table) -> std::result::Result<Vec<TermsRow>, String> {
-    let count = |i: usize, name: &str| -> std::result::Result<u64, String> {
-        let t = table.text(i, name)?;
-        t.parse()
-            .map_err(|_| table.at(i, format!("{name} = {t:?}")))
-    };
     (0..table.rows.len())
         .map(|i| {
             Ok(TermsRow {
                 mr: table.number(i, "M_R")?,
                 target: table.number(i, "target")?,
                 precision: table.precision(i, "precision")?,
-                terms: usize::try_from(count(i, "terms")?).map_err(|e| table.at(i, e))?,
-                estimate: count(i, "terms_estimate")?,
+                terms: table.number(i, "terms")?,
+                estimate: table.number(i, "terms_estimate")?,
                 time_ns: table.number(i, "time_ns")?,
                 error: table.number(i, "error")?,
                 error_estimate: table.number(i, "error_estimate")?,

@@ -106,11 +106,10 @@ pub struct Chart {
     pub series: Vec<Series>,
     /// Lines of text below the legend's keys: what is not drawn and why (refused routes).
     pub notes: Vec<String>,
-    /// Width in pixels.
-    pub width: f64,
-    /// Height in pixels.
-    pub height: f64,
 }
+
+/// The canvas of every chart and heat map, width × height in pixels.
+const CANVAS: (f64, f64) = (760.0, 480.0);
 
 const PALETTE: [&str; 10] = [
     "#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf",
@@ -118,7 +117,7 @@ const PALETTE: [&str; 10] = [
 ];
 
 impl Chart {
-    /// An empty chart with a title and axis labels, linear axes, 760×480 px.
+    /// An empty chart with a title and axis labels, linear axes, on the [`CANVAS`].
     pub fn new(
         title: impl Into<String>,
         x_label: impl Into<String>,
@@ -128,8 +127,6 @@ impl Chart {
             title: title.into(),
             x_label: x_label.into(),
             y_label: y_label.into(),
-            width: 760.0,
-            height: 480.0,
             ..Chart::default()
         }
     }
@@ -162,7 +159,7 @@ impl Chart {
 
     /// Renders the chart as an SVG document.
     pub fn to_svg(&self) -> String {
-        let f = Frame::new(self.width, self.height, LEGEND_WIDTH, &self.title);
+        let f = Frame::new(CANVAS, LEGEND_WIDTH, &self.title);
         let xa = Axis::fit(self.data_range(true), self.x_range, self.x_log);
         let ya = Axis::fit(self.data_range(false), self.y_range, self.y_log);
         let px = |x: f64| f.ml + f.pw * xa.frac(x);
@@ -356,7 +353,7 @@ struct Frame {
 impl Frame {
     /// The canvas `w` × `h` with the standard left and bottom margins, `right` for the legend
     /// or colour bar, and a top margin that holds `title` broken into lines.
-    fn new(w: f64, h: f64, right: f64, title: &str) -> Frame {
+    fn new((w, h): (f64, f64), right: f64, title: &str) -> Frame {
         let title = wrap(title, TITLE_SIZE, w - 2.0 * EDGE);
         let (ml, mb) = (78.0, 58.0);
         let mt = 40.0 + 18.0 * (title.len() - 1) as f64;
@@ -454,9 +451,9 @@ pub struct Heatmap {
 const GREY: &str = "#bdbdbd";
 
 impl Heatmap {
-    /// Renders the map as an SVG document (760×480 px).
+    /// Renders the map as an SVG document (on the [`CANVAS`]).
     pub fn to_svg(&self) -> String {
-        let f = Frame::new(760.0, 480.0, 120.0, &self.title);
+        let f = Frame::new(CANVAS, 120.0, &self.title);
         let ex = cell_edges(&self.xs, self.x_log);
         let ey = cell_edges(&self.ys, self.y_log);
         let (x0, x1) = (ex[0], *ex.last().unwrap_or(&1.0));
@@ -538,11 +535,8 @@ impl Heatmap {
             o,
             r#"<rect x="{bx}" y="{mt}" width="18" height="{ph}" fill="none" stroke="black"/>"#
         );
-        let bar = Axis {
-            lo: self.z_range.0,
-            hi: self.z_range.1,
-            log: false,
-        };
+        let (lo, hi) = self.z_range;
+        let bar = Axis { lo, hi, log: false };
         for (v, label) in bar.ticks() {
             let y = mt + ph * (1.0 - bar.frac(v));
             let _ = write!(
@@ -591,12 +585,8 @@ fn cell_edges(c: &[f64], log: bool) -> Vec<f64> {
 /// The ticks of a heat map axis spanning [t0, t1] (log10 values on a log axis), as positions
 /// on that scale with their labels.
 fn ticks_within(t0: f64, t1: f64, log: bool) -> Vec<(f64, String)> {
-    let axis = Axis {
-        lo: t0.min(t1),
-        hi: t0.max(t1),
-        log,
-    };
-    (axis.ticks().into_iter())
+    let (lo, hi) = (t0.min(t1), t0.max(t1));
+    (Axis { lo, hi, log }.ticks().into_iter())
         .map(|(v, label)| (if log { v.log10() } else { v }, label))
         .collect()
 }

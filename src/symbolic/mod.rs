@@ -1,25 +1,15 @@
 //! Symbolic mode: the paper's coefficients as exact rational functions, derived by the same
-//! generic code that runs the recurrences at `f64`, double-double, MPFR and over `rug::Rational`.
-//!
-//! [`RatFunc`] (a rational function of one variable over ℚ in lowest terms) implements
-//! [`FieldOps`], so
-//!
-//! * [`GreenSeries`] (36), run with ν = the variable and x0 = 1, gives the Taylor coefficients
-//!   F_n(ν) of g = −πΓ in x = M2² — the paper's f_n = F_n(ν)·M2^{2n} of (35) ([`green_coefficients`]);
-//! * [`KeForm`] (40) with (42), run with k² = 1 − e² and e² the variable, gives
-//!   L_n = α_n(e²)K + β_n(e²)E and M_n = γ_n(e²)K + δ_n(e²)E ([`moment_forms`]), K = K(e),
-//!   E = E(e) the complete elliptic integrals of modulus e.
+//! generic code that runs the recurrences at `f64`, double-double and MPFR, here over
+//! [`RatFunc`] (a rational function of one variable over ℚ in lowest terms, a [`FieldOps`]
+//! backend; design: `docs/design.md`, "Symbolic mode"): [`GreenSeries`] (36) gives F_n(ν)
+//! ([`green_coefficients`]), [`KeForm`] (40), (42) gives α_n … δ_n(e²) ([`moment_forms`]).
 //!
 //! Both are exact: substituting a rational ν (or e²) gives, bit for bit, the `Rational` run of the
 //! same recurrence (`tests/symbolic.rs`), and `tools/gen_symbolic.py` derives the same functions
-//! independently with sympy (series expansion of −πΓ; the integrals L_n, M_n reduced to K and E).
-//! [`printed_f1`], [`printed_f2`] are the paper's starting values as printed (its f2 has 27 where
-//! the derivation gives 67, `docs/errata.md` #2). [`render`] writes the results as text, LaTeX,
-//! sympy input or JSON; [`ke_condition`] evaluates the condition number of the K, E basis from
-//! the closed forms and [`pole_terms`] their pole at e² = 0 (the cancellation).
-//!
-//! The work grows about as n³ (degree n numerators, coefficients of O(n) digits, n steps;
-//! `benches/symbolic.rs` measures it), hence the bounds [`MAX_COEFFICIENT_INDEX`] and
+//! independently with sympy. [`printed_f1`], [`printed_f2`] are the paper's starting values as
+//! printed (`docs/errata.md` #2); [`render`] writes text, LaTeX, sympy input or JSON;
+//! [`ke_condition`] and [`pole_terms`] say what the closed forms imply for the K, E basis. The
+//! work grows about as n³ (`benches/symbolic.rs`), hence [`MAX_COEFFICIENT_INDEX`] and
 //! [`MAX_MOMENT_INDEX`].
 
 mod poly;

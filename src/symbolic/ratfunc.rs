@@ -1,17 +1,10 @@
-//! Rational functions of one variable over ℚ, always in lowest terms, as a [`FieldOps`] backend.
+//! Rational functions of one variable over ℚ, always in lowest terms, as a [`FieldOps`] backend:
+//! N(x) / Π q_i(x)^{e_i}, the denominator kept factored over a *coprime base* (monic, pairwise
+//! coprime q_i; the numerator coprime to each), which is lowest terms by construction and keeps
+//! every gcd against a linear base (why: `docs/design.md`, "Symbolic mode").
 //!
-//! A value is N(x) / Π q_i(x)^{e_i}: the numerator N is a [`Poly`]; the denominator is kept
-//! factored over a *coprime base* — monic, non-constant, pairwise coprime polynomials q_i with
-//! exponents e_i ≥ 1 — and the numerator is coprime to every q_i. That is exactly "lowest terms"
-//! (an irreducible factor common to N and the denominator would divide some q_i), and it keeps
-//! every gcd small: the recurrences (36) and (40) divide only by 1 − ν, e² and 1 − e², so the
-//! bases are linear and reducing a sum costs a few synthetic divisions instead of a Euclid run
-//! on the full numerator and denominator.
-//!
-//! No item of this module implements a formula of the paper: they are the rational-function
-//! arithmetic on which the generic recurrences (36) and (40) run exactly
-//! ([`super::green_coefficients`], [`super::moment_forms`] name the equations), and every operation
-//! is exact.
+//! No item of this module implements a formula of the paper: they are the exact arithmetic
+//! under the recurrences (36) and (40) ([`super::green_coefficients`], [`super::moment_forms`]).
 
 use super::poly::Poly;
 use crate::scalar::FieldOps;
