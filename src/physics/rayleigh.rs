@@ -137,7 +137,7 @@ impl<T: Real> RayleighRoots<T> {
         let d = discriminant(&pp, &qq);
         let complex_pair = !d.is_negative();
         let shift = T::from_ratio(8, 3, pr);
-        let mut roots: Vec<Complex<T>> = match form {
+        let mut roots: [Complex<T>; 3] = match form {
             ClosedForm::ComplexCardano => {
                 let sd = Complex::from_real(d).sqrt();
                 let mq2 = Complex::from_real(-(qq.mul_pow2(-1)));
@@ -150,13 +150,11 @@ impl<T: Real> RayleighRoots<T> {
                 let omega = Complex::new(-half, s3h);
                 let p3 = Complex::from_real(pp.div_i64(3));
                 let mut ck = c;
-                let mut out = Vec::with_capacity(3);
-                for _ in 0..3 {
+                std::array::from_fn(|_| {
                     let t = ck.clone() - p3.clone() / &ck;
-                    out.push(Complex::new(t.re + &shift, t.im));
-                    ck = ck * &omega;
-                }
-                out
+                    ck = ck.clone() * &omega;
+                    Complex::new(t.re + &shift, t.im)
+                })
             }
             ClosedForm::RealBranches => {
                 if d.is_negative() {
@@ -170,12 +168,10 @@ impl<T: Real> RayleighRoots<T> {
                     }
                     let theta = c.acos();
                     let two_pi = T::pi(pr).mul_pow2(1);
-                    (0..3)
-                        .map(|k| {
-                            let ang = (theta.clone() - two_pi.clone().mul_i64(k)).div_i64(3);
-                            Complex::from_real(r.clone().mul_pow2(1) * ang.cos() + &shift)
-                        })
-                        .collect()
+                    std::array::from_fn(|k| {
+                        let ang = (theta.clone() - two_pi.clone().mul_i64(k as i64)).div_i64(3);
+                        Complex::from_real(r.clone().mul_pow2(1) * ang.cos() + &shift)
+                    })
                 } else {
                     // Cube root of the term without cancellation, the other from A·B = −p/3.
                     let sd = d.sqrt();
@@ -193,7 +189,7 @@ impl<T: Real> RayleighRoots<T> {
                     let t1 = a.clone() + &b;
                     let re = -(t1.clone().mul_pow2(-1)) + &shift;
                     let im = T::from_i64(3, pr).sqrt().mul_pow2(-1) * (a - b).abs();
-                    vec![
+                    [
                         Complex::from_real(t1 + &shift),
                         Complex::new(re.clone(), im.clone()),
                         Complex::new(re, -im),
@@ -204,9 +200,8 @@ impl<T: Real> RayleighRoots<T> {
         // m1 has the smallest real part; the others ascend (three real roots) or come as the
         // pair with Im m2 > 0 (complex regime, decided by the sign of the discriminant).
         roots.sort_by(|a, b| a.re.partial_cmp(&b.re).unwrap_or(std::cmp::Ordering::Equal));
-        let m3 = roots.pop().unwrap_or_else(|| Complex::zero(pr));
-        let m2 = roots.pop().unwrap_or_else(|| Complex::zero(pr));
-        let m1 = roots.pop().unwrap_or_else(|| Complex::zero(pr)).re;
+        let [m1, m2, m3] = roots;
+        let m1 = m1.re;
         let (m2, m3) = if complex_pair && m2.im.is_negative() {
             (m3, m2)
         } else {

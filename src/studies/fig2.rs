@@ -94,10 +94,10 @@ pub fn solve_all<T: Real + Send + Sync, const N: usize>(
     tick: &(dyn Fn(usize) + Sync),
 ) -> moving_hertz::Result<[Curve; N]> {
     let nu = T::parse(nu, p)?;
-    let opts = Options::default();
+    let (opts, len) = (Options::default(), task_len(T::bits(p)));
     let mut solved = curves.map(|pairs| Curve {
         points: vec![Point::default(); pairs.len()],
-        table: vec![String::new(); 1 + pairs.len().div_ceil(task_len(T::bits(p)))],
+        table: vec![String::new(); 1 + pairs.len().div_ceil(len)],
     });
     let mut blocks = Vec::new();
     for (pairs, curve) in curves.iter().zip(&mut solved) {
@@ -105,8 +105,8 @@ pub fn solve_all<T: Real + Send + Sync, const N: usize>(
         let pieces = curve.table[1..].iter_mut();
         blocks.extend(
             pairs
-                .chunks(task_len(T::bits(p)))
-                .zip(curve.points.chunks_mut(task_len(T::bits(p))))
+                .chunks(len)
+                .zip(curve.points.chunks_mut(len))
                 .zip(pieces),
         );
     }
@@ -123,10 +123,8 @@ pub fn solve_all<T: Real + Send + Sync, const N: usize>(
 
 /// The points of one task of [`solve_all`] at `bits`: the library's [`BLOCK`] at `f64` and
 /// double-double; 16 above, where a point costs 100 µs or more, so that the 2,546 points make
-/// 160 tasks rather than 41 and 16 threads finish within a short task of each other (41 equal
-/// tasks keep 16 threads busy at most 41/48 of the time). A shorter block starts more points
-/// from the static seed instead of a neighbour's root, which costs little where the higher
-/// stages of the ladder dominate. The bits of a point depend on its task, never on the threads.
+/// 160 tasks rather than 41 and many threads finish close together. The bits of a point depend
+/// on its task, never on the threads.
 fn task_len(bits: u32) -> usize {
     if bits > 106 {
         16

@@ -34,15 +34,8 @@ fn create(path: &Path) -> std::io::Result<std::fs::File> {
 /// `path`, creating parent directories; an error names the file. Implements no equation;
 /// writes the values as given.
 pub fn write_csv(path: &Path, header: &str, rows: &[Vec<String>]) -> std::io::Result<()> {
-    let write = || {
-        let mut f = std::io::BufWriter::new(create(path)?);
-        writeln!(f, "{header}")?;
-        for r in rows {
-            writeln!(f, "{}", r.join(","))?;
-        }
-        f.flush()
-    };
-    write().map_err(naming(path))
+    let body: String = rows.iter().map(|r| r.join(",") + "\n").collect();
+    write_pieces(path, &[format!("{header}\n"), body])
 }
 
 /// Writes text (an SVG chart, a Markdown table) to `path`, creating parent directories. A

@@ -153,7 +153,7 @@ pub fn spread(
 }
 
 /// Charts: the ν-spread of e, k and a against M_R (one line per A1/B1), for 0 ≤ ν ≤ 1/2 and for
-/// the whole range; and a heat map of the spread of e over (M_R, A1/B1).
+/// the whole range; and the heat map of the spread of e (`e_map`).
 /// Draws the spreads of section 7's remark; no arithmetic beyond plotting.
 pub fn charts(points: &[Point]) -> Vec<(String, String)> {
     let mut out = Vec::new();
@@ -201,6 +201,12 @@ pub fn charts(points: &[Point]) -> Vec<(String, String)> {
             out.push((format!("poisson_{name}_{tag}.svg"), c.to_svg()));
         }
     }
+    out.push(e_map(points));
+    out
+}
+
+/// The heat map of the spread of e over −0.99 ≤ ν ≤ 1/2, over (1 − M_R, A1/B1).
+fn e_map(points: &[Point]) -> (String, String) {
     let s = spread(points, (-0.99, 0.5), Deviation::Absolute, |q| q.e);
     let ratios = ratio_grid();
     let z: Vec<Vec<f64>> = ratios
@@ -238,6 +244,5 @@ pub fn charts(points: &[Point]) -> Vec<(String, String)> {
         z_range: (0.0, zmax.max(1e-6)),
         missing: "not solved".into(),
     };
-    out.push(("poisson_e_map.svg".into(), hm.to_svg()));
-    out
+    ("poisson_e_map.svg".into(), hm.to_svg())
 }

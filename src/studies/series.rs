@@ -6,7 +6,7 @@
 //! all precisions.
 
 use super::median_ns;
-use super::svg::{Chart, Heatmap, Series, Style};
+use super::svg::{Chart, Heatmap, Series, Style, Style::*};
 use moving_hertz::error::Result;
 use moving_hertz::numerics::elliptic::ellipke_mc;
 use moving_hertz::physics::Material;
@@ -141,10 +141,6 @@ pub fn terms_study(speeds: &[f64], budget_ms: f64) -> Result<Vec<TermsRow>> {
     Ok(out)
 }
 
-fn series_label(target: f64, prec: Precision) -> String {
-    format!("{target:.0e} at {}", prec.label())
-}
-
 /// The rows of the terms study's CSV table (as `moving-hertz study series` writes it, header
 /// `M_R,target,precision,terms,terms_estimate,time_ns,error,error_estimate`): the data its
 /// charts are drawn from. An error names the line that does not read.
@@ -187,27 +183,19 @@ pub fn terms_charts(rows: &[TermsRow]) -> Vec<(String, String)> {
             .iter()
             .filter(|r| r.target == target && r.precision == prec && r.terms > 0)
             .collect();
-        let label = series_label(target, prec);
-        terms.push(Series::new(
-            label.clone(),
-            sel.iter().map(|r| (1.0 - r.mr, r.terms as f64)).collect(),
-            Style::LineMarkers,
-        ));
+        let pts = |f: fn(&TermsRow) -> f64| sel.iter().map(|r| (1.0 - r.mr, f(r))).collect();
+        let label = format!("{target:.0e} at {}", prec.label());
+        terms.push(Series::new(&label, pts(|r| r.terms as f64), LineMarkers));
         if !seen_tol.contains(&target.to_bits()) {
             seen_tol.push(target.to_bits());
+            let estimate = pts(|r| r.estimate as f64);
             terms.push(Series::new(
                 format!("estimate, {target:.0e}"),
-                sel.iter()
-                    .map(|r| (1.0 - r.mr, r.estimate as f64))
-                    .collect(),
-                Style::Dashed,
+                estimate,
+                Dashed,
             ));
         }
-        time.push(Series::new(
-            label,
-            sel.iter().map(|r| (1.0 - r.mr, r.time_ns / 1e3)).collect(),
-            Style::LineMarkers,
-        ));
+        time.push(Series::new(label, pts(|r| r.time_ns / 1e3), LineMarkers));
     }
     vec![
         ("series_terms.svg".into(), terms.to_svg()),

@@ -117,7 +117,7 @@ const PALETTE: [&str; 10] = [
 ];
 
 impl Chart {
-    /// An empty chart with a title and axis labels, linear axes, on the [`CANVAS`].
+    /// An empty chart with a title and axis labels, linear axes, 760×480 px (`CANVAS`).
     pub fn new(
         title: impl Into<String>,
         x_label: impl Into<String>,
@@ -451,7 +451,7 @@ pub struct Heatmap {
 const GREY: &str = "#bdbdbd";
 
 impl Heatmap {
-    /// Renders the map as an SVG document (on the [`CANVAS`]).
+    /// Renders the map as an SVG document (760×480 px, `CANVAS`).
     pub fn to_svg(&self) -> String {
         let f = Frame::new(CANVAS, 120.0, &self.title);
         let ex = cell_edges(&self.xs, self.x_log);
