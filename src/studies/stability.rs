@@ -11,6 +11,7 @@ use moving_hertz::routes::moments::{moments, moments_with, MomentMethod};
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Precision, Real};
 use moving_hertz::{integrals, ExactInputs, IntegralOptions, Integrals, Method};
 use rug::Float;
+use std::collections::HashMap;
 
 /// A map: digits on a grid, for one method and precision.
 #[derive(Clone, Debug)]
@@ -23,16 +24,16 @@ pub struct DigitMap {
 }
 
 impl DigitMap {
-    /// The map `name` of the digits `z` over the grid `xs`, `ys` (log axes where `log` says),
-    /// titled `title` with the axis labels `labels`, coloured from 0 to `full` digits.
+    /// The map `stability_{kind}_{precision}` of the digits `z` over the grid `xs`, `ys` (log
+    /// axes where `log` says), titled `title` with the axis labels `labels`, coloured from 0 to
+    /// the precision's full digit count.
     fn new(
-        name: String,
+        (kind, label): (&str, Precision),
         title: String,
         labels: [&str; 2],
         (xs, ys): (Vec<f64>, Vec<f64>),
         log: (bool, bool),
         z: Vec<Vec<f64>>,
-        full: f64,
     ) -> DigitMap {
         let map = Heatmap {
             title,
@@ -44,9 +45,10 @@ impl DigitMap {
             z,
             x_log: log.0,
             y_log: log.1,
-            z_range: (0.0, full),
+            z_range: (0.0, super::full_digits(label.bits())),
             missing: "refused".into(),
         };
+        let name = format!("stability_{kind}_{}", label.label());
         DigitMap { name, map }
     }
 
@@ -108,10 +110,6 @@ fn dyadic(x: f64) -> f64 {
     (x * q).round() / q
 }
 
-fn inputs(nu: f64, mr: f64, k: f64) -> Option<ExactInputs> {
-    ExactInputs::from_f64(nu, mr, k).ok()
-}
-
 /// I1, I2 by `method` at precision `p` and its floor.
 fn run_at<T: Real>(inputs: &ExactInputs, p: T::Prec, method: Method) -> Option<Integrals<T>> {
     let (sp, k) = inputs.at::<T>(p).ok()?;
@@ -122,24 +120,9 @@ fn run_at<T: Real>(inputs: &ExactInputs, p: T::Prec, method: Method) -> Option<I
     integrals(&sp, &k, &opts).ok()
 }
 
-/// The 256-bit reference (I1, I2) for exact binary inputs, cached per thread.
-fn reference(nu: f64, mr: f64, k: f64) -> Option<(Float, Float)> {
-    use std::cell::RefCell;
-    use std::collections::HashMap;
-    // (ν, M_R, k) by their bits → (I1, I2) at 320 bits.
-    type Cache = HashMap<(u64, u64, u64), (Float, Float)>;
-    thread_local! {
-        static CACHE: RefCell<Cache> = RefCell::new(HashMap::new());
-    }
-    let key = (nu.to_bits(), mr.to_bits(), k.to_bits());
-    if let Some(v) = CACHE.with(|c| c.borrow().get(&key).cloned()) {
-        return Some(v);
-    }
-    let r = run_at::<Mp>(&inputs(nu, mr, k)?, MpPrec::clamped(256), Method::Adaptive)?;
-    let v = (r.i1.value.to_float(320), r.i2.value.to_float(320));
-    CACHE.with(|c| c.borrow_mut().insert(key, v.clone()));
-    Some(v)
-}
+/// The 256-bit references (I1, I2), at 320 bits, by the bits of (M_R, k) at ν = 0.2: each is
+/// formed once for the six maps that share it.
+type References = HashMap<(u64, u64), Option<(Float, Float)>>;
 
 /// The error against a reference, at 320 bits.
 fn rel<T: Real>(got: &T, want: &Float) -> f64 {
@@ -191,18 +174,9 @@ fn integral_map(
                 .collect()
         })
         .collect();
-    DigitMap::new(
-        format!("stability_{name}_{}", label.label()),
-        format!(
-            "{what} at {}: correct digits of I1, I2 (ν = 0.2)",
-            label.label()
-        ),
-        ["1 − M_R", "axis ratio k"],
-        (xs, ys),
-        (true, true),
-        z,
-        full,
-    )
+    let title = format!("{what} at {label}: correct digits of I1, I2 (ν = 0.2)");
+    let labels = ["1 − M_R", "axis ratio k"];
+    DigitMap::new((name, label), title, labels, (xs, ys), (true, true), z)
 }
 
 /// Digits of L_n by the paper's forward recursion over (n, e²), against the stable default at
@@ -238,31 +212,42 @@ fn recursion_map<T: Real>(p: T::Prec, label: Precision, tick: &mut impl FnMut())
                 .collect()
         })
         .collect();
+    let title = format!("Forward recursion (40) for L_n at {label}: correct digits");
+    let xs = ns.iter().map(|&n| n.max(1) as f64).collect();
+    let labels = ["n", "e² = 1 − k²"];
     DigitMap::new(
-        format!("stability_recursion_{}", label.label()),
-        format!(
-            "Forward recursion (40) for L_n at {}: correct digits",
-            label.label()
-        ),
-        ["n", "e² = 1 − k²"],
-        (ns.iter().map(|&n| n.max(1) as f64).collect(), e2s),
+        ("recursion", label),
+        title,
+        labels,
+        (xs, e2s),
         (true, false),
         z,
-        full,
     )
 }
 
 /// The relative error of (I1, I2) at `T` by `method`, or by the naive rule where `None`, at
 /// ν = 0.2, against the 256-bit quadrature; NaN where refused.
-fn cell_error<T: Real<Prec = ()>>(method: Option<Method>, mr: f64, k: f64) -> f64 {
-    let (Some(inputs), Some((r1, r2))) = (inputs(0.2, mr, k), reference(0.2, mr, k)) else {
+fn cell_error<T: Real<Prec = ()>>(
+    method: Option<Method>,
+    mr: f64,
+    k: f64,
+    refs: &mut References,
+) -> f64 {
+    let Ok(inputs) = ExactInputs::from_f64(0.2, mr, k) else {
+        return f64::NAN;
+    };
+    let reference = refs.entry((mr.to_bits(), k.to_bits())).or_insert_with(|| {
+        let r = run_at::<Mp>(&inputs, MpPrec::clamped(256), Method::Adaptive)?;
+        Some((r.i1.value.to_float(320), r.i2.value.to_float(320)))
+    });
+    let Some((r1, r2)) = reference else {
         return f64::NAN;
     };
     let got = match method {
         Some(m) => run_at::<T>(&inputs, (), m).map(|r| (r.i1.value, r.i2.value)),
         None => naive::<T>(&inputs, ()),
     };
-    got.map_or(f64::NAN, |(i1, i2)| rel(&i1, &r1).max(rel(&i2, &r2)))
+    got.map_or(f64::NAN, |(i1, i2)| rel(&i1, r1).max(rel(&i2, r2)))
 }
 
 /// All maps at f64 and double-double; `tick` is called after each cell.
@@ -277,18 +262,13 @@ pub fn run(mut tick: impl FnMut()) -> Vec<DigitMap> {
             Some(Method::Adaptive),
         ),
     ];
-    let mut out = Vec::new();
+    let (mut out, mut refs) = (Vec::new(), References::new());
     for (name, what, method) in kinds {
-        let f64_err = |mr, k| cell_error::<f64>(method, mr, k);
+        let f64_err = |mr, k| cell_error::<f64>(method, mr, k, &mut refs);
         out.push(integral_map(Precision::F64, name, what, f64_err, &mut tick));
-        let dd_err = |mr, k| cell_error::<Dd>(method, mr, k);
-        out.push(integral_map(
-            Precision::DoubleDouble,
-            name,
-            what,
-            dd_err,
-            &mut tick,
-        ));
+        let dd_err = |mr, k| cell_error::<Dd>(method, mr, k, &mut refs);
+        let dd = Precision::DoubleDouble;
+        out.push(integral_map(dd, name, what, dd_err, &mut tick));
     }
     out.push(recursion_map::<f64>((), Precision::F64, &mut tick));
     out.push(recursion_map::<Dd>((), Precision::DoubleDouble, &mut tick));
