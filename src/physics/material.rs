@@ -90,8 +90,7 @@ impl<T: Real> Material<T> {
         &self.gamma
     }
     /// The roots m1, m2, m3 of the Rayleigh cubic (the factorised (6), section 6 of the paper,
-    /// with errata #1);
-    /// within 4 ε ([`RayleighRoots`]).
+    /// with errata #1); within 4 ε ([`RayleighRoots`]).
     pub fn roots(&self) -> &RayleighRoots<T> {
         &self.roots
     }

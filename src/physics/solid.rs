@@ -282,25 +282,17 @@ impl<T: Real> Solid<T> {
         let p = material.nu().prec();
         let bits = T::bits(p) + GUARD;
         let (c2, c1, c_r_guard) = speeds_at(&nu_exact, &c2_squared, bits)?;
-        let text = |x: &Mp| x.0.to_string_radix(10, Some(6));
-        let c1_t = match c1 {
-            Some(c1) => Some(round_normal(&exact_value(&c1), C1_NAME, &text(&c1), p)?),
-            None => None,
+        let round = |x: &Mp, name| {
+            round_normal(&exact_value(x), name, &x.0.to_string_radix(10, Some(6)), p)
         };
-        let c2_t = round_normal(&exact_value(&c2), C2_NAME, &text(&c2), p)?;
-        let c_r_t = round_normal(
-            &exact_value(&c_r_guard),
-            "Rayleigh wave speed c_R (m/s)",
-            &text(&c_r_guard),
-            p,
-        )?;
+        let c1 = c1.map(|c1| round(&c1, C1_NAME)).transpose()?;
         Ok(Solid {
             material,
             shear_modulus,
             density,
-            c1: c1_t,
-            c2: c2_t,
-            c_r: c_r_t,
+            c1,
+            c2: round(&c2, C2_NAME)?,
+            c_r: round(&c_r_guard, "Rayleigh wave speed c_R (m/s)")?,
             nu_exact,
             c2_squared,
             c_r_guard: c_r_guard.0,
@@ -364,6 +356,7 @@ impl<T: Real> Solid<T> {
         }
         let p = self.material.nu().prec();
         let base = T::bits(p) + GUARD;
+        let c_r_at = |bits| speeds_at(&self.nu_exact, &self.c2_squared, bits).map(|s| s.2 .0);
         let mut c_r = self.c_r_guard.clone();
         for _ in 0..3 {
             let bits = c_r.prec();
@@ -371,13 +364,7 @@ impl<T: Real> Solid<T> {
             let diff = Float::with_val(bits, &c_r - &vf);
             if !diff.is_sign_positive() || diff.is_zero() {
                 if diff.is_zero() && bits < MpPrec::MAX_BITS {
-                    c_r = speeds_at(
-                        &self.nu_exact,
-                        &self.c2_squared,
-                        bits.saturating_mul(2).min(MpPrec::MAX_BITS),
-                    )?
-                    .2
-                     .0;
+                    c_r = c_r_at(bits.saturating_mul(2).min(MpPrec::MAX_BITS))?;
                     continue;
                 }
                 return Err(self.above_rayleigh(&v.text));
@@ -386,7 +373,7 @@ impl<T: Real> Solid<T> {
             let lost = (c_r.get_exp().unwrap_or(0) - diff.get_exp().unwrap_or(0)).max(0) as u32;
             let need = base.saturating_add(lost).min(MpPrec::MAX_BITS);
             if need > bits {
-                c_r = speeds_at(&self.nu_exact, &self.c2_squared, need)?.2 .0;
+                c_r = c_r_at(need)?;
                 continue;
             }
             let mr = Float::with_val(bits, &vf / &c_r);

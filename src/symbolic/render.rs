@@ -63,17 +63,10 @@ impl Variable {
     }
 }
 
-/// A polynomial with integer coefficients (ascending) as `style` writes it, in descending or
-/// ascending powers.
-fn int_poly(c: &[Integer], v: Variable, style: Style, descending: bool) -> String {
+/// A polynomial with integer coefficients (ascending) as `style` writes it, in ascending powers.
+fn int_poly(c: &[Integer], v: Variable, style: Style) -> String {
     let mut out = String::new();
-    let idx: Vec<usize> = if descending {
-        (0..c.len()).rev().collect()
-    } else {
-        (0..c.len()).collect()
-    };
-    for k in idx {
-        let a = &c[k];
+    for (k, a) in c.iter().enumerate() {
         if a.cmp0() == Ordering::Equal {
             continue;
         }
@@ -159,7 +152,7 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
         });
     }
     if prim.len() > 1 {
-        let p = int_poly(&prim, v, style, false);
+        let p = int_poly(&prim, v, style);
         // P stands bare when nothing precedes it and the sign or a bar cannot be misread.
         let bare = num_parts.is_empty()
             && if latex {
@@ -189,7 +182,7 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
     }
     let lone = b == 1 && bases.len() == 1;
     for (qi, e) in &bases {
-        let s = int_poly(qi, v, style, false);
+        let s = int_poly(qi, v, style);
         let wrap = terms(qi) > 1 && (!latex || *e > 1 || !lone);
         let s = if wrap { format!("({s})") } else { s };
         den_parts.push(match (style, *e) {
