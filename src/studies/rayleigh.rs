@@ -195,18 +195,17 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
 /// The worst error per (precision, method, root group, ν region), as Markdown table rows:
 /// the precision, the method and a cell per region of [`REGIONS`].
 /// Tabulates the errors of the roots of (6) as measured.
-pub fn summary(rows: &[RootError]) -> Vec<Vec<String>> {
+pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
     let mut out = Vec::new();
     for prec in precisions(rows) {
         for method in ["complex-cardano", "real-branches", "default"] {
-            let mut cells = vec![prec.label(), method.to_string()];
-            for (_, inside) in REGIONS {
+            let [a, b, c, d] = REGIONS.map(|(_, inside)| {
                 let sel = (rows.iter())
                     .filter(|r| r.precision == prec && r.method == method && inside(r.nu));
                 let (w1, w23) = sel.fold((0.0f64, 0.0f64), |(a, b), r| (a.max(r.m1), b.max(r.m23)));
-                cells.push(format!("{} / {}", fmt_eps(w1), fmt_eps(w23)));
-            }
-            out.push(cells);
+                format!("{} / {}", fmt_eps(w1), fmt_eps(w23))
+            });
+            out.push([prec.label(), method.to_string(), a, b, c, d]);
         }
     }
     out
