@@ -525,16 +525,8 @@ impl<T: Real> Estimated<T> {
 impl<T: Real> fmt::Display for Estimated<T> {
     /// `value (relative error <= bound)`, or `absolute error` for an absolute bound.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let kind = match self.kind {
-            BoundKind::Relative => "relative",
-            BoundKind::Absolute => "absolute",
-        };
-        write!(
-            f,
-            "{} ({kind} error <= {})",
-            self.value.to_decimal(),
-            self.error
-        )
+        let (value, kind) = (self.value.to_decimal(), self.kind.label());
+        write!(f, "{value} ({kind} error <= {})", self.error)
     }
 }
 

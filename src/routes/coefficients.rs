@@ -100,8 +100,7 @@ impl<F: FieldOps> GreenSeries<F> {
         c
     }
 
-    /// The first `n` coefficients c_0 … c_{n−1}.
-    /// The coefficients of (35) by (36), as [`GreenSeries::next_coefficient`].
+    /// The first `n` coefficients c_0 … c_{n−1} of (35), by (36).
     pub fn take(mut self, n: usize) -> Vec<F> {
         (0..n).map(|_| self.next_coefficient()).collect()
     }

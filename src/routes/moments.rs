@@ -42,8 +42,7 @@ pub enum MomentMethod {
 }
 
 impl MomentMethod {
-    /// `forward`, `backward-gauss`, `backward-pfaff`.
-    /// Names a method for (40); exact.
+    /// `forward`, `backward-gauss`, `backward-pfaff`. Names a method for (40); exact.
     pub fn label(&self) -> &'static str {
         match self {
             MomentMethod::Forward => "forward",
@@ -156,8 +155,7 @@ pub struct Moments<T> {
 }
 
 impl<T> Moments<T> {
-    /// The largest n of D_n (the table of M and L goes one further).
-    /// The top index of (38)–(41); exact.
+    /// The largest n of D_n, the top index of (38)–(41) (the table of M and L goes one further).
     pub fn n_max(&self) -> usize {
         self.d.len() - 1
     }
@@ -208,13 +206,11 @@ pub fn moments<T: Real>(mc: &T, n_max: usize) -> Result<Moments<T>> {
 /// working precision itself, as the paper's recursion would run). D_n is formed before the final
 /// rounding.
 ///
-/// Accuracy: as analysed in `docs/series.md` — stable methods hold a few ε·n before guarding;
-/// [`MomentMethod::Forward`] for e² < 1/2 loses log₂|k²/e²| bits per step.
+/// Implements (38)–(42). Accuracy (`docs/series.md`): stable methods hold a few ε·n before
+/// guarding; [`MomentMethod::Forward`] for e² < 1/2 loses log₂|k²/e²| bits per step.
 ///
 /// Errors: as [`moments`]; also [`Error::Domain`] for the forward recursion at e² = 0 (it divides
 /// by e²), for Gauss top values with |e²| ≥ 1 and Pfaff top values with e² ≥ 1/2 (divergent).
-/// Implements (38)–(42); accuracy: [`moments`] for the default method, docs/series.md for the
-/// others.
 pub fn moments_with<T: Real>(
     mc: &T,
     n_max: usize,
@@ -590,8 +586,7 @@ impl<F: FieldOps> KeForm<F> {
         })
     }
 
-    /// e² = 1 − k².
-    /// e² of (41); exact over an exact field, one rounding otherwise.
+    /// e² = 1 − k² of (41): exact over an exact field, one rounding otherwise.
     pub fn e2(&self) -> &F {
         &self.e2
     }

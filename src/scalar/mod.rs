@@ -476,8 +476,7 @@ pub fn short<T: Real>(x: &T) -> String {
     trim_mantissa(&s)
 }
 
-/// `5.0000000000000000010e-1` → `5.000000000000000001e-1`: trailing zeros of the mantissa
-/// dropped.
+/// `5.0000000000000000010e-1` → `5.000000000000000001e-1`: trailing zeros of the mantissa dropped.
 fn trim_mantissa(s: &str) -> String {
     let (mant, exp) = match s.find('e') {
         Some(i) => (&s[..i], &s[i..]),
