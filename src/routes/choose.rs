@@ -40,8 +40,7 @@ pub struct ExactInputs {
 pub const INPUT_KAPPA: u32 = 8;
 
 impl ExactInputs {
-    /// Parses decimal (or p/q) text exactly: Poisson's ratio, the speed M_R, the axis ratio k.
-    /// The inputs of (34); exact.
+    /// The inputs of (34) from decimal (or p/q) text, exactly: ν, the speed M_R, the axis ratio k.
     pub fn parse(nu: &str, mr: &str, k: &str) -> Result<ExactInputs> {
         ExactInputs::new(
             decimal_to_rational(nu)?,

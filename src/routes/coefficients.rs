@@ -153,8 +153,7 @@ impl<F: Field> SpeedCoefficients<F> {
         self
     }
 
-    /// (h_n, f_n) and advance to n + 1.
-    /// h_n = f_n/M_R^{2n} and f_n of (35) by (36) at x0 = m1, as [`GreenSeries::next_coefficient`].
+    /// (h_n, f_n) = (f_n/M_R^{2n}, f_n) of (35) by (36) at x0 = m1, advancing to n + 1.
     pub fn next_pair(&mut self) -> (F, F) {
         let h = match &self.flush {
             None => self.gen.next_coefficient(),

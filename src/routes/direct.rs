@@ -480,8 +480,7 @@ pub fn s_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T
     Ok(first + second)
 }
 
-/// I1, I2 with I2 by the subtraction (48) and S by (53); I1 by quadrature of (46). Valid where
-/// (53) is (k ≤ 1). Same tolerance semantics as [`quadrature`].
+/// I1 by quadrature of (46), I2 by the subtraction (48) with S by (53); k ≤ 1, as [`quadrature`].
 pub fn subtracted<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,

@@ -142,8 +142,7 @@ impl Method {
         Method::Fixed,
     ];
 
-    /// `auto`, `series`, `adaptive`, `adaptive-subtracted` or `fixed`.
-    /// Names a route for (34); exact.
+    /// The route for (34) by name: `auto`, `series`, `adaptive`, `adaptive-subtracted`, `fixed`.
     pub fn label(&self) -> &'static str {
         match self {
             Method::Auto => "auto",

@@ -30,8 +30,7 @@ pub(crate) const MAX_TOP_TERMS: usize = 20_000_000;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum MomentMethod {
-    /// The paper's forward recursion (40) from the starting values (42) (via cel).
-    /// Stable for e² > 1/2 only.
+    /// The forward recursion (40) from (42) (via cel); stable for e² > 1/2 only.
     Forward,
     /// Backward recursion (40) from top values by the hypergeometric series in e²
     /// (|e²| < 1; stable for e² < 1/2).
@@ -470,18 +469,9 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
             }
             // Term ratios e²(2j+1)²/(4(j+1)(n+1+j)) and e²(2j+3)(2j+1)/(4(j+1)(n+1+j)),
             // both at most |e²|.
-            let (sm, jm) = hyper_sum(
-                e2,
-                |j| (2 * j + 1) * (2 * j + 1),
-                |j| 4 * (j + 1) * (ni + 1 + j),
-                |_| a.clone(),
-            )?;
-            let (sl, jl) = hyper_sum(
-                e2,
-                |j| (2 * j + 3) * (2 * j + 1),
-                |j| 4 * (j + 1) * (ni + 1 + j),
-                |_| a.clone(),
-            )?;
+            let (den, bound) = (|j: i64| 4 * (j + 1) * (ni + 1 + j), |_: i64| a.clone());
+            let (sm, jm) = hyper_sum(e2, |j| (2 * j + 1) * (2 * j + 1), den, bound)?;
+            let (sl, jl) = hyper_sum(e2, |j| (2 * j + 3) * (2 * j + 1), den, bound)?;
             Ok((wn.clone() * sm, wn * sl, jm.max(jl)))
         }
         MomentMethod::BackwardPfaff => {
@@ -503,18 +493,10 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
             check_top_terms(2f64.powf(-rho), bits)?;
             // Ratios t(2j+1)(2n+2j+1)/(4(j+1)(n+j+1)) ≤ |t| and
             // t(2j+3)(2n+2j+1)/(4(j+1)(n+j+1)) ≤ |t|(2j+3)/(2j+2) (decreasing in j).
-            let (sm, jm) = hyper_sum(
-                &t,
-                |j| (2 * j + 1) * (2 * ni + 2 * j + 1),
-                |j| 4 * (j + 1) * (ni + j + 1),
-                |_| a.clone(),
-            )?;
-            let (sl, jl) = hyper_sum(
-                &t,
-                |j| (2 * j + 3) * (2 * ni + 2 * j + 1),
-                |j| 4 * (j + 1) * (ni + j + 1),
-                |j| (a.clone().mul_i64(2 * j + 3)).div_i64(2 * j + 2),
-            )?;
+            let (den, bound) = (|j: i64| 4 * (j + 1) * (ni + j + 1), |_: i64| a.clone());
+            let (sm, jm) = hyper_sum(&t, |j| (2 * j + 1) * (2 * ni + 2 * j + 1), den, bound)?;
+            let later = |j: i64| (a.clone().mul_i64(2 * j + 3)).div_i64(2 * j + 2);
+            let (sl, jl) = hyper_sum(&t, |j| (2 * j + 3) * (2 * ni + 2 * j + 1), den, later)?;
             let k = mc.clone().sqrt();
             let m = wn.clone() * sm / &k;
             let l = wn * sl / (k * mc);
@@ -591,8 +573,7 @@ impl<F: FieldOps> KeForm<F> {
         &self.e2
     }
 
-    /// The coefficients of index n (0, 1, 2, … on successive calls).
-    /// One step of (40) on the coefficients of (42); exact over an exact field.
+    /// The coefficients of index n = 0, 1, 2, … by (40) from (42); exact over an exact field.
     pub fn next_term(&mut self) -> KeTerm<F> {
         let n = self.n;
         self.n += 1;
