@@ -12,11 +12,10 @@
 //! positive quantities for `a, b, p > 0`, and K alone by the AGM; incomplete ones by Carlson's
 //! R_F and R_D (DLMF 19.25.5, 19.25.9–10) with the duplication theorem and a Taylor series of
 //! an order chosen from the working precision. Tolerances come from the working precision and
-//! every loop has a cap ([`Error::NoConvergence`]). Every function is within 8 ε of the working
-//! precision (16 ε at double-double) against mpmath (`tests/elliptic.rs`); the measured worst
-//! errors are in `docs/calibration.md`. No item of this module implements a formula of the
-//! paper: they are the elliptic integrals (DLMF §19) in which (42)–(43) and (52)–(53) are
-//! written, each within the 8 ε above.
+//! every loop has a cap ([`Error::NoConvergence`]). No item of this module implements a formula
+//! of the paper: they are the elliptic integrals (DLMF §19) in which (42)–(43) and (52)–(53) are
+//! written, each within 8 ε of the working precision (16 ε at double-double) against mpmath
+//! (`tests/elliptic.rs`; the measured worst errors in `docs/calibration.md`).
 
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, short, Real};

@@ -13,7 +13,7 @@
 //! [`KeForm`] runs (40) on the coefficients of K and E, exactly over `rug::Rational`;
 //! [`ke_condition_bits`] is the condition number of any evaluation in that basis.
 
-use super::guard::{ceil_log2, run_guarded, zeros, GuardedJob};
+use super::guard::{ceil_log2, run_guarded, GuardedJob};
 use crate::error::{Error, Result};
 use crate::numerics::elliptic::{ellipbd_mc, ellipke_mc};
 use crate::numerics::series::sum_series_with_tail;
@@ -329,8 +329,7 @@ pub(crate) fn table_at<W: Real>(mc: &W, top: usize, method: MomentMethod) -> Res
     let top = top.max(1);
     let e2 = W::one(p) - mc;
     let c = e2.clone() - mc; // 2e² − 1
-    let mut m = zeros::<W>(top + 1, p);
-    let mut l = zeros::<W>(top + 1, p);
+    let (mut m, mut l) = (vec![W::zero(p); top + 1], vec![W::zero(p); top + 1]);
     match method {
         MomentMethod::Forward => {
             if e2.is_zero() {
