@@ -7,8 +7,8 @@
 //! eccentricity e, whose bound is on |x̃ − x| ([`BoundKind::Absolute`]): e vanishes for a
 //! circular contact. At 4096 bits such a bound is about 2⁻⁴⁰⁹⁰ ≈ 10⁻¹²³², far below the
 //! smallest `f64`; [`RelError`] holds it as an `f64` mantissa and an `i64` binary exponent, so
-//! that it survives at every MPFR precision and prints as a decimal string (`3.1e-1232`). The same type carries a requested tolerance, which can then
-//! be as small as 10⁻¹⁰⁰⁰⁰ or 10⁻¹⁰⁰⁰⁰⁰⁰.
+//! that it survives at every MPFR precision and prints as a decimal string (`3.1e-1232`). It
+//! also carries a requested tolerance, as small as 10⁻¹⁰⁰⁰⁰ or 10⁻¹⁰⁰⁰⁰⁰⁰.
 //!
 //! Arithmetic on bounds ([`RelError::add`], [`RelError::mul`], …) rounds upwards (each result is
 //! enlarged by 2⁻⁵⁰ relative), so a sum of bounds stays a bound.
@@ -525,16 +525,8 @@ impl<T: Real> Estimated<T> {
 impl<T: Real> fmt::Display for Estimated<T> {
     /// `value (relative error <= bound)`, or `absolute error` for an absolute bound.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let kind = match self.kind {
-            BoundKind::Relative => "relative",
-            BoundKind::Absolute => "absolute",
-        };
-        write!(
-            f,
-            "{} ({kind} error <= {})",
-            self.value.to_decimal(),
-            self.error
-        )
+        let (value, kind) = (self.value.to_decimal(), self.kind.label());
+        write!(f, "{value} ({kind} error <= {})", self.error)
     }
 }
 

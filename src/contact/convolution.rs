@@ -1,19 +1,12 @@
 //! Validation of the solution by the physics, independent of Galin's theorem: the surface
 //! displacement as the convolution (7) of the computed pressure with the moving-load Green's
-//! function (4),
-//!
-//! ```text
-//! u_z(x, y) = (1/(2πμ)) ∫_0^{2π} g(V |sin φ|) ∫_{ray} p(x + R cos φ, y + R sin φ) dR dφ
-//! ```
-//!
-//! in polar coordinates around the field point (the 1/R of (7) cancels the Jacobian R; g = −πΓ).
-//! Along each ray the pressure p0 √(1 − X²/a² − Y²/b²) of (9) is integrated exactly: with h the
-//! ellipse's support in the direction normal to the ray (h² = a² sin²φ + b² cos²φ) and d the
-//! ray line's distance from the centre, the chord has half-length L = ab√(h² − d²)/h², and the
-//! integral is that of √C·√(L² − u²) with √C = h/(ab) over the part of the chord ahead of the
-//! point (elementary: the area of a circular segment), (π/2)·ab(h² − d²)/h³ for the whole chord.
-//! Written with h − d and h + d, it has no cancellation beyond the chord's own vanishing at the
-//! tangents. Lengths are taken in units of m = max(a, b).
+//! function (4), in polar coordinates around the field point (`docs/theory.md`, "The Green's
+//! function", states the integral). Along each ray the pressure p0 √(1 − X²/a² − Y²/b²) of (9)
+//! is integrated exactly: with h the ellipse's support normal to the ray
+//! (h² = a² sin²φ + b² cos²φ) and d the ray line's distance from the centre, the chord has
+//! half-length L = ab√(h² − d²)/h², and the integral is that of √C·√(L² − u²), √C = h/(ab), over
+//! the part of the chord ahead of the point (the area of a circular segment), written with
+//! h − d and h + d (no cancellation). Lengths are in units of m = max(a, b).
 //!
 //! The angular integral is done by adaptive Gauss–Legendre quadrature with breakpoints where its
 //! integrand has kinks or peaks: where g(V|sin φ|) peaks (φ = π/2, 3π/2, width ~√(1 − M_R²) as

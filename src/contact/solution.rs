@@ -1,12 +1,7 @@
-//! The full moving-punch Hertz solution: from the solved k and I1, I2 (with g = −πΓ, in the
-//! normalisation of (37)), the closed forms of (26), (31) and the corrected (28), (30), (32)
-//! (`docs/theory.md`, "Galin's theorem and the Hertz relations"; `docs/errata.md` #4):
-//!
-//! ```text
-//! given the load:      a = (3P I1/(8π μ B1))^{1/3},  b = k a,  p0 = 3P/(2π a b),  d0 = p0 b J0/(4μ);
-//! given the approach:  a = (d0 I1/(B1 J0))^{1/2},    p0 = 4μ a B1/(k I1),  P = (2/3)π p0 a b;
-//! J0 = k² I1 + I2.
-//! ```
+//! The full moving-punch Hertz solution: from the solved k and I1, I2 (normalisation of (37)),
+//! a, b, p0, d0 and P by the closed forms of (26), (31) and the corrected (28), (30), (32), with
+//! J0 = k² I1 + I2 (`docs/theory.md`, "Galin's theorem and the Hertz relations";
+//! `docs/errata.md` #4).
 //!
 //! **Error bounds.** The closed forms are evaluated at [`Real::Wide`] and each result rounded
 //! once ([`Real::ROUNDING`]·ε plus the wide operations', counted in `rounded`). Each quantity's
@@ -444,8 +439,7 @@ impl<T: Real> Sizes<T> {
 }
 
 impl<T: Real> ContactSolution<T> {
-    /// The problem this solves.
-    /// The inputs of (26)–(33) as given; no rounding.
+    /// The problem this solves. The inputs of (26)–(33) as given; no rounding.
     pub fn problem(&self) -> &ContactProblem<T> {
         &self.problem
     }
@@ -481,29 +475,24 @@ impl<T: Real> ContactSolution<T> {
     pub fn j0(&self) -> &Estimated<T> {
         &self.j0
     }
-    /// k = b/a with its bound (the ellipse's).
-    /// The root of (33); its bound as in [`Ellipse::k`].
+    /// k = b/a, the root of (33), with its bound as in [`Ellipse::k`].
     pub fn k(&self) -> &Estimated<T> {
         &self.ellipse.k
     }
-    /// The eccentricity with its bound (absolute: see [`Ellipse::e`]).
-    /// e = √(1 − k²) (or √(1 − 1/k²)) from the root of (33).
+    /// The eccentricity e at the root of (33), with its bound (absolute: see [`Ellipse::e`]).
     pub fn e(&self) -> &Estimated<T> {
         &self.ellipse.e
     }
-    /// A1 = 1/(2 R1) (curvature along the motion).
-    /// The curvature of (26)–(30), from R1 with one rounding.
+    /// A1 = 1/(2 R1) of (26)–(30), the curvature along the motion (one rounding).
     pub fn a1(&self) -> &T {
         &self.a1
     }
-    /// B1 = 1/(2 R2) (curvature across the motion).
-    /// The curvature of (26)–(30), from R2 with one rounding.
+    /// B1 = 1/(2 R2) of (26)–(30), the curvature across the motion (one rounding).
     pub fn b1(&self) -> &T {
         &self.b1
     }
 
-    /// True when (x, y) lies in the closed contact ellipse.
-    /// The contact region of (9), x²/a² + y²/b² ≤ 1, at the working precision.
+    /// True when (x, y) lies in the closed contact region of (9), x²/a² + y²/b² ≤ 1.
     pub fn inside(&self, x: &T, y: &T) -> bool {
         self.q(x, y) >= T::zero(x.prec())
     }

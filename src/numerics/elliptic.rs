@@ -12,11 +12,10 @@
 //! positive quantities for `a, b, p > 0`, and K alone by the AGM; incomplete ones by Carlson's
 //! R_F and R_D (DLMF 19.25.5, 19.25.9–10) with the duplication theorem and a Taylor series of
 //! an order chosen from the working precision. Tolerances come from the working precision and
-//! every loop has a cap ([`Error::NoConvergence`]). Every function is within 8 ε of the working
-//! precision (16 ε at double-double) against mpmath (`tests/elliptic.rs`); the measured worst
-//! errors are in `docs/calibration.md`. No item of this module implements a formula of the
-//! paper: they are the elliptic integrals (DLMF §19) in which (42)–(43) and (52)–(53) are
-//! written, each within the 8 ε above.
+//! every loop has a cap ([`Error::NoConvergence`]). No item of this module implements a formula
+//! of the paper: they are the elliptic integrals (DLMF §19) in which (42)–(43) and (52)–(53) are
+//! written, each within 8 ε of the working precision (16 ε at double-double) against mpmath
+//! (`tests/elliptic.rs`; the measured worst errors in `docs/calibration.md`).
 
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, short, Real};
@@ -24,7 +23,7 @@ use rug::float::Constant;
 use rug::Float;
 
 fn domain<T: Real>(name: &'static str, x: &T, bound: &'static str) -> Error {
-    Error::domain(name, crate::scalar::short(x), bound)
+    Error::domain(name, short(x), bound)
 }
 
 /// Guards against a silent ∞/NaN from an intermediate overflow at extreme arguments.
@@ -231,8 +230,13 @@ pub fn ellipe_mc<T: Real>(mc: &T) -> Result<T> {
     if mc.is_zero() {
         return Ok(T::one(p));
     }
-    let [e] = cel_core(mc.clone().sqrt(), T::one(p), [(T::one(p), mc.clone())])?;
-    finite_out("E(m)", e)
+    cel_one("E(m)", mc, T::one(p), mc.clone())
+}
+
+/// `cel(√mc, 1, a, b)` (`mc > 0`), checked finite as `what`.
+fn cel_one<T: Real>(what: &'static str, mc: &T, a: T, b: T) -> Result<T> {
+    let [r] = cel_core(mc.clone().sqrt(), T::one(mc.prec()), [(a, b)])?;
+    finite_out(what, r)
 }
 
 /// `[B(mc), D(mc)]` in one iteration (`mc > 0`).
@@ -267,8 +271,7 @@ pub fn ellipb_mc<T: Real>(mc: &T) -> Result<T> {
     if mc.is_zero() {
         return Ok(T::one(p));
     }
-    let [b] = cel_core(mc.clone().sqrt(), T::one(p), [(T::one(p), T::zero(p))])?;
-    finite_out("B(m)", b)
+    cel_one("B(m)", mc, T::one(p), T::zero(p))
 }
 
 /// B(m) for `m ≤ 1`; see [`ellipb_mc`].
@@ -283,8 +286,7 @@ pub fn ellipb<T: Real>(m: &T) -> Result<T> {
 pub fn ellipd_mc<T: Real>(mc: &T) -> Result<T> {
     check_mc(mc, true)?;
     let p = mc.prec();
-    let [d] = cel_core(mc.clone().sqrt(), T::one(p), [(T::zero(p), T::one(p))])?;
-    finite_out("D(m)", d)
+    cel_one("D(m)", mc, T::zero(p), T::one(p))
 }
 
 /// D(m) for `m < 1`; see [`ellipd_mc`].
@@ -430,6 +432,17 @@ fn carlson<T: Real>(x: T, y: T, z: T, rd: bool) -> Result<T> {
     }
 }
 
+/// `x, y, z` finite and nonnegative, each named in the error otherwise.
+fn check_carlson<T: Real>(x: &T, y: &T, z: &T) -> Result<()> {
+    for (n, v) in [("x", x), ("y", y), ("z", z)] {
+        check_finite(n, v)?;
+        if v.is_negative() {
+            return Err(domain(n, v, ">= 0"));
+        }
+    }
+    Ok(())
+}
+
 /// Carlson's symmetric integral of the first kind
 /// `R_F(x, y, z) = ½ ∫₀^∞ dt / √((t + x)(t + y)(t + z))` (DLMF 19.16.1).
 ///
@@ -441,12 +454,7 @@ fn carlson<T: Real>(x: T, y: T, z: T, rd: bool) -> Result<T> {
 /// Errors: [`Error::NotFinite`], [`Error::Domain`] (a negative argument or two zeros); the
 /// iteration cap ([`Error::NoConvergence`]) is not reachable from finite arguments.
 pub fn carlson_rf<T: Real>(x: &T, y: &T, z: &T) -> Result<T> {
-    for (n, v) in [("x", x), ("y", y), ("z", z)] {
-        check_finite(n, v)?;
-        if v.is_negative() {
-            return Err(domain(n, v, ">= 0"));
-        }
-    }
+    check_carlson(x, y, z)?;
     let zeros = [x, y, z].iter().filter(|v| v.is_zero()).count();
     if zeros > 1 {
         return Err(domain("x, y, z", x, "at most one of x, y, z zero"));
@@ -461,12 +469,7 @@ pub fn carlson_rf<T: Real>(x: &T, y: &T, z: &T) -> Result<T> {
 /// `x, y ≥ 0` with at most one of them zero, `z > 0`. Same method and accuracy as
 /// [`carlson_rf`] (the duplication sum adds positive terms).
 pub fn carlson_rd<T: Real>(x: &T, y: &T, z: &T) -> Result<T> {
-    for (n, v) in [("x", x), ("y", y), ("z", z)] {
-        check_finite(n, v)?;
-        if v.is_negative() {
-            return Err(domain(n, v, ">= 0"));
-        }
-    }
+    check_carlson(x, y, z)?;
     if z.is_zero() {
         return Err(domain("z", z, "z > 0"));
     }
@@ -588,10 +591,6 @@ fn e_core<T: Real>(phi: &T, m: &T, mc: &T) -> Result<T> {
     }
 }
 
-fn check_phi<T: Real>(phi: &T) -> Result<()> {
-    check_finite("phi", phi)
-}
-
 /// Incomplete elliptic integral of the first kind
 /// `F(φ | m) = ∫₀^φ dθ / √(1 − m sin²θ)` for every real φ and `m ≤ 1` (`m = 1` only with
 /// `|φ| < π/2`, where `F = atanh(sin φ)`).
@@ -599,13 +598,13 @@ fn check_phi<T: Real>(phi: &T) -> Result<()> {
 /// Accuracy: a few ε for every exact `m` and φ (the reduction modulo π is exact); for `m → 1`
 /// use [`ellipf_mc`] with an exact `mc`.
 pub fn ellipf<T: Real>(phi: &T, m: &T) -> Result<T> {
-    check_phi(phi)?;
+    check_finite("phi", phi)?;
     f_core(phi, &mc_of_m(m, false)?)
 }
 
 /// F(φ | m) from the complementary parameter `mc = 1 − m ≥ 0`; see [`ellipf`].
 pub fn ellipf_mc<T: Real>(phi: &T, mc: &T) -> Result<T> {
-    check_phi(phi)?;
+    check_finite("phi", phi)?;
     check_mc(mc, false)?;
     f_core(phi, mc)
 }
@@ -615,14 +614,14 @@ pub fn ellipf_mc<T: Real>(phi: &T, mc: &T) -> Result<T> {
 ///
 /// Accuracy: a few ε for every exact `m` and φ (no cancellation for `m → 1` nor `m ≪ 0`).
 pub fn ellipe_inc<T: Real>(phi: &T, m: &T) -> Result<T> {
-    check_phi(phi)?;
+    check_finite("phi", phi)?;
     let mc = mc_of_m(m, false)?;
     e_core(phi, m, &mc)
 }
 
 /// E(φ | m) from the complementary parameter `mc = 1 − m ≥ 0`; see [`ellipe_inc`].
 pub fn ellipe_inc_mc<T: Real>(phi: &T, mc: &T) -> Result<T> {
-    check_phi(phi)?;
+    check_finite("phi", phi)?;
     check_mc(mc, false)?;
     e_core(phi, &(T::one(mc.prec()) - mc), mc)
 }

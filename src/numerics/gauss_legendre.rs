@@ -515,8 +515,7 @@ pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
     })
 }
 
-/// The k-th nonnegative node (k = 1 the largest) of the n-point rule and its weight at `raw`
-/// bits.
+/// The k-th nonnegative node (k = 1 the largest) of the n-point rule and its weight at `raw` bits.
 fn build_node(refine: &Refine, n: usize, k: usize, raw: u32) -> Result<(Float, Float)> {
     let xn = if 2 * k - 1 == n {
         Integer::new()

@@ -1,20 +1,13 @@
-//! Quadrature at the working precision.
-//!
-//! * [`GaussLegendre`] — n-point Gauss–Legendre rules (built 32 bits beyond the working
-//!   precision by the short-point construction and rounded once), cached per (type, n,
-//!   precision).
-//! * [`integrate`] — adaptive Gauss–Legendre with breakpoints: each panel is compared with its two
-//!   halves and the panel with the largest discrepancy is split until the total is below the
-//!   tolerance (inside the crate, `integrate_vec` does the same for `N` integrands that share one
-//!   call a node).
+//! Quadrature at the working precision: [`GaussLegendre`] rules (built beyond the working
+//! precision and rounded once, cached per type, n and precision) and [`integrate`], adaptive
+//! Gauss–Legendre with breakpoints (inside the crate `integrate_vec` does the same for `N`
+//! integrands that share one call a node).
 //!
 //! Tolerances are relative; each driver also stops at the rounding floor `≈ ε·∫|f|` (a request
 //! below it is met as well as the precision allows, and the error estimate says how well). Work
-//! is bounded by [`Limits`]; exceeding it is [`Error::NoConvergence`].
-//!
-//! Rule caches grow with every (type, n or level, precision) requested and are never freed (one
-//! cache for every rule of the crate, the routes' tables included): a Gauss–Legendre rule holds
-//! `n` values. No rule is built above [`MAX_RULE_BITS`].
+//! is bounded by [`Limits`]; exceeding it is [`Error::NoConvergence`]. The rule caches (one for
+//! every rule of the crate) grow with every (type, n, precision) requested until
+//! [`clear_rule_caches`]; no rule is built above [`MAX_RULE_BITS`].
 //!
 //! No item of this module implements a formula of the paper: they are the generic quadratures under
 //! the integral routes ((34), (46)–(48)); each item states the error it reaches (the tolerance
@@ -168,12 +161,9 @@ pub fn check_rule_bits(bits: u32) -> Result<()> {
 /// working-precision number nearest to the exact one (within ε/2 relative, checked against
 /// 200–400-bit rules by the tests); at `f64` the weights sum to 2 within ε/2.
 ///
-/// Work: the first request for (n, precision) builds the rule — for `f64` by Newton on the
-/// three-term recurrence in double-double (`n` steps an evaluation, one or two passes a node),
-/// above by the short-point construction of `numerics/gauss_legendre.rs` (one fixed-point pass of
-/// the recurrence a node, each step `O(bits/64)` word operations: about n²·bits/128 in all);
-/// later requests are a cache lookup, or round down a rule of the same n built at a higher
-/// precision.
+/// Work: the first request for (n, precision) builds the rule (`numerics/gauss_legendre.rs`:
+/// about n² double-double operations up to 53 bits, n²·bits/128 word operations above); later
+/// requests are a cache lookup, or round down a rule of the same n built at a higher precision.
 #[derive(Debug)]
 pub struct GaussLegendre<T: Real> {
     n: usize,
@@ -219,11 +209,7 @@ impl<T: Real> GaussLegendre<T> {
     }
 
     fn compute(n: usize, p: T::Prec) -> Result<Self> {
-        // Guard precision, then round once: the rule is computed 32 bits beyond the target and
-        // each node and weight rounded to T — in double-double by Newton on the recurrence for
-        // targets of at most 53 bits, by the short-point construction of
-        // [`super::gauss_legendre`] above (a rule built before at a higher precision is
-        // rounded down).
+        // Computed beyond the target and rounded once (`numerics/gauss_legendre.rs`).
         let bits = T::bits(p);
         let (nodes, weights) = if bits <= 53 {
             let (x, w) = gauss_legendre::reference_build::<Dd>(n, (), bits)?;
@@ -450,24 +436,18 @@ fn midpoint<T: Real>(a: &T, b: &T) -> Option<T> {
 
 /// Adaptive Gauss–Legendre quadrature of `f` over the breakpoints `points` (endpoints plus any
 /// interior kinks or peaks, strictly monotone; decreasing points give the negated integral) to
-/// relative tolerance `tol` (the vector driver `integrate_vec` with one component). The working precision is
-/// `tol`'s; `points` must share it.
+/// relative tolerance `tol`, whose precision `points` must share (`integrate_vec` with one
+/// component).
 ///
-/// Each panel `[a, b]` is integrated by the n-point rule ([`Limits::gauss_nodes`]) on its two
-/// halves; its error estimate is the discrepancy with the one-panel rule,
-/// `|G(a,b) − G(a,m) − G(m,b)|`, which for analytic `f` is about `2^(2n−1)` times the actual
-/// error of the two-half value. The panel with the largest estimate is split (4n evaluations)
-/// until the total estimate is at most `max(tol·|I|, 4ε·Σ|I_panel|) + min_positive` (the second
-/// term is the rounding floor, so `tol = 0` means "as accurate as the precision allows").
-/// The reported error is the total estimate plus a rounding allowance `ε·Σ|I_panel|`.
+/// Each panel is integrated by the n-point rule ([`Limits::gauss_nodes`]) on its two halves, its
+/// error estimated by the discrepancy with the one-panel rule (for analytic `f` about `2^(2n−1)`
+/// times the error of the two-half value); the worst panel is split (4n evaluations) until the
+/// total estimate is at most `max(tol·|I|, 4ε·Σ|I_panel|) + min_positive` (`tol = 0`: as
+/// accurate as the precision allows). The reported error adds a rounding allowance `ε·Σ|I_panel|`.
 ///
 /// Accuracy: for `f` analytic on each panel the reported error bounds the true one, usually by
-/// orders of magnitude. At an endpoint singularity `x^α` (−1 < α) the refinement is geometric
-/// (about `bits` levels for `ln x`) and the estimate is no longer conservative: it equals the
-/// true error for `ln x`, and underestimates it by `2^(−1−α)/(1 − 2^(−1−α))` for `α < 0`
-/// (×2.4 for `x^(−1/2)`) — a double-exponential rule suits such integrands better. Measured
-/// (tests/quadrature.rs): ≤ 4ε for `∫₀¹ ln x` and ≤ 1.3ε for the smooth and peaked test
-/// integrals, from `f64` to 1024 bits.
+/// orders of magnitude; at an endpoint singularity `x^α` (−1 < α < 0) it underestimates it by
+/// up to `2^(−1−α)/(1 − 2^(−1−α))` (×2.4 for `x^(−1/2)`).
 /// Work: at most `limits.max_evals` evaluations of `f`, plus `O(panels)` bookkeeping per split.
 ///
 /// Errors: [`Error::Domain`] for fewer than two or non-monotone breakpoints or a negative `tol`;

@@ -8,7 +8,7 @@
 
 use super::sum::CompSum;
 use crate::error::{Error, Result};
-use crate::scalar::{short, Real};
+use crate::scalar::{check_finite, short, Real};
 
 /// The result of the series driver.
 #[derive(Clone, Debug, PartialEq)]
@@ -28,22 +28,6 @@ fn rel<T: Real>(x: &T, s: &T) -> T {
     } else {
         x.clone().abs() / &s.clone().abs()
     }
-}
-
-fn check_tol<T: Real>(rel_tol: &T) -> Result<()> {
-    crate::scalar::check_finite("series tolerance", rel_tol)?;
-    if rel_tol.is_negative() {
-        return Err(Error::domain(
-            "series tolerance",
-            crate::scalar::short(rel_tol),
-            "rel_tol >= 0",
-        ));
-    }
-    Ok(())
-}
-
-fn term_check<T: Real>(t: &T) -> Result<()> {
-    crate::scalar::check_finite("series term", t)
 }
 
 /// Sums `gen(0) + gen(1) + …` at precision `p`, stopping as soon as the caller's tail bound
@@ -71,14 +55,18 @@ where
     G: FnMut(usize) -> T,
     B: FnMut(usize, &T, &T) -> T,
 {
-    check_tol(rel_tol)?;
+    check_finite("series tolerance", rel_tol)?;
+    if rel_tol.is_negative() {
+        let value = short(rel_tol);
+        return Err(Error::domain("series tolerance", value, "rel_tol >= 0"));
+    }
     let mut acc = CompSum::new(p);
     let mut total = T::zero(p);
     let mut still_run = 0;
     let mut last_rel = T::one(p);
     for k in 0..max_terms {
         let t = gen(k);
-        term_check(&t)?;
+        check_finite("series term", &t)?;
         let nonzero = !t.is_zero();
         acc.add(t.clone());
         let new_total = acc.total();
@@ -89,7 +77,7 @@ where
         };
         total = new_total;
         let bound = tail(k, &t, &total);
-        crate::scalar::check_finite("series tail bound", &bound)?;
+        check_finite("series tail bound", &bound)?;
         last_rel = rel(&bound, &total);
         if bound.abs() <= rel_tol.clone() * &total.clone().abs() || still_run >= 2 {
             return Ok(SeriesSum {

@@ -1,26 +1,15 @@
-//! Work on every core, in two forms, run by the calling thread together with the threads of a
-//! pool of this module's own ([`helpers`]: one thread fewer than the cores, started on first
-//! use and kept for the process, since starting threads for each loop costs about as much as a
-//! loop's share at 512 bits):
+//! Work on every core, run by the calling thread together with a pool of this module's own
+//! ([`helpers`], one thread fewer than the cores, kept for the process); `docs/design.md`
+//! ("Dependencies", `rayon`) says why the pool is shaped so:
 //!
 //! * [`map_on_threads`]: `f(0) … f(m − 1)` in interleaved shares, for the one-time work of a
-//!   precision — the nodes of a Gauss–Legendre rule (`numerics::gauss_legendre`) and the
-//!   e^{±x} tables of the sinh-mapped panels (`routes::graded`) — whenever there are at least
+//!   precision (the nodes of a Gauss–Legendre rule, the graded routes' e^{±x} tables), at least
 //!   [`MIN_ITEMS_A_SHARE`] items a core.
-//! * [`for_shares`] with [`shares`]: the node loops of the fixed-rule and graded routes (the
-//!   k-independent set-up, the integrand values of an evaluation, their chunk sums) cut into
-//!   contiguous shares, above [`PARALLEL_ABOVE_BITS`] only (below it handing shares to another
-//!   thread costs about what it saves: docs/calibration.md), and never on a thread of a `rayon`
-//!   pool (a sweep of several blocks already runs them on every core: a solve inside it keeps
-//!   its loops on its own thread; a sweep of one block runs it on the caller's thread).
-//!
-//! The calling thread never takes other work while it waits for the helpers, and on a thread of
-//! any `rayon` pool the one-time work runs on scoped threads instead: a rule or a layout is often
-//! built inside a `OnceLock` initializer (`docs/design.md`, "Many cores", says why both matter).
+//! * [`for_shares`] with [`shares`]: the fixed-rule and graded routes' node loops in contiguous
+//!   shares, above [`PARALLEL_ABOVE_BITS`] only and never on a thread of a `rayon` pool.
 //!
 //! **Same bits on any number of threads.** Each item is computed by the same operations whatever
-//! share it falls in, and sums are formed afterwards in item order, so that a result does not
-//! depend on the number of threads (`tests/high_precision.rs`,
+//! share it falls in, and sums are formed afterwards in item order (`tests/high_precision.rs`,
 //! `node_loops_on_threads_give_the_same_bits`). The threads take the shares from a common list,
 //! so that a share whose thread cannot be started (or starts late) is taken by another.
 //!
@@ -175,14 +164,9 @@ fn helpers() -> Option<&'static rayon::ThreadPool> {
     .as_ref()
 }
 
-/// Runs `job` on the calling thread and on up to `count` − 1 more at once, and returns when
-/// every copy has returned. The jobs take their work from a common list, so the copies that run
-/// do all of it. The other copies go to the [`helpers`]; the calling thread waits for them
-/// without taking other work (it is not a thread of that pool). On a thread of a `rayon` pool
-/// (waiting on another pool there would make it take its own pool's jobs meanwhile, which may
-/// wait on the `OnceLock` this thread is filling) and when the helpers cannot be started, the
-/// copies run on scoped threads started for the call (a copy whose thread cannot be started
-/// is left out).
+/// Runs `job` on the calling thread and on up to `count` − 1 more at once (the [`helpers`], or
+/// scoped threads on a thread of a `rayon` pool or when the helpers cannot be started), and
+/// returns when every copy has returned; the copies take their work from a common list.
 fn on_count(count: usize, job: &(dyn Fn() + Sync)) {
     if rayon::current_thread_index().is_none() {
         if let Some(pool) = helpers() {

@@ -4,20 +4,15 @@
 //! "0.2" is 1/5, the speed's gap 1 − M_R formed exactly), a relative tolerance of any size
 //! ([`RelError`]: 10⁻¹⁰⁰⁰⁰ is fine) and a method, and
 //!
-//! 1. picks the precision from the tolerance's binary exponent (never through an `f64`, which
-//!    would overflow): the inputs are rounded once to the working precision, which perturbs
-//!    I1, I2 by at most [`INPUT_KAPPA`]·ε (each input's rounding moves them by at most a few ε:
-//!    k by ≤ 3ε as I1 ~ k⁻³, the gap by ≤ ε/2 as I2 ~ (1 − M_R²)^{−1/2}, M_R and ν by O(ε)); the
-//!    route gets two thirds of the tolerance and adds at most its bound (16ε for the fixed rule).
-//!    The precision is the lowest of `f64` (53 bits), double-double (106, cheaper than MPFR at
-//!    any precision) and MPFR in steps of 8 bits whose (3/2·16 + κ)·ε meets the tolerance, so
-//!    that the reported estimate lies within a factor 2⁹ of the tolerance instead of paying for
-//!    digits nobody asked for;
-//! 2. runs [`crate::routes::evaluate::integrals`] there with two thirds of the tolerance, and
-//!    accepts the
-//!    result when its estimate plus κε is within the tolerance; otherwise (an adaptive route that
-//!    stopped above it) it moves up by a quarter of the precision and tries again, at most three
-//!    times, before returning [`Error::Unreachable`].
+//! 1. picks the precision from the tolerance's binary exponent (never through an `f64`): the
+//!    inputs are rounded once to it, which perturbs I1, I2 by at most [`INPUT_KAPPA`]·ε (k by
+//!    ≤ 3ε as I1 ~ k⁻³, the gap by ≤ ε/2 as I2 ~ (1 − M_R²)^{−1/2}, M_R and ν by O(ε)), and the
+//!    route gets two thirds of the tolerance and adds at most its bound (16ε for the fixed
+//!    rule): the lowest of `f64`, double-double and MPFR in steps of 8 bits whose
+//!    (3/2·16 + κ)·ε meets the tolerance, so that the estimate lies within 2⁹ of it;
+//! 2. runs [`crate::routes::evaluate::integrals`] there and accepts the result when its
+//!    estimate plus κε is within the tolerance; otherwise it moves up by a quarter of the
+//!    precision, at most three times, before returning [`Error::Unreachable`].
 //!
 //! The returned error estimate bounds the error relative to the exact integrals of the exact
 //! inputs (tested against computations at higher precision in `tests/choose.rs`).
@@ -45,8 +40,7 @@ pub struct ExactInputs {
 pub const INPUT_KAPPA: u32 = 8;
 
 impl ExactInputs {
-    /// Parses decimal (or p/q) text exactly: Poisson's ratio, the speed M_R, the axis ratio k.
-    /// The inputs of (34); exact.
+    /// The inputs of (34) from decimal (or p/q) text, exactly: ν, the speed M_R, the axis ratio k.
     pub fn parse(nu: &str, mr: &str, k: &str) -> Result<ExactInputs> {
         ExactInputs::new(
             decimal_to_rational(nu)?,
@@ -56,8 +50,7 @@ impl ExactInputs {
         )
     }
 
-    /// As [`ExactInputs::parse`] with the speed given by its gap 1 − M_R.
-    /// The inputs of (34); exact.
+    /// [`ExactInputs::parse`] with the speed given by its gap 1 − M_R; the inputs of (34), exact.
     pub fn parse_gap(nu: &str, gap: &str, k: &str) -> Result<ExactInputs> {
         let g = decimal_to_rational(gap)?;
         let text = format!("1 - {}", gap.trim());
@@ -69,8 +62,7 @@ impl ExactInputs {
         )
     }
 
-    /// The exact values of three `f64` (NaN and ∞ are typed errors).
-    /// The inputs of (34); exact.
+    /// The exact values of three `f64` (NaN and ∞ are typed errors). The inputs of (34); exact.
     pub fn from_f64(nu: f64, mr: f64, k: f64) -> Result<ExactInputs> {
         let conv = |name: &'static str, x: f64| {
             Rational::from_f64(x).ok_or_else(|| Error::NotFinite {
@@ -111,18 +103,15 @@ impl ExactInputs {
         })
     }
 
-    /// Poisson's ratio ν.
-    /// An input of (34); exact.
+    /// Poisson's ratio ν. An input of (34); exact.
     pub fn nu(&self) -> &Rational {
         &self.nu
     }
-    /// The speed M_R.
-    /// An input of (34); exact.
+    /// The speed M_R. An input of (34); exact.
     pub fn mr(&self) -> &Rational {
         &self.mr
     }
-    /// The axis ratio k.
-    /// An input of (34); exact.
+    /// The axis ratio k. An input of (34); exact.
     pub fn k(&self) -> &Rational {
         &self.k
     }
@@ -277,20 +266,8 @@ fn run_at<T: Real>(
     };
     let r = super::evaluate::integrals(&speed, &k, &opts)?;
     let bits = T::bits(p) + 64;
-    let up = |e: Estimated<T>| {
-        Estimated::new(
-            Mp::from_float(&e.value.to_float(bits), MpPrec::clamped(bits)),
-            e.error.add(kappa),
-        )
-    };
-    Ok(Integrals {
-        i1: up(r.i1),
-        i2: up(r.i2),
-        di1_dk: r.di1_dk.map(up),
-        di2_dk: r.di2_dk.map(up),
-        j0: r.j0.map(up),
-        route: r.route,
-        precision: r.precision,
-        work: r.work,
-    })
+    Ok(r.map(|e| {
+        let value = Mp::from_float(&e.value.to_float(bits), MpPrec::clamped(bits));
+        Estimated::new(value, e.error.add(kappa))
+    }))
 }

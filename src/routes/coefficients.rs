@@ -100,8 +100,7 @@ impl<F: FieldOps> GreenSeries<F> {
         c
     }
 
-    /// The first `n` coefficients c_0 … c_{n−1}.
-    /// The coefficients of (35) by (36), as [`GreenSeries::next_coefficient`].
+    /// The first `n` coefficients c_0 … c_{n−1} of (35), by (36).
     pub fn take(mut self, n: usize) -> Vec<F> {
         (0..n).map(|_| self.next_coefficient()).collect()
     }
@@ -154,8 +153,7 @@ impl<F: Field> SpeedCoefficients<F> {
         self
     }
 
-    /// (h_n, f_n) and advance to n + 1.
-    /// h_n = f_n/M_R^{2n} and f_n of (35) by (36) at x0 = m1, as [`GreenSeries::next_coefficient`].
+    /// (h_n, f_n) = (f_n/M_R^{2n}, f_n) of (35) by (36) at x0 = m1, advancing to n + 1.
     pub fn next_pair(&mut self) -> (F, F) {
         let h = match &self.flush {
             None => self.gen.next_coefficient(),

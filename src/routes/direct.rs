@@ -53,7 +53,6 @@ pub struct DirectSetup<T: Real> {
 }
 
 impl<T: Real> DirectSetup<T> {
-    /// Precomputes the constants.
     /// The constants of (46)–(48) (ε² = 1 − M_R², k², G's constants), each to a few ε.
     pub fn new(speed: &Speed<T>, axes: &AxisRatio<T>) -> Self {
         let p = speed.mr().prec();
@@ -106,16 +105,14 @@ impl<T: Real> DirectSetup<T> {
         self.two_pi.clone() * g * opv2.clone().sqrt() / (one + self.eps2.clone() * v2)
     }
 
-    /// F_L(w), the left-half integrand (see the module docs).
-    /// The integrand of (46)–(47) on α ≤ π/4, w = tan α; a few ε relative (positive terms).
+    /// F_L(w), the integrand of (46)–(47) on α ≤ π/4, w = tan α; a few ε relative.
     pub fn left(&self, w: &T) -> T {
         let n = self.left_node(w);
         let u = &n[3];
         self.left_factor(&n) / (u.clone() * u.clone().sqrt())
     }
 
-    /// F_R(v), the right-half integrand.
-    /// The integrand of (46)–(47) on α ≥ π/4, v = cot α; a few ε relative (positive terms).
+    /// F_R(v), the integrand of (46)–(47) on α ≥ π/4, v = cot α; a few ε relative.
     pub fn right(&self, v: &T) -> T {
         let n = self.right_node(v);
         let h = &n[3];
@@ -378,43 +375,32 @@ fn integrate_halves<T: Real>(
     // subtracted ones, whose accuracy is judged against the whole I2 below.
     let t4 = tol.clone().div_i64(4);
     let rp = s.breakpoints(&s.right_scales(), lim)?;
-    let right = if subtract {
-        integrate_vec(|v: &T| [s.right(v), s.right_subtracted(v)], &rp, &t4, lim)?
-    } else {
-        integrate_vec(
-            |v: &T| {
-                let r = s.right(v);
-                [r.clone(), v.square() * r]
-            },
-            &rp,
-            &t4,
-            lim,
-        )?
+    let right = |v: &T| {
+        let r = s.right(v);
+        let i2 = if subtract {
+            s.right_subtracted(v)
+        } else {
+            v.square() * &r
+        };
+        [r, i2]
     };
+    let right = integrate_vec(right, &rp, &t4, lim)?;
     let pole = if subtract { None } else { s.left_pole() };
     let left = match pole {
         Some(pole) => left_pair_without_pole(s, &pole, &t4, lim)?,
         None => {
             // The left half's panels about ε only where the pole stays in the integrand.
             let lp = s.breakpoints(&s.left_scales(false), lim)?;
-            if subtract {
-                integrate_vec(
-                    |w: &T| [s.left(w) * w.square(), s.left_subtracted(w)],
-                    &lp,
-                    &t4,
-                    lim,
-                )?
-            } else {
-                integrate_vec(
-                    |w: &T| {
-                        let l = s.left(w);
-                        [l.clone() * w.square(), l]
-                    },
-                    &lp,
-                    &t4,
-                    lim,
-                )?
-            }
+            let left = |w: &T| {
+                let l = s.left(w);
+                let i2 = if subtract {
+                    s.left_subtracted(w)
+                } else {
+                    l.clone()
+                };
+                [l * w.square(), i2]
+            };
+            integrate_vec(left, &lp, &t4, lim)?
         }
     };
     let i1 = left.values[0].clone() + &right.values[0];
@@ -494,8 +480,7 @@ pub fn s_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T
     Ok(first + second)
 }
 
-/// I1, I2 with I2 by the subtraction (48) and S by (53); I1 by quadrature of (46). Valid where
-/// (53) is (k ≤ 1). Same tolerance semantics as [`quadrature`].
+/// I1 by quadrature of (46), I2 by the subtraction (48) with S by (53); k ≤ 1, as [`quadrature`].
 pub fn subtracted<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,
@@ -507,17 +492,12 @@ pub fn subtracted<T: Real>(
     integrate_halves(&s, true, tol, Route::AdaptiveSubtracted, Some(sing))
 }
 
-/// The five integrals the contact solution needs, at one (material, speed, axis ratio), in the
-/// normalisation of (37): I1, I2 (34), J0 = ∫_0^π g(V sin φ)/(k² cos²φ + sin²φ)^{1/2} dφ (the
-/// integral of (28)₁/(32) for the approach d0), and ∂I1/∂k, ∂I2/∂k (differentiated under the
-/// integral sign: ∂/∂k (cos²α + k² sin²α)^{−3/2} = −3k sin²α (…)^{−5/2}),
-/// by adaptive vector quadrature in the variables of the module docs (one
-/// evaluation of G per node serves all five integrals); relative tolerance `tol` (0: the
-/// precision's floor). The left half's Rayleigh pole is taken out in closed form where
-/// ε ≤ 1/2 and kε ≤ 1/2 (module docs), so its panels are not graded about ε and the work does
-/// not grow with log(1/(1 − M_R)); the right half is graded about k, so the work grows like
-/// |log k| for small k. Accuracy as [`quadrature`]; J0 within 16ε of mpmath and of its own
-/// bound (`tests/unit/direct.rs`).
+/// The five integrals the contact solution needs, in the normalisation of (37): I1, I2 (34),
+/// J0 of (32) and ∂I1/∂k, ∂I2/∂k (differentiated under the integral sign:
+/// ∂/∂k (cos²α + k² sin²α)^{−3/2} = −3k sin²α (…)^{−5/2}), by one adaptive vector quadrature
+/// (one evaluation of G a node serves all five) to relative tolerance `tol` (0: the precision's
+/// floor), the pole and the panels as in [`quadrature`]. Accuracy as [`quadrature`]; J0 within
+/// 16ε of mpmath and of its own bound (`tests/unit/direct.rs`).
 pub fn contact_integrals<T: Real>(
     speed: &Speed<T>,
     axes: &AxisRatio<T>,

@@ -6,7 +6,7 @@
 //! than 64 bits too wide (`f64` → double-double), MPFR at exactly `bits + g` otherwise.
 
 use crate::error::Result;
-use crate::scalar::{Field, Mp, MpPrec, Real};
+use crate::scalar::{Mp, MpPrec, Real};
 
 /// A computation that can run at any guarded precision `W` and be rounded back to `T`.
 pub(crate) trait GuardedJob<T: Real> {
@@ -60,9 +60,4 @@ pub(crate) fn ceil_log2(x: f64) -> u32 {
     } else {
         0
     }
-}
-
-/// A precision token's zero, used to pre-fill tables.
-pub(crate) fn zeros<W: Field>(n: usize, p: W::Prec) -> Vec<W> {
-    vec![W::zero(p); n]
 }

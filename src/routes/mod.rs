@@ -1,17 +1,9 @@
 //! The routes to the integrals I1, I2 of (34) that fix the contact ellipse's shape (33):
 //! the series of section 5 and the direct and singularity-subtracted quadratures of sections 6–7.
 //!
-//! **Normalisation.** Every route returns I1, I2 in the normalisation of (37), i.e. with
-//! g = −πΓ (g(0) = f0 = 1 − ν) in place of −Γ: π times the paper's (34),
-//!
-//! ```text
-//! I1 = ∫_0^π g(V sin φ) cos²φ / (k² cos²φ + sin²φ)^{3/2} dφ = 2 ∫_0^{π/2} g(V cos α) sin²α / Δ³ dα,
-//! I2 = ∫_0^π g(V sin φ) sin²φ / (k² cos²φ + sin²φ)^{3/2} dφ = 2 ∫_0^{π/2} g(V cos α) cos²α / Δ³ dα,
-//! ```
-//!
-//! with Δ² = 1 − e² sin²α = cos²α + k² sin²α, e² = 1 − k² (negative when k > 1), so that in the
-//! static limit I1 = 2(1 − ν)(E/k² − K)/e² and I2 = 2(1 − ν)(K − E)/e² (43), and A1/B1 = I2/I1 (33).
-//! (The paper's (35) expands −πΓ, not Γ: `docs/errata.md` #3.)
+//! **Normalisation.** Every route returns I1, I2 in the normalisation of (37), with g = −πΓ in
+//! place of −Γ: π times the paper's (34) (`docs/theory.md`, "Conventions"; `docs/errata.md` #3),
+//! with Δ² = cos²α + k² sin²α and e² = 1 − k² (negative when k > 1).
 //!
 //! The series route: [`coefficients`] (f_n of (35)–(36)), [`moments`] (L_n, M_n of (39)–(42)),
 //! [`series`] (I1, I2 by (37) with truncation control); findings in `docs/series.md`.
@@ -85,8 +77,7 @@ pub enum Route {
     Series,
     /// Adaptive Gauss–Legendre quadrature of (46)–(47) on geometrically graded panels.
     Adaptive,
-    /// (46) by adaptive quadrature, (47) by the subtraction (48) with S in closed form (53);
-    /// k ≤ 1.
+    /// (46) by adaptive quadrature, (47) by the subtraction (48) with S in closed form (53); k ≤ 1.
     AdaptiveSubtracted,
     /// Fixed Gauss–Legendre rules after the Rayleigh pole and the peak of Δ⁻³ are taken out in
     /// closed form (the fast route); 0 < k ≤ 1.
@@ -151,8 +142,7 @@ impl Method {
         Method::Fixed,
     ];
 
-    /// `auto`, `series`, `adaptive`, `adaptive-subtracted` or `fixed`.
-    /// Names a route for (34); exact.
+    /// The route for (34) by name: `auto`, `series`, `adaptive`, `adaptive-subtracted`, `fixed`.
     pub fn label(&self) -> &'static str {
         match self {
             Method::Auto => "auto",
@@ -163,8 +153,7 @@ impl Method {
         }
     }
 
-    /// Parses a label of [`Method::label`].
-    /// Names a route for (34); exact.
+    /// Parses a label of [`Method::label`]. Names a route for (34); exact.
     pub fn parse(s: &str) -> Result<Method> {
         Method::ALL
             .into_iter()
@@ -212,15 +201,19 @@ impl Integrals<crate::scalar::Mp> {
     /// exact (each value is representable in `T`), the bounds unchanged.
     pub fn narrow<T: Real>(self, p: T::Prec) -> Integrals<T> {
         let bits = T::bits(p) + 64;
-        let down = |e: Estimated<crate::scalar::Mp>| {
-            Estimated::new(T::from_float(&e.value.to_float(bits), p), e.error)
-        };
+        self.map(|e| Estimated::new(T::from_float(&e.value.to_float(bits), p), e.error))
+    }
+}
+
+impl<T: Real> Integrals<T> {
+    /// Every value with its bound converted by `g`; the route, precision and work kept.
+    pub(crate) fn map<U: Real>(self, g: impl Fn(Estimated<T>) -> Estimated<U>) -> Integrals<U> {
         Integrals {
-            i1: down(self.i1),
-            i2: down(self.i2),
-            di1_dk: self.di1_dk.map(down),
-            di2_dk: self.di2_dk.map(down),
-            j0: self.j0.map(down),
+            i1: g(self.i1),
+            i2: g(self.i2),
+            di1_dk: self.di1_dk.map(&g),
+            di2_dk: self.di2_dk.map(&g),
+            j0: self.j0.map(&g),
             route: self.route,
             precision: self.precision,
             work: self.work,
@@ -229,8 +222,7 @@ impl Integrals<crate::scalar::Mp> {
 }
 
 impl<T: Real> Evaluation<T> {
-    /// I1, I2 with an error estimate, nothing else.
-    /// I1, I2 of (34) as a route computed them.
+    /// I1, I2 of (34) as a route computed them, with an error estimate and nothing else.
     pub fn pair(i1: T, i2: T, error_estimate: T, route: Route, work: usize) -> Self {
         let z = T::zero(i1.prec());
         Evaluation {
@@ -279,16 +271,14 @@ impl<T: Real> Evaluation<T> {
         })
     }
 
-    /// ∂I1/∂k (zero when not computed).
-    /// The k-derivative of (34) as the route computed it, within its stated bound.
+    /// ∂I1/∂k of (34) as the route computed it (zero when not computed).
     pub fn di1_dk(&self) -> T {
         self.dk
             .as_ref()
             .map_or_else(|| T::zero(self.i1.prec()), |d| d[0].clone())
     }
 
-    /// ∂I2/∂k (zero when not computed).
-    /// The k-derivative of (34) as the route computed it, within its stated bound.
+    /// ∂I2/∂k of (34) as the route computed it (zero when not computed).
     pub fn di2_dk(&self) -> T {
         self.dk
             .as_ref()
@@ -390,15 +380,9 @@ pub(crate) fn beyond_exponent_range<T: Real>(k: &T) -> Error {
 /// ([`integrals_to_tolerance`] tries the next precision on it).
 pub(crate) const BEYOND_EXPONENT_RANGE: &str = "a k whose integrals stay within the working type's exponent range at this speed (a value overflowed or vanished; MPFR's exponent range is wider)";
 
-/// J0 of (32) from I1 and I2 of (34) at the same axis ratio k (normalisation of (37)): the
-/// integrands of I1 and I2 weighted by k² and 1 add up to J0's, since
-/// (k² cos²φ + sin²φ)/(k² cos²φ + sin²φ)^{3/2} = (k² cos²φ + sin²φ)^{−1/2}, so that
-///
-/// ```text
-/// J0 = k² I1 + I2.
-/// ```
-///
-/// Formed as k·(k·I1) + I2, whose intermediates stay within the working type wherever I1, I2
+/// J0 of (32) from I1 and I2 of (34) at the same axis ratio k (normalisation of (37)):
+/// J0 = k² I1 + I2 (`docs/theory.md`, "Galin's theorem and the Hertz relations"), formed as
+/// k·(k·I1) + I2, whose intermediates stay within the working type wherever I1, I2
 /// and 1/k do (I1 ≈ 2(1 − ν)/k² as k → 0). Below the Rayleigh speed g > 0, so I1 and I2 are
 /// positive and J0's relative error is at most the larger q of theirs compounded with the three
 /// roundings (k·I1, k·(k·I1), the sum; k is exact): (1 + q)(1 + γ3) − 1 = q + γ3 + q·γ3 with
@@ -442,58 +426,5 @@ pub struct Integrals<T: Real> {
 }
 
 #[cfg(test)]
-mod j0_rounding_tests {
-    use super::j0_from_pair;
-    use crate::estimate::RelError;
-    use crate::scalar::{Dd, Real};
-    use rug::Float;
-
-    /// J0 = k·(k·I1) + I2 from exact I1, I2 (pair error 0) against the same sum in exact
-    /// arithmetic, over pseudo-random positive operands of every scale: every error within the
-    /// counted bound γ3, and some error above `least`·γ3: at `f64` above γ3/3 (0.75ε against
-    /// 1.5ε), so that a count of one rounding would fail; at double-double, whose worst case of
-    /// an operation (1.625ε, [`Real::ROUNDING`]) three operations do not reach together, above
-    /// γ3/8 (0.86ε against 4.9ε).
-    fn check<T: Real>(p: T::Prec, label: &str, least: f64) {
-        let bits = T::bits(p);
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let mut worst = 0.0f64;
-        let bound = RelError::rounding::<T>(3.0, p).to_f64();
-        for _ in 0..20_000 {
-            // Operands carrying all of `bits` (a sum of two f64 at double-double).
-            let mut draw = |scale: f64| {
-                let hi = T::from_f64((1.0 + next()) * scale, p);
-                hi.clone() + &T::from_f64(next() * scale * f64::EPSILON, p)
-            };
-            let (k, i1, i2) = (draw(1.0), draw(2f64.powi(-3)), draw(1.0));
-            let got = j0_from_pair(&k, &i1, &i2, RelError::ZERO);
-            let x = |v: &T| v.to_float(bits);
-            let exact = Float::with_val(4 * bits, x(&k) * x(&k)) * x(&i1) + x(&i2);
-            let err = (Float::with_val(4 * bits, x(&got.value) - &exact) / &exact).abs();
-            let err = err.to_f64();
-            assert!(
-                err <= got.error.to_f64(),
-                "{label}: {err:e} above {}",
-                got.error
-            );
-            worst = worst.max(err);
-        }
-        println!("{label}: J0's rounding, worst {worst:.3e} against γ3 = {bound:.3e}");
-        assert!(
-            worst > bound * least,
-            "{label}: γ3 loose: {worst:e} against {bound:e}"
-        );
-    }
-
-    #[test]
-    fn j0_rounding_is_within_its_count() {
-        check::<f64>((), "f64", 1.0 / 3.0);
-        check::<Dd>((), "dd", 1.0 / 8.0);
-    }
-}
+#[path = "../../tests/unit/j0_rounding.rs"]
+mod j0_rounding_tests;

@@ -13,7 +13,7 @@
 //! [`KeForm`] runs (40) on the coefficients of K and E, exactly over `rug::Rational`;
 //! [`ke_condition_bits`] is the condition number of any evaluation in that basis.
 
-use super::guard::{ceil_log2, run_guarded, zeros, GuardedJob};
+use super::guard::{ceil_log2, run_guarded, GuardedJob};
 use crate::error::{Error, Result};
 use crate::numerics::elliptic::{ellipbd_mc, ellipke_mc};
 use crate::numerics::series::sum_series_with_tail;
@@ -30,8 +30,7 @@ pub(crate) const MAX_TOP_TERMS: usize = 20_000_000;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum MomentMethod {
-    /// The paper's forward recursion (40) from the starting values (42) (via cel).
-    /// Stable for e² > 1/2 only.
+    /// The forward recursion (40) from (42) (via cel); stable for e² > 1/2 only.
     Forward,
     /// Backward recursion (40) from top values by the hypergeometric series in e²
     /// (|e²| < 1; stable for e² < 1/2).
@@ -42,8 +41,7 @@ pub enum MomentMethod {
 }
 
 impl MomentMethod {
-    /// `forward`, `backward-gauss`, `backward-pfaff`.
-    /// Names a method for (40); exact.
+    /// `forward`, `backward-gauss`, `backward-pfaff`. Names a method for (40); exact.
     pub fn label(&self) -> &'static str {
         match self {
             MomentMethod::Forward => "forward",
@@ -156,8 +154,7 @@ pub struct Moments<T> {
 }
 
 impl<T> Moments<T> {
-    /// The largest n of D_n (the table of M and L goes one further).
-    /// The top index of (38)–(41); exact.
+    /// The largest n of D_n, the top index of (38)–(41) (the table of M and L goes one further).
     pub fn n_max(&self) -> usize {
         self.d.len() - 1
     }
@@ -208,13 +205,11 @@ pub fn moments<T: Real>(mc: &T, n_max: usize) -> Result<Moments<T>> {
 /// working precision itself, as the paper's recursion would run). D_n is formed before the final
 /// rounding.
 ///
-/// Accuracy: as analysed in `docs/series.md` — stable methods hold a few ε·n before guarding;
-/// [`MomentMethod::Forward`] for e² < 1/2 loses log₂|k²/e²| bits per step.
+/// Implements (38)–(42). Accuracy (`docs/series.md`): stable methods hold a few ε·n before
+/// guarding; [`MomentMethod::Forward`] for e² < 1/2 loses log₂|k²/e²| bits per step.
 ///
 /// Errors: as [`moments`]; also [`Error::Domain`] for the forward recursion at e² = 0 (it divides
 /// by e²), for Gauss top values with |e²| ≥ 1 and Pfaff top values with e² ≥ 1/2 (divergent).
-/// Implements (38)–(42); accuracy: [`moments`] for the default method, docs/series.md for the
-/// others.
 pub fn moments_with<T: Real>(
     mc: &T,
     n_max: usize,
@@ -334,8 +329,7 @@ pub(crate) fn table_at<W: Real>(mc: &W, top: usize, method: MomentMethod) -> Res
     let top = top.max(1);
     let e2 = W::one(p) - mc;
     let c = e2.clone() - mc; // 2e² − 1
-    let mut m = zeros::<W>(top + 1, p);
-    let mut l = zeros::<W>(top + 1, p);
+    let (mut m, mut l) = (vec![W::zero(p); top + 1], vec![W::zero(p); top + 1]);
     match method {
         MomentMethod::Forward => {
             if e2.is_zero() {
@@ -474,18 +468,9 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
             }
             // Term ratios e²(2j+1)²/(4(j+1)(n+1+j)) and e²(2j+3)(2j+1)/(4(j+1)(n+1+j)),
             // both at most |e²|.
-            let (sm, jm) = hyper_sum(
-                e2,
-                |j| (2 * j + 1) * (2 * j + 1),
-                |j| 4 * (j + 1) * (ni + 1 + j),
-                |_| a.clone(),
-            )?;
-            let (sl, jl) = hyper_sum(
-                e2,
-                |j| (2 * j + 3) * (2 * j + 1),
-                |j| 4 * (j + 1) * (ni + 1 + j),
-                |_| a.clone(),
-            )?;
+            let (den, bound) = (|j: i64| 4 * (j + 1) * (ni + 1 + j), |_: i64| a.clone());
+            let (sm, jm) = hyper_sum(e2, |j| (2 * j + 1) * (2 * j + 1), den, bound)?;
+            let (sl, jl) = hyper_sum(e2, |j| (2 * j + 3) * (2 * j + 1), den, bound)?;
             Ok((wn.clone() * sm, wn * sl, jm.max(jl)))
         }
         MomentMethod::BackwardPfaff => {
@@ -507,18 +492,10 @@ fn top_values<W: Real>(e2: &W, mc: &W, n: usize, method: MomentMethod) -> Result
             check_top_terms(2f64.powf(-rho), bits)?;
             // Ratios t(2j+1)(2n+2j+1)/(4(j+1)(n+j+1)) ≤ |t| and
             // t(2j+3)(2n+2j+1)/(4(j+1)(n+j+1)) ≤ |t|(2j+3)/(2j+2) (decreasing in j).
-            let (sm, jm) = hyper_sum(
-                &t,
-                |j| (2 * j + 1) * (2 * ni + 2 * j + 1),
-                |j| 4 * (j + 1) * (ni + j + 1),
-                |_| a.clone(),
-            )?;
-            let (sl, jl) = hyper_sum(
-                &t,
-                |j| (2 * j + 3) * (2 * ni + 2 * j + 1),
-                |j| 4 * (j + 1) * (ni + j + 1),
-                |j| (a.clone().mul_i64(2 * j + 3)).div_i64(2 * j + 2),
-            )?;
+            let (den, bound) = (|j: i64| 4 * (j + 1) * (ni + j + 1), |_: i64| a.clone());
+            let (sm, jm) = hyper_sum(&t, |j| (2 * j + 1) * (2 * ni + 2 * j + 1), den, bound)?;
+            let later = |j: i64| (a.clone().mul_i64(2 * j + 3)).div_i64(2 * j + 2);
+            let (sl, jl) = hyper_sum(&t, |j| (2 * j + 3) * (2 * ni + 2 * j + 1), den, later)?;
             let k = mc.clone().sqrt();
             let m = wn.clone() * sm / &k;
             let l = wn * sl / (k * mc);
@@ -590,14 +567,12 @@ impl<F: FieldOps> KeForm<F> {
         })
     }
 
-    /// e² = 1 − k².
-    /// e² of (41); exact over an exact field, one rounding otherwise.
+    /// e² = 1 − k² of (41): exact over an exact field, one rounding otherwise.
     pub fn e2(&self) -> &F {
         &self.e2
     }
 
-    /// The coefficients of index n (0, 1, 2, … on successive calls).
-    /// One step of (40) on the coefficients of (42); exact over an exact field.
+    /// The coefficients of index n = 0, 1, 2, … by (40) from (42); exact over an exact field.
     pub fn next_term(&mut self) -> KeTerm<F> {
         let n = self.n;
         self.n += 1;

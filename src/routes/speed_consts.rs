@@ -72,9 +72,7 @@ impl<T: Real> SpeedConsts<T> {
             g0,
         }
     }
-}
 
-impl<T: Real> SpeedConsts<T> {
     /// The Rayleigh pole's strength at the axis ratio with k² = `k2` (k²ε² < 1): a0 = a(−ε²) =
     /// g0 (1 − k²ε²)^{−3/2}, and e0 = ε² a0/(1 − k²ε²), the pole value of the left integrand's
     /// k-derivative divided by 3k (module docs). Zero for both at M_R = 0. A few ε.

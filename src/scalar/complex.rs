@@ -100,22 +100,10 @@ impl<'r, T: Real> Add<&'r Complex<T>> for Complex<T> {
         Complex::new(self.re + &b.re, self.im + &b.im)
     }
 }
-impl<T: Real> Add for Complex<T> {
-    type Output = Complex<T>;
-    fn add(self, b: Complex<T>) -> Self {
-        self + &b
-    }
-}
 impl<'r, T: Real> Sub<&'r Complex<T>> for Complex<T> {
     type Output = Complex<T>;
     fn sub(self, b: &'r Complex<T>) -> Self {
         Complex::new(self.re - &b.re, self.im - &b.im)
-    }
-}
-impl<T: Real> Sub for Complex<T> {
-    type Output = Complex<T>;
-    fn sub(self, b: Complex<T>) -> Self {
-        self - &b
     }
 }
 impl<'r, T: Real> Mul<&'r Complex<T>> for Complex<T> {
@@ -124,12 +112,6 @@ impl<'r, T: Real> Mul<&'r Complex<T>> for Complex<T> {
         let re = self.re.clone() * &b.re - self.im.clone() * &b.im;
         let im = self.re * &b.im + self.im * &b.re;
         Complex::new(re, im)
-    }
-}
-impl<T: Real> Mul for Complex<T> {
-    type Output = Complex<T>;
-    fn mul(self, b: Complex<T>) -> Self {
-        self * &b
     }
 }
 impl<'r, T: Real> Div<&'r Complex<T>> for Complex<T> {
@@ -151,9 +133,17 @@ impl<'r, T: Real> Div<&'r Complex<T>> for Complex<T> {
         }
     }
 }
-impl<T: Real> Div for Complex<T> {
-    type Output = Complex<T>;
-    fn div(self, b: Complex<T>) -> Self {
-        self / &b
-    }
+
+/// The by-value operators, through the by-reference ones above.
+macro_rules! by_value {
+    ($($Tr:ident $m:ident),*) => {$(
+        impl<T: Real> $Tr for Complex<T> {
+            type Output = Complex<T>;
+            fn $m(self, b: Complex<T>) -> Self {
+                self.$m(&b)
+            }
+        }
+    )*};
 }
+
+by_value!(Add add, Sub sub, Mul mul, Div div);

@@ -191,13 +191,10 @@ pub trait Real: Field {
         None
     }
     /// The worst relative error of one operation (`+ − × ÷`, `sqrt`, `cbrt`, a rounding from
-    /// [`Real::Wide`]), in units of [`Real::epsilon`]: the unit every error bound that counts
-    /// operations multiplies (through `RelError::rounding`). 1/2 for a correctly rounded type
-    /// rounding to nearest (`f64`'s arithmetic and square root, MPFR's every operation); for
-    /// double-double the measured worst over its operations (`docs/design.md`, the table of
-    /// `tests/dd_accuracy.rs`: mul 3.235·2⁻¹⁰⁶, so 1.625ε). `f64`'s `cbrt` comes from the system's
-    /// libm and is not counted with it: the closed forms take their cube roots from
-    /// [`Real::Wide`].
+    /// [`Real::Wide`]) in units of [`Real::epsilon`], which every error bound that counts
+    /// operations multiplies (`RelError::rounding`): 1/2 for `f64` and MPFR, 1.625 for
+    /// double-double (`docs/design.md`, "Rounding unit"). `f64`'s libm `cbrt` is not counted:
+    /// the closed forms take their cube roots from [`Real::Wide`].
     const ROUNDING: f64;
     /// Machine epsilon `2^(1 - bits)` at precision `p`: the unit every tolerance is built from.
     fn epsilon(p: Self::Prec) -> Self {
@@ -240,29 +237,23 @@ pub trait Real: Field {
     fn round(self) -> Self;
     /// Square root (NaN for negative input).
     fn sqrt(self) -> Self;
-    /// 1/√x (NaN for negative input, +∞ at 0). The default is `sqrt` then `recip` (f64: two
-    /// correctly rounded operations, ≤ 1 ulp); double-double refines the f64 value by one
-    /// third-order Newton step without a double-double division (≤ 4·2⁻¹⁰⁶ measured,
-    /// `tests/dd_accuracy.rs`); MPFR's `mpfr_rec_sqrt` is correctly rounded.
+    /// 1/√x (NaN for negative input, +∞ at 0): `sqrt` then `recip` by default (≤ 1 ulp at
+    /// `f64`); MPFR's is correctly rounded, double-double's as `docs/design.md` measures it.
     fn recip_sqrt(self) -> Self {
         self.sqrt().recip()
     }
-    /// √self / b, the form of G's factors in (45). The default is one square root and one
-    /// division; double-double forms self·(self·b²)^{−1/2} with [`Real::recip_sqrt`] (no
-    /// double-double division; ≤ 4.3·2⁻¹⁰⁶ measured, `tests/dd_accuracy.rs`).
+    /// √self / b, the form of G's factors in (45): one square root and one division by default,
+    /// no division at double-double (`docs/design.md`, "Kernel powers without a division").
     fn sqrt_div(self, b: &Self) -> Self {
         self.sqrt() / b
     }
-    /// x^{−3/2}, the kernel power of (34) (u^{−3/2}, Δ⁻³). The default is 1/(x·√x): at `f64`
-    /// and MPFR one square root, one product and one division; double-double forms y³ from
-    /// y = [`Real::recip_sqrt`] instead (no double-double division; ≤ 12·2⁻¹⁰⁶ measured, mean
-    /// 1.4·2⁻¹⁰⁶: the cube triples y's error).
+    /// x^{−3/2}, the kernel power of (34) (u^{−3/2}, Δ⁻³): 1/(x·√x) by default, y³ from
+    /// y = [`Real::recip_sqrt`] at double-double (accuracy in `docs/design.md`).
     fn pow_m3_2(self) -> Self {
         (self.clone() * self.sqrt()).recip()
     }
-    /// (x^{−3/2}, x^{−5/2}), the kernel powers of (34) and of its k-derivative. The default is
-    /// v = 1/(x²·√x) and (v·x, v); double-double forms (y³, y⁵) from y = [`Real::recip_sqrt`]
-    /// (x^{−5/2} ≤ 20·2⁻¹⁰⁶ measured, mean 2.3·2⁻¹⁰⁶).
+    /// (x^{−3/2}, x^{−5/2}), the kernel powers of (34) and of its k-derivative: v = 1/(x²·√x)
+    /// and (v·x, v) by default, (y³, y⁵) at double-double (accuracy in `docs/design.md`).
     fn pow_m3_2_m5_2(self) -> (Self, Self) {
         let v = (self.clone() * &self * self.clone().sqrt()).recip();
         (v.clone() * self, v)
@@ -476,8 +467,7 @@ pub fn short<T: Real>(x: &T) -> String {
     trim_mantissa(&s)
 }
 
-/// `5.0000000000000000010e-1` → `5.000000000000000001e-1`: trailing zeros of the mantissa
-/// dropped.
+/// `5.0000000000000000010e-1` → `5.000000000000000001e-1`: trailing zeros of the mantissa dropped.
 fn trim_mantissa(s: &str) -> String {
     let (mant, exp) = match s.find('e') {
         Some(i) => (&s[..i], &s[i..]),
