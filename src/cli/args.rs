@@ -6,6 +6,7 @@
 //! (checked exactly, the gap 1 − M_R formed exactly), every other quantity to `T::parse`, so
 //! that the library's messages quote the text as typed and nothing is rounded through an `f64`.
 
+use super::output::Obj;
 use super::CliError;
 use moving_hertz::numerics::quadrature::MAX_RULE_BITS;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
@@ -167,30 +168,18 @@ impl MaterialSpeed {
         }
     }
 
-    /// ν and the speed as typed, for the JSON `inputs`.
-    pub fn json(&self) -> GivenSpeed<'_> {
-        GivenSpeed {
-            nu: &self.nu.text,
-            speed: text_of(&self.speed.speed),
-            gap: text_of(&self.speed.gap),
-        }
+    /// ν and the speed as typed: the JSON `inputs`' `nu`, and `speed` or `gap` (neither where
+    /// the speed was given otherwise, as by `contact --velocity`).
+    pub fn json(&self) -> Obj {
+        (Obj::default().put("nu", self.nu.text.as_str()))
+            .opt("speed", text_of(&self.speed.speed))
+            .opt("gap", text_of(&self.speed.gap))
     }
 }
 
 /// The text of an optional decimal option, as typed.
 pub fn text_of(d: &Option<Decimal>) -> Option<&str> {
     d.as_ref().map(|d| d.text.as_str())
-}
-
-/// ν and the speed as typed: the JSON `inputs`' `nu`, and `speed` or `gap` (neither where the
-/// speed was given otherwise, as by `contact --velocity`).
-#[derive(serde::Serialize)]
-pub struct GivenSpeed<'a> {
-    nu: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    speed: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    gap: Option<&'a str>,
 }
 
 /// A positive quantity (a ratio, a radius, a load, a modulus) rounded once to precision `p`
