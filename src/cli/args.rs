@@ -9,6 +9,7 @@
 use super::output::Obj;
 use super::CliError;
 use moving_hertz::numerics::quadrature::MAX_RULE_BITS;
+use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
 use moving_hertz::{Material, Method, MpPrec, Speed};
 use rug::Rational;
@@ -196,7 +197,7 @@ pub fn positive<T: Real>(
     positive_by(arg, option, what, p, arg.text.contains('/'))
 }
 
-/// [`positive`] and [`positive_exact`]: the domain check, the one rounding (from `arg.exact`
+/// [`positive`] and [`mu_from_youngs`]: the domain check, the one rounding (from `arg.exact`
 /// when `from_exact`, else by `T::parse` of the text) and the check that the rounded value is
 /// a normal number of the working precision.
 fn positive_by<T: Real>(
@@ -307,14 +308,14 @@ impl OutDir {
     }
 }
 
-/// A positive quantity formed exactly from the inputs (μ = E/(2(1 + ν)) of `contact
-/// --youngs-modulus`), rounded once from `arg.exact` to precision `p`; refused as
-/// [`positive`] refuses, naming `option` and quoting `arg.text` (the input it came from).
-pub fn positive_exact<T: Real>(
-    arg: &Decimal,
-    option: &str,
-    what: &str,
-    p: T::Prec,
-) -> Result<T, CliError> {
-    positive_by(arg, option, what, p, true)
+/// μ = E/(2(1 + ν)) formed exactly from Young's modulus `e` (of `--youngs-modulus`) and ν,
+/// rounded once to precision `p`; refused as [`positive`] refuses, quoting E as typed.
+pub fn mu_from_youngs<T: Real>(e: &Decimal, nu: &Rational, p: T::Prec) -> Result<T, CliError> {
+    let exact = shear_from_youngs(&e.exact, nu);
+    let mu = Decimal {
+        text: e.text.clone(),
+        exact,
+    };
+    let what = "shear modulus mu = E/(2(1 + nu)) from E";
+    positive_by(&mu, "--youngs-modulus", what, p, true)
 }

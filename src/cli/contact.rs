@@ -3,7 +3,6 @@
 use super::args::{self, Decimal, MaterialSpeed};
 use super::output::{largest, print_json, ran, Obj, OutputArgs, Text};
 use super::CliError;
-use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{
     with_precision, ContactProblem, ContactSolution, Loading, Method, Moduli, Options, Solid, Speed,
@@ -79,7 +78,10 @@ pub fn run(a: &ContactArgs) -> Result<(), CliError> {
         let inputs = [("method", "--method", a.method.label()), ("curvature ratio", "", "")];
         let context = format!("solving the contact at {}", a.precision);
         let sol = problem.solve(&opts).map_err(|e| CliError::from_run(e, &inputs, &context))?;
-        report(a, &sol, solid.as_ref())
+        match a.output.json {
+            true => report_json(a, &sol, solid.as_ref()),
+            false => report_text(a, &sol, solid.as_ref()),
+        }
     })
 }
 
@@ -170,13 +172,7 @@ fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliE
                 );
                 return Err(CliError::value("--youngs-modulus", &e.text, why));
             }
-            // μ = E/(2(1 + ν)) exactly; its text has a '/', so it is rounded from the exact value.
-            let mu = Decimal {
-                text: e.text.clone(),
-                exact: shear_from_youngs(&e.exact, &nu.exact),
-            };
-            let what = "shear modulus mu = E/(2(1 + nu)) from E";
-            args::positive_exact(&mu, "--youngs-modulus", what, p)?
+            args::mu_from_youngs(e, &nu.exact, p)?
         }
         (None, None) => return Err(CliError::Input(MODULUS_REQUIRED.into())),
     };
@@ -188,18 +184,6 @@ type HalfSpace<T> = (Speed<T>, T, Option<Solid<T>>);
 
 const MODULUS_REQUIRED: &str =
     "exactly one of --shear-modulus MU and --youngs-modulus E is required";
-
-/// Prints the solution: one JSON object with `--json`, else the text summary.
-fn report<T: Real>(
-    a: &ContactArgs,
-    sol: &ContactSolution<T>,
-    solid: Option<&Solid<T>>,
-) -> Result<(), CliError> {
-    match a.output.json {
-        true => report_json(a, sol, solid),
-        false => report_text(a, sol, solid),
-    }
-}
 
 /// The solution as one JSON object (docs/cli.md lists its keys).
 fn report_json<T: Real>(

@@ -12,7 +12,6 @@ use super::sweep::{
     LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
 };
 use super::CliError;
-use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
 use moving_hertz::sweep;
 use moving_hertz::{
@@ -245,7 +244,6 @@ impl<T: Real + Send + Sync> Grid<T> {
             return Ok(());
         }
         // μ = E/(2(1 + ν)) exactly at each (ν, E), rounded once, as `contact` forms it.
-        let what = "shear modulus mu = E/(2(1 + nu)) from E";
         let mu: Vec<Result<T, CliError>> = (0..pairs)
             .into_par_iter()
             .map(|j| {
@@ -255,11 +253,11 @@ impl<T: Real + Send + Sync> Grid<T> {
                 );
                 let exact =
                     |t: &str| decimal_to_rational(t).map_err(|err| CliError::value(option, t, err));
-                let mu = Decimal {
+                let e = Decimal {
                     text: e.clone(),
-                    exact: shear_from_youngs(&exact(e)?, &exact(nu)?),
+                    exact: exact(e)?,
                 };
-                args::positive_exact::<T>(&mu, option, what, p)
+                args::mu_from_youngs::<T>(&e, &exact(nu)?, p)
             })
             .collect();
         self.mu = mu.into_iter().collect::<Result<_, _>>()?;
