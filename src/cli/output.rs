@@ -196,3 +196,7 @@ pub fn emit_bytes(text: &[u8]) -> Result<(), CliError> {
         .and_then(|()| out.flush())
         .map_err(|e| CliError::Failed(format!("writing to standard output: {e}")))
 }
+
+#[cfg(test)]
+#[path = "../../tests/unit/cli_output.rs"]
+mod tests;
