@@ -1,6 +1,6 @@
 //! `moving-hertz sweep`: the contact ellipse (33) over every (ν, speed, A1/B1) of three lists or
-//! ranges, by the library's [`sweep::ellipses`] (parallel blocks, shared set-ups,
-//! continuation), written as CSV or JSON lines in input order as the blocks are solved
+//! ranges, by the library's [`sweep::ellipses_at`] at speeds formed once a (ν, speed) pair
+//! (parallel blocks, shared set-ups, continuation), written as CSV or JSON lines in input order as the blocks are solved
 //! ([`pipeline::solve_in_order`]).
 
 use super::args::{self, Decimal};
