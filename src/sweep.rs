@@ -273,13 +273,13 @@ fn worth<T: Real>(points: usize, x: &T) -> usize {
     threads_worth(points, &Precision::of::<T>(x.prec()))
 }
 
-/// The least work, in nanoseconds, worth a thread of its own: starting a thread, waking it and
-/// its first touches of memory cost tens to hundreds of microseconds.
+/// The least work, in nanoseconds, worth a thread of its own ([`threads_worth`]).
 const WORK_PER_THREAD_NS: f64 = 2e6;
 
 /// How many threads a job of `points` sweep points at `precision` keeps busy: its estimated
-/// work over [`WORK_PER_THREAD_NS`], at least 1 (callers take the smaller of this and the pool's
-/// threads). A point's cost is a floor of what a sweep point costs (about 2 µs at `f64`, 20 µs
+/// work over 2 ms (the least work worth a thread of its own: starting, waking and first touches
+/// of memory cost tens to hundreds of microseconds a thread), at least 1 (callers take the
+/// smaller of this and the pool's threads). A point's cost is a floor of what a sweep point costs (about 2 µs at `f64`, 20 µs
 /// at double-double, 100 µs at 128 bits and more above: docs/precision.md). Implements no
 /// equation of the paper.
 pub fn threads_worth(points: usize, precision: &Precision) -> usize {
