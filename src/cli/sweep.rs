@@ -560,7 +560,7 @@ fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError
     let nus = checked_nus(nu, &a.run.precision, p)?;
     let speeds = speed_checked.values::<T>(speed, &a.run.precision, p)?;
     let ratios = RATIO.values::<T>(ratio, &a.run.precision, p)?;
-    let by_gap = std::ptr::eq(speed_checked, &GAP);
+    let by_gap = speed_checked.option == GAP.option;
     let speeds = (speeds.into_iter())
         .map(|(text, sp)| {
             let given = match by_gap {
