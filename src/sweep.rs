@@ -1,35 +1,19 @@
 //! Sweeps: many solves at once — the ellipse (33) over points of (ν, speed, A1/B1), full contact
 //! solutions over a list of problems (or of problems some of which could not be formed:
-//! [`try_contacts`]), and I1, I2 of (34) over a list of axis ratios — returned
-//! in input order, each point with its own result or its own typed error (one bad point never
-//! fails the others).
+//! [`try_contacts`]), and I1, I2 of (34) over a list of axis ratios — returned in input order,
+//! each point with its own result or its own typed error (one bad point never fails the others).
 //!
 //! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points; the
-//! blocks run in parallel (with `rayon`, on its global pool or the pool the caller installs:
-//! every thread of the pool takes the next unsolved block until none is left), the points of a
-//! block one after another; a sweep of one block runs on the calling thread (above 448 bits its
-//! solves then run their node loops on every core, as [`crate::solve_ellipse`] does; in a block
-//! on a pool thread they stay on that thread). A sweep of several blocks called from a thread
-//! outside the pool hands the work to the pool's threads and waits; the cost of that hand-off,
-//! once per call, is the `sweep` bench's `sweep_1_thread_from_outside` (docs/performance.md).
-//! Within a block, consecutive points at the same speed share the fixed rules' set-up (the
-//! Green's function at every node, at each stage of the precision ladder), and each root starts
-//! from its neighbours' (continuation): the lowest stage of the ladder starts from the
-//! extrapolation, in ln k against ln(A1/B1) (or against ln(1 − M_R) along a curve of speeds at
-//! one A1/B1), of up to four earlier roots of the block, and from the static ellipse when that
-//! does not converge within a few evaluations. The higher stages run as in
-//! [`crate::solve_ellipse`], so that the ladder's accuracy is unchanged.
-//! [`ellipses`] forms the speed of each block's points in that block; [`ellipses_at`] takes
-//! speeds the caller formed once, so that one speed serves every block of its points (its fixed
-//! rule's set-up, the grid seed's nodes and the graded route's node values built once a speed
-//! rather than once a block) with the same results.
-//!
-//! **Threads bound to CPUs.** The operating system may run two threads of a pool on one CPU
-//! for milliseconds while another CPU idles, so that a sweep of a few milliseconds gains
-//! nothing from the second thread. A pool whose threads are bound to distinct CPUs
-//! ([`bind_to_cpu`]; the `moving-hertz` binary builds its pool so) does not depend on that
-//! placement. The `sweep` bench measures both (docs/performance.md: `sweep_2_threads` and
-//! `sweep_2_threads_unbound`).
+//! blocks run in parallel on `rayon`'s pool (the global one or the caller's), the points of a
+//! block one after another; a sweep of one block runs on the calling thread. Within a block,
+//! consecutive points at the same speed share the fixed rules' set-up, and each root starts from
+//! the extrapolation, in ln k against ln(A1/B1) (or ln(1 − M_R) along a curve of speeds), of up
+//! to four earlier roots of the block, or from the static ellipse; the higher stages of the
+//! precision ladder run as in [`crate::solve_ellipse`]. [`ellipses`] forms the speed of each
+//! block's points in that block; [`ellipses_at`] takes speeds the caller formed once, so that one
+//! speed's set-ups serve every block of its points. Threads may be bound to CPUs
+//! ([`bind_to_cpu`]). Why and at what cost: docs/design.md, "Many cores", and
+//! docs/performance.md.
 //!
 //! **Reproducibility.** A point's result depends only on its block (never on the number of
 //! threads): a sweep gives the same bits on one thread and on many, and a sweep split at
@@ -172,12 +156,9 @@ pub struct AtSpeed<'s, T: Real> {
 
 /// [`ellipses`] at speeds the caller formed: the same blocks, continuation and results, bit for
 /// bit, as [`ellipses`] gives for the same (ν, speed, A1/B1). A speed shared by many points (the
-/// same one, or clones of it, which share its set-ups and solve cache) serves them in every
-/// block and on every thread: its fixed rule's set-up and the grid seed's nodes are built once
-/// for all of them rather than once a block (what a speed keeps depends on the speed alone,
-/// never on the solve that filled it, so that the results do not depend on which block ran
-/// first). The `sweep` command solves its grid so, a speed kept while its points are being
-/// solved. One result per point, in input order.
+/// same one, or clones of it) serves them in every block and on every thread, its set-ups built
+/// once (what a speed keeps depends on the speed alone, never on which block filled it). One
+/// result per point, in input order.
 /// Implements (33) per point, each within its own bound as [`crate::solve_ellipse`].
 pub fn ellipses_at<T>(points: &[AtSpeed<'_, T>], opts: &Options<T>) -> Vec<Result<Ellipse<T>>>
 where
@@ -292,18 +273,15 @@ fn worth<T: Real>(points: usize, x: &T) -> usize {
     threads_worth(points, &Precision::of::<T>(x.prec()))
 }
 
-/// The least work, in nanoseconds, worth a thread of its own: starting a thread, waking it and
-/// its first touches of memory cost tens to hundreds of microseconds, so that a thread given
-/// less than this slows a job more than it helps.
+/// The least work, in nanoseconds, worth a thread of its own ([`threads_worth`]).
 const WORK_PER_THREAD_NS: f64 = 2e6;
 
 /// How many threads a job of `points` sweep points at `precision` keeps busy: its estimated
-/// work over 2 ms (the least work worth a thread of its own: starting, waking and first
-/// touches of memory cost tens to hundreds of microseconds a thread), at least 1 (callers take the smaller of this and the
-/// pool's threads). The cost of a point is a floor of what a sweep point costs (about 2 µs at
-/// `f64`, 20 µs at double-double, 100 µs at 128 bits and more above: docs/precision.md), so
-/// that a job is never given more threads than it can use. Implements no equation of the
-/// paper.
+/// work over 2 ms (the least work worth a thread of its own: starting, waking and first touches
+/// of memory cost tens to hundreds of microseconds a thread), at least 1 (callers take the
+/// smaller of this and the pool's threads). A point's cost is a floor of what a sweep point costs (about 2 µs at `f64`, 20 µs
+/// at double-double, 100 µs at 128 bits and more above: docs/precision.md). Implements no
+/// equation of the paper.
 pub fn threads_worth(points: usize, precision: &Precision) -> usize {
     let point_ns = match precision {
         Precision::F64 => 2e3,
@@ -315,15 +293,11 @@ pub fn threads_worth(points: usize, precision: &Precision) -> usize {
 }
 
 /// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
-/// share of the output (no copy of the results after the solves). As many copies of the loop
-/// as the pool has threads are spawned at once (a thread busy with other work never has to
-/// take one: copies taken late find no block left), and each copy takes the next unsolved block
-/// from a shared counter until none is left, so that the threads finish within one block of
-/// each other whatever the blocks cost (they differ near the Rayleigh speed and at large k) and
-/// a thread that starts late only takes fewer blocks; no more copies than the job's work is
-/// `worth` ([`threads_worth`]). A
-/// single block runs on the calling thread: there its solves may put their node loops on every
-/// core (above 448 bits, `numerics::shares`), which they never do on a thread of the pool.
+/// share of the output. As many copies of the loop as the pool has threads (no more than the
+/// job is `worth`, [`threads_worth`]) each take the next unsolved block from a shared counter
+/// until none is left, so that the threads finish within one block of each other. A single
+/// block runs on the calling thread, where its solves may share their node loops among the
+/// cores (above 448 bits, `numerics::shares`).
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
     worth: usize,

@@ -6,8 +6,10 @@
 //! (checked exactly, the gap 1 − M_R formed exactly), every other quantity to `T::parse`, so
 //! that the library's messages quote the text as typed and nothing is rounded through an `f64`.
 
+use super::output::Obj;
 use super::CliError;
 use moving_hertz::numerics::quadrature::MAX_RULE_BITS;
+use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
 use moving_hertz::{Material, Method, MpPrec, Speed};
 use rug::Rational;
@@ -167,30 +169,18 @@ impl MaterialSpeed {
         }
     }
 
-    /// ν and the speed as typed, for the JSON `inputs`.
-    pub fn json(&self) -> GivenSpeed<'_> {
-        GivenSpeed {
-            nu: &self.nu.text,
-            speed: text_of(&self.speed.speed),
-            gap: text_of(&self.speed.gap),
-        }
+    /// ν and the speed as typed: the JSON `inputs`' `nu`, and `speed` or `gap` (neither where
+    /// the speed was given otherwise, as by `contact --velocity`).
+    pub fn json(&self) -> Obj {
+        (Obj::default().put("nu", self.nu.text.as_str()))
+            .opt("speed", text_of(&self.speed.speed))
+            .opt("gap", text_of(&self.speed.gap))
     }
 }
 
 /// The text of an optional decimal option, as typed.
 pub fn text_of(d: &Option<Decimal>) -> Option<&str> {
     d.as_ref().map(|d| d.text.as_str())
-}
-
-/// ν and the speed as typed: the JSON `inputs`' `nu`, and `speed` or `gap` (neither where the
-/// speed was given otherwise, as by `contact --velocity`).
-#[derive(serde::Serialize)]
-pub struct GivenSpeed<'a> {
-    nu: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    speed: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    gap: Option<&'a str>,
 }
 
 /// A positive quantity (a ratio, a radius, a load, a modulus) rounded once to precision `p`
@@ -207,7 +197,7 @@ pub fn positive<T: Real>(
     positive_by(arg, option, what, p, arg.text.contains('/'))
 }
 
-/// [`positive`] and [`positive_exact`]: the domain check, the one rounding (from `arg.exact`
+/// [`positive`] and [`mu_from_youngs`]: the domain check, the one rounding (from `arg.exact`
 /// when `from_exact`, else by `T::parse` of the text) and the check that the rounded value is
 /// a normal number of the working precision.
 fn positive_by<T: Real>(
@@ -318,14 +308,14 @@ impl OutDir {
     }
 }
 
-/// A positive quantity formed exactly from the inputs (μ = E/(2(1 + ν)) of `contact
-/// --youngs-modulus`), rounded once from `arg.exact` to precision `p`; refused as
-/// [`positive`] refuses, naming `option` and quoting `arg.text` (the input it came from).
-pub fn positive_exact<T: Real>(
-    arg: &Decimal,
-    option: &str,
-    what: &str,
-    p: T::Prec,
-) -> Result<T, CliError> {
-    positive_by(arg, option, what, p, true)
+/// μ = E/(2(1 + ν)) formed exactly from Young's modulus `e` (of `--youngs-modulus`) and ν,
+/// rounded once to precision `p`; refused as [`positive`] refuses, quoting E as typed.
+pub fn mu_from_youngs<T: Real>(e: &Decimal, nu: &Rational, p: T::Prec) -> Result<T, CliError> {
+    let exact = shear_from_youngs(&e.exact, nu);
+    let mu = Decimal {
+        text: e.text.clone(),
+        exact,
+    };
+    let what = "shear modulus mu = E/(2(1 + nu)) from E";
+    positive_by(&mu, "--youngs-modulus", what, p, true)
 }

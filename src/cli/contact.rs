@@ -1,14 +1,12 @@
 //! `moving-hertz contact`: the full moving-punch Hertz solution by [`ContactProblem::solve`].
 
-use super::args::{self, Decimal, GivenSpeed, MaterialSpeed};
-use super::output::{largest, print_json, ran, Head, OutputArgs, Pairs, Text};
+use super::args::{self, Decimal, MaterialSpeed};
+use super::output::{largest, print_json, ran, Obj, OutputArgs, Text};
 use super::CliError;
-use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{
     with_precision, ContactProblem, ContactSolution, Loading, Method, Moduli, Options, Solid, Speed,
 };
-use serde::Serialize;
 
 #[derive(clap::Args, Debug)]
 #[command(group = clap::ArgGroup::new("loading").required(true).args(["load", "approach"]))]
@@ -59,50 +57,6 @@ pub struct ContactArgs {
     pub output: OutputArgs,
 }
 
-/// The inputs as typed (JSON `inputs`).
-#[derive(Serialize)]
-struct Inputs<'a> {
-    #[serde(flatten)]
-    given: GivenSpeed<'a>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    velocity: Option<&'a str>,
-    r_along: &'a str,
-    r_across: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    load: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    approach: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    shear_modulus: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    youngs_modulus: Option<&'a str>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    density: Option<&'a str>,
-    method: &'a str,
-    precision: String,
-}
-
-/// The JSON object of `contact` (docs/cli.md).
-#[derive(Serialize)]
-struct Json<'a> {
-    #[serde(flatten)]
-    head: Head<Inputs<'a>>,
-    route: &'static str,
-    /// c_R (m/s) and M_R = V/c_R, when the speed was given by --velocity.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    c_r: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    mr: Option<String>,
-    /// a, b, k, e.
-    #[serde(flatten)]
-    shape: Pairs,
-    major_axis: &'static str,
-    /// p0, d0, P.
-    #[serde(flatten)]
-    loading: Pairs,
-    error_estimate: String,
-}
-
 pub fn run(a: &ContactArgs) -> Result<(), CliError> {
     with_precision!(a.precision, T, p => {
         let (speed, shear_modulus, solid) = half_space::<T>(a, p)?;
@@ -124,7 +78,10 @@ pub fn run(a: &ContactArgs) -> Result<(), CliError> {
         let inputs = [("method", "--method", a.method.label()), ("curvature ratio", "", "")];
         let context = format!("solving the contact at {}", a.precision);
         let sol = problem.solve(&opts).map_err(|e| CliError::from_run(e, &inputs, &context))?;
-        report(a, &sol, solid.as_ref())
+        match a.output.json {
+            true => report_json(a, &sol, solid.as_ref()),
+            false => report_text(a, &sol, solid.as_ref()),
+        }
     })
 }
 
@@ -215,13 +172,7 @@ fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliE
                 );
                 return Err(CliError::value("--youngs-modulus", &e.text, why));
             }
-            // μ = E/(2(1 + ν)) exactly; its text has a '/', so it is rounded from the exact value.
-            let mu = Decimal {
-                text: e.text.clone(),
-                exact: shear_from_youngs(&e.exact, &nu.exact),
-            };
-            let what = "shear modulus mu = E/(2(1 + nu)) from E";
-            args::positive_exact(&mu, "--youngs-modulus", what, p)?
+            args::mu_from_youngs(e, &nu.exact, p)?
         }
         (None, None) => return Err(CliError::Input(MODULUS_REQUIRED.into())),
     };
@@ -234,18 +185,6 @@ type HalfSpace<T> = (Speed<T>, T, Option<Solid<T>>);
 const MODULUS_REQUIRED: &str =
     "exactly one of --shear-modulus MU and --youngs-modulus E is required";
 
-/// Prints the solution: one JSON object with `--json`, else the text summary.
-fn report<T: Real>(
-    a: &ContactArgs,
-    sol: &ContactSolution<T>,
-    solid: Option<&Solid<T>>,
-) -> Result<(), CliError> {
-    match a.output.json {
-        true => report_json(a, sol, solid),
-        false => report_text(a, sol, solid),
-    }
-}
-
 /// The solution as one JSON object (docs/cli.md lists its keys).
 fn report_json<T: Real>(
     a: &ContactArgs,
@@ -253,52 +192,36 @@ fn report_json<T: Real>(
     solid: Option<&Solid<T>>,
 ) -> Result<(), CliError> {
     let ig = sol.ellipse().integrals();
-    let prec = ig.precision;
-    let mr = sol.problem().speed.mr();
-    let bounds = [
-        sol.a().error,
-        sol.b().error,
-        sol.k().error,
-        sol.e().error,
-        sol.p0().error,
-        sol.d0().error,
-        sol.load().error,
-    ];
-    print_json(&Json {
-        head: Head::new(
-            "contact",
-            Inputs {
-                given: a.input.json(),
-                velocity: args::text_of(&a.velocity),
-                r_along: &a.r_along.text,
-                r_across: &a.r_across.text,
-                load: args::text_of(&a.load),
-                approach: args::text_of(&a.approach),
-                shear_modulus: args::text_of(&a.shear_modulus),
-                youngs_modulus: args::text_of(&a.youngs_modulus),
-                density: args::text_of(&a.density),
-                method: a.method.label(),
-                precision: a.precision.label(),
-            },
-            prec,
-        ),
-        route: ig.route.label(),
-        c_r: solid.map(|s| s.c_r().to_decimal()),
-        mr: solid.map(|_| mr.to_decimal()),
-        shape: Pairs::of(&[
-            ("a", Some(sol.a())),
-            ("b", Some(sol.b())),
-            ("k", Some(sol.k())),
-            ("e", Some(sol.e())),
-        ]),
-        major_axis: sol.ellipse().major().label(),
-        loading: Pairs::of(&[
-            ("p0", Some(sol.p0())),
-            ("d0", Some(sol.d0())),
-            ("load", Some(sol.load())),
-        ]),
-        error_estimate: largest(&bounds),
-    })
+    let text = args::text_of;
+    let inputs = (a.input.json().opt("velocity", text(&a.velocity)))
+        .put("r_along", a.r_along.text.as_str())
+        .put("r_across", a.r_across.text.as_str())
+        .opt("load", text(&a.load))
+        .opt("approach", text(&a.approach))
+        .opt("shear_modulus", text(&a.shear_modulus))
+        .opt("youngs_modulus", text(&a.youngs_modulus))
+        .opt("density", text(&a.density))
+        .put("method", a.method.label())
+        .put("precision", a.precision.label());
+    let (shape, loading) = (
+        [
+            ("a", sol.a()),
+            ("b", sol.b()),
+            ("k", sol.k()),
+            ("e", sol.e()),
+        ],
+        [("p0", sol.p0()), ("d0", sol.d0()), ("load", sol.load())],
+    );
+    let bounds: Vec<_> = shape.iter().chain(&loading).map(|(_, x)| x.error).collect();
+    print_json(
+        &(Obj::head("contact", inputs, ig.precision).put("route", ig.route.label()))
+            .opt("c_r", solid.map(|s| s.c_r().to_decimal()))
+            .opt("mr", solid.map(|_| sol.problem().speed.mr().to_decimal()))
+            .pairs(&shape.map(|(n, x)| (n, Some(x))))
+            .put("major_axis", sol.ellipse().major().label())
+            .pairs(&loading.map(|(n, x)| (n, Some(x))))
+            .put("error_estimate", largest(&bounds)),
+    )
 }
 
 /// The solution as text: the inputs, then each value with its bound.

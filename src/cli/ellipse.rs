@@ -1,12 +1,11 @@
 //! `moving-hertz ellipse`: the contact ellipse's shape, (33) I2(k)/I1(k) = A1/B1, by
 //! [`solve_ellipse`].
 
-use super::args::{self, Decimal, GivenSpeed, MaterialSpeed, REPEAT_CAP};
-use super::output::{largest, print_json, ran, Head, OutputArgs, Pairs, Text};
+use super::args::{self, Decimal, MaterialSpeed, REPEAT_CAP};
+use super::output::{largest, print_json, ran, Obj, OutputArgs, Text};
 use super::CliError;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{solve_ellipse, with_precision, Ellipse, Method, Options};
-use serde::Serialize;
 use std::time::Instant;
 
 #[derive(clap::Args, Debug)]
@@ -34,39 +33,6 @@ pub struct EllipseArgs {
     pub repeat: Option<u64>,
     #[command(flatten)]
     pub output: OutputArgs,
-}
-
-/// The inputs as typed (JSON `inputs`).
-#[derive(Serialize)]
-struct Inputs<'a> {
-    #[serde(flatten)]
-    given: GivenSpeed<'a>,
-    ratio: &'a str,
-    method: &'a str,
-    precision: String,
-}
-
-/// The JSON object of `ellipse` (docs/cli.md).
-#[derive(Serialize)]
-struct Json<'a> {
-    #[serde(flatten)]
-    head: Head<Inputs<'a>>,
-    route: &'static str,
-    /// k, e.
-    #[serde(flatten)]
-    shape: Pairs,
-    major_axis: &'static str,
-    /// I1, I2.
-    #[serde(flatten)]
-    integrals: Pairs,
-    iterations: String,
-    error_estimate: String,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    repeat: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    median_ns: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    min_ns: Option<String>,
 }
 
 pub fn run(a: &EllipseArgs) -> Result<(), CliError> {
@@ -101,27 +67,24 @@ fn report<T: Real>(a: &EllipseArgs, sol: &Ellipse<T>, times: &[f64]) -> Result<(
     let median = (!times.is_empty()).then(|| format!("{:.0}", times[times.len() / 2]));
     let min = times.first().map(|t| format!("{t:.0}"));
     if a.output.json {
-        return print_json(&Json {
-            head: Head::new(
-                "ellipse",
-                Inputs {
-                    given: a.input.json(),
-                    ratio: &a.ratio.text,
-                    method: a.method.label(),
-                    precision: a.precision.label(),
-                },
-                prec,
-            ),
-            route: ig.route.label(),
-            shape: Pairs::of(&[("k", Some(sol.k())), ("e", Some(sol.e()))]),
-            major_axis: sol.major().label(),
-            integrals: Pairs::of(&[("I1", Some(&ig.i1)), ("I2", Some(&ig.i2))]),
-            iterations: sol.iterations().to_string(),
-            error_estimate: largest(&[sol.k().error, sol.e().error, ig.i1.error, ig.i2.error]),
-            repeat: (!times.is_empty()).then(|| times.len().to_string()),
-            median_ns: median,
-            min_ns: min,
-        });
+        let inputs = (a.input.json().put("ratio", a.ratio.text.as_str()))
+            .put("method", a.method.label())
+            .put("precision", a.precision.label());
+        let bound = largest(&[sol.k().error, sol.e().error, ig.i1.error, ig.i2.error]);
+        return print_json(
+            &(Obj::head("ellipse", inputs, prec).put("route", ig.route.label()))
+                .pairs(&[("k", Some(sol.k())), ("e", Some(sol.e()))])
+                .put("major_axis", sol.major().label())
+                .pairs(&[("I1", Some(&ig.i1)), ("I2", Some(&ig.i2))])
+                .put("iterations", sol.iterations().to_string())
+                .put("error_estimate", bound)
+                .opt(
+                    "repeat",
+                    (!times.is_empty()).then(|| times.len().to_string()),
+                )
+                .opt("median_ns", median)
+                .opt("min_ns", min),
+        );
     }
     let mut t = Text::new(a.output.digits);
     t.line(format!(

@@ -2,15 +2,14 @@
 //! chosen precision, or by [`integrals_to_tolerance`] at the lowest precision that reaches
 //! `--tol`.
 
-use super::args::{self, Decimal, GivenSpeed, MaterialSpeed};
-use super::output::{largest, print_json, ran, Head, OutputArgs, Pairs, Text};
+use super::args::{self, Decimal, MaterialSpeed};
+use super::output::{largest, print_json, ran, Obj, OutputArgs, Text};
 use super::CliError;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{
     integrals, integrals_to_tolerance, with_precision, ExactInputs, IntegralOptions, Integrals,
     Method, RelError,
 };
-use serde::Serialize;
 
 #[derive(clap::Args, Debug)]
 pub struct IntegralsArgs {
@@ -60,34 +59,6 @@ fn tol(s: &str) -> Result<Tol, String> {
         text: s.trim().to_string(),
         rel,
     })
-}
-
-/// The inputs as typed (JSON `inputs`).
-#[derive(Serialize)]
-struct Inputs<'a> {
-    #[serde(flatten)]
-    given: GivenSpeed<'a>,
-    k: &'a str,
-    method: &'a str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    precision: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    tol: Option<&'a str>,
-    derivatives: bool,
-    j0: bool,
-}
-
-/// The JSON object of `integrals` (docs/cli.md).
-#[derive(Serialize)]
-struct Json<'a> {
-    #[serde(flatten)]
-    head: Head<Inputs<'a>>,
-    route: &'static str,
-    /// I1, I2, and dI1/dk, dI2/dk and J0 when asked for.
-    #[serde(flatten)]
-    values: Pairs,
-    work: String,
-    error_estimate: String,
 }
 
 pub fn run(a: &IntegralsArgs) -> Result<(), CliError> {
@@ -187,31 +158,24 @@ fn to_tolerance(a: &IntegralsArgs, tol: &Tol) -> Result<(), CliError> {
 fn report<T: Real>(a: &IntegralsArgs, r: &Integrals<T>) -> Result<(), CliError> {
     let prec = r.precision;
     if a.output.json {
-        return print_json(&Json {
-            head: Head::new(
-                "integrals",
-                Inputs {
-                    given: a.input.json(),
-                    k: &a.k.text,
-                    method: a.method.label(),
-                    precision: a.precision.map(|p| p.label()),
-                    tol: a.tol.as_ref().map(|t| t.text.as_str()),
-                    derivatives: a.derivatives,
-                    j0: a.j0,
-                },
-                prec,
-            ),
-            route: r.route.label(),
-            values: Pairs::of(&[
-                ("I1", Some(&r.i1)),
-                ("I2", Some(&r.i2)),
-                ("dI1_dk", r.di1_dk.as_ref()),
-                ("dI2_dk", r.di2_dk.as_ref()),
-                ("J0", r.j0.as_ref()),
-            ]),
-            work: r.work.to_string(),
-            error_estimate: largest(&[r.i1.error, r.i2.error]),
-        });
+        let inputs = (a.input.json().put("k", a.k.text.as_str()))
+            .put("method", a.method.label())
+            .opt("precision", a.precision.map(|p| p.label()))
+            .opt("tol", a.tol.as_ref().map(|t| t.text.as_str()))
+            .put("derivatives", a.derivatives)
+            .put("j0", a.j0);
+        return print_json(
+            &(Obj::head("integrals", inputs, prec).put("route", r.route.label()))
+                .pairs(&[
+                    ("I1", Some(&r.i1)),
+                    ("I2", Some(&r.i2)),
+                    ("dI1_dk", r.di1_dk.as_ref()),
+                    ("dI2_dk", r.di2_dk.as_ref()),
+                    ("J0", r.j0.as_ref()),
+                ])
+                .put("work", r.work.to_string())
+                .put("error_estimate", largest(&[r.i1.error, r.i2.error])),
+        );
     }
     let mut t = Text::new(a.output.digits);
     let tol = a

@@ -24,25 +24,55 @@ pub struct OutputArgs {
     pub digits: Option<u32>,
 }
 
-/// The fields every command's JSON object opens with (docs/cli.md): the command, its inputs as
-/// typed, and the precision that ran.
+/// A JSON object with its members in the order they are put (docs/cli.md lists every
+/// command's keys): `command`, `inputs` (as typed), `precision` and `bits` first ([`Obj::head`]),
+/// then the results; every number a decimal string.
+#[derive(serde::Serialize, Default)]
+pub struct Obj(#[serde(serialize_with = "members")] Vec<(String, Member)>);
+
+/// A member's value: a JSON value, or an object of its own.
 #[derive(serde::Serialize)]
-pub struct Head<I> {
-    command: &'static str,
-    inputs: I,
-    precision: String,
-    bits: String,
+#[serde(untagged)]
+enum Member {
+    Value(serde_json::Value),
+    Obj(Obj),
 }
 
-impl<I> Head<I> {
-    /// The opening of `command`'s object, for `inputs` and the precision `prec` that ran.
-    pub fn new(command: &'static str, inputs: I, prec: Precision) -> Self {
-        Head {
-            command,
-            inputs,
-            precision: prec.label(),
-            bits: prec.bits().to_string(),
+fn members<S: serde::Serializer>(m: &[(String, Member)], s: S) -> Result<S::Ok, S::Error> {
+    s.collect_map(m.iter().map(|(k, v)| (k, v)))
+}
+
+impl Obj {
+    /// The opening of `command`'s object: its `inputs` as typed and the precision `prec` that ran.
+    pub fn head(command: &'static str, inputs: Obj, prec: Precision) -> Obj {
+        let mut o = Obj::default().put("command", command);
+        o.0.push(("inputs".into(), Member::Obj(inputs)));
+        o.put("precision", prec.label())
+            .put("bits", prec.bits().to_string())
+    }
+
+    /// The member `key`.
+    pub fn put(mut self, key: &str, value: impl Into<serde_json::Value>) -> Obj {
+        self.0.push((key.into(), Member::Value(value.into())));
+        self
+    }
+
+    /// The member `key` when `value` is present.
+    pub fn opt(self, key: &str, value: Option<impl Into<serde_json::Value>>) -> Obj {
+        match value {
+            Some(v) => self.put(key, v),
+            None => self,
         }
+    }
+
+    /// The results of `list` that are present as `NAME` and `NAME_error`: the value with every
+    /// digit of the working precision, the bound as `RelError` prints it.
+    pub fn pairs<T: Real>(self, list: &[(&str, Option<&Estimated<T>>)]) -> Obj {
+        list.iter().fold(self, |o, (name, x)| match x {
+            Some(x) => (o.put(name, x.value.to_decimal()))
+                .put(&format!("{name}_error"), x.error.to_string()),
+            None => o,
+        })
     }
 }
 
@@ -137,33 +167,6 @@ fn significant(s: &str) -> usize {
     m.chars().filter(char::is_ascii_digit).count()
 }
 
-/// Results as JSON keys `NAME` and `NAME_error`, in the order given: the value with every digit
-/// of the working precision, the bound as `RelError` prints it (flattened into a command's
-/// object).
-pub struct Pairs(Vec<(&'static str, String, String)>);
-
-impl Pairs {
-    /// The pairs of the results in `list` that are present.
-    pub fn of<T: Real>(list: &[(&'static str, Option<&Estimated<T>>)]) -> Pairs {
-        let pair = |(name, x): &(&'static str, Option<&Estimated<T>>)| {
-            x.map(|x| (*name, x.value.to_decimal(), x.error.to_string()))
-        };
-        Pairs(list.iter().filter_map(pair).collect())
-    }
-}
-
-impl serde::Serialize for Pairs {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        let mut m = s.serialize_map(Some(2 * self.0.len()))?;
-        for (name, value, error) in &self.0 {
-            m.serialize_entry(name, value)?;
-            m.serialize_entry(&format!("{name}_error"), error)?;
-        }
-        m.end()
-    }
-}
-
 /// The largest of several bounds (the JSON key `error_estimate`).
 pub fn largest(bounds: &[RelError]) -> String {
     bounds
@@ -193,3 +196,7 @@ pub fn emit_bytes(text: &[u8]) -> Result<(), CliError> {
         .and_then(|()| out.flush())
         .map_err(|e| CliError::Failed(format!("writing to standard output: {e}")))
 }
+
+#[cfg(test)]
+#[path = "../../tests/unit/cli_output.rs"]
+mod tests;

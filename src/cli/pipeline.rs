@@ -1,17 +1,10 @@
 //! A long job cut into blocks, solved on every thread of `rayon`'s pool while the calling thread
 //! writes each block's output in input order as soon as it and every block before it are done.
-//!
-//! A thread takes a task of consecutive blocks at a time (enough points that handing a task
-//! over, one message, one wake-up and one write, is small beside solving it; few enough that
-//! each thread gets [`TASKS_PER_THREAD`] tasks) and writes their rows into one buffer, which
-//! the writer passes on in one write. There is no barrier: a thread that finishes a task takes
-//! the next one at once, so that the threads finish within one task of each other at the end of
-//! the job, and writing overlaps solving. Solved tasks wait for the writer at most
-//! [`AHEAD_PER_THREAD`] tasks a thread ahead of it, so that the memory held stays a few tasks a
-//! thread whatever the job's size. A write that fails (a closed pipe, a full disk) stops the
-//! job: no thread takes a task after it, and the error is returned once the tasks being solved
-//! are done. What a block computes depends only on its range, never on the thread count or on
-//! the task it is solved in.
+//! A thread takes a task of consecutive blocks at a time and writes their rows into one buffer,
+//! passed on in one write; no barrier; solved tasks wait at most [`AHEAD_PER_THREAD`] tasks a
+//! thread ahead of the writer. A failed write (a closed pipe, a full disk) stops the job: no task
+//! is taken after it. What a block computes depends only on its range, never on the thread count
+//! or on its task. Why: docs/design.md, "Many cores".
 
 use super::CliError;
 use std::collections::BTreeMap;

@@ -1,11 +1,10 @@
 //! `moving-hertz rayleigh`: the Rayleigh root and the other two roots of the cubic (section 3).
 
 use super::args::{self, Decimal};
-use super::output::{print_json, Head, OutputArgs, Text};
+use super::output::{print_json, Obj, OutputArgs, Text};
 use super::CliError;
 use moving_hertz::scalar::{Precision, Real};
 use moving_hertz::{with_precision, Material};
-use serde::Serialize;
 
 #[derive(clap::Args, Debug)]
 pub struct RayleighArgs {
@@ -22,25 +21,6 @@ pub struct RayleighArgs {
     pub output: OutputArgs,
 }
 
-#[derive(Serialize)]
-struct Inputs<'a> {
-    nu: &'a str,
-    precision: String,
-}
-
-/// The JSON object of `rayleigh` (docs/cli.md).
-#[derive(Serialize)]
-struct Json<'a> {
-    #[serde(flatten)]
-    head: Head<Inputs<'a>>,
-    m1: String,
-    #[serde(rename = "cR_over_c2")]
-    cr_over_c2: String,
-    #[serde(rename = "cR_over_c1")]
-    cr_over_c1: String,
-    roots: Vec<[String; 2]>,
-}
-
 pub fn run(a: &RayleighArgs) -> Result<(), CliError> {
     with_precision!(a.precision, T, p => {
         let mat = Material::<T>::parse(&a.nu.text, p).map_err(|e| CliError::value("--nu", &a.nu.text, e))?;
@@ -53,23 +33,16 @@ fn report<T: Real>(a: &RayleighArgs, mat: &Material<T>) -> Result<(), CliError> 
     let r = mat.roots();
     let roots = r.all();
     if a.output.json {
-        return print_json(&Json {
-            head: Head::new(
-                "rayleigh",
-                Inputs {
-                    nu: &a.nu.text,
-                    precision: prec.label(),
-                },
-                prec,
-            ),
-            m1: r.m1.to_decimal(),
-            cr_over_c2: mat.cr_over_c2().to_decimal(),
-            cr_over_c1: mat.cr_over_c1().to_decimal(),
-            roots: roots
-                .iter()
-                .map(|z| [z.re.to_decimal(), z.im.to_decimal()])
-                .collect(),
-        });
+        let inputs = (Obj::default().put("nu", a.nu.text.as_str())).put("precision", prec.label());
+        let roots = roots
+            .iter()
+            .map(|z| vec![z.re.to_decimal(), z.im.to_decimal()]);
+        return print_json(
+            &(Obj::head("rayleigh", inputs, prec).put("m1", r.m1.to_decimal()))
+                .put("cR_over_c2", mat.cr_over_c2().to_decimal())
+                .put("cR_over_c1", mat.cr_over_c1().to_decimal())
+                .put("roots", roots.collect::<Vec<_>>()),
+        );
     }
     let mut t = Text::new(a.output.digits);
     t.line(format!(

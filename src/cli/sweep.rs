@@ -1,6 +1,6 @@
 //! `moving-hertz sweep`: the contact ellipse (33) over every (ν, speed, A1/B1) of three lists or
-//! ranges, by the library's [`sweep::ellipses`] (parallel blocks, shared set-ups,
-//! continuation), written as CSV or JSON lines in input order as the blocks are solved
+//! ranges, by the library's [`sweep::ellipses_at`] at speeds formed once a (ν, speed) pair
+//! (parallel blocks, shared set-ups, continuation), written as CSV or JSON lines in input order as the blocks are solved
 //! ([`pipeline::solve_in_order`]).
 
 use super::args::{self, Decimal};
@@ -337,6 +337,16 @@ pub(super) const SHEAR: Checked = checked("--shear-modulus", "shear modulus mu",
 pub(super) const YOUNGS: Checked = checked("--youngs-modulus", "Young's modulus E", "(0, inf)");
 
 impl Checked {
+    /// The option's key in the sweeps' rows: `gap` for `--gap`, `youngs_modulus` for
+    /// `--youngs-modulus`.
+    pub(super) fn key(&self) -> &'static str {
+        match self.option {
+            "--shear-modulus" => "shear_modulus",
+            "--youngs-modulus" => "youngs_modulus",
+            option => &option[2..],
+        }
+    }
+
     /// Whether `x` lies in the domain, exactly.
     fn holds(&self, x: &Rational) -> bool {
         let d = self.domain;
@@ -550,7 +560,7 @@ fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError
     let nus = checked_nus(nu, &a.run.precision, p)?;
     let speeds = speed_checked.values::<T>(speed, &a.run.precision, p)?;
     let ratios = RATIO.values::<T>(ratio, &a.run.precision, p)?;
-    let by_gap = std::ptr::eq(speed_checked, &GAP);
+    let by_gap = speed_checked.option == GAP.option;
     let speeds = (speeds.into_iter())
         .map(|(text, sp)| {
             let given = match by_gap {
@@ -595,24 +605,13 @@ fn solve_and_write<T: Real + Send + Sync>(
         method: a.run.method,
         ..Default::default()
     };
-    let speed_key = if a.speed.gap.is_some() {
+    let speed = if a.speed.gap.is_some() {
         "gap"
     } else {
         "speed"
     };
-    let keys = [
-        "nu",
-        speed_key,
-        "ratio",
-        "k",
-        "k_error",
-        "e",
-        "e_error",
-        "major_axis",
-        "route",
-        "iterations",
-        "error",
-    ];
+    let results = "k,k_error,e,e_error,major_axis,route,iterations,error".split(',');
+    let keys: Vec<_> = ["nu", speed, "ratio"].into_iter().chain(results).collect();
     // The rows of the points `range` and their count of failed points, formed where the block
     // is solved.
     let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
@@ -664,7 +663,7 @@ pub(super) fn write_in_order(
 fn push_row<T: Real>(
     out: &mut Vec<u8>,
     format: Format,
-    keys: &[&str; 11],
+    keys: &[&str],
     t: &[&str; 3],
     r: &moving_hertz::Result<Ellipse<T>>,
 ) {

@@ -12,7 +12,6 @@ use super::sweep::{
     LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
 };
 use super::CliError;
-use moving_hertz::physics::solid::shear_from_youngs;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
 use moving_hertz::sweep;
 use moving_hertz::{
@@ -74,61 +73,47 @@ pub struct ContactSweepArgs {
     pub run: RunArgs,
 }
 
-/// How the speeds are given.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum SpeedKind {
-    Mr,
-    Gap,
-    Velocity,
-}
-
 impl ContactSweepArgs {
-    /// The speed axis, its kind and its checks.
-    fn speeds(&self) -> Result<(&Axis, SpeedKind, &'static Checked), CliError> {
-        match (&self.speed, &self.gap, &self.velocity) {
-            (Some(s), _, _) => Ok((s, SpeedKind::Mr, &SPEED)),
-            (None, Some(g), _) => Ok((g, SpeedKind::Gap, &GAP)),
-            (None, None, Some(v)) => Ok((v, SpeedKind::Velocity, &VELOCITY)),
-            _ => Err(required("one of --speed, --gap and --velocity")),
-        }
-    }
-
-    /// The modulus axis, whether it holds Young's moduli, and its checks.
-    fn moduli(&self) -> Result<(&Axis, bool, &'static Checked), CliError> {
-        match (&self.shear_modulus, &self.youngs_modulus) {
-            (Some(m), _) => Ok((m, false, &SHEAR)),
-            (None, Some(e)) => Ok((e, true, &YOUNGS)),
-            _ => Err(required("one of --shear-modulus and --youngs-modulus")),
-        }
-    }
-
-    /// The load or approach axis, whether it holds loads, and its checks.
-    fn sizes(&self) -> Result<(&Axis, bool, &'static Checked), CliError> {
-        match (&self.load, &self.approach) {
-            (Some(l), _) => Ok((l, true, &LOAD)),
-            (None, Some(d)) => Ok((d, false, &APPROACH)),
-            _ => Err(required("one of --load and --approach")),
-        }
+    /// The speed, modulus and load (or approach) axes, each with its checks.
+    fn groups(&self) -> Result<[(&Axis, &'static Checked); 3], CliError> {
+        Ok([
+            one_of([
+                (&self.speed, &SPEED),
+                (&self.gap, &GAP),
+                (&self.velocity, &VELOCITY),
+            ])?,
+            one_of([
+                (&self.shear_modulus, &SHEAR),
+                (&self.youngs_modulus, &YOUNGS),
+            ])?,
+            one_of([(&self.load, &LOAD), (&self.approach, &APPROACH)])?,
+        ])
     }
 }
 
-/// The refusal of a command line without one of a group of options (clap requires each group;
-/// this is the same check where the types ask for it).
-fn required(what: &str) -> CliError {
-    CliError::Input(format!("{what} is required"))
+/// The axis of the option of `group` that was given, with its checks; none given is refused
+/// (clap requires each group; this is the same check where the types ask for it).
+fn one_of<'a, const N: usize>(
+    group: [(&'a Option<Axis>, &'static Checked); N],
+) -> Result<(&'a Axis, &'static Checked), CliError> {
+    if let Some((Some(axis), c)) = group.iter().find(|(axis, _)| axis.is_some()) {
+        return Ok((axis, c));
+    }
+    let options = group.map(|(_, c)| c.option);
+    let (last, rest) = options.split_last().unwrap_or((&"", &[]));
+    let what = format!("one of {} and {last}", rest.join(", "));
+    Err(CliError::Input(format!("{what} is required")))
 }
 
 pub fn run(a: &ContactSweepArgs) -> Result<(), CliError> {
-    let (speeds, _, speed) = a.speeds()?;
-    let (sizes, _, size) = a.sizes()?;
-    let (moduli, _, modulus) = a.moduli()?;
+    let [speeds, moduli, sizes] = a.groups()?;
     let checks = [
         (&a.nu, &NU),
-        (speeds, speed),
+        speeds,
         (&a.r_along, &R_ALONG),
         (&a.r_across, &R_ACROSS),
-        (sizes, size),
-        (moduli, modulus),
+        sizes,
+        moduli,
     ];
     let total = check_and_bind(&checks, &a.run.precision)?;
     with_precision!(a.run.precision, T, p => solve_and_write::<T>(a, total, p))
@@ -166,10 +151,24 @@ struct Grid<T> {
     /// μ by modulus, or by (ν, E) (index ν·|E| + E) when `mu_by_nu`; empty with --velocity.
     mu: Vec<T>,
     mu_by_nu: bool,
-    kind: SpeedKind,
-    youngs: bool,
-    by_load: bool,
+    /// The speed's, the modulus's and the size's options as given (`--gap`, `--youngs-modulus`,
+    /// `--load`, …).
+    given: [&'static Checked; 3],
     density: String,
+}
+
+impl<T> Grid<T> {
+    fn velocity(&self) -> bool {
+        self.given[0].option == "--velocity"
+    }
+
+    fn youngs(&self) -> bool {
+        self.given[1].option == "--youngs-modulus"
+    }
+
+    fn by_load(&self) -> bool {
+        self.given[2].option == "--load"
+    }
 }
 
 impl<T: Real + Send + Sync> Grid<T> {
@@ -177,13 +176,11 @@ impl<T: Real + Send + Sync> Grid<T> {
     fn new(a: &ContactSweepArgs, p: T::Prec) -> Result<Self, CliError> {
         let precision = &a.run.precision;
         let nus = checked_nus::<T>(&a.nu, precision, p)?;
-        let (speed_axis, kind, speed) = a.speeds()?;
-        let speeds = match kind {
-            SpeedKind::Velocity => speed_axis.values::<T>(p),
+        let [(speed_axis, speed), (modulus_axis, modulus), (size_axis, size)] = a.groups()?;
+        let speeds = match speed.option {
+            "--velocity" => speed_axis.values::<T>(p),
             _ => speed.values::<T>(speed_axis, precision, p)?,
         };
-        let (modulus_axis, youngs, modulus) = a.moduli()?;
-        let (size_axis, by_load, size) = a.sizes()?;
         let along = positive_values::<T>(&a.r_along, &R_ALONG, precision, p)?;
         let across = positive_values::<T>(&a.r_across, &R_ACROSS, precision, p)?;
         for r2 in a.r_across.extremes() {
@@ -202,9 +199,7 @@ impl<T: Real + Send + Sync> Grid<T> {
             sizes,
             mu: Vec::new(),
             mu_by_nu: false,
-            kind,
-            youngs,
-            by_load,
+            given: [speed, modulus, size],
             density: String::new(),
         };
         let moduli = positive_values::<T>(modulus_axis, modulus, precision, p)?;
@@ -244,12 +239,11 @@ impl<T: Real + Send + Sync> Grid<T> {
             });
             return first_error.map_or(Ok(()), Err);
         }
-        if !self.youngs {
+        if !self.youngs() {
             self.mu = moduli.into_iter().map(|(_, mu)| mu).collect();
             return Ok(());
         }
         // μ = E/(2(1 + ν)) exactly at each (ν, E), rounded once, as `contact` forms it.
-        let what = "shear modulus mu = E/(2(1 + nu)) from E";
         let mu: Vec<Result<T, CliError>> = (0..pairs)
             .into_par_iter()
             .map(|j| {
@@ -259,11 +253,11 @@ impl<T: Real + Send + Sync> Grid<T> {
                 );
                 let exact =
                     |t: &str| decimal_to_rational(t).map_err(|err| CliError::value(option, t, err));
-                let mu = Decimal {
+                let e = Decimal {
                     text: e.clone(),
-                    exact: shear_from_youngs(&exact(e)?, &exact(nu)?),
+                    exact: exact(e)?,
                 };
-                args::positive_exact::<T>(&mu, option, what, p)
+                args::mu_from_youngs::<T>(&e, &exact(nu)?, p)
             })
             .collect();
         self.mu = mu.into_iter().collect::<Result<_, _>>()?;
@@ -274,7 +268,7 @@ impl<T: Real + Send + Sync> Grid<T> {
     /// The half-space of ν and modulus text with the density ([`Solid::parse`], as `contact`).
     fn solid(&self, nu: &str, modulus: &str, p: T::Prec) -> moving_hertz::Result<Solid<T>> {
         let density = self.density.as_str();
-        let moduli = match self.youngs {
+        let moduli = match self.youngs() {
             true => Moduli::Youngs {
                 youngs_modulus: modulus,
                 density,
@@ -342,7 +336,7 @@ impl<T: Real + Send + Sync> Grid<T> {
     /// The half-space of ν `iv` and modulus `im` (checked before any work).
     fn half(&self, iv: usize, im: usize, p: T::Prec) -> moving_hertz::Result<Half<T>> {
         let nu = &self.nus[iv];
-        if self.kind == SpeedKind::Velocity {
+        if self.velocity() {
             return self.solid(nu, &self.moduli[im], p).map(Half::Solid);
         }
         let mu = match self.mu_by_nu {
@@ -355,9 +349,9 @@ impl<T: Real + Send + Sync> Grid<T> {
     /// The speed `is` in `half`, from its text exactly (as `contact` forms it).
     fn speed(&self, half: &Half<T>, is: usize) -> moving_hertz::Result<Speed<T>> {
         let text = &self.speeds[is];
-        match (half, self.kind) {
+        match (half, self.given[0].option) {
             (Half::Solid(s), _) => s.parse_velocity(text),
-            (Half::Material(m, _), SpeedKind::Gap) => m.parse_gap(text),
+            (Half::Material(m, _), "--gap") => m.parse_gap(text),
             (Half::Material(m, _), _) => m.parse_speed(text),
         }
     }
@@ -392,7 +386,7 @@ impl<T: Real + Send + Sync> Grid<T> {
                     speed,
                     radius_along: self.along[i1].1.clone(),
                     radius_across: self.across[i2].1.clone(),
-                    loading: if self.by_load {
+                    loading: if self.by_load() {
                         Loading::Load(size)
                     } else {
                         Loading::Approach(size)
@@ -421,42 +415,21 @@ impl<T: Real + Send + Sync> Grid<T> {
 
     /// The columns: the inputs, c_R and M_R with --velocity, the results, the error.
     fn keys(&self) -> Vec<&'static str> {
-        let mut keys = vec![
-            "nu",
-            if self.youngs {
-                "youngs_modulus"
-            } else {
-                "shear_modulus"
-            },
-            match self.kind {
-                SpeedKind::Mr => "speed",
-                SpeedKind::Gap => "gap",
-                SpeedKind::Velocity => "velocity",
-            },
-            "r_along",
-            "r_across",
-            if self.by_load { "load" } else { "approach" },
-        ];
-        if self.kind == SpeedKind::Velocity {
+        let [speed, modulus, size] = self.given.map(Checked::key);
+        let mut keys = vec!["nu", modulus, speed, "r_along", "r_across", size];
+        if self.velocity() {
             keys.extend(["c_r", "mr"]);
         }
+        keys.extend("a,a_error,b,b_error,k,k_error,e,e_error,major_axis,p0,p0_error".split(','));
+        let other = if self.by_load() { "d0" } else { "load" };
         keys.extend([
-            "a",
-            "a_error",
-            "b",
-            "b_error",
-            "k",
-            "k_error",
-            "e",
-            "e_error",
-            "major_axis",
-            "p0",
-            "p0_error",
+            other,
+            if self.by_load() {
+                "d0_error"
+            } else {
+                "load_error"
+            },
         ]);
-        keys.extend(match self.by_load {
-            true => ["d0", "d0_error"],
-            false => ["load", "load_error"],
-        });
         keys.extend(["route", "iterations", "error"]);
         keys
     }
@@ -478,14 +451,14 @@ impl<T: Real + Send + Sync> Grid<T> {
         };
         let mut keys = keys.iter();
         let mut key = || keys.next().copied().unwrap_or_default();
-        if self.kind == SpeedKind::Velocity {
+        if self.velocity() {
             match c_r {
                 Some(c_r) => row.value(key(), c_r),
                 None => row.text(key(), ""),
             }
             row.value(key(), s.problem().speed.mr());
         }
-        let other = if self.by_load { s.d0() } else { s.load() };
+        let other = if self.by_load() { s.d0() } else { s.load() };
         for x in [s.a(), s.b(), s.k(), s.e()] {
             row.estimated([key(), key()], x);
         }
