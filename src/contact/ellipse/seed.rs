@@ -58,7 +58,7 @@ pub(super) fn lowest_stage<S: Real>(
 #[inline(never)]
 fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Chord<S> {
     let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, ratio.prec());
-    if let Ok((_, df, ci)) = residual(ev, ratio, &lam, None) {
+    if let Ok((_, df, ci, _)) = residual(ev, ratio, &lam, None) {
         c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
     }
     c
@@ -148,7 +148,7 @@ const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
 /// The seed grid's spacing in λ = ln k, its nodes' range |λ| ≤ `GRID_HALF`·`GRID_STEP`, and
 /// the nodes a seed may read before it gives up (a root off the grid, a failed evaluation).
 const GRID_STEP: f64 = 0.25;
-const GRID_HALF: i64 = 64;
+const GRID_HALF: i64 = 63;
 const GRID_READS: usize = 8;
 
 /// The start of an `f64` stage by a fixed rule (`docs/calibration.md`, "The grid seed"): λ at
@@ -165,14 +165,11 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, u
     }
     let target = ratio.to_f64().ln();
     let slots = ev.speed().solve_cache().grid(2 * GRID_HALF as usize + 1);
-    // The distinct nodes read, for the count.
-    let (mut read, mut count) = ([i64::MIN; GRID_READS + 2], 0);
+    // The nodes read (bit j + GRID_HALF), for the count.
+    let mut read = 0u128;
     let mut node = |j: i64| -> Option<(f64, f64, f64)> {
         let slot = slots.get(usize::try_from(j + GRID_HALF).ok()?)?;
-        if !read[..count].contains(&j) {
-            read[count] = j;
-            count += 1;
-        }
+        read |= 1 << (j + GRID_HALF);
         let (g, d) = (*slot.get_or_init(|| grid_node(ev, j as f64 * GRID_STEP)))?;
         Some((j as f64 * GRID_STEP, g - target, d))
     };
@@ -191,7 +188,10 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, u
             let ((l, at_l), (h, at_h)) = (lo?, hi?);
             let nodes = [at_l, at_h, node(l - 1)?, node(h + 1)?];
             let root = inverse_hermite(nodes.map(|(x, y, d)| (x, y, d.recip())));
-            return Some((root.max(at_l.0).min(at_h.0).exp(), count));
+            return Some((
+                root.max(at_l.0).min(at_h.0).exp(),
+                read.count_ones() as usize,
+            ));
         }
         // The nearest node (`as` truncates: shifted by GRID_HALF, a floor), kept inside.
         let i =
