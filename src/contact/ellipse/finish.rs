@@ -29,7 +29,7 @@ fn carry<T: Real>(ci: &mut Evaluation<T>, k_old: &T, k: &T) {
 /// (≤ |λ|ε/2 = 4ε) stays in k and its bound (`docs/calibration.md`).
 const STEP_IN_K_ABOVE: f64 = 8.0;
 
-/// The shape at λ from the integrals `ci` evaluated at `lam_old`, carried to k = e^λ, with
+/// The shape at λ from the integrals `ci` evaluated at `k_old`, carried to k = e^λ, with
 /// `last_step` a bound on |λ − λ*|. Up to |λ| = [`STEP_IN_K_ABOVE`] k's bound is
 /// 2(δI/I)/F′ (F′ floored at 1/4) + 2·last_step + (|λ| + 4)ε. Above, one Newton step in k
 /// itself, k·e^{−F/F′} on the carried integrals, whose bound is the integrals' error through
@@ -39,7 +39,7 @@ const STEP_IN_K_ABOVE: f64 = 8.0;
 #[inline]
 pub(super) fn finish<T: Real>(
     lam: T,
-    lam_old: &T,
+    k_old: T,
     mut ci: Evaluation<T>,
     ratio: &T,
     last_step: T,
@@ -50,7 +50,7 @@ pub(super) fn finish<T: Real>(
     let lam_abs = lam.clone().abs();
     let stepped = lam.exp();
     let own = ci.error_estimate.clone();
-    carry(&mut ci, &lam_old.clone().exp(), &stepped);
+    carry(&mut ci, &k_old, &stepped);
     let df = shape_slope(&stepped, &ci);
     let floor = df.clone().abs().max_of(T::from_ratio(1, 4, p));
     if lam_abs.to_f64() <= STEP_IN_K_ABOVE || !(df.is_positive() && df.is_finite()) {

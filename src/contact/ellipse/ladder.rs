@@ -172,7 +172,7 @@ impl<T: Real> ShapeSolver<T> {
         let c = match c {
             Some(c) => c,
             None => {
-                let (_, df, ci) = residual(&mid.top, &ratio_m, &lam, None).ok()?;
+                let (_, df, ci, _) = residual(&mid.top, &ratio_m, &lam, None).ok()?;
                 Chord::at(lam, df, &ci, None)
             }
         };

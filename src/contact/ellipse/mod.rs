@@ -203,7 +203,7 @@ pub const RATIO_RANGE: (f64, f64) = (1e-100, 1e100);
 /// `ratio` = A1/B1 = R2/R1, for the material and speed of `speed`: above `f64` by the
 /// precision ladder of the module docs, a few evaluations at the working precision.
 ///
-/// Accuracy: k to a few ε (measured ≤ 2.4ε against a 320-bit quadrature solve,
+/// Accuracy: k to a few ε (measured ≤ 2.6ε against a 320-bit quadrature solve,
 /// `tests/contact.rs`; within 4ε where |ln k| is large, `tests/edges.rs`), I1, I2 at k to a
 /// few ε, with bounds that include their carry from the last evaluation to the root. The bound
 /// on k is for the inputs as represented: near the Rayleigh speed k is ill-conditioned in M_R

@@ -27,25 +27,26 @@ pub(super) fn newton_options(method: Method) -> IntegralOptions {
     }
 }
 
-/// F, F′ and the integrals at λ; with `chord` (derivatives kept from an earlier iterate or a
-/// lower stage) the derivatives are not evaluated, and their relative error grows by ≲ 8|Δλ|.
+/// F, F′, the integrals and k = e^λ at λ; with `chord` (derivatives kept from an earlier
+/// iterate or a lower stage) the derivatives are not evaluated, and their relative error grows
+/// by ≲ 8|Δλ|.
 #[inline(always)]
 pub(super) fn residual<T: Real>(
     ev: &Evaluator<T>,
     ratio: &T,
     lam: &T,
     chord: Option<&Chord<T>>,
-) -> Result<(T, T, Evaluation<T>)> {
+) -> Result<(T, T, Evaluation<T>, T)> {
     let ax = AxisRatio::new(lam.clone().exp())?;
     let mut ci = ev.for_newton(&ax, chord.is_none())?;
     let f = shape_residual(&ci, ratio);
     let Some(c) = chord else {
-        return Ok((f, shape_slope(&ax.k, &ci), ci));
+        return Ok((f, shape_slope(&ax.k, &ci), ci, ax.k));
     };
     ci.dk = Some([c.di1.clone(), c.di2.clone()]);
     let age = (lam.clone() - &c.lam).abs().mul_i64(8) + &c.rel_err;
     ci.extra_error = age + &T::epsilon(ratio.prec()).mul_i64(fast::DK_BOUND_EPS);
-    Ok((f, c.df.clone(), ci))
+    Ok((f, c.df.clone(), ci, ax.k))
 }
 
 /// Derivatives kept for chord steps: dI1/dk, dI2/dk and F′ at λ, F′'s relative error (from a
@@ -173,14 +174,14 @@ impl<'a, T: Real> Newton<'a, T> {
         let p = self.prec();
         while self.spent < self.budget {
             let lam = self.lam.clone();
-            let (f, df, ci) = residual(self.evaluator, self.ratio, &lam, self.chord.as_ref())?;
+            let (f, df, ci, k) = residual(self.evaluator, self.ratio, &lam, self.chord.as_ref())?;
             self.spent += 1;
             let fresh = self.chord.is_none();
             if fresh {
                 self.hand_on(&lam, &df, &ci);
             }
             if f.is_zero() {
-                let shape = finish(lam.clone(), &lam, ci, self.ratio, T::zero(p), self.spent);
+                let shape = finish(lam.clone(), k, ci, self.ratio, T::zero(p), self.spent);
                 return Ok((shape, self.fresh_slope));
             }
             if f.is_negative() {
@@ -194,7 +195,7 @@ impl<'a, T: Real> Newton<'a, T> {
             }
             let step = (next.clone() - &lam).abs();
             self.lam = next;
-            if let Some(shape) = self.stop_or_plan(&lam, ci, step, was_newton, fresh) {
+            if let Some(shape) = self.stop_or_plan(&lam, k, ci, step, was_newton, fresh) {
                 return Ok((shape, self.fresh_slope));
             }
         }
@@ -271,6 +272,7 @@ impl<'a, T: Real> Newton<'a, T> {
     fn stop_or_plan(
         &mut self,
         lam_old: &T,
+        k_old: T,
         ci: Evaluation<T>,
         step: T,
         newton: bool,
@@ -285,7 +287,7 @@ impl<'a, T: Real> Newton<'a, T> {
         let small = step <= scale.clone() * &eps.clone().mul_i64(4);
         let stalled = (self.last_step.as_ref())
             .is_some_and(|s| step >= *s && step <= scale.clone() * &eps.clone().mul_i64(64));
-        let done = |err: T| finish(self.lam.clone(), lam_old, ci, self.ratio, err, self.spent);
+        let done = |err: T| finish(self.lam.clone(), k_old, ci, self.ratio, err, self.spent);
         if small || stalled {
             return Some(done(step));
         }
@@ -319,7 +321,7 @@ impl<'a, T: Real> Newton<'a, T> {
     #[inline(never)]
     fn halley_step(&mut self, c: &Chord<T>, (f2, f2_err): (f64, f64)) -> Result<Option<Shape<T>>> {
         let lam = self.lam.clone();
-        let (f, df, ci) = residual(self.evaluator, self.ratio, &lam, None)?;
+        let (f, df, ci, k) = residual(self.evaluator, self.ratio, &lam, None)?;
         self.spent += 1;
         if !(df.is_positive() && df.is_finite()) {
             return Ok(None);
@@ -331,12 +333,12 @@ impl<'a, T: Real> Newton<'a, T> {
         let scale = lam.clone().abs().max_of(T::one(p));
         if err.is_finite() && err <= self.eps.to_f64() * scale.to_f64() / 4.0 {
             let h = newton.clone() - T::from_f64(f2, p) * newton.square() / df.clone().mul_i64(2);
-            let dk = (lam.clone() + &h).exp() - &lam.clone().exp();
+            let dk = (lam.clone() + &h).exp() - &k;
             if let Some(ints) = carry_second(c, &lam, &dk, &ci, self.eps.to_f64()) {
                 let (root, err) = (lam.clone() + h, T::from_f64(err, p));
                 return Ok(Some(finish(
                     root.clone(),
-                    &root,
+                    root.clone().exp(),
                     ints,
                     self.ratio,
                     err,

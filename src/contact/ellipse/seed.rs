@@ -58,7 +58,7 @@ pub(super) fn lowest_stage<S: Real>(
 #[inline(never)]
 fn secant_partner<S: Real>(ev: &Evaluator<S>, ratio: &S, mut c: Chord<S>) -> Chord<S> {
     let lam = c.lam.clone() + S::from_f64(PARTNER_STEP, ratio.prec());
-    if let Ok((_, df, ci)) = residual(ev, ratio, &lam, None) {
+    if let Ok((_, df, ci, _)) = residual(ev, ratio, &lam, None) {
         c.before = Some([lam, df, ci.di1_dk(), ci.di2_dk()]);
     }
     c
@@ -146,59 +146,60 @@ const PROBE_BELOW_RATIO: f64 = 30.0;
 const PROBE_BELOW_SEED_K_EPS: f64 = 0.5;
 
 /// The seed grid's spacing in λ = ln k, its nodes' range |λ| ≤ `GRID_HALF`·`GRID_STEP`, and
-/// the cells a seed may visit before it gives up (a root off the grid, a failed evaluation).
-const GRID_STEP: f64 = 0.5;
-const GRID_HALF: i64 = 32;
-const GRID_VISITS: usize = 4;
+/// the nodes a seed may read before it gives up (a root off the grid, a failed evaluation).
+const GRID_STEP: f64 = 0.25;
+const GRID_HALF: i64 = 63;
+const GRID_READS: usize = 8;
 
-/// The start of an `f64` stage by a fixed rule (`docs/calibration.md`, "The grid seed"): the
-/// root of the cubic through ln(I2/I1) and its λ-derivative at the two nodes of a grid in λ
-/// around the root, from the static seed's cell, then Newton's pick from the nearer end. Each
-/// node is evaluated on an evaluator of its own, once per speed, so that the seed does not
-/// depend on the solves before. Returns the seed and the distinct nodes read; `None` above
-/// `f64`, for the adaptive method, and where the root lies off the grid.
+/// The start of an `f64` stage by a fixed rule (`docs/calibration.md`, "The grid seed"): λ at
+/// ln(A1/B1) of the Hermite interpolant of λ(ln(I2/I1)) with slopes 1/F′ through the four
+/// nodes of a grid in λ around the root (the two that bracket it and one on either side). The
+/// bracket is found from the static seed's nearest node by Newton's step from each node read to
+/// the nearest node inside the bracket so far. Each node is evaluated on an evaluator of its
+/// own, once per speed, so that the seed does not depend on the solves before. Returns the seed
+/// and the distinct nodes read; `None` above `f64`, for the adaptive method, and where the root
+/// lies off the grid.
 pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, usize)> {
     if S::bits(ratio.prec()) > 53 || !matches!(ev.method(), Method::Auto | Method::Fixed) {
         return None;
     }
     let target = ratio.to_f64().ln();
     let slots = ev.speed().solve_cache().grid(2 * GRID_HALF as usize + 1);
-    let node = |j: i64| -> Option<(f64, f64)> {
+    // The nodes read (bit j + GRID_HALF), for the count.
+    let mut read = 0u128;
+    let mut node = |j: i64| -> Option<(f64, f64, f64)> {
         let slot = slots.get(usize::try_from(j + GRID_HALF).ok()?)?;
-        *slot.get_or_init(|| grid_node(ev, j as f64 * GRID_STEP))
+        read |= 1 << (j + GRID_HALF);
+        let (g, d) = (*slot.get_or_init(|| grid_node(ev, j as f64 * GRID_STEP)))?;
+        Some((j as f64 * GRID_STEP, g - target, d))
     };
-    let cell = |lam: f64| {
-        (lam / GRID_STEP)
-            .floor()
-            .clamp(-GRID_HALF as f64, (GRID_HALF - 1) as f64) as i64
+    // Nodes strictly between `lo` and `hi` (index and value) lie inside the bracket.
+    let (mut lo, mut hi) = (None, None);
+    let ratio64 = ratio.to_f64();
+    let mut lam = match ratio64 < ASYMPTOTIC_SEED_RATIO {
+        true => std::f64::consts::FRAC_2_PI * target,
+        false => static_seed_wide(ratio64).ln(),
     };
-    let mut j = cell(static_seed(ratio.to_f64()).ln());
-    // The cells visited, for the count of distinct nodes read.
-    let mut cells = [0i64; GRID_VISITS];
-    for visit in 0..GRID_VISITS {
-        cells[visit] = j;
-        let ((ga, da), (gb, db)) = (node(j)?, node(j + 1)?);
-        if ga <= target && target <= gb {
-            let t = cubic_root(ga - target, gb - target, da * GRID_STEP, db * GRID_STEP)?;
-            let seen = &cells[..=visit];
-            let nodes = (seen.iter().map(|&c| [c, c + 1]).enumerate())
-                .flat_map(|(i, pair)| pair.map(|n| (i, n)))
-                .filter(|&(i, n)| !seen[..i].iter().any(|&c| c == n || c + 1 == n))
-                .count();
-            return Some((((j as f64 + t) * GRID_STEP).exp(), nodes));
+    for _ in 0..GRID_READS {
+        let first = lo.map_or(1 - GRID_HALF, |(l, _)| l + 1);
+        let last = hi.map_or(GRID_HALF - 1, |(h, _)| h - 1);
+        if first > last {
+            // The interpolant also reads a node beyond each end of the bracket.
+            let ((l, at_l), (h, at_h)) = (lo?, hi?);
+            let nodes = [at_l, at_h, node(l - 1)?, node(h + 1)?];
+            let root = inverse_hermite(nodes.map(|(x, y, d)| (x, y, d.recip())));
+            return Some((
+                root.max(at_l.0).min(at_h.0).exp(),
+                read.count_ones() as usize,
+            ));
         }
-        let (lam, g, d) = if target < ga {
-            (j as f64 * GRID_STEP, ga, da)
-        } else {
-            ((j + 1) as f64 * GRID_STEP, gb, db)
-        };
-        // Newton's pick from the nearer end, at least one cell towards the target.
-        let next = cell(lam - (g - target) / d);
-        j = if target < ga {
-            next.min(j - 1)
-        } else {
-            next.max(j + 1)
-        };
+        // The nearest node (`as` truncates: shifted by GRID_HALF, a floor), kept inside.
+        let i =
+            ((lam / GRID_STEP + (GRID_HALF as f64 + 0.5)) as i64 - GRID_HALF).clamp(first, last);
+        let at = node(i)?;
+        *(if at.1 <= 0.0 { &mut lo } else { &mut hi }) = Some((i, at));
+        // Newton's step from it.
+        lam = at.0 - at.1 / at.2;
     }
     None
 }
@@ -214,25 +215,19 @@ fn grid_node<S: Real>(ev: &Evaluator<S>, lam: f64) -> Option<(f64, f64)> {
     (g.is_finite() && d.is_finite() && d > 0.0).then_some((g, d))
 }
 
-/// The root t ∈ [0, 1] of the cubic Hermite interpolant through y(0) = ya ≤ 0 ≤ y(1) = yb
-/// with slopes da, db, by Newton's method from the chord's root clamped to [0, 1]; `None` if it
-/// does not settle within eight steps.
-fn cubic_root(ya: f64, yb: f64, da: f64, db: f64) -> Option<f64> {
-    // y(t) = ya + da·t + c2·t² + c3·t³.
-    let c3 = da + db - 2.0 * (yb - ya);
-    let c2 = yb - ya - da - c3;
-    let mut t = if yb > ya { -ya / (yb - ya) } else { 0.5 };
-    for _ in 0..8 {
-        let y = ya + t * (da + t * (c2 + t * c3));
-        let dy = da + t * (2.0 * c2 + t * 3.0 * c3);
-        if dy.is_nan() || dy <= 0.0 {
-            return None;
+/// The value at 0 of the Hermite interpolant x(y) through the points (xᵢ, yᵢ) with slopes
+/// dx/dy = sᵢ (`nodes`: (xᵢ, yᵢ, sᵢ), the yᵢ distinct), by Newton's divided differences on
+/// the doubled nodes.
+fn inverse_hermite(nodes: [(f64, f64, f64); 4]) -> f64 {
+    let y: [f64; 8] = std::array::from_fn(|i| nodes[i / 2].1);
+    let mut c: [f64; 8] = std::array::from_fn(|i| nodes[i / 2].0);
+    for order in 1..8 {
+        for i in (order..8).rev() {
+            c[i] = match order == 1 && i % 2 == 1 {
+                true => nodes[i / 2].2,
+                false => (c[i] - c[i - 1]) / (y[i] - y[i - order]),
+            };
         }
-        let next = (t - y / dy).clamp(0.0, 1.0);
-        if (next - t).abs() <= 1e-12 {
-            return Some(next);
-        }
-        t = next;
     }
-    None
+    (0..7).rev().fold(c[7], |x, i| c[i] - x * y[i])
 }
