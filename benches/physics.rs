@@ -1,13 +1,11 @@
 //! Cost of the physics per precision: the Rayleigh roots (the polished default and the two closed
-//! forms), the stable Rayleigh function R, Γ (5)/(44) and G (45), at ν = 0.25, M_R = 0.9, at f64,
+//! forms) and G (45), at ν = 0.25, M_R = 0.9, at f64,
 //! double-double and MPFR 128 and 256 bits.
 //!
 //! Run: `cargo bench --bench physics -- --warm-up-time 1 --measurement-time 3`
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
-use moving_hertz::physics::{
-    rayleigh_function, ClosedForm, GreenFunction, Material, RayleighRoots,
-};
+use moving_hertz::physics::{ClosedForm, GreenFunction, Material, RayleighRoots};
 use moving_hertz::scalar::{Dd, Mp, MpPrec, Real};
 
 fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
@@ -28,10 +26,6 @@ fn run<T: Real>(c: &mut Criterion, label: &str, p: T::Prec) {
     g.bench_function("roots/complex-cardano", |b| {
         b.iter(|| RayleighRoots::closed_form(black_box(&nu), ClosedForm::ComplexCardano))
     });
-    g.bench_function("R(V)", |b| {
-        b.iter(|| rayleigh_function(black_box(&mat), black_box(&speed)))
-    });
-    g.bench_function("Gamma(V)", |b| b.iter(|| green.gamma(black_box(&speed))));
     g.bench_function("G(V)", |b| b.iter(|| green.g_regular(black_box(&t))));
     g.finish();
 }

@@ -88,7 +88,7 @@ fn static_limit<T: Real>(p: T::Prec, label: &str) {
         let mu = T::parse("3.5", p).unwrap();
         let load = T::parse("0.75", p).unwrap();
         let sol = contact(&sp, &r1, &r2, Loading::Load(load.clone()), &mu).unwrap();
-        let estar = mu.clone().mul_i64(2) / mat.one_minus_nu();
+        let estar = mu.clone().mul_i64(2) / (T::one(p) - mat.nu());
         let (a, b, p0, d0) = johnson(p, &load, &r1, &r2, &estar);
         for (name, got, want) in [
             ("a", &sol.a().value, &a),

@@ -7,7 +7,7 @@
 //! carried exactly by 1 − M_R² = (1 − M_R)(1 + M_R). Relative accuracy: a few ε for every
 //! 0 ≤ M_R < 1 (`tests/rayleigh.rs`, `green_function_static_limit_and_reference`).
 
-use super::material::{Material, Speed};
+use super::material::Material;
 use crate::scalar::Real;
 
 /// Constants of Γ and G for one material, precomputed at the working precision.
@@ -88,11 +88,6 @@ impl<T: Real> GreenFunction<T> {
         (d_sa * d / &quad + sa0 * d_dq) * &self.inv_pi_m1
     }
 
-    /// Γ(V) of (5) for the speed `v`, as −G/(1 − M_R²) (44). Negative; Γ(0) = −(1 − ν)/π.
-    pub fn gamma(&self, v: &Speed<T>) -> T {
-        -(self.g_regular(v.mr2()) / v.one_minus_mr2())
-    }
-
     /// g = −πΓ = π G/(1 − t) at t = (V'/c_R)², given also 1 − t (formed by the caller without
     /// cancellation). g(0) = 1 − ν = f0 of the series (35).
     #[inline]
@@ -106,19 +101,4 @@ impl<T: Real> GreenFunction<T> {
     pub fn pi(&self) -> &T {
         &self.pi
     }
-}
-
-/// The stable Rayleigh function R(V) = x (x − m1)(x² − s x + q)/D of the rationalised form,
-/// accurate to a few ε for every 0 ≤ M_R < 1 (the printed (6) loses everything as V → 0).
-pub fn rayleigh_function<T: Real>(mat: &Material<T>, v: &Speed<T>) -> T {
-    let p = v.mr().prec();
-    let one = T::one(p);
-    let x = v.m2sq().clone();
-    let a = one.clone() - v.m1sq();
-    let b = one - &x;
-    let d = (T::from_i64(2, p) - &x).square() + (a * b).sqrt().mul_i64(4);
-    let r = mat.roots();
-    let quad = x.clone() * (x.clone() - &r.sum23) + &r.prod23;
-    // x − m1 = −m1 (1 − M_R²).
-    -(x * &r.m1 * v.one_minus_mr2() * quad / d)
 }

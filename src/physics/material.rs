@@ -21,7 +21,6 @@ use rug::Rational;
 #[derive(Clone, Debug)]
 pub struct Material<T: Real> {
     nu: T,
-    one_minus_nu: T,
     gamma: T,
     roots: RayleighRoots<T>,
     /// πG(1): the regular part of the Green's function at the Rayleigh speed.
@@ -41,12 +40,10 @@ impl<T: Real> Material<T> {
         if nu <= T::from_i64(-1, p) || nu > T::from_ratio(1, 2, p) {
             return Err(Error::domain(NU_NAME, short(&nu), NU_BOUND));
         }
-        let one_minus_nu = T::one(p) - &nu;
         let gamma = gamma_of(&nu);
         let roots = RayleighRoots::new(&nu)?;
         let mut mat = Material {
             nu,
-            one_minus_nu,
             gamma,
             roots,
             pi_g_rayleigh: T::zero(p),
@@ -79,11 +76,6 @@ impl<T: Real> Material<T> {
     /// precision).
     pub fn nu(&self) -> &T {
         &self.nu
-    }
-    /// 1 − ν (the static value f0 of the normalised Green's function g = −πΓ, (35));
-    /// correctly rounded.
-    pub fn one_minus_nu(&self) -> &T {
-        &self.one_minus_nu
     }
     /// γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)) (the ratio in M1² = γM2² of (5)); within 2 ε.
     pub fn gamma(&self) -> &T {
@@ -201,16 +193,10 @@ impl<T: Real> Material<T> {
 }
 
 /// γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)) (M1² = γM2² in (5)): exact over [`rug::Rational`],
-/// within 2 ε otherwise.
+/// within 2 ε otherwise. The map is its own inverse: ν = (1 − 2γ)/(2(1 − γ)) is `gamma_of(γ)`.
 pub fn gamma_of<F: Field>(nu: &F) -> F {
     let one = F::one(nu.prec());
     (one.clone() - nu.clone().mul_i64(2)) / (one - nu).mul_i64(2)
-}
-
-/// ν = (1 − 2γ)/(2(1 − γ)): Poisson's ratio of γ = (c2/c1)² (the inverse of [`gamma_of`], the
-/// same form: the map is its own inverse); exact over [`rug::Rational`], within 2 ε otherwise.
-pub fn nu_of_gamma<F: Field>(gamma: &F) -> F {
-    gamma_of(gamma)
 }
 
 const MR_NAME: &str = "speed M_R = V/c_R";
@@ -352,10 +338,6 @@ impl<T: Real> Speed<T> {
     /// M1² = γ·M2² (the squared dilatational Mach number of (5)); within a few ε.
     pub fn m1sq(&self) -> &T {
         &self.m1sq
-    }
-    /// M2 = V/c2 ((5)); within a few ε.
-    pub fn m2(&self) -> T {
-        self.m2sq.clone().sqrt()
     }
 
     /// This speed (and its material) at another precision `q`, the gap rounded on its own: the

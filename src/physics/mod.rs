@@ -10,7 +10,7 @@ pub mod material;
 pub mod rayleigh;
 pub mod solid;
 
-pub use green::{rayleigh_function, GreenFunction};
+pub use green::GreenFunction;
 pub use material::{Material, Speed};
 pub use rayleigh::{ClosedForm, RayleighRoots};
 pub use solid::{Moduli, Solid};

@@ -5,7 +5,7 @@
 //! once: `docs/theory.md`, "Physical units". Each formula is written once below, generic over
 //! [`Field`] where it is rational. Units: any consistent system; SI gives m/s.
 
-use super::material::{gamma_of, nu_of_gamma, round_rational, Material, Speed};
+use super::material::{gamma_of, round_rational, Material, Speed};
 use super::rayleigh::RayleighRoots;
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, decimal_to_rational, short, Field, Mp, MpPrec, Precision, Real};
@@ -57,12 +57,6 @@ impl<X> Moduli<X> {
 /// Poisson's ratio; exact over [`rug::Rational`], a few ε otherwise.
 pub fn shear_from_youngs<F: Field>(youngs_modulus: &F, nu: &F) -> F {
     youngs_modulus.clone() / (F::one(nu.prec()) + nu).mul_i64(2)
-}
-
-/// c2² = μ/ρ: the squared shear-wave speed from the shear modulus and the density (the c2 of
-/// (5)); exact over [`rug::Rational`].
-pub fn shear_speed_squared<F: Field>(shear_modulus: &F, density: &F) -> F {
-    shear_modulus.clone() / density
 }
 
 /// An isotropic elastic half-space with its wave speeds in physical units: the [`Material`]
@@ -242,7 +236,7 @@ impl<T: Real> Solid<T> {
             };
         }
         let (mu, rho) = (mu.positive()?, rho.positive()?);
-        let c2_squared = shear_speed_squared(&mu.exact, &rho.exact);
+        let c2_squared = mu.exact.clone() / &rho.exact; // c2² = μ/ρ, exact
         let (mu, rho) = (mu.round::<T>(p)?, rho.round::<T>(p)?);
         Solid::finish(material, nu_exact, c2_squared, Some(mu), Some(rho))
     }
@@ -259,7 +253,7 @@ impl<T: Real> Solid<T> {
                 "(0, sqrt(3)/2)",
             ));
         }
-        let nu_exact = nu_of_gamma(&gamma);
+        let nu_exact = gamma_of(&gamma); // its own inverse: ν of γ
         let text = format!(
             "{} (from c1 = {}, c2 = {})",
             short_rational(&nu_exact),

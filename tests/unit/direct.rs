@@ -234,7 +234,7 @@ fn static_limit<T: Real>(p: T::Prec, label: &str) {
         let sp = mat.speed(T::zero(p)).unwrap();
         let ax = AxisRatio::new(T::parse(k, p).unwrap()).unwrap();
         let r = direct::quadrature(&sp, &ax, &T::zero(p)).unwrap();
-        let two_f0 = mat.one_minus_nu().clone().mul_i64(2);
+        let two_f0 = (T::one(p) - mat.nu()).mul_i64(2);
         let d = ellipd_mc(&ax.k2).unwrap();
         let (_, ee) = ellipke_mc(&ax.k2).unwrap();
         let i1 = two_f0.clone() * (ee / &ax.k2 - &d);
