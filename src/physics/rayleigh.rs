@@ -43,7 +43,7 @@ pub enum ClosedForm {
 /// Coefficients (descending powers) of (1 − ν)·P(x) = (1 − ν)x³ − 8(1 − ν)x² + 8(2 − ν)x − 8.
 /// The Rayleigh cubic (6) scaled by 1 − ν; exact in the field operations of the backend (rounded
 /// once a coefficient).
-pub fn cubic_coefficients<T: Real>(nu: &T) -> [T; 4] {
+fn cubic_coefficients<T: Real>(nu: &T) -> [T; 4] {
     let p = nu.prec();
     let one_m = T::one(p) - nu;
     let two_m = T::from_i64(2, p) - nu;
@@ -59,7 +59,7 @@ pub fn cubic_coefficients<T: Real>(nu: &T) -> [T; 4] {
 /// p = 8w − 40/3 and q = 40w/3 − 448/27.
 /// The Rayleigh cubic (6) shifted for Cardano's form; each coefficient rounded a few times (its
 /// cancellation near ν ≈ 0.263 is the closed forms' weakness, docs/rayleigh.md).
-pub fn depressed_cubic<T: Real>(nu: &T) -> (T, T) {
+fn depressed_cubic<T: Real>(nu: &T) -> (T, T) {
     let pr = nu.prec();
     let w = (T::one(pr) - nu).recip();
     let pp = w.clone().mul_i64(8) - T::from_ratio(40, 3, pr);
@@ -136,72 +136,56 @@ impl<T: Real> RayleighRoots<T> {
         let (pp, qq) = depressed_cubic(nu);
         let d = discriminant(&pp, &qq);
         let complex_pair = !d.is_negative();
-        let shift = T::from_ratio(8, 3, pr);
-        let mut roots: [Complex<T>; 3] = match form {
+        let (p3, mq2) = (pp.div_i64(3), -(qq.clone().mul_pow2(-1)));
+        let sqrt3_2 = || T::from_i64(3, pr).sqrt().mul_pow2(-1);
+        // The roots t of the depressed cubic.
+        let ts: [Complex<T>; 3] = match form {
             ClosedForm::ComplexCardano => {
-                let sd = Complex::from_real(d).sqrt();
-                let mq2 = Complex::from_real(-(qq.mul_pow2(-1)));
+                let (sd, mq2) = (Complex::from_real(d).sqrt(), Complex::from_real(mq2));
                 let mut c = (mq2.clone() + &sd).cbrt();
                 if c.re.is_zero() && c.im.is_zero() {
                     c = (mq2 - sd).cbrt();
                 }
-                let half = T::from_ratio(1, 2, pr);
-                let s3h = T::from_i64(3, pr).sqrt().mul_pow2(-1);
-                let omega = Complex::new(-half, s3h);
-                let p3 = Complex::from_real(pp.div_i64(3));
-                let mut ck = c;
+                let omega = Complex::new(-T::from_ratio(1, 2, pr), sqrt3_2());
+                let p3 = Complex::from_real(p3);
                 std::array::from_fn(|_| {
-                    let t = ck.clone() - p3.clone() / &ck;
-                    ck = ck.clone() * &omega;
-                    Complex::new(t.re + &shift, t.im)
+                    let t = c.clone() - p3.clone() / &c;
+                    c = c.clone() * &omega;
+                    t
+                })
+            }
+            ClosedForm::RealBranches if d.is_negative() => {
+                let r = (-p3).sqrt();
+                let one = T::one(pr);
+                let c = (mq2 / r.clone().powi(3)).min_of(one.clone()).max_of(-one);
+                let (theta, two_pi) = (c.acos(), T::pi(pr).mul_pow2(1));
+                std::array::from_fn(|k| {
+                    let ang = (theta.clone() - two_pi.clone().mul_i64(k as i64)).div_i64(3);
+                    Complex::from_real(r.clone().mul_pow2(1) * ang.cos())
                 })
             }
             ClosedForm::RealBranches => {
-                if d.is_negative() {
-                    let r = (-(pp.div_i64(3))).sqrt();
-                    let one = T::one(pr);
-                    let mut c = (-(qq.mul_pow2(-1))) / r.powi(3);
-                    if c > one {
-                        c = one.clone();
-                    } else if c < -one.clone() {
-                        c = -one;
-                    }
-                    let theta = c.acos();
-                    let two_pi = T::pi(pr).mul_pow2(1);
-                    std::array::from_fn(|k| {
-                        let ang = (theta.clone() - two_pi.clone().mul_i64(k as i64)).div_i64(3);
-                        Complex::from_real(r.clone().mul_pow2(1) * ang.cos() + &shift)
-                    })
+                // Cube root of the term without cancellation, the other from A·B = −p/3.
+                let sd = d.sqrt();
+                let w = if qq.is_negative() {
+                    mq2 + &sd
                 } else {
-                    // Cube root of the term without cancellation, the other from A·B = −p/3.
-                    let sd = d.sqrt();
-                    let w = if qq.is_negative() {
-                        -(qq.mul_pow2(-1)) + &sd
-                    } else {
-                        -(qq.mul_pow2(-1)) - &sd
-                    };
-                    let a = w.cbrt();
-                    let b = if a.is_zero() {
-                        T::zero(pr)
-                    } else {
-                        -(pp.div_i64(3)) / &a
-                    };
-                    let t1 = a.clone() + &b;
-                    let re = -(t1.clone().mul_pow2(-1)) + &shift;
-                    let im = T::from_i64(3, pr).sqrt().mul_pow2(-1) * (a - b).abs();
-                    [
-                        Complex::from_real(t1 + &shift),
-                        Complex::new(re.clone(), im.clone()),
-                        Complex::new(re, -im),
-                    ]
-                }
+                    mq2 - &sd
+                };
+                let a = w.cbrt();
+                let b = if a.is_zero() { T::zero(pr) } else { -p3 / &a };
+                let re = -((a.clone() + &b).mul_pow2(-1));
+                let im = sqrt3_2() * (a.clone() - &b).abs();
+                let pair = Complex::new(re.clone(), im.clone());
+                [Complex::from_real(a + b), pair, Complex::new(re, -im)]
             }
         };
+        let shift = T::from_ratio(8, 3, pr);
+        let mut roots = ts.map(|t| Complex::new(t.re + &shift, t.im));
         // m1 has the smallest real part; the others ascend (three real roots) or come as the
         // pair with Im m2 > 0 (complex regime, decided by the sign of the discriminant).
         roots.sort_by(|a, b| a.re.partial_cmp(&b.re).unwrap_or(std::cmp::Ordering::Equal));
         let [m1, m2, m3] = roots;
-        let m1 = m1.re;
         let (m2, m3) = if complex_pair && m2.im.is_negative() {
             (m3, m2)
         } else {
@@ -210,7 +194,7 @@ impl<T: Real> RayleighRoots<T> {
         let sum23 = m2.re.clone() + &m3.re;
         let prod23 = (m2.clone() * &m3).re;
         RayleighRoots {
-            m1,
+            m1: m1.re,
             m2,
             m3,
             sum23,
