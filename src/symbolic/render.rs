@@ -52,14 +52,29 @@ impl Variable {
     }
     /// v^k as `style` writes it.
     fn power(self, k: usize, style: Style) -> String {
-        let v = self.name(style);
         match (style, self) {
             (Style::Latex, Variable::E2) => format!("e^{{{}}}", 2 * k),
-            (_, _) if k == 1 => v.to_string(),
-            (Style::Latex, _) => format!("{v}^{{{k}}}"),
-            (Style::Text, _) => format!("{v}^{k}"),
-            _ => format!("{v}**{k}"),
+            _ => power(self.name(style), k, style),
         }
+    }
+}
+
+/// `base`^k as `style` writes it (`base` alone for k = 1).
+fn power(base: &str, k: usize, style: Style) -> String {
+    match style {
+        _ if k == 1 => base.to_string(),
+        Style::Latex => format!("{base}^{{{k}}}"),
+        Style::Text => format!("{base}^{k}"),
+        _ => format!("{base}**{k}"),
+    }
+}
+
+/// `s` in parentheses when `wrap`.
+fn wrapped(s: String, wrap: bool) -> String {
+    if wrap {
+        format!("({s})")
+    } else {
+        s
     }
 }
 
@@ -79,24 +94,23 @@ fn int_poly(c: &[Integer], v: Variable, style: Style) -> String {
             out.push_str(if neg { " - " } else { " + " });
         }
         let abs = Integer::from(a.abs_ref());
-        let (mul, _) = operators(style);
         if k == 0 {
             let _ = write!(out, "{abs}");
         } else if abs == 1 {
             out.push_str(&v.power(k, style));
         } else {
-            let _ = write!(out, "{abs}{mul}{}", v.power(k, style));
+            let _ = write!(out, "{abs}{}{}", times(style), v.power(k, style));
         }
     }
     out
 }
 
-/// The signs of a product and a power as `style` writes them.
-fn operators(style: Style) -> (&'static str, &'static str) {
+/// The sign of a product as `style` writes it.
+fn times(style: Style) -> &'static str {
     match style {
-        Style::Latex => ("\\,", "^"),
-        Style::Text => (" ", "^"),
-        _ => ("*", "**"),
+        Style::Latex => "\\,",
+        Style::Text => " ",
+        _ => "*",
     }
 }
 
@@ -134,75 +148,56 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
         r *= Rational::from(Integer::from(rug::ops::Pow::pow(&lead, *e)));
         bases.push((qi, *e));
     }
-    let neg = r.cmp0() == Ordering::Less;
+    let (neg, latex, mul) = (
+        r.cmp0() == Ordering::Less,
+        style == Style::Latex,
+        times(style),
+    );
     let (a, b) = (Integer::from(r.numer().abs_ref()), r.denom().clone());
-    let latex = style == Style::Latex;
-    let (mul, pow) = operators(style);
     let has_den = b != 1 || !bases.is_empty();
-    // Numerator: [A ·] [x^k ·] P.
-    let mut num_parts: Vec<String> = Vec::new();
+    // Numerator: [A ·] [x^k ·] P; P stands bare when nothing precedes it and the sign or a
+    // bar cannot be misread.
+    let mut num = Vec::new();
     if a != 1 {
-        num_parts.push(a.to_string());
+        num.push(a.to_string());
     }
     if xpow > 0 {
-        num_parts.push(match (latex, xpow) {
-            (_, 1) => "x".into(),
-            (true, k) => format!("x^{{{k}}}"),
-            (false, k) => format!("x{pow}{k}"),
-        });
+        num.push(power("x", xpow, style));
     }
     if prim.len() > 1 {
-        let p = int_poly(&prim, v, style);
-        // P stands bare when nothing precedes it and the sign or a bar cannot be misread.
-        let bare = num_parts.is_empty()
-            && if latex {
-                has_den || !neg
-            } else {
-                !has_den && !neg
-            };
-        num_parts.push(if bare || terms(&prim) == 1 {
-            p
-        } else {
-            format!("({p})")
-        });
+        let bare = num.is_empty() && (latex && has_den || !neg && (latex || !has_den));
+        num.push(wrapped(
+            int_poly(&prim, v, style),
+            !bare && terms(&prim) > 1,
+        ));
     }
-    let num = if num_parts.is_empty() {
+    let num = if num.is_empty() {
         "1".to_string()
     } else {
-        num_parts.join(mul)
+        num.join(mul)
     };
     let sign = if neg { "-" } else { "" };
     if !has_den {
         return format!("{sign}{num}");
     }
-    // Denominator: [B ·] Π base^e.
-    let mut den_parts: Vec<String> = Vec::new();
+    // Denominator: [B ·] Π base^e (the base v itself as v's power).
+    let mut den = Vec::new();
     if b != 1 {
-        den_parts.push(b.to_string());
+        den.push(b.to_string());
     }
     let lone = b == 1 && bases.len() == 1;
     for (qi, e) in &bases {
-        let s = int_poly(qi, v, style);
-        let wrap = terms(qi) > 1 && (!latex || *e > 1 || !lone);
-        let s = if wrap { format!("({s})") } else { s };
-        den_parts.push(match (style, *e) {
-            (_, 1) => s,
-            (Style::Latex, e) if v == Variable::E2 && terms(qi) == 1 && qi.len() == 2 => {
-                format!("e^{{{}}}", 2 * e)
-            }
-            (Style::Latex, e) => format!("{s}^{{{e}}}"),
-            (_, e) => format!("{s}{pow}{e}"),
+        den.push(if terms(qi) == 1 && qi.len() == 2 {
+            v.power(*e as usize, style)
+        } else {
+            let wrap = terms(qi) > 1 && (!latex || *e > 1 || !lone);
+            power(&wrapped(int_poly(qi, v, style), wrap), *e as usize, style)
         });
     }
     if latex {
-        return format!("{sign}\\frac{{{num}}}{{{}}}", den_parts.join(mul));
+        return format!("{sign}\\frac{{{num}}}{{{}}}", den.join(mul));
     }
-    let den = if den_parts.len() > 1 {
-        format!("({})", den_parts.join(mul))
-    } else {
-        den_parts.remove(0)
-    };
-    format!("{sign}{num}/{den}")
+    format!("{sign}{num}/{}", wrapped(den.join(mul), den.len() > 1))
 }
 
 /// One named function for [`render`]: `name = value(v) · x^xpow`.
