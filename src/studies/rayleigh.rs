@@ -53,8 +53,7 @@ pub fn nu_grid() -> Vec<f64> {
 fn errors<T: Real>(roots: &RayleighRoots<T>, reference: &RayleighRoots<Mp>) -> (f64, f64) {
     let bits = 700;
     let eps = T::epsilon(roots.m1.prec()).to_f64();
-    let m1r = reference.m1.to_float(bits);
-    let e1 = Float::with_val(bits, &roots.m1.to_float(bits) - &m1r) / &m1r;
+    let e1 = super::rel_error(&roots.m1, &reference.m1.to_float(bits), bits);
     let mut e23: f64 = 0.0;
     for (got, want) in [(&roots.m2, &reference.m2), (&roots.m3, &reference.m3)] {
         let modulus = want.abs().to_float(bits);
@@ -63,7 +62,7 @@ fn errors<T: Real>(roots: &RayleighRoots<T>, reference: &RayleighRoots<Mp>) -> (
         let d = Float::with_val(bits, dr.hypot(&di)) / &modulus;
         e23 = e23.max(d.to_f64() / eps);
     }
-    (e1.to_f64().abs() / eps, e23)
+    (e1 / eps, e23)
 }
 
 fn measure_at<T: Real>(p: T::Prec, label: Precision, nus: &[f64], out: &mut Vec<RootError>) {
@@ -97,48 +96,57 @@ fn measure_at<T: Real>(p: T::Prec, label: Precision, nus: &[f64], out: &mut Vec<
 /// few percent.
 pub fn run(nus: &[f64]) -> Vec<RootError> {
     let mut out = Vec::new();
-    for prec in super::precisions(&[128, 256]) {
+    for prec in precisions() {
         moving_hertz::with_precision!(prec, T, p => measure_at::<T>(p, prec, nus, &mut out));
     }
     out
 }
 
+/// The methods compared, in the order of the charts and the summary.
+const METHODS: [&str; 3] = ["complex-cardano", "real-branches", "default"];
+
+/// The root groups: m1 (relative error) and m2, m3 (relative to the modulus), in ε.
+const GROUPS: [(&str, fn(&RootError) -> f64); 2] = [("m1", |r| r.m1), ("m2,m3", |r| r.m23)];
+
+/// The rows of one precision and method.
+fn of<'a>(
+    rows: &'a [RootError],
+    prec: Precision,
+    method: &'a str,
+) -> impl Iterator<Item = &'a RootError> {
+    rows.iter()
+        .filter(move |r| r.precision == prec && r.method == method)
+}
+
 /// Charts: one per precision, error (ε, log scale) against ν, for each method and root group.
 /// Draws the errors of the roots of (6); no arithmetic beyond plotting.
 pub fn charts(rows: &[RootError]) -> Vec<(String, String)> {
-    precisions(rows)
-        .into_iter()
-        .map(|prec| {
-            let mut chart = Chart::new(
-                format!(
-                    "Rayleigh roots at {}: error against ν (0 plotted as 0.01 ε)",
-                    prec.label()
-                ),
-                "Poisson's ratio ν",
-                "error / ε (m1 relative; m2, m3 relative to |m|)",
-            )
-            .log(false, true);
-            for method in ["complex-cardano", "real-branches", "default"] {
-                for (which, pick) in [("m1", 0usize), ("m2,m3", 1)] {
-                    let pts = rows
-                        .iter()
-                        .filter(|r| r.precision == prec && r.method == method)
-                        .map(|r| (r.nu, if pick == 0 { r.m1 } else { r.m23 }.max(1e-2)))
-                        .collect();
-                    let style = if method == "default" {
-                        Style::Line
-                    } else {
-                        Style::Markers
-                    };
-                    chart.push(Series::new(format!("{method} {which}"), pts, style));
-                }
+    let chart = |prec: Precision| {
+        let l = prec.label();
+        let mut chart = Chart::new(
+            format!("Rayleigh roots at {l}: error against ν (0 plotted as 0.01 ε)"),
+            "Poisson's ratio ν",
+            "error / ε (m1 relative; m2, m3 relative to |m|)",
+        )
+        .log(false, true);
+        for method in METHODS {
+            let style = if method == "default" {
+                Style::Line
+            } else {
+                Style::Markers
+            };
+            for (which, err) in GROUPS {
+                let pts = of(rows, prec, method).map(|r| (r.nu, err(r).max(1e-2)));
+                chart.push(Series::new(
+                    format!("{method} {which}"),
+                    pts.collect(),
+                    style,
+                ));
             }
-            (
-                format!("rayleigh_stability_{}.svg", prec.label()),
-                chart.to_svg(),
-            )
-        })
-        .collect()
+        }
+        (format!("rayleigh_stability_{l}.svg"), chart.to_svg())
+    };
+    precisions().into_iter().map(chart).collect()
 }
 
 /// Two close-ups, log-log against the distance to the special point: m2, m3 near the merge ν*
@@ -157,18 +165,11 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
         "relative error of m1 / ε",
     )
     .log(true, true);
-    let precs = precisions(rows);
-    // The errors of one method near the point c, against |ν − c|, sorted.
-    let near = |prec: Precision, c: f64, method: &str, pick_m1: bool| -> Vec<(f64, f64)> {
-        let mut v: Vec<(f64, f64)> = rows
-            .iter()
-            .filter(|r| r.precision == prec && r.method == method && (r.nu - c).abs() < 0.05)
-            .map(|r| {
-                (
-                    (r.nu - c).abs(),
-                    if pick_m1 { r.m1 } else { r.m23 }.max(1e-2),
-                )
-            })
+    // The errors `err` of one method near the point c, against |ν − c|, sorted.
+    let near = |prec, c: f64, method, err: fn(&RootError) -> f64| {
+        let near_c = of(rows, prec, method).filter(|r| (r.nu - c).abs() < 0.05);
+        let mut v: Vec<(f64, f64)> = near_c
+            .map(|r| ((r.nu - c).abs(), err(r).max(1e-2)))
             .collect();
         v.sort_by(|a, b| a.0.total_cmp(&b.0));
         v
@@ -178,11 +179,11 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
         ("real-branches", "complex-cardano", Style::LineMarkers),
         ("default", "default", Style::Dashed),
     ] {
-        for &prec in &precs {
+        for prec in precisions() {
             let l = prec.label();
-            let at_merge = near(prec, NU_STAR, m_merge, false);
+            let at_merge = near(prec, NU_STAR, m_merge, GROUPS[1].1);
             merge.push(Series::new(format!("{m_merge} {l}"), at_merge, style));
-            let at_p0 = near(prec, 0.4, m_p0, true);
+            let at_p0 = near(prec, 0.4, m_p0, GROUPS[0].1);
             p0.push(Series::new(format!("{m_p0} {l}"), at_p0, style));
         }
     }
@@ -197,11 +198,10 @@ pub fn closeups(rows: &[RootError]) -> Vec<(String, String)> {
 /// Tabulates the errors of the roots of (6) as measured.
 pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
     let mut out = Vec::new();
-    for prec in precisions(rows) {
-        for method in ["complex-cardano", "real-branches", "default"] {
+    for prec in precisions() {
+        for method in METHODS {
             let [a, b, c, d] = REGIONS.map(|(_, inside)| {
-                let sel = (rows.iter())
-                    .filter(|r| r.precision == prec && r.method == method && inside(r.nu));
+                let sel = of(rows, prec, method).filter(|r| inside(r.nu));
                 let (w1, w23) = sel.fold((0.0f64, 0.0f64), |(a, b), r| (a.max(r.m1), b.max(r.m23)));
                 format!("{} / {}", fmt_eps(w1), fmt_eps(w23))
             });
@@ -209,6 +209,11 @@ pub fn summary(rows: &[RootError]) -> Vec<[String; 6]> {
         }
     }
     out
+}
+
+/// The precisions of the study: f64, double-double, MPFR 128 and 256 bits.
+fn precisions() -> Vec<Precision> {
+    super::precisions(&[128, 256])
 }
 
 /// ν ≈ 0.26308, where the roots m2 and m3 of (6) merge.
@@ -226,17 +231,6 @@ pub const REGIONS: [Region; 4] = [
         !(-0.99..=0.499).contains(&nu)
     }),
 ];
-
-/// The precisions of `rows`, in their order of first appearance.
-fn precisions(rows: &[RootError]) -> Vec<Precision> {
-    let mut precs: Vec<Precision> = Vec::new();
-    for r in rows {
-        if !precs.contains(&r.precision) {
-            precs.push(r.precision);
-        }
-    }
-    precs
-}
 
 fn fmt_eps(e: f64) -> String {
     if e < 10.0 {
