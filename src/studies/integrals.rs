@@ -97,9 +97,7 @@ fn measure<T: Real>(
         work: 0,
         failure: None,
     };
-    if let Err(why) = timed::<T>(exact, p, method, budget_ms, &mut row) {
-        row.failure = Some(why);
-    }
+    row.failure = timed::<T>(exact, p, method, budget_ms, &mut row).err();
     row
 }
 
@@ -159,24 +157,22 @@ pub fn run(
 /// drawn from. An error names the line that does not read.
 /// Reads the measurements of the routes to (34) back; no arithmetic.
 pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
-    (0..table.rows.len())
-        .map(|i| {
-            let (method, failure) = (table.text(i, "method")?, table.text(i, "failure")?);
-            let route = METHODS.into_iter().find(|(r, _)| r.label() == method);
-            Ok(Row {
-                mr: table.text(i, "mr")?,
-                method: route
-                    .ok_or_else(|| table.at(i, format!("no route {method:?}")))?
-                    .0,
-                precision: table.precision(i, "precision")?,
-                error: table.number(i, "rel_error")?,
-                estimate: table.number(i, "error_estimate")?,
-                time_ns: table.number(i, "time_ns")?,
-                work: table.number(i, "work")?,
-                failure: (!failure.is_empty()).then_some(failure),
-            })
+    table.each(|i| {
+        let (method, failure) = (table.text(i, "method")?, table.failure(i)?);
+        let route = METHODS.into_iter().find(|(r, _)| r.label() == method);
+        Ok(Row {
+            mr: table.text(i, "mr")?,
+            method: route
+                .ok_or_else(|| table.at(i, format!("no route {method:?}")))?
+                .0,
+            precision: table.precision(i, "precision")?,
+            error: table.number(i, "rel_error")?,
+            estimate: table.number(i, "error_estimate")?,
+            time_ns: table.number(i, "time_ns")?,
+            work: table.number(i, "work")?,
+            failure,
         })
-        .collect()
+    })
 }
 
 /// One Pareto chart per speed (correct digits of I1, I2 on a linear axis against time on a

@@ -1,6 +1,7 @@
 //! Studies: convergence, stability, cost and accuracy experiments whose data (CSV) and charts
 //! (SVG) are committed under `docs/`. Each study is a library function returning its tables, run
-//! by a `moving-hertz study …` command; only this layer writes files.
+//! by a `moving-hertz study …` command; only this layer writes files. No item of this module
+//! implements a formula of the paper: they write, read and measure the studies' results.
 
 pub mod fig2;
 pub mod integrals;
@@ -31,8 +32,7 @@ fn create(path: &Path) -> std::io::Result<std::fs::File> {
 }
 
 /// Writes `rows` under the header line `header` (the column names, comma-separated) as CSV to
-/// `path`, creating parent directories; an error names the file. Implements no equation;
-/// writes the values as given.
+/// `path`, creating parent directories; an error names the file.
 pub fn write_csv(path: &Path, header: &str, rows: &[Vec<String>]) -> std::io::Result<()> {
     let body: String = rows.iter().map(|r| r.join(",") + "\n").collect();
     write_pieces(path, &[format!("{header}\n"), body])
@@ -41,7 +41,7 @@ pub fn write_csv(path: &Path, header: &str, rows: &[Vec<String>]) -> std::io::Re
 /// Writes text (an SVG chart, a Markdown table) to `path`, creating parent directories. A
 /// chart with a series that has no point to draw is refused (an error naming the file and the
 /// series): a figure never silently omits a curve its legend promises. Every error names the
-/// file. Implements no equation; writes the text as given.
+/// file.
 pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
     if let Some(i) = text.find(&format!("<!-- {}: ", svg::EMPTY_SERIES)) {
         let label = text[i..].split("-->").next().unwrap_or_default();
@@ -56,8 +56,7 @@ pub fn write_text(path: &Path, text: &str) -> std::io::Result<()> {
 
 /// Writes `pieces` one after the other to `path` (one `writev` call for all of them where the
 /// system takes them at once), creating parent directories; an error names the file. For a
-/// table formed in pieces on several cores: it is never joined in memory. Implements no
-/// equation; writes the text as given.
+/// table formed in pieces on several cores: it is never joined in memory.
 pub fn write_pieces(path: &Path, pieces: &[impl AsRef<str>]) -> std::io::Result<()> {
     let write = || {
         let mut f = create(path)?;
@@ -81,7 +80,7 @@ pub fn write_pieces(path: &Path, pieces: &[impl AsRef<str>]) -> std::io::Result<
 }
 
 /// A CSV table as [`write_csv`] writes it (fields without commas), read back to draw a study's
-/// charts from its committed data. Implements no equation; holds the text as written.
+/// charts from its committed data.
 #[derive(Clone, Debug)]
 pub struct Table {
     /// The file, for messages.
@@ -116,6 +115,15 @@ impl Table {
         let path = path.display().to_string();
         Ok(Table { path, header, rows })
     }
+    /// Each row read by `row` (from its index); the first error.
+    pub fn each<R>(&self, row: impl Fn(usize) -> Result<R, String>) -> Result<Vec<R>, String> {
+        (0..self.rows.len()).map(row).collect()
+    }
+    /// The failure noted in row `i` (column `failure`), `None` where empty.
+    pub fn failure(&self, i: usize) -> Result<Option<String>, String> {
+        let f = self.text(i, "failure")?;
+        Ok((!f.is_empty()).then_some(f))
+    }
     /// The message `e` about row `i`, naming the file and the line.
     pub fn at(&self, i: usize, e: impl std::fmt::Display) -> String {
         format!("{}: line {}: {e}", self.path, i + 2)
@@ -141,7 +149,7 @@ impl Table {
 
 /// |got − want|/|want|, the difference formed and divided at `bits` bits (enough above both
 /// precisions that it is exact or rounded once), to `f64`: the error of a study's result
-/// against its MPFR reference. Implements no equation of the paper.
+/// against its MPFR reference.
 pub fn rel_error<T: moving_hertz::scalar::Real>(got: &T, want: &rug::Float, bits: u32) -> f64 {
     let d = rug::Float::with_val(bits, &got.to_float(bits) - want) / want;
     d.abs().to_f64()
@@ -150,7 +158,7 @@ pub fn rel_error<T: moving_hertz::scalar::Real>(got: &T, want: &rug::Float, bits
 /// The correct decimal digits of a result with relative error `err`: −log₁₀ err, 0 for an
 /// error of 1 or more, and `exact` (the digits of the working precision) for an error of 0.
 /// The accuracy axis of the studies' charts (a linear axis of digits, on which an exact result
-/// has a place). Implements no equation of the paper.
+/// has a place).
 pub fn correct_digits(err: f64, exact: f64) -> f64 {
     if err == 0.0 {
         exact
@@ -160,13 +168,13 @@ pub fn correct_digits(err: f64, exact: f64) -> f64 {
 }
 
 /// The decimal digits of a precision of `bits` significand bits, (bits − 1)·log₁₀ 2 (the
-/// digits of its unit roundoff). Implements no equation of the paper.
+/// digits of its unit roundoff).
 pub fn full_digits(bits: u32) -> f64 {
     (bits as f64 - 1.0) * std::f64::consts::LOG10_2
 }
 
 /// f64, double-double and MPFR at each of `mpfr_bits`, in that order: the precisions a study
-/// runs at. Implements no equation of the paper.
+/// runs at.
 pub fn precisions(mpfr_bits: &[u32]) -> Vec<Precision> {
     let mpfr = mpfr_bits
         .iter()
@@ -179,7 +187,7 @@ pub fn precisions(mpfr_bits: &[u32]) -> Vec<Precision> {
 
 /// Median wall time of `f` in nanoseconds, over enough repetitions to fill about `budget_ms`
 /// milliseconds (at least 3 runs). For the studies' cost axes only; the benches use criterion.
-/// Implements no equation; a median of wall times (noisy on a shared machine).
+/// A median of wall times (noisy on a shared machine).
 pub fn median_ns<R>(budget_ms: f64, mut f: impl FnMut() -> R) -> f64 {
     let t0 = Instant::now();
     std::hint::black_box(f());

@@ -56,9 +56,7 @@ fn measure<T: Real>(case: &Case<'_>, p: T::Prec, label: Precision) -> Row {
         time_ns: f64::NAN,
         failure: None,
     };
-    if let Err(why) = timed::<T>(case, p, &mut row) {
-        row.failure = Some(why);
-    }
+    row.failure = timed::<T>(case, p, &mut row).err();
     row
 }
 
@@ -120,20 +118,18 @@ pub fn run(
 /// are drawn from. An error names the line that does not read.
 /// Reads the measurements of (33)'s solve back; no arithmetic.
 pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
-    (0..table.rows.len())
-        .map(|i| {
-            let failure = table.text(i, "failure")?;
-            Ok(Row {
-                mr: table.number(i, "mr")?,
-                method: Method::parse(&table.text(i, "method")?).map_err(|e| table.at(i, e))?,
-                precision: table.precision(i, "precision")?,
-                error: table.number(i, "k_rel_error")?,
-                estimate: table.number(i, "error_estimate")?,
-                time_ns: table.number(i, "time_ns")?,
-                failure: (!failure.is_empty()).then_some(failure),
-            })
+    table.each(|i| {
+        let failure = table.failure(i)?;
+        Ok(Row {
+            mr: table.number(i, "mr")?,
+            method: Method::parse(&table.text(i, "method")?).map_err(|e| table.at(i, e))?,
+            precision: table.precision(i, "precision")?,
+            error: table.number(i, "k_rel_error")?,
+            estimate: table.number(i, "error_estimate")?,
+            time_ns: table.number(i, "time_ns")?,
+            failure,
         })
-        .collect()
+    })
 }
 
 /// Pareto charts (correct digits of k on a linear axis against time on a log axis, one line

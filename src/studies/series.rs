@@ -9,7 +9,7 @@ use super::median_ns;
 use super::svg::{Chart, Heatmap, Series, Style, Style::*};
 use moving_hertz::error::Result;
 use moving_hertz::numerics::elliptic::ellipke_mc;
-use moving_hertz::physics::Material;
+use moving_hertz::physics::{Material, Speed};
 use moving_hertz::routes::moments::{ke_condition_bits, moments_with, KeForm, MomentMethod};
 use moving_hertz::routes::series::{integrals, terms_estimate, SeriesOptions};
 use moving_hertz::routes::AxisRatio;
@@ -71,15 +71,22 @@ pub struct TermsRow {
 /// I1, I2 by the series at 420 bits with tolerance 10⁻¹⁰⁰ (the reference of the terms study).
 fn reference(mr: f64) -> Result<(Float, Float)> {
     let p = MpPrec::clamped(420);
-    let mat = Material::new(Mp::from_f64(TERMS_NU, p))?;
-    let speed = mat.speed(Mp::from_f64(mr, p))?;
-    let axis = AxisRatio::new(Mp::from_f64(TERMS_K, p))?;
+    let (speed, axis) = terms_inputs::<Mp>(mr, p)?;
     let opts = SeriesOptions {
         rel_tol: Some(Mp::parse("1e-100", p)?),
         max_terms: 300_000,
     };
     let r = integrals(&speed, &axis, &opts)?;
     Ok((r.i1.to_float(420), r.i2.to_float(420)))
+}
+
+/// The speed M_R and the axis ratio [`TERMS_K`] at ν = [`TERMS_NU`], at precision `p`.
+fn terms_inputs<T: Real>(mr: f64, p: T::Prec) -> Result<(Speed<T>, AxisRatio<T>)> {
+    let mat = Material::new(T::from_f64(TERMS_NU, p))?;
+    Ok((
+        mat.speed(T::from_f64(mr, p))?,
+        AxisRatio::new(T::from_f64(TERMS_K, p))?,
+    ))
 }
 
 /// The error against a reference, at 440 bits.
@@ -95,9 +102,7 @@ fn terms_at<T: Real>(
     refs: &(Float, Float),
     budget_ms: f64,
 ) -> Result<TermsRow> {
-    let mat = Material::new(T::from_f64(TERMS_NU, p))?;
-    let speed = mat.speed(T::from_f64(mr, p))?;
-    let axis = AxisRatio::new(T::from_f64(TERMS_K, p))?;
+    let (speed, axis) = terms_inputs::<T>(mr, p)?;
     let opts = SeriesOptions {
         rel_tol: Some(T::parse(&format!("{target:e}"), p)?),
         max_terms: moving_hertz::routes::series::DEFAULT_MAX_TERMS,
@@ -146,20 +151,18 @@ pub fn terms_study(speeds: &[f64], budget_ms: f64) -> Result<Vec<TermsRow>> {
 /// charts are drawn from. An error names the line that does not read.
 /// Reads the terms of (37) back; no arithmetic.
 pub fn rows_from_csv(table: &super::Table) -> std::result::Result<Vec<TermsRow>, String> {
-    (0..table.rows.len())
-        .map(|i| {
-            Ok(TermsRow {
-                mr: table.number(i, "M_R")?,
-                target: table.number(i, "target")?,
-                precision: table.precision(i, "precision")?,
-                terms: table.number(i, "terms")?,
-                estimate: table.number(i, "terms_estimate")?,
-                time_ns: table.number(i, "time_ns")?,
-                error: table.number(i, "error")?,
-                error_estimate: table.number(i, "error_estimate")?,
-            })
+    table.each(|i| {
+        Ok(TermsRow {
+            mr: table.number(i, "M_R")?,
+            target: table.number(i, "target")?,
+            precision: table.precision(i, "precision")?,
+            terms: table.number(i, "terms")?,
+            estimate: table.number(i, "terms_estimate")?,
+            time_ns: table.number(i, "time_ns")?,
+            error: table.number(i, "error")?,
+            error_estimate: table.number(i, "error_estimate")?,
         })
-        .collect()
+    })
 }
 
 /// Charts of the terms study: terms needed and time per evaluation against 1 − M_R (log-log).
