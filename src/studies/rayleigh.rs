@@ -105,8 +105,11 @@ pub fn run(nus: &[f64]) -> Vec<RootError> {
 /// The methods compared, in the order of the charts and the summary.
 const METHODS: [&str; 3] = ["complex-cardano", "real-branches", "default"];
 
+/// A root group: its name and its error in a row.
+type Group = (&'static str, fn(&RootError) -> f64);
+
 /// The root groups: m1 (relative error) and m2, m3 (relative to the modulus), in ε.
-const GROUPS: [(&str, fn(&RootError) -> f64); 2] = [("m1", |r| r.m1), ("m2,m3", |r| r.m23)];
+const GROUPS: [Group; 2] = [("m1", |r| r.m1), ("m2,m3", |r| r.m23)];
 
 /// The rows of one precision and method.
 fn of<'a>(

@@ -165,7 +165,12 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
         num.push(power("x", xpow, style));
     }
     if prim.len() > 1 {
-        let bare = num.is_empty() && (latex && has_den || !neg && (latex || !has_den));
+        let bare = num.is_empty()
+            && if latex {
+                has_den || !neg
+            } else {
+                !has_den && !neg
+            };
         num.push(wrapped(
             int_poly(&prim, v, style),
             !bare && terms(&prim) > 1,
