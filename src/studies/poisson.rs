@@ -68,14 +68,19 @@ pub fn run(mut tick: impl FnMut()) -> moving_hertz::Result<Vec<Point>> {
             }
         }
     }
-    let mut out = Vec::with_capacity(problems.len());
+    let mut out: Vec<Point> = Vec::with_capacity(problems.len());
+    // The static a (M_R = SPEEDS[0] = 0, solved first at each ν) by A1/B1.
+    let mut statics = vec![f64::NAN; ratio_grid().len()];
     let batch = 16 * sweep::BLOCK;
     for (pbs, at) in problems.chunks(batch).zip(at.chunks(batch)) {
         for (s, &(nu, mr, ratio)) in sweep::contacts(pbs, &Options::default())
             .into_iter()
             .zip(at)
         {
-            let s = s?;
+            let (s, j) = (s?, out.len() % statics.len());
+            if mr == 0.0 {
+                statics[j] = s.a().value;
+            }
             out.push(Point {
                 nu,
                 mr,
@@ -83,20 +88,9 @@ pub fn run(mut tick: impl FnMut()) -> moving_hertz::Result<Vec<Point>> {
                 e: s.e().value,
                 k: s.k().value,
                 a: s.a().value,
-                a_rel: f64::NAN,
+                a_rel: s.a().value / statics[j],
             });
             tick();
-        }
-    }
-    // a relative to the static a at the same (ν, A1/B1).
-    let statics: std::collections::HashMap<(u64, u64), f64> = out
-        .iter()
-        .filter(|q| q.mr == 0.0)
-        .map(|q| ((q.nu.to_bits(), q.ratio.to_bits()), q.a))
-        .collect();
-    for q in out.iter_mut() {
-        if let Some(a0) = statics.get(&(q.nu.to_bits(), q.ratio.to_bits())) {
-            q.a_rel = q.a / a0;
         }
     }
     Ok(out)
