@@ -154,7 +154,7 @@ fn direct_vs_factorised<T: Real>(p: T::Prec, label: &str) {
             let r = common::printed::rayleigh_factorised(&mat, &v);
             let one = T::one(p);
             let d = (T::from_i64(2, p) - v.m2sq()).square()
-                + ((one.clone() - v.m1sq()) * (one - v.m2sq()))
+                + ((one.clone() - mat.gamma().clone() * v.m2sq()) * (one - v.m2sq()))
                     .sqrt()
                     .mul_i64(4);
             let cond = (d / r).abs().to_f64();

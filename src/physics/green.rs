@@ -94,11 +94,4 @@ impl<T: Real> GreenFunction<T> {
     pub fn g_normalised(&self, t: &T, one_minus_t: &T) -> T {
         self.g_regular(t) * &self.pi / one_minus_t
     }
-
-    /// π at the working precision (shared with callers that normalise by it).
-    /// Implements no equation (the constant of (44)); correctly rounded for MPFR, within an ulp
-    /// otherwise.
-    pub fn pi(&self) -> &T {
-        &self.pi
-    }
 }

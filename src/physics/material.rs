@@ -49,7 +49,7 @@ impl<T: Real> Material<T> {
             pi_g_rayleigh: T::zero(p),
         };
         let green = GreenFunction::new(&mat);
-        mat.pi_g_rayleigh = green.g_regular(&T::one(p)) * green.pi();
+        mat.pi_g_rayleigh = green.g_regular(&T::one(p)) * T::pi(p);
         Ok(mat)
     }
 
@@ -226,8 +226,8 @@ fn rounds_to<T: Real>(text: &str, x: &T) -> String {
 /// numbers the formulas use, with the gap 1 − M_R held as a number of its own.
 ///
 /// Accessors give M_R, 1 − M_R, M_R², 1 − M_R² (formed as (1 − M_R)(1 + M_R) from the gap,
-/// so accurate to a few ε relative however close M_R is to 1), M2² = m1·M_R² and
-/// M1² = γ·M2².
+/// so accurate to a few ε relative however close M_R is to 1) and M2² = m1·M_R² (M1² of (5)
+/// is γ·M2², [`Material::gamma`]).
 ///
 /// A speed cannot be paired with a material other than its own: every solver takes the
 /// material from the speed, and neither can be changed after construction.
@@ -261,7 +261,6 @@ pub struct Speed<T: Real> {
     mr2: T,
     one_minus_mr2: T,
     m2sq: T,
-    m1sq: T,
     /// The fixed rule's k-independent part at this speed, built on first use and shared by
     /// clones.
     fast: crate::routes::fast::SetupCache<T>,
@@ -284,7 +283,6 @@ impl<T: Real> Speed<T> {
             ));
         }
         let m2sq = mat.m1().clone() * &mr2;
-        let m1sq = mat.gamma().clone() * &m2sq;
         Ok(Speed {
             material: mat.clone(),
             mr,
@@ -292,7 +290,6 @@ impl<T: Real> Speed<T> {
             mr2,
             one_minus_mr2,
             m2sq,
-            m1sq,
             fast: crate::routes::fast::SetupCache::new(),
             solves: crate::contact::SolveCache::new(),
         })
@@ -334,10 +331,6 @@ impl<T: Real> Speed<T> {
     /// x = M2² = m1·M_R² (the squared shear Mach number of (4)–(6) and (35)); within a few ε.
     pub fn m2sq(&self) -> &T {
         &self.m2sq
-    }
-    /// M1² = γ·M2² (the squared dilatational Mach number of (5)); within a few ε.
-    pub fn m1sq(&self) -> &T {
-        &self.m1sq
     }
 
     /// This speed (and its material) at another precision `q`, the gap rounded on its own: the

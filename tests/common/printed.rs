@@ -18,7 +18,7 @@ pub fn rayleigh_function<T: Real>(gamma: &T, x: &T) -> T {
 pub fn gamma<T: Real>(mat: &Material<T>, v: &Speed<T>) -> T {
     let p = v.mr().prec();
     let r = rayleigh_function(mat.gamma(), v.m2sq());
-    v.m2sq().clone() * (T::one(p) - v.m1sq()).sqrt() / (T::pi(p) * r)
+    v.m2sq().clone() * (T::one(p) - mat.gamma().clone() * v.m2sq()).sqrt() / (T::pi(p) * r)
 }
 
 /// Γ(V) of (5) by the library's stable form (44): −G(M_R²)/(1 − M_R²). Negative;
@@ -34,7 +34,7 @@ pub fn rayleigh_factorised<T: Real>(mat: &Material<T>, v: &Speed<T>) -> T {
     let p = v.mr().prec();
     let one = T::one(p);
     let x = v.m2sq().clone();
-    let a = one.clone() - v.m1sq();
+    let a = one.clone() - mat.gamma().clone() * v.m2sq();
     let b = one - &x;
     let d = (T::from_i64(2, p) - &x).square() + (a * b).sqrt().mul_i64(4);
     let r = mat.roots();
