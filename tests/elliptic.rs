@@ -22,7 +22,6 @@ use std::collections::BTreeMap;
 mod tanh_sinh;
 
 const MAIN: &str = include_str!("data/elliptic_mpmath.csv");
-const EXTRA: &str = include_str!("data/carlson_cel_mpmath.csv");
 const SPOT: &str = include_str!("data/elliptic_mpmath_8192.csv");
 
 fn mp(bits: u64) -> MpPrec {
@@ -104,21 +103,6 @@ fn sweep<T: Real>(p: T::Prec) -> BTreeMap<String, (f64, f64, usize, String)> {
             err_eps(&got, r[3]),
             format!("arg={} phi={}", r[1], r[2]),
         );
-    }
-    for r in rows(EXTRA) {
-        let v: Vec<T> = r[1..5]
-            .iter()
-            .filter(|s| !s.is_empty())
-            .map(|s| input(s, p))
-            .collect();
-        assert_eq!(r[0], "cel");
-        let got = cel(&v[0], &v[1], &v[2], &v[3])
-            .unwrap_or_else(|e| panic!("{}{:?} failed: {e}", r[0], &r[1..5]));
-        // cel with p < 0 or mixed signs of a, b: error relative to cel(kc, |p|, |a|, |b|).
-        let abs: Vec<T> = v.iter().map(|x| x.clone().abs()).collect();
-        let s = cel(&abs[0], &abs[1], &abs[2], &abs[3]).expect("cel scale");
-        let scale = (s / got.clone()).abs().to_f64().max(1.0);
-        record(r[0], err_eps(&got, r[5]) / scale, r[1..5].join(" "));
     }
     for s in stats.values_mut() {
         s.1 /= s.2 as f64;
@@ -283,15 +267,12 @@ fn bad_inputs<T: Real>(p: T::Prec, nan: T, inf: T) {
     assert!(not_finite(ellipke_mc(&inf).map(|r| r.0)));
     assert!(not_finite(ellipbd_mc(&-inf.clone()).map(|r| r.0)));
     assert!(not_finite(ellipd_mc(&nan)));
-    assert!(not_finite(cel(&one, &nan, &one, &one)));
     assert!(not_finite(heuman_lambda_c_mc(&nan, &one)));
     assert!(not_finite(heuman_lambda_c_mc(&one, &inf)));
     assert!(dom(ellipke_mc(&zero).map(|r| r.0)));
     assert!(dom(ellipke_mc(&neg).map(|r| r.0)));
     assert!(dom(ellipbd_mc(&zero).map(|r| r.0)));
     assert!(dom(ellipd_mc(&zero)));
-    assert!(dom(cel(&zero, &one, &one, &one)));
-    assert!(dom(cel(&one, &zero, &one, &one)));
     assert!(dom(heuman_lambda_c_mc(&one, &two)));
     assert!(dom(heuman_lambda_c_mc(&one, &neg)));
     // The limits mc = 0 and mc = 1 are values, not errors: Λ₀(φ | 1) = 2φ/π, Λ₀(φ | 0) = sin φ.
@@ -338,7 +319,6 @@ fn no_mixed_precision() {
     }
     heuman_lambda_c_mc(&x("1e100"), &x("0.3")).unwrap();
     heuman_lambda_c_mc(&x("1.5"), &x("0.3")).unwrap();
-    cel(&x("0.5"), &x("-2"), &x("1"), &x("3")).unwrap();
     assert_eq!(mixed_precision_events(), 0);
 }
 
@@ -363,9 +343,6 @@ fn extreme_arguments() {
                 &format!("1 - L0({phi:e}|mc={mc:e})"),
             );
         }
-    }
-    for p in [1e-300, 1e300, -1e-300, -1e300] {
-        ok(cel(&0.5, &p, &1.0, &1.0), &format!("cel(0.5, {p:e}, 1, 1)"));
     }
     // K(mc) ~ ln(4/√mc) as mc → 0.
     let k = ellipke_mc(&1e-300f64).unwrap().0;

@@ -3,7 +3,6 @@
 
 Writes tests/data/elliptic_mpmath.csv   (function,arg,phi,value: K, E, B, D by m or mc, and
                                         heuman_lambda_c_mc = 1 - Heuman's Lambda)
-       tests/data/carlson_cel_mpmath.csv (function,x,y,z,w,value: Bulirsch's cel)
    and tests/data/elliptic_mpmath_8192.csv (K, E, D at 8192 bits)
 
 Every input is a dyadic rational with at most 53 significant bits, so it is exactly
@@ -102,18 +101,6 @@ def heuman_c(phi, m):
         return 1 - heuman(phi, m)
 
 
-def cel(kc, p, a, b):
-    """Bulirsch's cel through Carlson (p > 0) or the principal value of Pi (p < 0, DLMF 19.6.5)."""
-    kc, p, a, b = map(mpf, (kc, p, a, b))
-    with mp.extradps(20):
-        if p > 0:
-            return a * mp.elliprf(0, kc**2, 1) + (b - p * a) / 3 * mp.elliprj(0, kc**2, 1, p)
-        m, n = 1 - kc**2, 1 - p
-        K = mp.ellipk(m)
-        pv = K - mp.ellippi(m / n, m)
-        return a * K + (b - p * a) * (pv - K) / n
-
-
 def stable(f, *args):
     """f(*args) at DPS + 40 and DPS + 100 digits (mpmath loses up to ~30 digits next to the
     singularity m = 1); they must agree to DIGITS + 3 digits."""
@@ -164,15 +151,6 @@ def main():
         for phi in phis:
             rows.append(("heuman_lambda_c_mc", mc, phi, stable(heuman_c, phi, 1 - mc)))
 
-    extra = []
-    for kc, p, a, b in [(Fr(1, 2), 2, 1, 3), (3, Fr(1, 4), 1, -1), (Fr(3, 16), 1, 1, 1),
-                        (two**-50, 1, 1, 1), (two**20, Fr(7, 2), 1, 0), (Fr(3, 4), Fr(3, 2), 0, 1),
-                        (two**-30, Fr(5, 8), 2, 1), (Fr(1, 1024), two**40, 1, 1),
-                        (Fr(1, 8), -2, 1, 2), (Fr(5, 2), Fr(-1, 2), Fr(1, 2), 1),
-                        (Fr(3, 4), Fr(-3), 1, 1)]:
-        kc, p, a, b = map(Fr, (kc, p, a, b))
-        extra.append(("cel", kc, p, a, b, stable(cel, kc, p, a, b)))
-
     here = os.path.dirname(os.path.abspath(__file__))
     out = os.path.join(here, "..", "tests", "data")
     os.makedirs(out, exist_ok=True)
@@ -184,11 +162,6 @@ def main():
         fh.write("function,arg,phi,value\n")
         for f, arg, phi, v in rows:
             fh.write(f"{f},{exact(arg)},{'' if phi is None else exact(phi)},{v}\n")
-    with open(os.path.join(out, "carlson_cel_mpmath.csv"), "w") as fh:
-        fh.write(head + "# cel(kc = x, p = y, a = z, b = w).\n")
-        fh.write("function,x,y,z,w,value\n")
-        for f, x, y, z, w, v in extra:
-            fh.write(f"{f},{exact(x)},{exact(y)},{exact(z)},{'' if w is None else exact(w)},{v}\n")
     # A few values at 8192 bits (2466 digits): the spot checks of the highest precision.
     DIGITS, DPS = 2480, 2500
     spot = [("ellipk_mc", two**-100, None, f_ellipk, (1 - two**-100,)),
@@ -200,7 +173,7 @@ def main():
         fh.write("function,arg,phi,value\n")
         for name, arg, phi, f, args in spot:
             fh.write(f"{name},{exact(arg)},{'' if phi is None else exact(phi)},{stable(f, *args)}\n")
-    print(f"{len(rows)} + {len(extra)} + {len(spot)} reference values written to {os.path.normpath(out)}")
+    print(f"{len(rows)} + {len(spot)} reference values written to {os.path.normpath(out)}")
 
 
 if __name__ == "__main__":

@@ -6,8 +6,8 @@
 //! the application `mc = k_axis²` for the axis ratio `k_axis ∈ [10⁻⁶, 10⁶]`, and forming it as
 //! `1 − m` would lose every digit when `k_axis` is tiny.
 //!
-//! Complete integrals by Bulirsch's [`cel`] (Numer. Math. 13 (1969) 305–315), which adds only
-//! positive quantities for `a, b, p > 0`; Heuman's Lambda by Carlson's R_F and R_D (DLMF
+//! Complete integrals by Bulirsch's cel (Numer. Math. 13 (1969) 305–315), which adds only
+//! positive quantities; Heuman's Lambda by Carlson's R_F and R_D (DLMF
 //! 19.25.5, 19.25.10) with the duplication theorem and a Taylor series of an order chosen from
 //! the working precision. Tolerances come from the working precision and every loop has a cap
 //! ([`Error::NoConvergence`]). Each function is within 8 ε of the working precision (16 ε at
@@ -46,37 +46,22 @@ fn agm_cap(bits: u32) -> usize {
 // Complete integrals
 // ---------------------------------------------------------------------------------------------
 
-/// Bulirsch's `cel` for several pairs `(a, b)` sharing `kc > 0` and `p ≠ 0` (cel is linear in
-/// `(a, b)`, and the AGM part of the iteration depends on `kc` and `p` only).
+/// Bulirsch's general complete elliptic integral with `p = 1`,
+///
+/// `cel(kc, 1, a, b) = ∫₀^{π/2} (a cos²θ + b sin²θ) / √(cos²θ + kc² sin²θ) dθ = a B + b D`
+///
+/// (m = 1 − kc²), for several pairs `(a, b)` sharing `kc > 0` (cel is linear in `(a, b)`, and
+/// the AGM part of the iteration depends on `kc` only).
 ///
 /// The iteration is the one of Bulirsch (1969) as printed in Numerical Recipes, with the
-/// quantities `em = 2ⁿ aₙ`, `qc = 2ⁿ bₙ` (AGM means scaled by exact powers of two). It stops when
-/// the relative AGM gap is below √ε of the working precision: the other sequences converge at
-/// the same quadratic rate, so the result is then complete to O(ε) (checked at 1024 bits
-/// against mpmath for p ≠ 1 as well).
-fn cel_core<T: Real, const N: usize>(kc: T, p: T, ab: [(T, T); N]) -> Result<[T; N]> {
+/// quantities `em = 2ⁿ aₙ`, `qc = 2ⁿ bₙ` (AGM means scaled by exact powers of two). For
+/// `a, b ≥ 0` it adds only positive quantities. It stops when the relative AGM gap is below √ε
+/// of the working precision: the other sequences converge at the same quadratic rate, so the
+/// result is then complete to O(ε).
+fn cel_core<T: Real, const N: usize>(kc: T, mut ab: [(T, T); N]) -> Result<[T; N]> {
     let pr = kc.prec();
     let one = T::one(pr);
-    let (mut p, mut ab) = if p.is_positive() {
-        let sp = p.sqrt();
-        let ab = ab.map(|(a, b)| (a, b / &sp));
-        (sp, ab)
-    } else {
-        // Cauchy principal value for p < 0: Bulirsch's transformation to a positive p.
-        // 1 − kc² is formed as (1 − kc)(1 + kc); kc² − p and 1 − p add positive terms.
-        let g = one.clone() - &p;
-        let f = kc.square() - &p;
-        let q = (one.clone() - &kc) * (one.clone() + &kc);
-        let sp = (f / &g).sqrt();
-        let g2 = g.square() * &sp;
-        let ab = ab.map(|(a, b)| {
-            let qq = q.clone() * (b.clone() - a.clone() * &p);
-            let a2 = (a - &b) / &g;
-            let b2 = a2.clone() * &sp - qq / &g2;
-            (a2, b2)
-        });
-        (sp, ab)
-    };
+    let mut p = one.clone();
     let tol = T::epsilon_root(pr, 2);
     let two = T::from_i64(2, pr);
     let (mut qc, mut e, mut em) = (kc.clone(), kc, one);
@@ -113,36 +98,6 @@ fn cel_core<T: Real, const N: usize>(kc: T, p: T, ab: [(T, T); N]) -> Result<[T;
     })
 }
 
-/// Bulirsch's general complete elliptic integral
-///
-/// `cel(kc, p, a, b) = ∫₀^{π/2} (a cos²θ + b sin²θ) / ((cos²θ + p sin²θ) √(cos²θ + kc² sin²θ)) dθ`
-///
-/// for `kc ≠ 0` (only `|kc|` matters) and `p ≠ 0`; for `p < 0` the Cauchy principal value.
-/// In terms of Legendre's integrals with `m = 1 − kc²`, `n = 1 − p`:
-/// `cel = a K(m) + (b − p a)(Π(n|m) − K(m))/n`; `cel(kc, 1, 1, 1) = K`,
-/// `cel(kc, 1, 1, kc²) = E`, `cel(kc, 1, 1, 0) = B`, `cel(kc, 1, 0, 1) = D`.
-///
-/// Accuracy: for `a, b ≥ 0` and `p > 0` the iteration adds only positive quantities and the
-/// result is within a few ε (relative) for every `kc`, small or large. With mixed signs of `a`
-/// and `b`, or `p < 0`, the error is a few ε relative to `(|a| + |b|)·cel(kc, |p|, 1, 1)`.
-///
-/// Errors: [`Error::NotFinite`] for a NaN or infinite argument, [`Error::Domain`] for `kc = 0`
-/// or `p = 0`.
-pub fn cel<T: Real>(kc: &T, p: &T, a: &T, b: &T) -> Result<T> {
-    check_finite("kc", kc)?;
-    check_finite("p", p)?;
-    check_finite("a", a)?;
-    check_finite("b", b)?;
-    if kc.is_zero() {
-        return Err(domain("kc", kc, "kc != 0"));
-    }
-    if p.is_zero() {
-        return Err(domain("p", p, "p != 0"));
-    }
-    let [r] = cel_core(kc.clone().abs(), p.clone(), [(a.clone(), b.clone())])?;
-    finite_out("cel", r)
-}
-
 fn check_mc<T: Real>(mc: &T, strict: bool) -> Result<()> {
     check_finite("mc", mc)?;
     if mc.is_negative() || (strict && mc.is_zero()) {
@@ -155,11 +110,7 @@ fn check_mc<T: Real>(mc: &T, strict: bool) -> Result<()> {
 fn bd_mc<T: Real>(mc: &T) -> Result<[T; 2]> {
     let p = mc.prec();
     let (z, o) = (T::zero(p), T::one(p));
-    cel_core(
-        mc.clone().sqrt(),
-        o.clone(),
-        [(o.clone(), z.clone()), (z, o)],
-    )
+    cel_core(mc.clone().sqrt(), [(o.clone(), z.clone()), (z, o)])
 }
 
 /// K(m) and E(m) together from `mc = 1 − m > 0`, in one iteration: K = B + D and
@@ -179,7 +130,7 @@ pub fn ellipke_mc<T: Real>(mc: &T) -> Result<(T, T)> {
 pub fn ellipd_mc<T: Real>(mc: &T) -> Result<T> {
     check_mc(mc, true)?;
     let p = mc.prec();
-    let [r] = cel_core(mc.clone().sqrt(), T::one(p), [(T::zero(p), T::one(p))])?;
+    let [r] = cel_core(mc.clone().sqrt(), [(T::zero(p), T::one(p))])?;
     finite_out("D(m)", r)
 }
 
