@@ -123,21 +123,11 @@ pub fn ellipke_mc<T: Real>(mc: &T) -> Result<(T, T)> {
     Ok((finite_out("K(m)", k)?, finite_out("E(m)", e)?))
 }
 
-/// D(m) = ∫₀^{π/2} sin²θ / √(1 − m sin²θ) dθ = (K − E)/m (DLMF 19.2.6), from `mc > 0`.
-///
-/// Computed as `cel(√mc, 1, 0, 1)` with no cancellation as `m → 0`: a few ε for every `mc > 0`.
-/// The paper's L₁ of (42)/(A.8) is D(e²).
-pub fn ellipd_mc<T: Real>(mc: &T) -> Result<T> {
-    check_mc(mc, true)?;
-    let p = mc.prec();
-    let [r] = cel_core(mc.clone().sqrt(), [(T::zero(p), T::one(p))])?;
-    finite_out("D(m)", r)
-}
-
-/// B(m) = ∫₀^{π/2} cos²θ / √(1 − m sin²θ) dθ = (E − mc·K)/m and D(m) (see [`ellipd_mc`])
-/// together from `mc = 1 − m > 0`, in one `cel` iteration: `cel(√mc, 1, 1, 0)` and
-/// `cel(√mc, 1, 0, 1)`, with no cancellation as `m → 0`, each a few ε. The paper's M₁ of
-/// (42)/(A.8) is B(e²). Every complete integral of (42) follows from the pair without
+/// B(m) = ∫₀^{π/2} cos²θ / √(1 − m sin²θ) dθ = (E − mc·K)/m and
+/// D(m) = ∫₀^{π/2} sin²θ / √(1 − m sin²θ) dθ = (K − E)/m (DLMF 19.2.6) together from
+/// `mc = 1 − m > 0`, in one `cel` iteration: `cel(√mc, 1, 1, 0)` and `cel(√mc, 1, 0, 1)`, with
+/// no cancellation as `m → 0`, each a few ε. The paper's M₁ and L₁ of (42)/(A.8) are B(e²)
+/// and D(e²). Every complete integral of (42) follows from the pair without
 /// cancellation: K = B + D, E = B + mc·D, E/mc = B/mc + D.
 pub fn ellipbd_mc<T: Real>(mc: &T) -> Result<(T, T)> {
     check_mc(mc, true)?;

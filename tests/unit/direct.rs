@@ -5,7 +5,7 @@
 use crate::common;
 
 use common::{mpmath_cases, read_csv, reference, rel_eps, MpmathCase};
-use moving_hertz::numerics::elliptic::{ellipd_mc, ellipke_mc, heuman_lambda_c_mc};
+use moving_hertz::numerics::elliptic::{ellipbd_mc, ellipke_mc, heuman_lambda_c_mc};
 use moving_hertz::physics::Material;
 use moving_hertz::prelude::*;
 use moving_hertz::routes::{direct, AxisRatio, Evaluation};
@@ -235,7 +235,7 @@ fn static_limit<T: Real>(p: T::Prec, label: &str) {
         let ax = AxisRatio::new(T::parse(k, p).unwrap()).unwrap();
         let r = direct::quadrature(&sp, &ax, &T::zero(p)).unwrap();
         let two_f0 = mat.one_minus_nu().clone().mul_i64(2);
-        let d = ellipd_mc(&ax.k2).unwrap();
+        let d = ellipbd_mc(&ax.k2).unwrap().1;
         let (_, ee) = ellipke_mc(&ax.k2).unwrap();
         let i1 = two_f0.clone() * (ee / &ax.k2 - &d);
         let i2 = two_f0 * d;
