@@ -54,7 +54,7 @@
 //! |---|---|
 //! | [`scalar`] | the [`Field`] / [`Real`] traits, the backends `f64`, [`Dd`], [`Mp`], `rug::Rational`, complex numbers, decimal parsing |
 //! | [`estimate`] | [`RelError`] and [`Estimated`]: error bounds at any precision |
-//! | [`numerics`] | the complete and incomplete elliptic integrals at any precision; adaptive and fixed Gauss–Legendre quadrature |
+//! | [`numerics`] | the elliptic integrals of (42)–(43) and (52)–(53) at any precision; adaptive and fixed Gauss–Legendre quadrature |
 //! | [`physics`] | [`Material`] and [`Speed`], the Rayleigh function and roots, the Green's function (sections 3, 6) |
 //! | [`routes`] | the integrals I1, I2: the series route (section 5), the direct, subtracted and fixed-rule quadratures (sections 6–7), the evaluator and the choice of precision |
 //! | [`contact`] | the ellipse (33), the full solution with the corrected (28), (30), (32), the convolution (7) check, the precision ladder (section 4) |

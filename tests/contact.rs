@@ -8,7 +8,7 @@ mod common;
 
 use common::rel_eps;
 use common::roots::brent;
-use moving_hertz::numerics::elliptic::{ellipb_mc, ellipd_mc, ellipke_mc};
+use moving_hertz::numerics::elliptic::{ellipbd_mc, ellipke_mc};
 use moving_hertz::prelude::*;
 use moving_hertz::{integrals, solve_ellipse, ContactSolution, Ellipse, MajorAxis, Route};
 
@@ -59,7 +59,10 @@ fn johnson<T: Real>(p: T::Prec, load: &T, r1: &T, r2: &T, estar: &T) -> (T, T, T
     let target = a_curv.clone() / &b_curv;
     // A/B = (K − E)/((a/b)²E − K) as a function of mc = b²/a² ∈ (0, 1), written without
     // cancellation: K − E = m·D(m), E/mc − K = m·B(m)/mc, so A/B = mc·D/B.
-    let f = |mc: &T| mc.clone() * ellipd_mc(mc).unwrap() / ellipb_mc(mc).unwrap() - &target;
+    let f = |mc: &T| {
+        let (b, d) = ellipbd_mc(mc).unwrap();
+        mc.clone() * d / b - &target
+    };
     let tiny = T::epsilon(p);
     let mc = brent(f, &tiny, &(one.clone() - &tiny), 400);
     let (kk, ee) = ellipke_mc(&mc).unwrap();

@@ -1,21 +1,18 @@
-//! Complete and incomplete elliptic integrals at any precision, for the ellipse integrals of the
-//! paper: K(e), E(e) and the combinations L₁ = (K − E)/e², M₁ = (E − k²K)/e² of (42)–(43) and
-//! (A.8), and the incomplete F(β, ·), E(β, ·) of (52)–(53) (whose bracket is (π/2)(1 − Λ₀), see
-//! [`heuman_lambda_c_mc`]).
+//! The elliptic integrals of the paper's (42)–(43), (A.8) and (52)–(53) at any precision: K(e)
+//! and E(e), L₁ = (K − E)/e² and M₁ = (E − k²K)/e² as D and B, and the bracket of (52)–(53)
+//! as 1 − Λ₀ ([`heuman_lambda_c_mc`]).
 //!
-//! Every function takes the **parameter** `m = k²` (DLMF §19, mpmath, scipy), never the modulus,
-//! and has a form taking the **complementary parameter** `mc = 1 − m` (suffix `_mc`), the
-//! primary one: in the application `mc = k_axis²` for the axis ratio `k_axis ∈ [10⁻⁶, 10⁶]`, and
-//! forming it as `1 − m` would lose every digit when `k_axis` is tiny.
+//! Every function takes the **complementary parameter** `mc = 1 − m` (DLMF §19's `m = k²`): in
+//! the application `mc = k_axis²` for the axis ratio `k_axis ∈ [10⁻⁶, 10⁶]`, and forming it as
+//! `1 − m` would lose every digit when `k_axis` is tiny.
 //!
-//! Complete integrals by Bulirsch's [`cel`] (Numer. Math. 13 (1969) 305–315), which adds only
-//! positive quantities for `a, b, p > 0`, and K alone by the AGM; incomplete ones by Carlson's
-//! R_F and R_D (DLMF 19.25.5, 19.25.9–10) with the duplication theorem and a Taylor series of
-//! an order chosen from the working precision. Tolerances come from the working precision and
-//! every loop has a cap ([`Error::NoConvergence`]). No item of this module implements a formula
-//! of the paper: they are the elliptic integrals (DLMF §19) in which (42)–(43) and (52)–(53) are
-//! written, each within 8 ε of the working precision (16 ε at double-double) against mpmath
-//! (`tests/elliptic.rs`; the measured worst errors in `docs/calibration.md`).
+//! Complete integrals by Bulirsch's cel (Numer. Math. 13 (1969) 305–315), which adds only
+//! positive quantities; Heuman's Lambda by Carlson's R_F and R_D (DLMF
+//! 19.25.5, 19.25.10) with the duplication theorem and a Taylor series of an order chosen from
+//! the working precision. Tolerances come from the working precision and every loop has a cap
+//! ([`Error::NoConvergence`]). Each function is within 8 ε of the working precision (16 ε at
+//! double-double) against mpmath (`tests/elliptic.rs`; the measured worst errors in
+//! `docs/calibration.md`).
 
 use crate::error::{Error, Result};
 use crate::scalar::{check_finite, short, Real};
@@ -49,70 +46,22 @@ fn agm_cap(bits: u32) -> usize {
 // Complete integrals
 // ---------------------------------------------------------------------------------------------
 
-/// K(mc) = π / (2 AGM(1, kc)) for kc = √mc > 0.
+/// Bulirsch's general complete elliptic integral with `p = 1`,
 ///
-/// The AGM of two positive numbers loses nothing to cancellation. The loop stops once the
-/// relative gap δ = |a − b|/a is below √ε: then (a + b)/2 is the AGM to δ²/16 ≤ ε/16.
-#[inline]
-fn k_agm<T: Real>(kc: T) -> Result<T> {
-    let p = kc.prec();
-    let tol = T::epsilon_root(p, 2);
-    // Constants hoisted out of the loop: a product with an exact 1/2 compiles to the same code
-    // as hand-written f64 (see benches/generic_cost.rs), where `mul_pow2` is a call.
-    let half = T::from_ratio(1, 2, p);
-    let (mut a, mut b) = (T::one(p), kc);
-    let mut prev: Option<T> = None;
-    for _ in 0..agm_cap(T::bits(p)) {
-        let gap = (a.clone() - &b).abs();
-        // Tolerance reached, or no progress: the gap (which at least halves in exact
-        // arithmetic) grew, which only rounding noise can do.
-        let done = gap <= tol.clone() * &a || prev.as_ref().is_some_and(|g| gap > *g);
-        let mean = (a.clone() + &b) * &half;
-        if done {
-            return finite_out("K(m)", T::pi(p) * &half / mean);
-        }
-        b = (a * &b).sqrt();
-        a = mean;
-        prev = Some(gap);
-    }
-    Err(Error::NoConvergence {
-        what: "AGM for K(m)",
-        iterations: agm_cap(T::bits(p)),
-        reached: prev.map_or_else(String::new, |g| short(&g)),
-    })
-}
-
-/// Bulirsch's `cel` for several pairs `(a, b)` sharing `kc > 0` and `p ≠ 0` (cel is linear in
-/// `(a, b)`, and the AGM part of the iteration depends on `kc` and `p` only).
+/// `cel(kc, 1, a, b) = ∫₀^{π/2} (a cos²θ + b sin²θ) / √(cos²θ + kc² sin²θ) dθ = a B + b D`
+///
+/// (m = 1 − kc²), for several pairs `(a, b)` sharing `kc > 0` (cel is linear in `(a, b)`, and
+/// the AGM part of the iteration depends on `kc` only).
 ///
 /// The iteration is the one of Bulirsch (1969) as printed in Numerical Recipes, with the
-/// quantities `em = 2ⁿ aₙ`, `qc = 2ⁿ bₙ` (AGM means scaled by exact powers of two). It stops when
-/// the relative AGM gap is below √ε of the working precision: the other sequences converge at
-/// the same quadratic rate, so the result is then complete to O(ε) (checked at 1024 bits
-/// against mpmath for p ≠ 1 as well).
-fn cel_core<T: Real, const N: usize>(kc: T, p: T, ab: [(T, T); N]) -> Result<[T; N]> {
+/// quantities `em = 2ⁿ aₙ`, `qc = 2ⁿ bₙ` (AGM means scaled by exact powers of two). For
+/// `a, b ≥ 0` it adds only positive quantities. It stops when the relative AGM gap is below √ε
+/// of the working precision: the other sequences converge at the same quadratic rate, so the
+/// result is then complete to O(ε).
+fn cel_core<T: Real, const N: usize>(kc: T, mut ab: [(T, T); N]) -> Result<[T; N]> {
     let pr = kc.prec();
     let one = T::one(pr);
-    let (mut p, mut ab) = if p.is_positive() {
-        let sp = p.sqrt();
-        let ab = ab.map(|(a, b)| (a, b / &sp));
-        (sp, ab)
-    } else {
-        // Cauchy principal value for p < 0: Bulirsch's transformation to a positive p.
-        // 1 − kc² is formed as (1 − kc)(1 + kc); kc² − p and 1 − p add positive terms.
-        let g = one.clone() - &p;
-        let f = kc.square() - &p;
-        let q = (one.clone() - &kc) * (one.clone() + &kc);
-        let sp = (f / &g).sqrt();
-        let g2 = g.square() * &sp;
-        let ab = ab.map(|(a, b)| {
-            let qq = q.clone() * (b.clone() - a.clone() * &p);
-            let a2 = (a - &b) / &g;
-            let b2 = a2.clone() * &sp - qq / &g2;
-            (a2, b2)
-        });
-        (sp, ab)
-    };
+    let mut p = one.clone();
     let tol = T::epsilon_root(pr, 2);
     let two = T::from_i64(2, pr);
     let (mut qc, mut e, mut em) = (kc.clone(), kc, one);
@@ -149,47 +98,6 @@ fn cel_core<T: Real, const N: usize>(kc: T, p: T, ab: [(T, T); N]) -> Result<[T;
     })
 }
 
-/// Bulirsch's general complete elliptic integral
-///
-/// `cel(kc, p, a, b) = ∫₀^{π/2} (a cos²θ + b sin²θ) / ((cos²θ + p sin²θ) √(cos²θ + kc² sin²θ)) dθ`
-///
-/// for `kc ≠ 0` (only `|kc|` matters) and `p ≠ 0`; for `p < 0` the Cauchy principal value.
-/// In terms of Legendre's integrals with `m = 1 − kc²`, `n = 1 − p`:
-/// `cel = a K(m) + (b − p a)(Π(n|m) − K(m))/n`; `cel(kc, 1, 1, 1) = K`,
-/// `cel(kc, 1, 1, kc²) = E`, `cel(kc, 1, 1, 0) = B`, `cel(kc, 1, 0, 1) = D`.
-///
-/// Accuracy: for `a, b ≥ 0` and `p > 0` the iteration adds only positive quantities and the
-/// result is within a few ε (relative) for every `kc`, small or large. With mixed signs of `a`
-/// and `b`, or `p < 0`, the error is a few ε relative to `(|a| + |b|)·cel(kc, |p|, 1, 1)`.
-///
-/// Errors: [`Error::NotFinite`] for a NaN or infinite argument, [`Error::Domain`] for `kc = 0`
-/// or `p = 0`.
-pub fn cel<T: Real>(kc: &T, p: &T, a: &T, b: &T) -> Result<T> {
-    check_finite("kc", kc)?;
-    check_finite("p", p)?;
-    check_finite("a", a)?;
-    check_finite("b", b)?;
-    if kc.is_zero() {
-        return Err(domain("kc", kc, "kc != 0"));
-    }
-    if p.is_zero() {
-        return Err(domain("p", p, "p != 0"));
-    }
-    let [r] = cel_core(kc.clone().abs(), p.clone(), [(a.clone(), b.clone())])?;
-    finite_out("cel", r)
-}
-
-/// Checks `m` and returns `mc = 1 − m` (exact for `m ≥ 1/2`; for `m < 1/2` the rounding of `mc`
-/// is harmless: every function below is well conditioned in `mc` there).
-fn mc_of_m<T: Real>(m: &T, strict: bool) -> Result<T> {
-    check_finite("m", m)?;
-    let one = T::one(m.prec());
-    if (strict && *m >= one) || *m > one {
-        return Err(domain("m", m, if strict { "m < 1" } else { "m <= 1" }));
-    }
-    Ok(one - m)
-}
-
 fn check_mc<T: Real>(mc: &T, strict: bool) -> Result<()> {
     check_finite("mc", mc)?;
     if mc.is_negative() || (strict && mc.is_zero()) {
@@ -198,60 +106,15 @@ fn check_mc<T: Real>(mc: &T, strict: bool) -> Result<()> {
     Ok(())
 }
 
-/// Complete elliptic integral of the first kind K(m) = ∫₀^{π/2} dθ / √(1 − m sin²θ), `m < 1`.
-///
-/// Computed as [`ellipk_mc`]`(1 − m)`; accurate to a few ε for every `m < 1` that is exact
-/// (for `m → 1`, use [`ellipk_mc`] with an exact `mc`).
-pub fn ellipk<T: Real>(m: &T) -> Result<T> {
-    k_agm(mc_of_m(m, true)?.sqrt())
-}
-
-/// K as a function of the complementary parameter `mc = 1 − m > 0`: π / (2 AGM(1, √mc)).
-///
-/// Accurate to a few ε for every `mc > 0` (`mc = 10⁻³⁰` or `10¹²` alike).
-#[inline]
-pub fn ellipk_mc<T: Real>(mc: &T) -> Result<T> {
-    check_mc(mc, true)?;
-    k_agm(mc.clone().sqrt())
-}
-
-/// Complete elliptic integral of the second kind E(m) = ∫₀^{π/2} √(1 − m sin²θ) dθ, `m ≤ 1`
-/// (`E(1) = 1`). Computed as [`ellipe_mc`]`(1 − m)`.
-pub fn ellipe<T: Real>(m: &T) -> Result<T> {
-    ellipe_mc(&mc_of_m(m, false)?)
-}
-
-/// E as a function of `mc = 1 − m ≥ 0`: `cel(√mc, 1, 1, mc)`, all terms positive; a few ε for
-/// every `mc ≥ 0`. At f64 and double-double the iteration overflows for `mc` beyond about
-/// 10²⁹⁰ ([`Error::Unreachable`]; the same holds for B, D and [`cel`] with `kc` beyond 10¹⁴⁵).
-pub fn ellipe_mc<T: Real>(mc: &T) -> Result<T> {
-    check_mc(mc, false)?;
-    let p = mc.prec();
-    if mc.is_zero() {
-        return Ok(T::one(p));
-    }
-    cel_one("E(m)", mc, T::one(p), mc.clone())
-}
-
-/// `cel(√mc, 1, a, b)` (`mc > 0`), checked finite as `what`.
-fn cel_one<T: Real>(what: &'static str, mc: &T, a: T, b: T) -> Result<T> {
-    let [r] = cel_core(mc.clone().sqrt(), T::one(mc.prec()), [(a, b)])?;
-    finite_out(what, r)
-}
-
 /// `[B(mc), D(mc)]` in one iteration (`mc > 0`).
 fn bd_mc<T: Real>(mc: &T) -> Result<[T; 2]> {
     let p = mc.prec();
     let (z, o) = (T::zero(p), T::one(p));
-    cel_core(
-        mc.clone().sqrt(),
-        o.clone(),
-        [(o.clone(), z.clone()), (z, o)],
-    )
+    cel_core(mc.clone().sqrt(), [(o.clone(), z.clone()), (z, o)])
 }
 
 /// K(m) and E(m) together from `mc = 1 − m > 0`, in one iteration: K = B + D and
-/// E = B + mc·D with B, D as in [`ellipb_mc`], [`ellipd_mc`] (sums of positive terms, a few ε).
+/// E = B + mc·D with B, D as in [`ellipbd_mc`] (sums of positive terms, a few ε).
 pub fn ellipke_mc<T: Real>(mc: &T) -> Result<(T, T)> {
     check_mc(mc, true)?;
     let [b, d] = bd_mc(mc)?;
@@ -260,43 +123,12 @@ pub fn ellipke_mc<T: Real>(mc: &T) -> Result<(T, T)> {
     Ok((finite_out("K(m)", k)?, finite_out("E(m)", e)?))
 }
 
-/// B(m) = ∫₀^{π/2} cos²θ / √(1 − m sin²θ) dθ = (E − mc·K)/m, from `mc ≥ 0` (`B = 1` at
-/// `mc = 0`).
-///
-/// Computed as `cel(√mc, 1, 1, 0)` with no cancellation as `m → 0` (where the quotient form
-/// loses everything): a few ε for every `mc ≥ 0`. The paper's M₁ of (42)/(A.8) is B(e²).
-pub fn ellipb_mc<T: Real>(mc: &T) -> Result<T> {
-    check_mc(mc, false)?;
-    let p = mc.prec();
-    if mc.is_zero() {
-        return Ok(T::one(p));
-    }
-    cel_one("B(m)", mc, T::one(p), T::zero(p))
-}
-
-/// B(m) for `m ≤ 1`; see [`ellipb_mc`].
-pub fn ellipb<T: Real>(m: &T) -> Result<T> {
-    ellipb_mc(&mc_of_m(m, false)?)
-}
-
-/// D(m) = ∫₀^{π/2} sin²θ / √(1 − m sin²θ) dθ = (K − E)/m (DLMF 19.2.6), from `mc > 0`.
-///
-/// Computed as `cel(√mc, 1, 0, 1)` with no cancellation as `m → 0`: a few ε for every `mc > 0`.
-/// The paper's L₁ of (42)/(A.8) is D(e²).
-pub fn ellipd_mc<T: Real>(mc: &T) -> Result<T> {
-    check_mc(mc, true)?;
-    let p = mc.prec();
-    cel_one("D(m)", mc, T::zero(p), T::one(p))
-}
-
-/// D(m) for `m < 1`; see [`ellipd_mc`].
-pub fn ellipd<T: Real>(m: &T) -> Result<T> {
-    ellipd_mc(&mc_of_m(m, true)?)
-}
-
-/// B(m) and D(m) together from `mc = 1 − m > 0`, in one `cel` iteration (see [`ellipb_mc`],
-/// [`ellipd_mc`]; each a few ε). Every complete integral of the paper's (42) follows from the
-/// pair without cancellation: K = B + D, E = B + mc·D, E/mc = B/mc + D.
+/// B(m) = ∫₀^{π/2} cos²θ / √(1 − m sin²θ) dθ = (E − mc·K)/m and
+/// D(m) = ∫₀^{π/2} sin²θ / √(1 − m sin²θ) dθ = (K − E)/m (DLMF 19.2.6) together from
+/// `mc = 1 − m > 0`, in one `cel` iteration: `cel(√mc, 1, 1, 0)` and `cel(√mc, 1, 0, 1)`, with
+/// no cancellation as `m → 0`, each a few ε. The paper's M₁ and L₁ of (42)/(A.8) are B(e²)
+/// and D(e²). Every complete integral of (42) follows from the pair without
+/// cancellation: K = B + D, E = B + mc·D, E/mc = B/mc + D.
 pub fn ellipbd_mc<T: Real>(mc: &T) -> Result<(T, T)> {
     check_mc(mc, true)?;
     let [b, d] = bd_mc(mc)?;
@@ -432,61 +264,13 @@ fn carlson<T: Real>(x: T, y: T, z: T, rd: bool) -> Result<T> {
     }
 }
 
-/// `x, y, z` finite and nonnegative, each named in the error otherwise.
-fn check_carlson<T: Real>(x: &T, y: &T, z: &T) -> Result<()> {
-    for (n, v) in [("x", x), ("y", y), ("z", z)] {
-        check_finite(n, v)?;
-        if v.is_negative() {
-            return Err(domain(n, v, ">= 0"));
-        }
-    }
-    Ok(())
-}
-
-/// Carlson's symmetric integral of the first kind
-/// `R_F(x, y, z) = ½ ∫₀^∞ dt / √((t + x)(t + y)(t + z))` (DLMF 19.16.1).
-///
-/// `x, y, z ≥ 0` with at most one of them zero. Duplication, then a Taylor series whose order
-/// and starting point follow from the working precision: accurate to a few ε at every
-/// precision (f64: about 5 duplications and a series of order 6; 1024 bits: about 33
-/// duplications and order 15).
-///
-/// Errors: [`Error::NotFinite`], [`Error::Domain`] (a negative argument or two zeros); the
-/// iteration cap ([`Error::NoConvergence`]) is not reachable from finite arguments.
-pub fn carlson_rf<T: Real>(x: &T, y: &T, z: &T) -> Result<T> {
-    check_carlson(x, y, z)?;
-    let zeros = [x, y, z].iter().filter(|v| v.is_zero()).count();
-    if zeros > 1 {
-        return Err(domain("x, y, z", x, "at most one of x, y, z zero"));
-    }
-    let r = carlson(x.clone(), y.clone(), z.clone(), false)?;
-    finite_out("R_F", r)
-}
-
-/// Carlson's symmetric integral of the second kind
-/// `R_D(x, y, z) = (3/2) ∫₀^∞ dt / ((t + z) √((t + x)(t + y)(t + z)))` (DLMF 19.16.5).
-///
-/// `x, y ≥ 0` with at most one of them zero, `z > 0`. Same method and accuracy as
-/// [`carlson_rf`] (the duplication sum adds positive terms).
-pub fn carlson_rd<T: Real>(x: &T, y: &T, z: &T) -> Result<T> {
-    check_carlson(x, y, z)?;
-    if z.is_zero() {
-        return Err(domain("z", z, "z > 0"));
-    }
-    if x.is_zero() && y.is_zero() {
-        return Err(domain("x, y", x, "at most one of x, y zero"));
-    }
-    let r = carlson(x.clone(), y.clone(), z.clone(), true)?;
-    finite_out("R_D", r)
-}
-
 // ---------------------------------------------------------------------------------------------
-// Incomplete integrals
+// Heuman's Lambda
 // ---------------------------------------------------------------------------------------------
 
 /// An amplitude reduced to `φ = jπ + φ'`, `|φ'| ≤ π/2`.
 enum Amplitude<T> {
-    /// `|φ| > 2^(bits+8)`: the periodic part is below ε of the result, F = 2Kφ/π.
+    /// `|φ| > 2^(bits+8)`: the periodic part is below ε of the result, Λ₀ = 2φ/π.
     Huge,
     /// `j` (None for 0), `sin φ'` and `|cos φ'|`.
     Reduced(Option<T>, T, T),
@@ -495,7 +279,7 @@ enum Amplitude<T> {
 /// Reduces `φ` modulo π and returns `sin φ'`, `|cos φ'|`. For `|φ| > π/2` the reduction and
 /// the sine and cosine are carried out in MPFR with `bits + exponent(φ) + 64` bits and rounded
 /// once: rounding φ' itself to the working precision would cost an absolute error ulp(π/2) in
-/// φ', fatal next to ±π/2 where F is steep (dF/dφ = 1/Δ ≈ 1/√mc).
+/// φ', fatal next to ±π/2 where Λ₀ is steep.
 fn reduce<T: Real>(phi: &T) -> Amplitude<T> {
     let p = phi.prec();
     if phi.clone().abs() <= T::pi(p).mul_pow2(-1) {
@@ -520,128 +304,22 @@ fn reduce<T: Real>(phi: &T) -> Amplitude<T> {
     )
 }
 
-/// `(2/π)·φ` at the precision of φ, for the Huge branch.
-fn two_over_pi_times<T: Real>(phi: &T) -> T {
-    phi.clone().mul_pow2(1) / T::pi(phi.prec())
-}
-
-/// F(φ | m) from an accurate `mc = 1 − m`.
-fn f_core<T: Real>(phi: &T, mc: &T) -> Result<T> {
-    let p = phi.prec();
-    match reduce(phi) {
-        Amplitude::Huge => {
-            if mc.is_zero() {
-                return Err(domain("phi", phi, "|phi| < pi/2 when m = 1"));
-            }
-            let k = k_agm(mc.clone().sqrt())?;
-            finite_out("F(phi|m)", k * two_over_pi_times(phi))
-        }
-        Amplitude::Reduced(j, s, c) => {
-            if mc.is_zero() && (j.is_some() || c.is_zero()) {
-                return Err(domain("phi", phi, "|phi| < pi/2 when m = 1"));
-            }
-            // 1 − m sin²φ = cos²φ + mc sin²φ: no cancellation when m → 1.
-            let x = c.square();
-            let y = x.clone() + mc.clone() * s.square();
-            let f = s * carlson(x, y, T::one(p), false)?;
-            let f = match j {
-                None => f,
-                Some(j) => k_agm(mc.clone().sqrt())?.mul_pow2(1) * &j + f,
-            };
-            finite_out("F(phi|m)", f)
-        }
-    }
-}
-
-/// E(φ | m) with both `m` and `mc = 1 − m` given accurately.
+/// `1 − Λ₀(φ | m)` from `mc = 1 − m ∈ [0, 1]`, where Heuman's Lambda function is
+/// `Λ₀(φ | m) = (2/π)[E(m) F(φ | mc) + K(m) E(φ | mc) − K(m) F(φ | mc)]` (Byrd & Friedman
+/// 150.03), without the cancellation of `1 − Λ₀` as φ → π/2.
 ///
-/// For `m ≤ 1/2`: `E = s R_F(c², Δ², 1) − (m/3) s³ R_D(c², Δ², 1)` (DLMF 19.25.9), where the
-/// subtracted part is at most 27 % of F (and added for m < 0). For `1/2 < m < 1`, where that
-/// form cancels as F → ∞, DLMF 19.25.10 with every term positive:
-/// `E = mc F + (m mc/3) s³ R_D(c², 1, Δ²) + m s c/Δ`.
-fn e_core<T: Real>(phi: &T, m: &T, mc: &T) -> Result<T> {
-    let p = phi.prec();
-    let one = T::one(p);
-    match reduce(phi) {
-        Amplitude::Huge => finite_out("E(phi|m)", ellipe_mc(mc)? * two_over_pi_times(phi)),
-        Amplitude::Reduced(j, s, c) => {
-            let e = if mc.is_zero() {
-                s // E(φ|1) = sin φ on |φ| ≤ π/2
-            } else {
-                let x = c.square();
-                let y = x.clone() + mc.clone() * s.square();
-                let s3 = s.square() * &s;
-                if m.clone().mul_pow2(1) <= one {
-                    let f = s * carlson(x.clone(), y.clone(), one.clone(), false)?;
-                    let d = carlson(x, y, one, true)?;
-                    f - m.clone() * s3 * d / T::from_i64(3, p)
-                } else {
-                    let f = s.clone() * carlson(x.clone(), y.clone(), one.clone(), false)?;
-                    let d = carlson(x, one, y.clone(), true)?;
-                    let mmc = m.clone() * mc;
-                    mc.clone() * f + mmc * s3 * d / T::from_i64(3, p) + m.clone() * s * c / y.sqrt()
-                }
-            };
-            let e = match j {
-                None => e,
-                Some(j) => ellipe_mc(mc)?.mul_pow2(1) * &j + e,
-            };
-            finite_out("E(phi|m)", e)
-        }
-    }
-}
-
-/// Incomplete elliptic integral of the first kind
-/// `F(φ | m) = ∫₀^φ dθ / √(1 − m sin²θ)` for every real φ and `m ≤ 1` (`m = 1` only with
-/// `|φ| < π/2`, where `F = atanh(sin φ)`).
+/// The bracket of the paper's (52)–(53),
+/// `π/2 − K(e) E(β, k) − E(e) F(β, k) + K(e) F(β, k)`, equals
+/// `(π/2) · heuman_lambda_c_mc(β, k²)` with `e² = 1 − k²` (k the axis ratio, `k ≤ 1`).
+/// Accuracy: a few ε for every real φ, including φ next to π/2.
 ///
-/// Accuracy: a few ε for every exact `m` and φ (the reduction modulo π is exact); for `m → 1`
-/// use [`ellipf_mc`] with an exact `mc`.
-pub fn ellipf<T: Real>(phi: &T, m: &T) -> Result<T> {
-    check_finite("phi", phi)?;
-    f_core(phi, &mc_of_m(m, false)?)
-}
-
-/// F(φ | m) from the complementary parameter `mc = 1 − m ≥ 0`; see [`ellipf`].
-pub fn ellipf_mc<T: Real>(phi: &T, mc: &T) -> Result<T> {
-    check_finite("phi", phi)?;
-    check_mc(mc, false)?;
-    f_core(phi, mc)
-}
-
-/// Incomplete elliptic integral of the second kind `E(φ | m) = ∫₀^φ √(1 − m sin²θ) dθ` for
-/// every real φ and `m ≤ 1` (`E(φ | 1) = sin φ` on `|φ| ≤ π/2`, extended by `E(φ + π) = E(φ) + 2`).
-///
-/// Accuracy: a few ε for every exact `m` and φ (no cancellation for `m → 1` nor `m ≪ 0`).
-pub fn ellipe_inc<T: Real>(phi: &T, m: &T) -> Result<T> {
-    check_finite("phi", phi)?;
-    let mc = mc_of_m(m, false)?;
-    e_core(phi, m, &mc)
-}
-
-/// E(φ | m) from the complementary parameter `mc = 1 − m ≥ 0`; see [`ellipe_inc`].
-pub fn ellipe_inc_mc<T: Real>(phi: &T, mc: &T) -> Result<T> {
-    check_finite("phi", phi)?;
-    check_mc(mc, false)?;
-    e_core(phi, &(T::one(mc.prec()) - mc), mc)
-}
-
-// ---------------------------------------------------------------------------------------------
-// Heuman's Lambda
-// ---------------------------------------------------------------------------------------------
-
-/// Λ₀(φ | m) (`complement = false`) or 1 − Λ₀(φ | m) (`complement = true`) for `0 ≤ mc ≤ 1`.
-///
-/// On `0 ≤ u ≤ π/2`, with `s = sin u`, `c = cos u`, `Δ'² = c² + m s²` (= 1 − mc s²), both follow
-/// from `dΛ₀/du = (2/π)(m B + mc K cos²u)/Δ'` (Byrd & Friedman 710.11, with E − mc K sin²u
-/// rewritten as m B + mc K cos²u ≥ 0) and the integrals of DLMF 19.25.5, 19.25.10:
-///
-/// * `Λ₀(u) = (2/π)[m B s R_F(c², Δ'², 1) + mc K ((m/3) s³ R_D(c², 1, Δ'²) + s c/Δ')]`,
-/// * `1 − Λ₀(u) = (2/π) m [B c R_F(m s², m s² + c², m) + mc K (c³/3) R_D(m s², m s² + c², m)]`,
-///
-/// sums of positive terms. For any real φ = jπ ± u, `Λ₀ = 2j ± Λ₀(u)` and
-/// `1 − Λ₀ = (1 ∓ 1 − 2j) ± (1 − Λ₀(u))`, where the integer part is 0 or at least 2 in size.
-fn heuman_core<T: Real>(phi: &T, mc: &T, complement: bool) -> Result<T> {
+/// On `0 ≤ u ≤ π/2`, with `s = sin u`, `c = cos u`, it follows from
+/// `dΛ₀/du = (2/π)(m B + mc K cos²u)/Δ'`, `Δ'² = c² + m s²` (Byrd & Friedman 710.11, with
+/// E − mc K sin²u rewritten as m B + mc K cos²u ≥ 0) and DLMF 19.25.5, 19.25.10 as the sum of
+/// positive terms `1 − Λ₀(u) = (2/π) m [B c R_F(m s², m s² + c², m) + mc K (c³/3) R_D(m s²,
+/// m s² + c², m)]`. For any real φ = jπ ± u, `1 − Λ₀ = (1 ∓ 1 − 2j) ± (1 − Λ₀(u))`, where the
+/// integer part is 0 or at least 2 in size.
+pub fn heuman_lambda_c_mc<T: Real>(phi: &T, mc: &T) -> Result<T> {
     check_finite("phi", phi)?;
     check_mc(mc, false)?;
     let p = phi.prec();
@@ -652,71 +330,35 @@ fn heuman_core<T: Real>(phi: &T, mc: &T, complement: bool) -> Result<T> {
     let m = one.clone() - mc;
     let (j, s, c) = match reduce(phi) {
         // Λ₀(φ) = 2φ/π + O(1), the O(1) below ε of the result.
-        Amplitude::Huge => {
-            let l = two_over_pi_times(phi);
-            return Ok(if complement { one - l } else { l });
-        }
+        Amplitude::Huge => return Ok(one - phi.clone().mul_pow2(1) / T::pi(p)),
         Amplitude::Reduced(j, s, c) => (j, s, c),
     };
     let neg = s.is_negative();
     let s = s.abs();
-    let two_over_pi = T::from_i64(2, p) / T::pi(p);
-    let three = T::from_i64(3, p);
-    // B(m) and mc·K(m) (→ 1 and 0 as mc → 0).
-    let (b, mck) = if mc.is_zero() {
-        (one.clone(), T::zero(p))
-    } else {
-        let [b, d] = bd_mc(mc)?;
-        (b.clone(), mc.clone() * (b + d))
-    };
     let v = if m.is_zero() {
         // Λ₀(u | 0) = sin u; 1 − sin u = cos²u / (1 + sin u).
-        if complement {
-            c.square() / (one.clone() + &s)
+        c.square() / (one.clone() + &s)
+    } else {
+        // B(m) and mc·K(m) (→ 1 and 0 as mc → 0).
+        let (b, mck) = if mc.is_zero() {
+            (one.clone(), T::zero(p))
         } else {
-            s
-        }
-    } else if complement {
+            let [b, d] = bd_mc(mc)?;
+            (b.clone(), mc.clone() * (b + d))
+        };
         let x = m.clone() * s.square();
         let y = x.clone() + c.square();
         let rf = carlson(x.clone(), y.clone(), m.clone(), false)?;
         let rd = carlson(x, y, m.clone(), true)?;
         let c3 = c.square() * &c;
-        two_over_pi * m * (b * &c * rf + mck * c3 * rd / three)
-    } else {
-        let x = c.square();
-        let y = x.clone() + m.clone() * s.square();
-        let rf = carlson(x.clone(), y.clone(), one.clone(), false)?;
-        let rd = carlson(x, one.clone(), y.clone(), true)?;
-        let s3 = s.square() * &s;
-        let inner = m.clone() * s3 * rd / three + s.clone() * c / y.sqrt();
-        two_over_pi * (m * b * &s * rf + mck * inner)
+        let two_over_pi = T::from_i64(2, p) / T::pi(p);
+        two_over_pi * m * (b * &c * rf + mck * c3 * rd / T::from_i64(3, p))
     };
-    let v = if neg { -v } else { v };
     let two_j = j.map_or_else(|| T::zero(p), |j| j.mul_pow2(1));
-    let r = match (complement, neg) {
-        (false, _) => two_j + v,
-        (true, false) => v - two_j,
-        (true, true) => one.mul_pow2(1) - two_j + v,
+    let r = if neg {
+        one.mul_pow2(1) - two_j - v
+    } else {
+        v - two_j
     };
     finite_out("Heuman Lambda", r)
-}
-
-/// Heuman's Lambda function `Λ₀(φ | m) = (2/π)[E(m) F(φ | mc) + K(m) E(φ | mc) − K(m) F(φ | mc)]`
-/// (Byrd & Friedman 150.03) for real φ and `0 ≤ m ≤ 1`, from `mc = 1 − m ∈ [0, 1]`.
-///
-/// `Λ₀(π/2) = 1` (Legendre's relation), `Λ₀(φ + π) = Λ₀(φ) + 2`, `Λ₀(φ | 0) = sin φ`,
-/// `Λ₀(φ | 1) = 2φ/π`. Computed from sums of positive terms (see the source): a few ε.
-pub fn heuman_lambda_mc<T: Real>(phi: &T, mc: &T) -> Result<T> {
-    heuman_core(phi, mc, false)
-}
-
-/// `1 − Λ₀(φ | m)` from `mc = 1 − m ∈ [0, 1]`, without the cancellation of `1 − Λ₀` as φ → π/2.
-///
-/// The bracket of the paper's (52)–(53),
-/// `π/2 − K(e) E(β, k) − E(e) F(β, k) + K(e) F(β, k)`, equals
-/// `(π/2) · heuman_lambda_c_mc(β, k²)` with `e² = 1 − k²` (k the axis ratio, `k ≤ 1`).
-/// Accuracy: a few ε, including φ next to π/2.
-pub fn heuman_lambda_c_mc<T: Real>(phi: &T, mc: &T) -> Result<T> {
-    heuman_core(phi, mc, true)
 }

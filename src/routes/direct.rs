@@ -30,7 +30,7 @@
 use super::{beyond_exponent_range, AxisRatio, Evaluation, Route};
 use crate::error::{Error, Result};
 use crate::estimate::RelError;
-use crate::numerics::elliptic::{ellipd_mc, heuman_lambda_c_mc};
+use crate::numerics::elliptic::{ellipbd_mc, heuman_lambda_c_mc};
 use crate::numerics::quadrature::{integrate_vec, integrate_vec_plus, Limits, VecQuadrature};
 use crate::physics::{GreenFunction, Speed};
 use crate::scalar::{short, Real};
@@ -467,7 +467,7 @@ pub fn s_closed_form<T: Real>(speed: &Speed<T>, axes: &AxisRatio<T>) -> Result<T
     let eps2 = speed.one_minus_mr2().clone();
     let q = one - axes.k2.clone() * &eps2;
     // K − E = e² D(e²) with mc = k².
-    let kme = axes.e2.clone() * ellipd_mc(&axes.k2)?;
+    let kme = axes.e2.clone() * ellipbd_mc(&axes.k2)?.1;
     let first = kme / &q;
     if speed.mr().is_zero() {
         return Ok(first);
