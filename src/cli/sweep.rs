@@ -219,58 +219,9 @@ impl Axis {
 }
 
 impl Axis {
-    /// Refuses, naming the option and its text as typed, a value that the working precision
-    /// does not hold as a normal number: one that overflows, or a nonzero one that rounds to a
-    /// subnormal or to 0 (a range's end of 1e-4000 at `f64`, which would have been solved as 0).
-    pub(super) fn check_representable<T: Real>(
-        &self,
-        option: &str,
-        what: &str,
-        values: &[(String, T)],
-        precision: &Precision,
-    ) -> Result<(), CliError> {
-        let p = match values.first() {
-            Some((_, x)) => x.prec(),
-            None => return Ok(()),
-        };
-        for (j, (_, x)) in values.iter().enumerate() {
-            let normal = x.is_finite() && x.clone().abs() >= T::min_positive(p);
-            if normal || (x.is_zero() && self.point(j, 64).1) {
-                continue;
-            }
-            let shown = self.point(j, 64).0.to_string_radix(10, Some(6));
-            let (text, why) = match self {
-                Axis::List(v) => (v[j].text.clone(), format!("{what} = {} is", v[j].text)),
-                Axis::Range {
-                    log,
-                    start,
-                    stop,
-                    n,
-                } => (
-                    format!(
-                        "{}:{}:{}:{n}",
-                        if *log { "log" } else { "lin" },
-                        start.text,
-                        stop.text
-                    ),
-                    format!("{what}: its point {} of {n}, {shown}, is", j + 1),
-                ),
-            };
-            let why = format!(
-                "{why} not a normal number of {precision} (rescale, or use a wider precision)"
-            );
-            return Err(CliError::value(option, &text, why));
-        }
-        Ok(())
-    }
-
-    /// Point `j` at `bits` (MPFR's exponent range holds any typed value; a linear range's
-    /// point is exact before this one rounding) and whether it is exactly 0.
-    fn point(&self, j: usize, bits: u32) -> (Float, bool) {
-        self.points(bits)(j)
-    }
-
-    /// [`Axis::point`] as a function of `j`, a log range's logarithms of its ends formed once.
+    /// Point `j` at `bits` as a function of `j` (MPFR's exponent range holds any typed value; a
+    /// linear range's point is exact before this one rounding) and whether it is exactly 0; a log
+    /// range's logarithms of its ends formed once.
     fn points(&self, bits: u32) -> impl Fn(usize) -> (Float, bool) + '_ {
         let logs = match self {
             Axis::Range {
@@ -372,8 +323,10 @@ impl Checked {
         }
     }
 
-    /// The values of `axis` at precision `p` ([`Axis::values`]), refused unless each is a
-    /// normal number of the working precision ([`Axis::check_representable`]).
+    /// The values of `axis` at precision `p` ([`Axis::values`]), refused, naming the option and
+    /// its text as typed, unless each is a normal number of the working precision: one that
+    /// overflows, or a nonzero one that rounds to a subnormal or to 0 (a range's end of 1e-4000
+    /// at `f64`, which would have been solved as 0).
     pub(super) fn values<T: Real + Send>(
         &self,
         axis: &Axis,
@@ -381,7 +334,39 @@ impl Checked {
         p: T::Prec,
     ) -> Result<Vec<(String, T)>, CliError> {
         let values = axis.values::<T>(p);
-        axis.check_representable(self.option, self.what, &values, precision)?;
+        let point = axis.points(64);
+        for (j, (_, x)) in values.iter().enumerate() {
+            let normal = x.is_finite() && x.clone().abs() >= T::min_positive(p);
+            if normal || (x.is_zero() && point(j).1) {
+                continue;
+            }
+            let what = self.what;
+            let (text, why) = match axis {
+                Axis::List(v) => (v[j].text.clone(), format!("{what} = {} is", v[j].text)),
+                Axis::Range {
+                    log,
+                    start,
+                    stop,
+                    n,
+                } => (
+                    format!(
+                        "{}:{}:{}:{n}",
+                        if *log { "log" } else { "lin" },
+                        start.text,
+                        stop.text
+                    ),
+                    format!(
+                        "{what}: its point {} of {n}, {}, is",
+                        j + 1,
+                        point(j).0.to_string_radix(10, Some(6))
+                    ),
+                ),
+            };
+            let why = format!(
+                "{why} not a normal number of {precision} (rescale, or use a wider precision)"
+            );
+            return Err(CliError::value(self.option, &text, why));
+        }
         Ok(values)
     }
 }
@@ -432,23 +417,6 @@ struct Grid<T: Real> {
 }
 
 impl<T: Real> Grid<T> {
-    /// The grid of these axes with each value's text as its output cell in `format`: quoted
-    /// where CSV or JSON needs it, once a value rather than once a row.
-    fn new(
-        nus: Vec<(String, T)>,
-        speeds: Vec<(String, SpeedGiven<T>)>,
-        ratios: Vec<(String, T)>,
-        format: Format,
-    ) -> Self {
-        Grid {
-            nus: cells(nus, format),
-            speeds: cells(speeds, format),
-            ratios: cells(ratios, format),
-            materials: Live::default(),
-            formed: Live::default(),
-        }
-    }
-
     /// The text of the `j`-th point's ν, speed and ratio (their cells).
     fn texts(&self, j: usize) -> [&str; 3] {
         let (nr, ns) = (self.ratios.len(), self.speeds.len());
@@ -459,15 +427,8 @@ impl<T: Real> Grid<T> {
         ]
     }
 
-    /// The speed of the (ν, speed) pair `pair`, taken for `n` of its points: formed by the
-    /// first block that takes it (in the material of its ν, itself formed once for every speed
-    /// of that ν), the same one for every block after, and dropped from the grid once all its
-    /// points are taken.
-    fn speed(&self, pair: usize, n: usize) -> Arc<OnceLock<moving_hertz::Result<Speed<T>>>> {
-        self.formed.take(pair, self.ratios.len(), n)
-    }
-
-    /// The speed of `pair` in the material of its ν.
+    /// The speed of `pair` in the material of its ν (itself formed once for every speed of
+    /// that ν).
     fn form(&self, pair: usize) -> moving_hertz::Result<Speed<T>> {
         let ns = self.speeds.len();
         let (nu, given) = (pair / ns, &self.speeds[pair % ns].1);
@@ -494,7 +455,7 @@ impl<T: Real> Grid<T> {
         let taken: Vec<_> = (first..=last / nr)
             .map(|pair| {
                 let n = range.end.min((pair + 1) * nr) - range.start.max(pair * nr);
-                self.speed(pair, n)
+                self.formed.take(pair, nr, n)
             })
             .collect();
         let speeds: Vec<_> = (taken.iter().zip(first..))
@@ -553,8 +514,9 @@ impl<V> Live<V> {
     }
 }
 
-/// The grid of the three axes, each value with its text; a value that overflows or underflows
-/// the working precision is refused before any work.
+/// The grid of the three axes, each value with its text as its output cell in `format` (quoted
+/// where CSV or JSON needs it, once a value rather than once a row); a value that overflows or
+/// underflows the working precision is refused before any work.
 fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
     let [(nu, _), (speed, speed_checked), (ratio, _)] = a.axes()?;
     let nus = checked_nus(nu, &a.run.precision, p)?;
@@ -570,7 +532,14 @@ fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError
             (text, given)
         })
         .collect();
-    Ok(Grid::new(nus, speeds, ratios, a.run.format))
+    let format = a.run.format;
+    Ok(Grid {
+        nus: cells(nus, format),
+        speeds: cells(speeds, format),
+        ratios: cells(ratios, format),
+        materials: Live::default(),
+        formed: Live::default(),
+    })
 }
 
 /// The values of `--nu` at `p`, refused before any work, naming the text,

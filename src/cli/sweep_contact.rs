@@ -281,22 +281,18 @@ impl<T: Real + Send + Sync> Grid<T> {
         Solid::parse(nu, moduli, p)
     }
 
-    /// The lengths of the six axes, in the order of the rows.
-    fn lens(&self) -> [usize; 6] {
-        [
+    /// The indices of point `j` on the six axes, in the order of the rows (the last fastest).
+    fn indices(&self, mut j: usize) -> [usize; 6] {
+        let lens = [
             self.nus.len(),
             self.moduli.len(),
             self.speeds.len(),
             self.along.len(),
             self.across.len(),
             self.sizes.len(),
-        ]
-    }
-
-    /// The indices of point `j` on the six axes (the last fastest).
-    fn indices(&self, mut j: usize) -> [usize; 6] {
+        ];
         let mut at = [0; 6];
-        for (i, n) in self.lens().iter().enumerate().rev() {
+        for (i, n) in lens.iter().enumerate().rev() {
             at[i] = j % n;
             j /= n;
         }
@@ -421,16 +417,11 @@ impl<T: Real + Send + Sync> Grid<T> {
             keys.extend(["c_r", "mr"]);
         }
         keys.extend("a,a_error,b,b_error,k,k_error,e,e_error,major_axis,p0,p0_error".split(','));
-        let other = if self.by_load() { "d0" } else { "load" };
-        keys.extend([
-            other,
-            if self.by_load() {
-                "d0_error"
-            } else {
-                "load_error"
-            },
-        ]);
-        keys.extend(["route", "iterations", "error"]);
+        let other = match self.by_load() {
+            true => ["d0", "d0_error"],
+            false => ["load", "load_error"],
+        };
+        keys.extend(other.into_iter().chain(["route", "iterations", "error"]));
         keys
     }
 
