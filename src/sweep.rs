@@ -3,17 +3,13 @@
 //! [`try_contacts`]), and I1, I2 of (34) over a list of axis ratios — returned in input order,
 //! each point with its own result or its own typed error (one bad point never fails the others).
 //!
-//! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points; the
-//! blocks run in parallel on `rayon`'s pool (the global one or the caller's), the points of a
-//! block one after another; a sweep of one block runs on the calling thread. Within a block,
-//! consecutive points at the same speed share the fixed rules' set-up, and each root starts from
-//! the extrapolation, in ln k against ln(A1/B1) (or ln(1 − M_R) along a curve of speeds), of up
-//! to four earlier roots of the block, or from the static ellipse; the higher stages of the
-//! precision ladder run as in [`crate::solve_ellipse`]. [`ellipses`] forms the speed of each
-//! block's points in that block; [`ellipses_at`] takes speeds the caller formed once, so that one
-//! speed's set-ups serve every block of its points. Threads may be bound to CPUs
-//! ([`bind_to_cpu`]). Why and at what cost: docs/design.md, "Many cores", and
-//! docs/performance.md.
+//! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points,
+//! solved in parallel on `rayon`'s pool (the global one or the caller's; a sweep of one block on
+//! the calling thread). Within a block, consecutive points at the same speed share the fixed
+//! rules' set-up, and each root starts from the extrapolation of up to four earlier roots of the
+//! block along its curve, or from the static ellipse. [`ellipses_at`] takes speeds the caller
+//! formed once, whose set-ups serve every block. Why and at what cost: docs/design.md, "Many
+//! cores", and docs/performance.md.
 //!
 //! **Reproducibility.** A point's result depends only on its block (never on the number of
 //! threads): a sweep gives the same bits on one thread and on many, and a sweep split at

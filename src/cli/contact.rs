@@ -44,10 +44,8 @@ pub struct ContactArgs {
     #[arg(long, value_name = "RHO", value_parser = args::decimal, allow_hyphen_values = true,
           requires = "velocity")]
     pub density: Option<Decimal>,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
-    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
-    /// mpfr256 as the output labels it.
-    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision,
+          help = args::PRECISION_HELP)]
     pub precision: Precision,
     /// How the ellipse solve evaluates the integrals: auto, adaptive or fixed (as for
     /// `ellipse`; series and adaptive-subtracted are refused).

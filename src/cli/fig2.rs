@@ -17,10 +17,8 @@ pub struct Fig2Args {
     #[arg(long, value_name = "NU", default_value = "0.2", value_parser = args::decimal,
           allow_hyphen_values = true)]
     pub nu: Decimal,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
-    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
-    /// mpfr256 as the output labels it.
-    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision,
+          help = args::PRECISION_HELP)]
     pub precision: Precision,
     #[command(flatten)]
     pub out: OutDir,

@@ -69,10 +69,8 @@ pub struct SweepArgs {
 /// The options both sweeps end with.
 #[derive(clap::Args, Debug)]
 pub struct RunArgs {
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
-    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
-    /// mpfr256 as the output labels it.
-    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision,
+          help = args::PRECISION_HELP)]
     pub precision: Precision,
     /// How the integrals are evaluated at each Newton iterate: auto, adaptive or fixed.
     #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::solve_method())]
