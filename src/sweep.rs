@@ -40,8 +40,7 @@ use crate::estimate::RelError;
 use crate::physics::{Material, Moduli, Solid, Speed};
 use crate::routes::{Evaluator, IntegralOptions, Integrals};
 use crate::scalar::{Precision, Real};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::sync::{Mutex, PoisonError};
 
 /// The points of one block: solved one after another, sharing set-ups and continuation (module
 /// docs); blocks run in parallel.
@@ -290,10 +289,10 @@ pub fn threads_worth(points: usize, precision: &Precision) -> usize {
 
 /// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
 /// share of the output. As many copies of the loop as the pool has threads (no more than the
-/// job is `worth`, [`threads_worth`]) each take the next unsolved block from a shared counter
-/// until none is left, so that the threads finish within one block of each other. A single
-/// block runs on the calling thread, where its solves may share their node loops among the
-/// cores (above 448 bits, `numerics::shares`).
+/// job is `worth`, [`threads_worth`]) each take the next unsolved block until none is left, so
+/// that the threads finish within one block of each other. A single block runs on the calling
+/// thread, where its solves may share their node loops among the cores (above 448 bits,
+/// `numerics::shares`).
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
     worth: usize,
@@ -304,25 +303,21 @@ fn in_blocks<I: Sync, R: Send>(
         solve_block(items, &mut out);
         return out;
     }
-    // Each share is taken by one thread only (the counter hands each index out once), so that
-    // its lock is never contended: it only lets the threads hold disjoint `&mut` shares.
-    let shares: Vec<_> = out.chunks_mut(BLOCK).map(Mutex::new).collect();
-    let next = AtomicUsize::new(0);
+    let copies = (rayon::current_num_threads().min(items.len().div_ceil(BLOCK))).min(worth);
+    // The blocks with their shares of the output, handed out one pair at a time.
+    let blocks = Mutex::new(items.chunks(BLOCK).zip(out.chunks_mut(BLOCK)));
     let take_blocks = || loop {
-        let b = next.fetch_add(1, Ordering::Relaxed);
-        let Some(share) = shares.get(b) else {
+        let next = blocks.lock().unwrap_or_else(PoisonError::into_inner).next();
+        let Some((block, share)) = next else {
             break;
         };
-        let block = &items[b * BLOCK..(b * BLOCK + BLOCK).min(items.len())];
-        solve_block(block, &mut share.lock().unwrap_or_else(|e| e.into_inner()));
+        solve_block(block, share);
     };
-    let copies = rayon::current_num_threads().min(shares.len()).min(worth);
     rayon::scope(|scope| {
         for _ in 0..copies {
             scope.spawn(|_| take_blocks());
         }
     });
-    drop(shares);
     out
 }
 
