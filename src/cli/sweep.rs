@@ -579,80 +579,67 @@ fn solve_and_write<T: Real + Send + Sync>(
     };
     let results = "k,k_error,e,e_error,major_axis,route,iterations,error".split(',');
     let keys: Vec<_> = ["nu", speed, "ratio"].into_iter().chain(results).collect();
-    // The rows of the points `range` and their count of failed points, formed where the block
-    // is solved.
-    let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
-        let mut failed = 0;
-        // Read in place (each result is a few hundred bytes: not moved out).
-        for (j, r) in range.clone().zip(&grid.solve(range, &opts)) {
-            failed += usize::from(r.is_err());
-            push_row(out, a.run.format, &keys, &grid.texts(j), r);
+    let solve = |range| grid.solve(range, &opts);
+    let row = |row: &mut Row, j: usize, r: &moving_hertz::Result<Ellipse<T>>| {
+        for (key, cell) in keys.iter().zip(grid.texts(j)) {
+            row.open(key);
+            row.out.extend_from_slice(cell.as_bytes());
         }
-        failed
+        match r {
+            Ok(e) => {
+                row.estimated(["k", "k_error"], e.k());
+                row.estimated(["e", "e_error"], e.e());
+                row.label("major_axis", e.major().label());
+                row.label("route", e.integrals().route.label());
+                row.count("iterations", e.iterations());
+                row.text("error", "");
+            }
+            Err(err) => row.failed(&keys[3..10], err),
+        }
     };
-    write_in_order("sweep", &keys, a.run.format, total, solve, &a.run.precision)
+    write_in_order("sweep", &keys, &a.run, total, solve, row)
 }
 
-/// Writes the CSV header of `keys` (in CSV), then solves the rows of `0..total` block by block
-/// on every thread (`solve` returns the count of failed points among those it wrote) and
-/// writes them in order ([`pipeline::solve_in_order`]) under a progress bar `label`; then
-/// [`CliError::Failed`] counting the points whose rows carry an error.
-pub(super) fn write_in_order(
+/// Writes the CSV header of `keys` (in CSV), then solves the points of `0..total` block by block
+/// on every thread (`solve` gives a block's results in order) and writes their lines (`row`
+/// appends a point's cells: its inputs, its results or its error) in input order
+/// ([`pipeline::solve_in_order`]), the lines formed where their block is solved, under a
+/// progress bar `label`; then [`CliError::Failed`] counting the points that failed.
+pub(super) fn write_in_order<R>(
     label: &str,
     keys: &[&str],
-    format: Format,
+    run: &RunArgs,
     total: usize,
-    solve: impl Fn(std::ops::Range<usize>, &mut Vec<u8>) -> usize + Sync,
-    precision: &Precision,
+    solve: impl Fn(std::ops::Range<usize>) -> Vec<moving_hertz::Result<R>> + Sync,
+    row: impl Fn(&mut Row, usize, &moving_hertz::Result<R>) + Sync,
 ) -> Result<(), CliError> {
-    if format == Format::Csv {
+    if run.format == Format::Csv {
         emit(&(keys.join(",") + "\n"))?;
     }
     let bar = Progress::new(label, total);
     let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
-        let n = range.len();
-        let failed = solve(range, out);
+        let (n, mut failed) = (range.len(), 0);
+        // Read in place (a result is a few hundred bytes: not moved out).
+        for (j, r) in range.clone().zip(&solve(range)) {
+            failed += usize::from(r.is_err());
+            // Room for the whole line first, so that its cells never reallocate.
+            out.reserve(ROW_BYTES);
+            let mut line = Row::new(out, run.format);
+            row(&mut line, j, r);
+            line.end();
+        }
         bar.advance(n);
         failed
     };
     let failed = pipeline::solve_in_order(total, BLOCK, solve, emit_bytes)?;
     bar.finish();
     if failed > 0 {
+        let precision = &run.precision;
         return Err(CliError::Failed(format!(
             "{failed} of {total} points failed at {precision}; their rows carry the error"
         )));
     }
     Ok(())
-}
-
-/// Appends one point's line under `keys`: its inputs' cells `t` ([`Grid::cells`]), then the
-/// result's cells or the error, each number written straight into `out` (no string of its own).
-fn push_row<T: Real>(
-    out: &mut Vec<u8>,
-    format: Format,
-    keys: &[&str],
-    t: &[&str; 3],
-    r: &moving_hertz::Result<Ellipse<T>>,
-) {
-    // Room for the whole row first, so that its cells never reallocate.
-    out.reserve(ROW_BYTES);
-    let mut row = Row::new(out, format);
-    for (key, cell) in keys.iter().zip(t) {
-        row.open(key);
-        row.out.extend_from_slice(cell.as_bytes());
-    }
-    match r {
-        Ok(e) => {
-            row.estimated(["k", "k_error"], e.k());
-            row.estimated(["e", "e_error"], e.e());
-            row.label("major_axis", e.major().label());
-            row.label("route", e.integrals().route.label());
-            row.count("iterations", e.iterations());
-            row.text("error", "");
-        }
-        Err(err) => row.failed(&keys[3..10], err),
-    }
-    row.end();
 }
 
 /// Room for a row of `sweep` at `f64` (its longest: three inputs of up to 24 bytes, two

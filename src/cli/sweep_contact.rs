@@ -151,6 +151,8 @@ struct Grid<T> {
     /// μ by modulus, or by (ν, E) (index ν·|E| + E) when `mu_by_nu`; empty with --velocity.
     mu: Vec<T>,
     mu_by_nu: bool,
+    /// With --velocity, c_R of each (ν, modulus) (index ν·|moduli| + modulus).
+    c_r: Vec<T>,
     /// The speed's, the modulus's and the size's options as given (`--gap`, `--youngs-modulus`,
     /// `--load`, …).
     given: [&'static Checked; 3],
@@ -199,6 +201,7 @@ impl<T: Real + Send + Sync> Grid<T> {
             sizes,
             mu: Vec::new(),
             mu_by_nu: false,
+            c_r: Vec::new(),
             given: [speed, modulus, size],
             density: String::new(),
         };
@@ -222,22 +225,26 @@ impl<T: Real + Send + Sync> Grid<T> {
             args::positive::<T>(rho, "--density", "density rho", p)?;
             self.density = rho.text.clone();
             let context = "forming the half-space's wave speeds";
-            let first_error = (0..pairs).into_par_iter().find_map_first(|j| {
-                let (nu, m) = (
-                    &self.nus[j / self.moduli.len()],
-                    &self.moduli[j % self.moduli.len()],
-                );
-                let names = [
-                    ("Young's modulus", option, m.as_str()),
-                    ("shear modulus", option, m.as_str()),
-                    ("density", "--density", rho.text.as_str()),
-                    ("nu", "--nu", nu.as_str()),
-                ];
-                self.solid(nu, m, p)
-                    .err()
-                    .map(|e| CliError::from_run(e, &names, context))
-            });
-            return first_error.map_or(Ok(()), Err);
+            let c_r: Vec<Result<T, CliError>> = (0..pairs)
+                .into_par_iter()
+                .map(|j| {
+                    let (nu, m) = (
+                        &self.nus[j / self.moduli.len()],
+                        &self.moduli[j % self.moduli.len()],
+                    );
+                    let names = [
+                        ("Young's modulus", option, m.as_str()),
+                        ("shear modulus", option, m.as_str()),
+                        ("density", "--density", rho.text.as_str()),
+                        ("nu", "--nu", nu.as_str()),
+                    ];
+                    self.solid(nu, m, p)
+                        .map(|s| s.c_r().clone())
+                        .map_err(|e| CliError::from_run(e, &names, context))
+                })
+                .collect();
+            self.c_r = c_r.into_iter().collect::<Result<_, _>>()?;
+            return Ok(());
         }
         if !self.youngs() {
             self.mu = moduli.into_iter().map(|(_, mu)| mu).collect();
@@ -313,20 +320,10 @@ impl<T: Real> Half<T> {
             Half::Material(_, mu) => Some(mu.clone()),
         }
     }
-
-    fn c_r(&self) -> Option<&T> {
-        match self {
-            Half::Solid(s) => Some(s.c_r()),
-            Half::Material(..) => None,
-        }
-    }
 }
 
 /// What a block formed last, at its indices: kept while consecutive points share it.
 type Cached<K, V> = Option<(K, moving_hertz::Result<V>)>;
-
-/// A point's problem as the block forms it, with c_R of its half-space (with --velocity).
-type Formed<T> = (moving_hertz::Result<ContactProblem<T>>, Option<T>);
 
 impl<T: Real + Send + Sync> Grid<T> {
     /// The half-space of ν `iv` and modulus `im` (checked before any work).
@@ -354,7 +351,11 @@ impl<T: Real + Send + Sync> Grid<T> {
 
     /// The problems of the points `range`, each half-space and speed formed once for the
     /// consecutive points that share it.
-    fn problems(&self, range: std::ops::Range<usize>, p: T::Prec) -> Vec<Formed<T>> {
+    fn problems(
+        &self,
+        range: std::ops::Range<usize>,
+        p: T::Prec,
+    ) -> Vec<moving_hertz::Result<ContactProblem<T>>> {
         let mut half: Cached<(usize, usize), Half<T>> = None;
         let mut speed: Cached<(usize, usize, usize), Speed<T>> = None;
         let mut out = Vec::with_capacity(range.len());
@@ -374,7 +375,6 @@ impl<T: Real + Send + Sync> Grid<T> {
                     &slot.insert(((iv, im, is), sp)).1
                 }
             };
-            let c_r = h.as_ref().ok().and_then(Half::c_r).cloned();
             let size = self.sizes[il].1.clone();
             let problem = sp.clone().and_then(|speed| {
                 let h = h.as_ref().map_err(Clone::clone)?;
@@ -391,9 +391,18 @@ impl<T: Real + Send + Sync> Grid<T> {
                     shear_modulus: h.shear_modulus().unwrap_or_else(|| T::zero(p)),
                 })
             });
-            out.push((problem, c_r));
+            out.push(problem);
         }
         out
+    }
+
+    /// c_R of point `j`'s half-space (with --velocity).
+    fn c_r(&self, j: usize) -> Option<&T> {
+        if self.c_r.is_empty() {
+            return None;
+        }
+        let [iv, im, ..] = self.indices(j);
+        self.c_r.get(iv * self.moduli.len() + im)
     }
 
     /// The texts of point `j`'s inputs, in the order of the columns.
@@ -476,28 +485,12 @@ fn solve_and_write<T: Real + Send + Sync>(
         ..Default::default()
     };
     let keys = grid.keys();
-    let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
-        let (problems, c_rs): (Vec<_>, Vec<_>) =
-            grid.problems(range.clone(), p).into_iter().unzip();
-        let mut failed = 0;
-        let solved = sweep::try_contacts(&problems, &opts);
-        for ((r, c_r), j) in solved.iter().zip(c_rs).zip(range) {
-            failed += usize::from(r.is_err());
-            let mut row = Row::new(out, a.run.format);
-            for (key, text) in keys.iter().zip(grid.texts(j)) {
-                row.text(key, text);
-            }
-            grid.push_results(&mut row, &keys[6..], r, c_r.as_ref());
-            row.end();
+    let solve = |range| sweep::try_contacts(&grid.problems(range, p), &opts);
+    let row = |row: &mut Row, j: usize, r: &moving_hertz::Result<ContactSolution<T>>| {
+        for (key, text) in keys.iter().zip(grid.texts(j)) {
+            row.text(key, text);
         }
-        failed
+        grid.push_results(row, &keys[6..], r, grid.c_r(j));
     };
-    write_in_order(
-        "sweep contact",
-        &keys,
-        a.run.format,
-        total,
-        solve,
-        &a.run.precision,
-    )
+    write_in_order("sweep contact", &keys, &a.run, total, solve, row)
 }
