@@ -220,30 +220,21 @@ impl<T: Real + Send + Sync> Grid<T> {
         option: &'static str,
         p: T::Prec,
     ) -> Result<(), CliError> {
-        let pairs = self.nus.len() * self.moduli.len();
         if let Some(rho) = &a.density {
             args::positive::<T>(rho, "--density", "density rho", p)?;
             self.density = rho.text.clone();
             let context = "forming the half-space's wave speeds";
-            let c_r: Vec<Result<T, CliError>> = (0..pairs)
-                .into_par_iter()
-                .map(|j| {
-                    let (nu, m) = (
-                        &self.nus[j / self.moduli.len()],
-                        &self.moduli[j % self.moduli.len()],
-                    );
-                    let names = [
-                        ("Young's modulus", option, m.as_str()),
-                        ("shear modulus", option, m.as_str()),
-                        ("density", "--density", rho.text.as_str()),
-                        ("nu", "--nu", nu.as_str()),
-                    ];
-                    self.solid(nu, m, p)
-                        .map(|s| s.c_r().clone())
-                        .map_err(|e| CliError::from_run(e, &names, context))
-                })
-                .collect();
-            self.c_r = c_r.into_iter().collect::<Result<_, _>>()?;
+            self.c_r = self.per_pair(|nu, m| {
+                let names = [
+                    ("Young's modulus", option, m),
+                    ("shear modulus", option, m),
+                    ("density", "--density", rho.text.as_str()),
+                    ("nu", "--nu", nu),
+                ];
+                self.solid(nu, m, p)
+                    .map(|s| s.c_r().clone())
+                    .map_err(|e| CliError::from_run(e, &names, context))
+            })?;
             return Ok(());
         }
         if !self.youngs() {
@@ -251,25 +242,31 @@ impl<T: Real + Send + Sync> Grid<T> {
             return Ok(());
         }
         // μ = E/(2(1 + ν)) exactly at each (ν, E), rounded once, as `contact` forms it.
-        let mu: Vec<Result<T, CliError>> = (0..pairs)
-            .into_par_iter()
-            .map(|j| {
-                let (nu, e) = (
-                    &self.nus[j / self.moduli.len()],
-                    &self.moduli[j % self.moduli.len()],
-                );
-                let exact =
-                    |t: &str| decimal_to_rational(t).map_err(|err| CliError::value(option, t, err));
-                let e = Decimal {
-                    text: e.clone(),
-                    exact: exact(e)?,
-                };
-                args::mu_from_youngs::<T>(&e, &exact(nu)?, p)
-            })
-            .collect();
-        self.mu = mu.into_iter().collect::<Result<_, _>>()?;
+        self.mu = self.per_pair(|nu, e| {
+            let exact =
+                |t: &str| decimal_to_rational(t).map_err(|err| CliError::value(option, t, err));
+            let e = Decimal {
+                text: e.to_string(),
+                exact: exact(e)?,
+            };
+            args::mu_from_youngs::<T>(&e, &exact(nu)?, p)
+        })?;
         self.mu_by_nu = true;
         Ok(())
+    }
+
+    /// `f` of the texts of every (ν, modulus) (index ν·|moduli| + modulus), formed on the pool;
+    /// the first refusal in that order.
+    fn per_pair(
+        &self,
+        f: impl Fn(&str, &str) -> Result<T, CliError> + Sync,
+    ) -> Result<Vec<T>, CliError> {
+        let n = self.moduli.len();
+        let all: Vec<_> = (0..self.nus.len() * n)
+            .into_par_iter()
+            .map(|j| f(&self.nus[j / n], &self.moduli[j % n]))
+            .collect();
+        all.into_iter().collect()
     }
 
     /// The half-space of ν and modulus text with the density ([`Solid::parse`], as `contact`).
