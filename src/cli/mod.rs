@@ -164,7 +164,6 @@ pub fn main() -> i32 {
 /// Prints one line on standard error, its long words cut ([`cut_long_words`]); a closed or full
 /// standard error is ignored (the exit code still tells).
 fn say_error(line: &str) {
-    use std::io::Write;
     let _ = writeln!(std::io::stderr(), "{}", cut_long_words(line));
 }
 

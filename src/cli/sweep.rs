@@ -84,13 +84,9 @@ impl SweepArgs {
     /// `--nu`, `--speed` or `--gap`, and `--ratio`, each with its checks: clap requires them
     /// unless the subcommand is given, which leaves them out (hence their `Option`).
     fn axes(&self) -> Result<[(&Axis, &'static Checked); 3], CliError> {
-        let speed = (self.speed.speed.as_ref().map(|s| (s, &SPEED))).or(self
-            .speed
-            .gap
-            .as_ref()
-            .map(|g| (g, &GAP)));
+        let speed = one_of([(&self.speed.speed, &SPEED), (&self.speed.gap, &GAP)]);
         match (&self.nu, speed, &self.ratio) {
-            (Some(nu), Some(speed), Some(ratio)) => Ok([(nu, &NU), speed, (ratio, &RATIO)]),
+            (Some(nu), Ok(speed), Some(ratio)) => Ok([(nu, &NU), speed, (ratio, &RATIO)]),
             _ => Err(CliError::Input(
                 "sweep needs --nu LIST, --speed or --gap LIST and --ratio LIST (or the \
                  subcommand contact)"
@@ -98,6 +94,20 @@ impl SweepArgs {
             )),
         }
     }
+}
+
+/// The axis of the option of `group` that was given, with its checks; none given is refused
+/// (clap requires each group; this is the same check where the types ask for it).
+pub(super) fn one_of<'a, const N: usize>(
+    group: [(&'a Option<Axis>, &'static Checked); N],
+) -> Result<(&'a Axis, &'static Checked), CliError> {
+    if let Some((Some(axis), c)) = group.iter().find(|(axis, _)| axis.is_some()) {
+        return Ok((axis, c));
+    }
+    let options = group.map(|(_, c)| c.option);
+    let (last, rest) = options.split_last().unwrap_or((&"", &[]));
+    let what = format!("one of {} and {last}", rest.join(", "));
+    Err(CliError::Input(format!("{what} is required")))
 }
 
 /// `--speed LIST` or `--gap LIST`: exactly one.

@@ -8,8 +8,8 @@
 use super::args::{self, Decimal};
 use super::contact::ratio_fits;
 use super::sweep::{
-    axis, check_and_bind, checked_nus, write_in_order, Axis, Checked, Row, RunArgs, APPROACH, GAP,
-    LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
+    axis, check_and_bind, checked_nus, one_of, write_in_order, Axis, Checked, Row, RunArgs,
+    APPROACH, GAP, LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
 };
 use super::CliError;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
@@ -89,20 +89,6 @@ impl ContactSweepArgs {
             one_of([(&self.load, &LOAD), (&self.approach, &APPROACH)])?,
         ])
     }
-}
-
-/// The axis of the option of `group` that was given, with its checks; none given is refused
-/// (clap requires each group; this is the same check where the types ask for it).
-fn one_of<'a, const N: usize>(
-    group: [(&'a Option<Axis>, &'static Checked); N],
-) -> Result<(&'a Axis, &'static Checked), CliError> {
-    if let Some((Some(axis), c)) = group.iter().find(|(axis, _)| axis.is_some()) {
-        return Ok((axis, c));
-    }
-    let options = group.map(|(_, c)| c.option);
-    let (last, rest) = options.split_last().unwrap_or((&"", &[]));
-    let what = format!("one of {} and {last}", rest.join(", "));
-    Err(CliError::Input(format!("{what} is required")))
 }
 
 pub fn run(a: &ContactSweepArgs) -> Result<(), CliError> {
