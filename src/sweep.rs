@@ -3,17 +3,13 @@
 //! [`try_contacts`]), and I1, I2 of (34) over a list of axis ratios — returned in input order,
 //! each point with its own result or its own typed error (one bad point never fails the others).
 //!
-//! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points; the
-//! blocks run in parallel on `rayon`'s pool (the global one or the caller's), the points of a
-//! block one after another; a sweep of one block runs on the calling thread. Within a block,
-//! consecutive points at the same speed share the fixed rules' set-up, and each root starts from
-//! the extrapolation, in ln k against ln(A1/B1) (or ln(1 − M_R) along a curve of speeds), of up
-//! to four earlier roots of the block, or from the static ellipse; the higher stages of the
-//! precision ladder run as in [`crate::solve_ellipse`]. [`ellipses`] forms the speed of each
-//! block's points in that block; [`ellipses_at`] takes speeds the caller formed once, so that one
-//! speed's set-ups serve every block of its points. Threads may be bound to CPUs
-//! ([`bind_to_cpu`]). Why and at what cost: docs/design.md, "Many cores", and
-//! docs/performance.md.
+//! **What a sweep shares.** The points are cut into blocks of [`BLOCK`] consecutive points,
+//! solved in parallel on `rayon`'s pool (the global one or the caller's; a sweep of one block on
+//! the calling thread). Within a block, consecutive points at the same speed share the fixed
+//! rules' set-up, and each root starts from the extrapolation of up to four earlier roots of the
+//! block along its curve, or from the static ellipse. [`ellipses_at`] takes speeds the caller
+//! formed once, whose set-ups serve every block. Why and at what cost: docs/design.md, "Many
+//! cores", and docs/performance.md.
 //!
 //! **Reproducibility.** A point's result depends only on its block (never on the number of
 //! threads): a sweep gives the same bits on one thread and on many, and a sweep split at
@@ -44,8 +40,7 @@ use crate::estimate::RelError;
 use crate::physics::{Material, Moduli, Solid, Speed};
 use crate::routes::{Evaluator, IntegralOptions, Integrals};
 use crate::scalar::{Precision, Real};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::sync::{Mutex, PoisonError};
 
 /// The points of one block: solved one after another, sharing set-ups and continuation (module
 /// docs); blocks run in parallel.
@@ -294,10 +289,10 @@ pub fn threads_worth(points: usize, precision: &Precision) -> usize {
 
 /// Runs `solve_block` on the blocks of `items` in parallel, each writing its results into its
 /// share of the output. As many copies of the loop as the pool has threads (no more than the
-/// job is `worth`, [`threads_worth`]) each take the next unsolved block from a shared counter
-/// until none is left, so that the threads finish within one block of each other. A single
-/// block runs on the calling thread, where its solves may share their node loops among the
-/// cores (above 448 bits, `numerics::shares`).
+/// job is `worth`, [`threads_worth`]) each take the next unsolved block until none is left, so
+/// that the threads finish within one block of each other. A single block runs on the calling
+/// thread, where its solves may share their node loops among the cores (above 448 bits,
+/// `numerics::shares`).
 fn in_blocks<I: Sync, R: Send>(
     items: &[I],
     worth: usize,
@@ -308,25 +303,21 @@ fn in_blocks<I: Sync, R: Send>(
         solve_block(items, &mut out);
         return out;
     }
-    // Each share is taken by one thread only (the counter hands each index out once), so that
-    // its lock is never contended: it only lets the threads hold disjoint `&mut` shares.
-    let shares: Vec<_> = out.chunks_mut(BLOCK).map(Mutex::new).collect();
-    let next = AtomicUsize::new(0);
+    let copies = (rayon::current_num_threads().min(items.len().div_ceil(BLOCK))).min(worth);
+    // The blocks with their shares of the output, handed out one pair at a time.
+    let blocks = Mutex::new(items.chunks(BLOCK).zip(out.chunks_mut(BLOCK)));
     let take_blocks = || loop {
-        let b = next.fetch_add(1, Ordering::Relaxed);
-        let Some(share) = shares.get(b) else {
+        let next = blocks.lock().unwrap_or_else(PoisonError::into_inner).next();
+        let Some((block, share)) = next else {
             break;
         };
-        let block = &items[b * BLOCK..(b * BLOCK + BLOCK).min(items.len())];
-        solve_block(block, &mut share.lock().unwrap_or_else(|e| e.into_inner()));
+        solve_block(block, share);
     };
-    let copies = rayon::current_num_threads().min(shares.len()).min(worth);
     rayon::scope(|scope| {
         for _ in 0..copies {
             scope.spawn(|_| take_blocks());
         }
     });
-    drop(shares);
     out
 }
 

@@ -49,6 +49,11 @@ pub fn precision(s: &str) -> Result<Precision, String> {
     precision_upto(s, MAX_RULE_BITS, "[24, 32768]")
 }
 
+/// The help of `--precision` of the commands that solve by quadrature ([`precision`]).
+pub const PRECISION_HELP: &str = "The working precision: f64, dd (double-double, 106 bits) or a \
+    number of MPFR bits from 24 to 32768 (the largest precision the quadrature rules are built \
+    for), written 256 or mpfr256 as the output labels it";
+
 /// The value parser of `--precision` of `rayleigh`, which needs no quadrature rule: bits up to
 /// MPFR's limit here, [`MpPrec::MAX_BITS`].
 pub fn precision_any(s: &str) -> Result<Precision, String> {

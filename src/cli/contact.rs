@@ -44,10 +44,8 @@ pub struct ContactArgs {
     #[arg(long, value_name = "RHO", value_parser = args::decimal, allow_hyphen_values = true,
           requires = "velocity")]
     pub density: Option<Decimal>,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
-    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
-    /// mpfr256 as the output labels it.
-    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision,
+          help = args::PRECISION_HELP)]
     pub precision: Precision,
     /// How the ellipse solve evaluates the integrals: auto, adaptive or fixed (as for
     /// `ellipse`; series and adaptive-subtracted are refused).
@@ -117,35 +115,32 @@ pub(super) fn ratio_fits<T: Real>(
 /// the option and quote the text.
 fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliError> {
     let nu = &a.input.nu;
-    let (e_text, mu_text, rho_text) = (
-        args::text_of(&a.youngs_modulus).unwrap_or(""),
-        args::text_of(&a.shear_modulus).unwrap_or(""),
-        args::text_of(&a.density).unwrap_or(""),
-    );
     if let (Some(v), Some(rho)) = (&a.velocity, &a.density) {
-        let moduli = match (&a.youngs_modulus, &a.shear_modulus) {
-            (Some(e), _) => Moduli::Youngs {
-                youngs_modulus: e.text.as_str(),
-                density: rho.text.as_str(),
-            },
-            (None, Some(mu)) => Moduli::Shear {
-                shear_modulus: mu.text.as_str(),
-                density: rho.text.as_str(),
-            },
+        let density = rho.text.as_str();
+        // μ is named after the option that gave it (E gives μ = E/(2(1 + ν))).
+        let (moduli, option, modulus) = match (&a.youngs_modulus, &a.shear_modulus) {
+            (Some(e), _) => (
+                Moduli::Youngs {
+                    youngs_modulus: e.text.as_str(),
+                    density,
+                },
+                "--youngs-modulus",
+                e.text.as_str(),
+            ),
+            (None, Some(mu)) => (
+                Moduli::Shear {
+                    shear_modulus: mu.text.as_str(),
+                    density,
+                },
+                "--shear-modulus",
+                mu.text.as_str(),
+            ),
             (None, None) => return Err(CliError::Input(MODULUS_REQUIRED.into())),
         };
         let names = [
-            ("Young's modulus", "--youngs-modulus", e_text),
-            (
-                "shear modulus",
-                if e_text.is_empty() {
-                    "--shear-modulus"
-                } else {
-                    "--youngs-modulus"
-                },
-                if e_text.is_empty() { mu_text } else { e_text },
-            ),
-            ("density", "--density", rho_text),
+            ("Young's modulus", option, modulus),
+            ("shear modulus", option, modulus),
+            ("density", "--density", density),
             ("nu", "--nu", nu.text.as_str()),
             ("velocity", "--velocity", v.text.as_str()),
         ];

@@ -16,10 +16,8 @@ pub struct EllipseArgs {
     /// curvature along the motion, R2 across it).
     #[arg(long, value_name = "A1/B1", value_parser = args::decimal, allow_hyphen_values = true)]
     pub ratio: Decimal,
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
-    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
-    /// mpfr256 as the output labels it.
-    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision,
+          help = args::PRECISION_HELP)]
     pub precision: Precision,
     /// How the integrals are evaluated at each Newton iterate: auto (the fixed rules where they
     /// apply, else adaptive quadrature), adaptive or fixed. series and adaptive-subtracted

@@ -1,14 +1,9 @@
 //! The command line: `clap` (derive) parses the arguments, builds the help of every command and
 //! the shell completions; each command builds the library's inputs from the decimal text as
-//! typed, runs, and prints a text summary or one JSON object (`serde_json`). Reference:
-//! `docs/cli.md` (every command, option, JSON key and exit code). Nothing in the library depends
-//! on this module.
-//!
-//! Exit codes: 0 success; 1 the computation failed or cannot meet the request (no convergence,
-//! an unreachable tolerance, any failure once the work has started, a file that cannot be
-//! written, standard output closed or full); 2 the command line was refused before any work
-//! (an unknown command or option, a missing or conflicting option, a value that does not parse
-//! or lies outside its domain). Every failure prints one line on standard error.
+//! typed, runs, and prints a text summary or one JSON object. Reference: `docs/cli.md` (every
+//! command, option, JSON key and exit code: 1 for a failure during the work or a closed or full
+//! output, 2 for a command line refused before any work; one line on standard error). Nothing
+//! in the library depends on this module.
 
 mod args;
 mod contact;
@@ -169,7 +164,6 @@ pub fn main() -> i32 {
 /// Prints one line on standard error, its long words cut ([`cut_long_words`]); a closed or full
 /// standard error is ignored (the exit code still tells).
 fn say_error(line: &str) {
-    use std::io::Write;
     let _ = writeln!(std::io::stderr(), "{}", cut_long_words(line));
 }
 
@@ -205,14 +199,11 @@ pub fn cut_long_words(line: &str) -> String {
     out
 }
 
-/// Builds `rayon`'s global pool, which runs the sweeps' blocks: one thread per CPU the process
-/// may run on, each bound to its own (`moving_hertz::sweep::bind_to_cpu`; see
-/// `moving_hertz::sweep` for why), or as many as `RAYON_NUM_THREADS` asks (unbound), at most one
-/// a CPU (a note on standard error says so when more were asked); and never more than the job's
-/// `points` at `precision` keep busy (`moving_hertz::sweep::threads_worth`), so that a small
-/// job is not slowed by threads that would cost more to start than they save. Called by `fig2`,
-/// `study` and `sweep` once their inputs are checked, so that a refused command line starts no
-/// threads.
+/// Builds `rayon`'s global pool once a job's inputs are checked (a refused command line starts
+/// no threads): one thread per CPU, each bound to its own (`moving_hertz::sweep::bind_to_cpu`),
+/// or `RAYON_NUM_THREADS` of them unbound, capped at the CPUs (with a note on standard error)
+/// and at what the job's `points` at `precision` keep busy (`moving_hertz::sweep::threads_worth`).
+/// Why: docs/design.md, "Many cores".
 fn bind_global_pool(points: usize, precision: &moving_hertz::Precision) {
     let cpus = std::thread::available_parallelism().map_or(1, |n| n.get());
     let asked = std::env::var("RAYON_NUM_THREADS").ok();

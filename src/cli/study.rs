@@ -185,7 +185,13 @@ fn study_rayleigh(out: &Path) -> Result<(), CliError> {
         &format!("precision|method{}", regions.concat()),
         rayleigh::summary(&rows).into_iter().map(Vec::from),
     );
-    text(out, "data/rayleigh_summary.md", &md)?;
+    summarise(out, "data/rayleigh_summary.md", &md, &data)
+}
+
+/// Writes the Markdown summary `md` to `out/file` and prints it, then where the data `data` and
+/// the charts went.
+fn summarise(out: &Path, file: &str, md: &str, data: &Path) -> Result<(), CliError> {
+    text(out, file, md)?;
     say!("{md}");
     say!(
         "wrote {} and charts under {}",
@@ -301,8 +307,6 @@ fn study_poisson(out: &Path) -> Result<(), CliError> {
     charts(out, poisson::charts(&pts))?;
     say!("Largest deviation from nu = 0.2 (max over A1/B1 in [0.01, 1]), in %: e absolute (x100),");
     say!("k and a(M_R)/a(0) relative:");
-    say!("| M_R | e, 0<=nu<=1/2 | e, all nu | k, 0<=nu<=1/2 | k, all nu | a/a0, 0<=nu<=1/2 | a/a0, all nu |");
-    say!("|---|---|---|---|---|---|---|");
     use poisson::Deviation::{Absolute, Relative};
     type Metric = (poisson::Deviation, fn(&poisson::Point) -> f64);
     let fs: [Metric; 3] = [
@@ -311,26 +315,27 @@ fn study_poisson(out: &Path) -> Result<(), CliError> {
         (Relative, |q| q.a_rel),
     ];
     // Each column's spreads over the whole grid once, then a row per speed.
-    let columns: Vec<_> = fs
+    let spreads: Vec<_> = fs
         .iter()
         .flat_map(|&(how, f)| {
             [(0.0, 0.5), (-0.99, 0.5)].map(|range| poisson::spread(&pts, range, how, f))
         })
         .collect();
-    for mr in poisson::SPEEDS {
-        let cells: Vec<String> = columns
-            .iter()
-            .map(|col| {
-                let w = col
-                    .iter()
-                    .filter(|(m, _, _)| *m == mr)
-                    .map(|(_, _, w)| *w)
-                    .fold(0.0f64, f64::max);
-                format!("{:.3}", 100.0 * w)
-            })
-            .collect();
-        say!("| {mr} | {} |", cells.join(" | "));
-    }
+    let rows = poisson::SPEEDS.map(|mr| {
+        let widest = |col: &Vec<_>| {
+            let w = (col.iter().filter(|(m, _, _)| *m == mr))
+                .map(|(_, _, w)| *w)
+                .fold(0.0f64, f64::max);
+            format!("{:.3}", 100.0 * w)
+        };
+        [mr.to_string()]
+            .into_iter()
+            .chain(spreads.iter().map(widest))
+            .collect()
+    });
+    let columns = "M_R|e, 0<=nu<=1/2|e, all nu|k, 0<=nu<=1/2|k, all nu|a/a0, 0<=nu<=1/2|a/a0, \
+                   all nu";
+    super::output::emit(&md_table(columns, rows))?;
     say!("wrote {} and figures/poisson_*.svg", data.display());
     Ok(())
 }
@@ -426,14 +431,7 @@ fn study_series(out: &Path) -> Result<(), CliError> {
             ]
         }),
     );
-    text(out, "data/series_summary.md", &md)?;
-    say!("{md}");
-    say!(
-        "wrote {} and charts under {}",
-        data.display(),
-        out.join("figures").display()
-    );
-    Ok(())
+    summarise(out, "data/series_summary.md", &md, &data)
 }
 
 fn study_recursion(out: &Path) -> Result<(), CliError> {

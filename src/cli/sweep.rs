@@ -69,10 +69,8 @@ pub struct SweepArgs {
 /// The options both sweeps end with.
 #[derive(clap::Args, Debug)]
 pub struct RunArgs {
-    /// The working precision: f64, dd (double-double, 106 bits) or a number of MPFR bits from
-    /// 24 to 32768 (the largest precision the quadrature rules are built for), written 256 or
-    /// mpfr256 as the output labels it.
-    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision)]
+    #[arg(long, value_name = "P", default_value = "f64", value_parser = args::precision,
+          help = args::PRECISION_HELP)]
     pub precision: Precision,
     /// How the integrals are evaluated at each Newton iterate: auto, adaptive or fixed.
     #[arg(long, value_name = "METHOD", default_value = "auto", value_parser = args::solve_method())]
@@ -86,13 +84,9 @@ impl SweepArgs {
     /// `--nu`, `--speed` or `--gap`, and `--ratio`, each with its checks: clap requires them
     /// unless the subcommand is given, which leaves them out (hence their `Option`).
     fn axes(&self) -> Result<[(&Axis, &'static Checked); 3], CliError> {
-        let speed = (self.speed.speed.as_ref().map(|s| (s, &SPEED))).or(self
-            .speed
-            .gap
-            .as_ref()
-            .map(|g| (g, &GAP)));
+        let speed = one_of([(&self.speed.speed, &SPEED), (&self.speed.gap, &GAP)]);
         match (&self.nu, speed, &self.ratio) {
-            (Some(nu), Some(speed), Some(ratio)) => Ok([(nu, &NU), speed, (ratio, &RATIO)]),
+            (Some(nu), Ok(speed), Some(ratio)) => Ok([(nu, &NU), speed, (ratio, &RATIO)]),
             _ => Err(CliError::Input(
                 "sweep needs --nu LIST, --speed or --gap LIST and --ratio LIST (or the \
                  subcommand contact)"
@@ -100,6 +94,20 @@ impl SweepArgs {
             )),
         }
     }
+}
+
+/// The axis of the option of `group` that was given, with its checks; none given is refused
+/// (clap requires each group; this is the same check where the types ask for it).
+pub(super) fn one_of<'a, const N: usize>(
+    group: [(&'a Option<Axis>, &'static Checked); N],
+) -> Result<(&'a Axis, &'static Checked), CliError> {
+    if let Some((Some(axis), c)) = group.iter().find(|(axis, _)| axis.is_some()) {
+        return Ok((axis, c));
+    }
+    let options = group.map(|(_, c)| c.option);
+    let (last, rest) = options.split_last().unwrap_or((&"", &[]));
+    let what = format!("one of {} and {last}", rest.join(", "));
+    Err(CliError::Input(format!("{what} is required")))
 }
 
 /// `--speed LIST` or `--gap LIST`: exactly one.
@@ -219,58 +227,9 @@ impl Axis {
 }
 
 impl Axis {
-    /// Refuses, naming the option and its text as typed, a value that the working precision
-    /// does not hold as a normal number: one that overflows, or a nonzero one that rounds to a
-    /// subnormal or to 0 (a range's end of 1e-4000 at `f64`, which would have been solved as 0).
-    pub(super) fn check_representable<T: Real>(
-        &self,
-        option: &str,
-        what: &str,
-        values: &[(String, T)],
-        precision: &Precision,
-    ) -> Result<(), CliError> {
-        let p = match values.first() {
-            Some((_, x)) => x.prec(),
-            None => return Ok(()),
-        };
-        for (j, (_, x)) in values.iter().enumerate() {
-            let normal = x.is_finite() && x.clone().abs() >= T::min_positive(p);
-            if normal || (x.is_zero() && self.point(j, 64).1) {
-                continue;
-            }
-            let shown = self.point(j, 64).0.to_string_radix(10, Some(6));
-            let (text, why) = match self {
-                Axis::List(v) => (v[j].text.clone(), format!("{what} = {} is", v[j].text)),
-                Axis::Range {
-                    log,
-                    start,
-                    stop,
-                    n,
-                } => (
-                    format!(
-                        "{}:{}:{}:{n}",
-                        if *log { "log" } else { "lin" },
-                        start.text,
-                        stop.text
-                    ),
-                    format!("{what}: its point {} of {n}, {shown}, is", j + 1),
-                ),
-            };
-            let why = format!(
-                "{why} not a normal number of {precision} (rescale, or use a wider precision)"
-            );
-            return Err(CliError::value(option, &text, why));
-        }
-        Ok(())
-    }
-
-    /// Point `j` at `bits` (MPFR's exponent range holds any typed value; a linear range's
-    /// point is exact before this one rounding) and whether it is exactly 0.
-    fn point(&self, j: usize, bits: u32) -> (Float, bool) {
-        self.points(bits)(j)
-    }
-
-    /// [`Axis::point`] as a function of `j`, a log range's logarithms of its ends formed once.
+    /// Point `j` at `bits` as a function of `j` (MPFR's exponent range holds any typed value; a
+    /// linear range's point is exact before this one rounding) and whether it is exactly 0; a log
+    /// range's logarithms of its ends formed once.
     fn points(&self, bits: u32) -> impl Fn(usize) -> (Float, bool) + '_ {
         let logs = match self {
             Axis::Range {
@@ -372,8 +331,10 @@ impl Checked {
         }
     }
 
-    /// The values of `axis` at precision `p` ([`Axis::values`]), refused unless each is a
-    /// normal number of the working precision ([`Axis::check_representable`]).
+    /// The values of `axis` at precision `p` ([`Axis::values`]), refused, naming the option and
+    /// its text as typed, unless each is a normal number of the working precision: one that
+    /// overflows, or a nonzero one that rounds to a subnormal or to 0 (a range's end of 1e-4000
+    /// at `f64`, which would have been solved as 0).
     pub(super) fn values<T: Real + Send>(
         &self,
         axis: &Axis,
@@ -381,7 +342,39 @@ impl Checked {
         p: T::Prec,
     ) -> Result<Vec<(String, T)>, CliError> {
         let values = axis.values::<T>(p);
-        axis.check_representable(self.option, self.what, &values, precision)?;
+        let point = axis.points(64);
+        for (j, (_, x)) in values.iter().enumerate() {
+            let normal = x.is_finite() && x.clone().abs() >= T::min_positive(p);
+            if normal || (x.is_zero() && point(j).1) {
+                continue;
+            }
+            let what = self.what;
+            let (text, why) = match axis {
+                Axis::List(v) => (v[j].text.clone(), format!("{what} = {} is", v[j].text)),
+                Axis::Range {
+                    log,
+                    start,
+                    stop,
+                    n,
+                } => (
+                    format!(
+                        "{}:{}:{}:{n}",
+                        if *log { "log" } else { "lin" },
+                        start.text,
+                        stop.text
+                    ),
+                    format!(
+                        "{what}: its point {} of {n}, {}, is",
+                        j + 1,
+                        point(j).0.to_string_radix(10, Some(6))
+                    ),
+                ),
+            };
+            let why = format!(
+                "{why} not a normal number of {precision} (rescale, or use a wider precision)"
+            );
+            return Err(CliError::value(self.option, &text, why));
+        }
         Ok(values)
     }
 }
@@ -432,23 +425,6 @@ struct Grid<T: Real> {
 }
 
 impl<T: Real> Grid<T> {
-    /// The grid of these axes with each value's text as its output cell in `format`: quoted
-    /// where CSV or JSON needs it, once a value rather than once a row.
-    fn new(
-        nus: Vec<(String, T)>,
-        speeds: Vec<(String, SpeedGiven<T>)>,
-        ratios: Vec<(String, T)>,
-        format: Format,
-    ) -> Self {
-        Grid {
-            nus: cells(nus, format),
-            speeds: cells(speeds, format),
-            ratios: cells(ratios, format),
-            materials: Live::default(),
-            formed: Live::default(),
-        }
-    }
-
     /// The text of the `j`-th point's ν, speed and ratio (their cells).
     fn texts(&self, j: usize) -> [&str; 3] {
         let (nr, ns) = (self.ratios.len(), self.speeds.len());
@@ -459,15 +435,8 @@ impl<T: Real> Grid<T> {
         ]
     }
 
-    /// The speed of the (ν, speed) pair `pair`, taken for `n` of its points: formed by the
-    /// first block that takes it (in the material of its ν, itself formed once for every speed
-    /// of that ν), the same one for every block after, and dropped from the grid once all its
-    /// points are taken.
-    fn speed(&self, pair: usize, n: usize) -> Arc<OnceLock<moving_hertz::Result<Speed<T>>>> {
-        self.formed.take(pair, self.ratios.len(), n)
-    }
-
-    /// The speed of `pair` in the material of its ν.
+    /// The speed of `pair` in the material of its ν (itself formed once for every speed of
+    /// that ν).
     fn form(&self, pair: usize) -> moving_hertz::Result<Speed<T>> {
         let ns = self.speeds.len();
         let (nu, given) = (pair / ns, &self.speeds[pair % ns].1);
@@ -494,7 +463,7 @@ impl<T: Real> Grid<T> {
         let taken: Vec<_> = (first..=last / nr)
             .map(|pair| {
                 let n = range.end.min((pair + 1) * nr) - range.start.max(pair * nr);
-                self.speed(pair, n)
+                self.formed.take(pair, nr, n)
             })
             .collect();
         let speeds: Vec<_> = (taken.iter().zip(first..))
@@ -553,8 +522,9 @@ impl<V> Live<V> {
     }
 }
 
-/// The grid of the three axes, each value with its text; a value that overflows or underflows
-/// the working precision is refused before any work.
+/// The grid of the three axes, each value with its text as its output cell in `format` (quoted
+/// where CSV or JSON needs it, once a value rather than once a row); a value that overflows or
+/// underflows the working precision is refused before any work.
 fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
     let [(nu, _), (speed, speed_checked), (ratio, _)] = a.axes()?;
     let nus = checked_nus(nu, &a.run.precision, p)?;
@@ -570,7 +540,14 @@ fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError
             (text, given)
         })
         .collect();
-    Ok(Grid::new(nus, speeds, ratios, a.run.format))
+    let format = a.run.format;
+    Ok(Grid {
+        nus: cells(nus, format),
+        speeds: cells(speeds, format),
+        ratios: cells(ratios, format),
+        materials: Live::default(),
+        formed: Live::default(),
+    })
 }
 
 /// The values of `--nu` at `p`, refused before any work, naming the text,
@@ -612,80 +589,67 @@ fn solve_and_write<T: Real + Send + Sync>(
     };
     let results = "k,k_error,e,e_error,major_axis,route,iterations,error".split(',');
     let keys: Vec<_> = ["nu", speed, "ratio"].into_iter().chain(results).collect();
-    // The rows of the points `range` and their count of failed points, formed where the block
-    // is solved.
-    let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
-        let mut failed = 0;
-        // Read in place (each result is a few hundred bytes: not moved out).
-        for (j, r) in range.clone().zip(&grid.solve(range, &opts)) {
-            failed += usize::from(r.is_err());
-            push_row(out, a.run.format, &keys, &grid.texts(j), r);
+    let solve = |range| grid.solve(range, &opts);
+    let row = |row: &mut Row, j: usize, r: &moving_hertz::Result<Ellipse<T>>| {
+        for (key, cell) in keys.iter().zip(grid.texts(j)) {
+            row.open(key);
+            row.out.extend_from_slice(cell.as_bytes());
         }
-        failed
+        match r {
+            Ok(e) => {
+                row.estimated(["k", "k_error"], e.k());
+                row.estimated(["e", "e_error"], e.e());
+                row.label("major_axis", e.major().label());
+                row.label("route", e.integrals().route.label());
+                row.count("iterations", e.iterations());
+                row.text("error", "");
+            }
+            Err(err) => row.failed(&keys[3..10], err),
+        }
     };
-    write_in_order("sweep", &keys, a.run.format, total, solve, &a.run.precision)
+    write_in_order("sweep", &keys, &a.run, total, solve, row)
 }
 
-/// Writes the CSV header of `keys` (in CSV), then solves the rows of `0..total` block by block
-/// on every thread (`solve` returns the count of failed points among those it wrote) and
-/// writes them in order ([`pipeline::solve_in_order`]) under a progress bar `label`; then
-/// [`CliError::Failed`] counting the points whose rows carry an error.
-pub(super) fn write_in_order(
+/// Writes the CSV header of `keys` (in CSV), then solves the points of `0..total` block by block
+/// on every thread (`solve` gives a block's results in order) and writes their lines (`row`
+/// appends a point's cells: its inputs, its results or its error) in input order
+/// ([`pipeline::solve_in_order`]), the lines formed where their block is solved, under a
+/// progress bar `label`; then [`CliError::Failed`] counting the points that failed.
+pub(super) fn write_in_order<R>(
     label: &str,
     keys: &[&str],
-    format: Format,
+    run: &RunArgs,
     total: usize,
-    solve: impl Fn(std::ops::Range<usize>, &mut Vec<u8>) -> usize + Sync,
-    precision: &Precision,
+    solve: impl Fn(std::ops::Range<usize>) -> Vec<moving_hertz::Result<R>> + Sync,
+    row: impl Fn(&mut Row, usize, &moving_hertz::Result<R>) + Sync,
 ) -> Result<(), CliError> {
-    if format == Format::Csv {
+    if run.format == Format::Csv {
         emit(&(keys.join(",") + "\n"))?;
     }
     let bar = Progress::new(label, total);
     let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
-        let n = range.len();
-        let failed = solve(range, out);
+        let (n, mut failed) = (range.len(), 0);
+        // Read in place (a result is a few hundred bytes: not moved out).
+        for (j, r) in range.clone().zip(&solve(range)) {
+            failed += usize::from(r.is_err());
+            // Room for the whole line first, so that its cells never reallocate.
+            out.reserve(ROW_BYTES);
+            let mut line = Row::new(out, run.format);
+            row(&mut line, j, r);
+            line.end();
+        }
         bar.advance(n);
         failed
     };
     let failed = pipeline::solve_in_order(total, BLOCK, solve, emit_bytes)?;
     bar.finish();
     if failed > 0 {
+        let precision = &run.precision;
         return Err(CliError::Failed(format!(
             "{failed} of {total} points failed at {precision}; their rows carry the error"
         )));
     }
     Ok(())
-}
-
-/// Appends one point's line under `keys`: its inputs' cells `t` ([`Grid::cells`]), then the
-/// result's cells or the error, each number written straight into `out` (no string of its own).
-fn push_row<T: Real>(
-    out: &mut Vec<u8>,
-    format: Format,
-    keys: &[&str],
-    t: &[&str; 3],
-    r: &moving_hertz::Result<Ellipse<T>>,
-) {
-    // Room for the whole row first, so that its cells never reallocate.
-    out.reserve(ROW_BYTES);
-    let mut row = Row::new(out, format);
-    for (key, cell) in keys.iter().zip(t) {
-        row.open(key);
-        row.out.extend_from_slice(cell.as_bytes());
-    }
-    match r {
-        Ok(e) => {
-            row.estimated(["k", "k_error"], e.k());
-            row.estimated(["e", "e_error"], e.e());
-            row.label("major_axis", e.major().label());
-            row.label("route", e.integrals().route.label());
-            row.count("iterations", e.iterations());
-            row.text("error", "");
-        }
-        Err(err) => row.failed(&keys[3..10], err),
-    }
-    row.end();
 }
 
 /// Room for a row of `sweep` at `f64` (its longest: three inputs of up to 24 bytes, two

@@ -8,8 +8,8 @@
 use super::args::{self, Decimal};
 use super::contact::ratio_fits;
 use super::sweep::{
-    axis, check_and_bind, checked_nus, write_in_order, Axis, Checked, Row, RunArgs, APPROACH, GAP,
-    LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
+    axis, check_and_bind, checked_nus, one_of, write_in_order, Axis, Checked, Row, RunArgs,
+    APPROACH, GAP, LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
 };
 use super::CliError;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
@@ -91,20 +91,6 @@ impl ContactSweepArgs {
     }
 }
 
-/// The axis of the option of `group` that was given, with its checks; none given is refused
-/// (clap requires each group; this is the same check where the types ask for it).
-fn one_of<'a, const N: usize>(
-    group: [(&'a Option<Axis>, &'static Checked); N],
-) -> Result<(&'a Axis, &'static Checked), CliError> {
-    if let Some((Some(axis), c)) = group.iter().find(|(axis, _)| axis.is_some()) {
-        return Ok((axis, c));
-    }
-    let options = group.map(|(_, c)| c.option);
-    let (last, rest) = options.split_last().unwrap_or((&"", &[]));
-    let what = format!("one of {} and {last}", rest.join(", "));
-    Err(CliError::Input(format!("{what} is required")))
-}
-
 pub fn run(a: &ContactSweepArgs) -> Result<(), CliError> {
     let [speeds, moduli, sizes] = a.groups()?;
     let checks = [
@@ -151,6 +137,8 @@ struct Grid<T> {
     /// μ by modulus, or by (ν, E) (index ν·|E| + E) when `mu_by_nu`; empty with --velocity.
     mu: Vec<T>,
     mu_by_nu: bool,
+    /// With --velocity, c_R of each (ν, modulus) (index ν·|moduli| + modulus).
+    c_r: Vec<T>,
     /// The speed's, the modulus's and the size's options as given (`--gap`, `--youngs-modulus`,
     /// `--load`, …).
     given: [&'static Checked; 3],
@@ -199,6 +187,7 @@ impl<T: Real + Send + Sync> Grid<T> {
             sizes,
             mu: Vec::new(),
             mu_by_nu: false,
+            c_r: Vec::new(),
             given: [speed, modulus, size],
             density: String::new(),
         };
@@ -217,52 +206,53 @@ impl<T: Real + Send + Sync> Grid<T> {
         option: &'static str,
         p: T::Prec,
     ) -> Result<(), CliError> {
-        let pairs = self.nus.len() * self.moduli.len();
         if let Some(rho) = &a.density {
             args::positive::<T>(rho, "--density", "density rho", p)?;
             self.density = rho.text.clone();
             let context = "forming the half-space's wave speeds";
-            let first_error = (0..pairs).into_par_iter().find_map_first(|j| {
-                let (nu, m) = (
-                    &self.nus[j / self.moduli.len()],
-                    &self.moduli[j % self.moduli.len()],
-                );
+            self.c_r = self.per_pair(|nu, m| {
                 let names = [
-                    ("Young's modulus", option, m.as_str()),
-                    ("shear modulus", option, m.as_str()),
+                    ("Young's modulus", option, m),
+                    ("shear modulus", option, m),
                     ("density", "--density", rho.text.as_str()),
-                    ("nu", "--nu", nu.as_str()),
+                    ("nu", "--nu", nu),
                 ];
                 self.solid(nu, m, p)
-                    .err()
-                    .map(|e| CliError::from_run(e, &names, context))
-            });
-            return first_error.map_or(Ok(()), Err);
+                    .map(|s| s.c_r().clone())
+                    .map_err(|e| CliError::from_run(e, &names, context))
+            })?;
+            return Ok(());
         }
         if !self.youngs() {
             self.mu = moduli.into_iter().map(|(_, mu)| mu).collect();
             return Ok(());
         }
         // μ = E/(2(1 + ν)) exactly at each (ν, E), rounded once, as `contact` forms it.
-        let mu: Vec<Result<T, CliError>> = (0..pairs)
-            .into_par_iter()
-            .map(|j| {
-                let (nu, e) = (
-                    &self.nus[j / self.moduli.len()],
-                    &self.moduli[j % self.moduli.len()],
-                );
-                let exact =
-                    |t: &str| decimal_to_rational(t).map_err(|err| CliError::value(option, t, err));
-                let e = Decimal {
-                    text: e.clone(),
-                    exact: exact(e)?,
-                };
-                args::mu_from_youngs::<T>(&e, &exact(nu)?, p)
-            })
-            .collect();
-        self.mu = mu.into_iter().collect::<Result<_, _>>()?;
+        self.mu = self.per_pair(|nu, e| {
+            let exact =
+                |t: &str| decimal_to_rational(t).map_err(|err| CliError::value(option, t, err));
+            let e = Decimal {
+                text: e.to_string(),
+                exact: exact(e)?,
+            };
+            args::mu_from_youngs::<T>(&e, &exact(nu)?, p)
+        })?;
         self.mu_by_nu = true;
         Ok(())
+    }
+
+    /// `f` of the texts of every (ν, modulus) (index ν·|moduli| + modulus), formed on the pool;
+    /// the first refusal in that order.
+    fn per_pair(
+        &self,
+        f: impl Fn(&str, &str) -> Result<T, CliError> + Sync,
+    ) -> Result<Vec<T>, CliError> {
+        let n = self.moduli.len();
+        let all: Vec<_> = (0..self.nus.len() * n)
+            .into_par_iter()
+            .map(|j| f(&self.nus[j / n], &self.moduli[j % n]))
+            .collect();
+        all.into_iter().collect()
     }
 
     /// The half-space of ν and modulus text with the density ([`Solid::parse`], as `contact`).
@@ -281,22 +271,18 @@ impl<T: Real + Send + Sync> Grid<T> {
         Solid::parse(nu, moduli, p)
     }
 
-    /// The lengths of the six axes, in the order of the rows.
-    fn lens(&self) -> [usize; 6] {
-        [
+    /// The indices of point `j` on the six axes, in the order of the rows (the last fastest).
+    fn indices(&self, mut j: usize) -> [usize; 6] {
+        let lens = [
             self.nus.len(),
             self.moduli.len(),
             self.speeds.len(),
             self.along.len(),
             self.across.len(),
             self.sizes.len(),
-        ]
-    }
-
-    /// The indices of point `j` on the six axes (the last fastest).
-    fn indices(&self, mut j: usize) -> [usize; 6] {
+        ];
         let mut at = [0; 6];
-        for (i, n) in self.lens().iter().enumerate().rev() {
+        for (i, n) in lens.iter().enumerate().rev() {
             at[i] = j % n;
             j /= n;
         }
@@ -317,20 +303,10 @@ impl<T: Real> Half<T> {
             Half::Material(_, mu) => Some(mu.clone()),
         }
     }
-
-    fn c_r(&self) -> Option<&T> {
-        match self {
-            Half::Solid(s) => Some(s.c_r()),
-            Half::Material(..) => None,
-        }
-    }
 }
 
 /// What a block formed last, at its indices: kept while consecutive points share it.
 type Cached<K, V> = Option<(K, moving_hertz::Result<V>)>;
-
-/// A point's problem as the block forms it, with c_R of its half-space (with --velocity).
-type Formed<T> = (moving_hertz::Result<ContactProblem<T>>, Option<T>);
 
 impl<T: Real + Send + Sync> Grid<T> {
     /// The half-space of ν `iv` and modulus `im` (checked before any work).
@@ -358,7 +334,11 @@ impl<T: Real + Send + Sync> Grid<T> {
 
     /// The problems of the points `range`, each half-space and speed formed once for the
     /// consecutive points that share it.
-    fn problems(&self, range: std::ops::Range<usize>, p: T::Prec) -> Vec<Formed<T>> {
+    fn problems(
+        &self,
+        range: std::ops::Range<usize>,
+        p: T::Prec,
+    ) -> Vec<moving_hertz::Result<ContactProblem<T>>> {
         let mut half: Cached<(usize, usize), Half<T>> = None;
         let mut speed: Cached<(usize, usize, usize), Speed<T>> = None;
         let mut out = Vec::with_capacity(range.len());
@@ -378,7 +358,6 @@ impl<T: Real + Send + Sync> Grid<T> {
                     &slot.insert(((iv, im, is), sp)).1
                 }
             };
-            let c_r = h.as_ref().ok().and_then(Half::c_r).cloned();
             let size = self.sizes[il].1.clone();
             let problem = sp.clone().and_then(|speed| {
                 let h = h.as_ref().map_err(Clone::clone)?;
@@ -395,9 +374,18 @@ impl<T: Real + Send + Sync> Grid<T> {
                     shear_modulus: h.shear_modulus().unwrap_or_else(|| T::zero(p)),
                 })
             });
-            out.push((problem, c_r));
+            out.push(problem);
         }
         out
+    }
+
+    /// c_R of point `j`'s half-space (with --velocity).
+    fn c_r(&self, j: usize) -> Option<&T> {
+        if self.c_r.is_empty() {
+            return None;
+        }
+        let [iv, im, ..] = self.indices(j);
+        self.c_r.get(iv * self.moduli.len() + im)
     }
 
     /// The texts of point `j`'s inputs, in the order of the columns.
@@ -421,16 +409,11 @@ impl<T: Real + Send + Sync> Grid<T> {
             keys.extend(["c_r", "mr"]);
         }
         keys.extend("a,a_error,b,b_error,k,k_error,e,e_error,major_axis,p0,p0_error".split(','));
-        let other = if self.by_load() { "d0" } else { "load" };
-        keys.extend([
-            other,
-            if self.by_load() {
-                "d0_error"
-            } else {
-                "load_error"
-            },
-        ]);
-        keys.extend(["route", "iterations", "error"]);
+        let other = match self.by_load() {
+            true => ["d0", "d0_error"],
+            false => ["load", "load_error"],
+        };
+        keys.extend(other.into_iter().chain(["route", "iterations", "error"]));
         keys
     }
 
@@ -485,28 +468,12 @@ fn solve_and_write<T: Real + Send + Sync>(
         ..Default::default()
     };
     let keys = grid.keys();
-    let solve = |range: std::ops::Range<usize>, out: &mut Vec<u8>| {
-        let (problems, c_rs): (Vec<_>, Vec<_>) =
-            grid.problems(range.clone(), p).into_iter().unzip();
-        let mut failed = 0;
-        let solved = sweep::try_contacts(&problems, &opts);
-        for ((r, c_r), j) in solved.iter().zip(c_rs).zip(range) {
-            failed += usize::from(r.is_err());
-            let mut row = Row::new(out, a.run.format);
-            for (key, text) in keys.iter().zip(grid.texts(j)) {
-                row.text(key, text);
-            }
-            grid.push_results(&mut row, &keys[6..], r, c_r.as_ref());
-            row.end();
+    let solve = |range| sweep::try_contacts(&grid.problems(range, p), &opts);
+    let row = |row: &mut Row, j: usize, r: &moving_hertz::Result<ContactSolution<T>>| {
+        for (key, text) in keys.iter().zip(grid.texts(j)) {
+            row.text(key, text);
         }
-        failed
+        grid.push_results(row, &keys[6..], r, grid.c_r(j));
     };
-    write_in_order(
-        "sweep contact",
-        &keys,
-        a.run.format,
-        total,
-        solve,
-        &a.run.precision,
-    )
+    write_in_order("sweep contact", &keys, &a.run, total, solve, row)
 }
