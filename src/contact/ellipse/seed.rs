@@ -32,7 +32,7 @@ pub(super) fn lowest_stage<S: Real>(
         let seed = S::from_f64(seed, ratio.prec());
         let mut newton = Newton::new(ev, ratio, Some(&seed), tol.clone(), allow_chord);
         newton.budget = budget;
-        let (shape, slope) = newton.run(None, false)?;
+        let (shape, slope) = newton.run(None)?;
         let slope = match slope {
             Some(c) if !allow_chord && c.before.is_none() => Some(secant_partner(ev, ratio, c)),
             other => other,
@@ -49,7 +49,7 @@ pub(super) fn lowest_stage<S: Real>(
         shape.iterations += nodes;
         return Ok((shape, slope));
     }
-    Newton::new(ev, ratio, None, tol.clone(), allow_chord).run(None, false)
+    Newton::new(ev, ratio, None, tol.clone(), allow_chord).run(None)
 }
 
 /// A seeded stage that hands on derivatives from one evaluation leaves no earlier iterate for
