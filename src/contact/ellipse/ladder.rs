@@ -54,7 +54,7 @@ impl<T: Real> ShapeSolver<T> {
             return Ok(shape);
         }
         // The stops bound the error by about 2|λ|·tol: a step at ε from the root meets tol.
-        let refined = Newton::new(&self.top, ratio, Some(&shape.k), None, true).run(None, false)?;
+        let refined = Newton::new(&self.top, ratio, Some(&shape.k), None, true).run(None)?;
         let refined = refined.0;
         if refined.error_estimate <= wanted {
             return Ok(refined);
@@ -96,14 +96,13 @@ impl<T: Real> ShapeSolver<T> {
         if T::bits(ratio.prec()) <= 53 {
             return lowest_stage(&self.top, ratio, allow_chord, tol, guess);
         }
-        let Some((seed, handed, halley)) = self.below(ratio, guess) else {
+        let Some((seed, handed)) = self.below(ratio, guess) else {
             return lowest_stage(&self.top, ratio, allow_chord, tol, None);
         };
-        Newton::new(&self.top, ratio, Some(&seed), tol, allow_chord).run(handed, halley)
+        Newton::new(&self.top, ratio, Some(&seed), tol, allow_chord).run(handed)
     }
 
-    /// The stage below p bits, lifted to p: its root, its F′ with the bounds on both, and
-    /// whether the Halley step may be tried: above [`MID_ABOVE_BITS`] the solve at
+    /// The stage below p bits, lifted to p: its root and its F′ with the bounds on both: above [`MID_ABOVE_BITS`] the solve at
     /// m = p/2 + [`MID_GUARD_BITS`] bits ([`Self::below_mid`]), else the `f64` stage (inputs
     /// rounded to `f64`), above 106 bits followed by the double-double stage. Each ends on an
     /// evaluation with derivatives, which serve the stage above. `None` when the stages fail.
@@ -123,33 +122,13 @@ impl<T: Real> ShapeSolver<T> {
             let ratio_dd = Dd::from_float(&ratio.to_float(bits), ());
             let ev_dd = self.lower(&self.stage_dd, |s| s.solve_cache().at_dd(s));
             let stage_dd = |ev| Newton::new(ev, &ratio_dd, Some(&seed_dd), None, false);
-            if let Some(Ok((s, c))) = ev_dd.map(|ev| stage_dd(ev).run(handed, false)) {
+            if let Some(Ok((s, c))) = ev_dd.map(|ev| stage_dd(ev).run(handed)) {
                 let seed = T::from_float(&s.k.to_float(106), p);
-                return Some((seed, c.map(|c| lift(&c, p, DD_BOUNDS)), false));
+                return Some((seed, c.map(|c| lift(&c, p, DD_BOUNDS))));
             }
         }
-        let halley = bits <= 106 && self.kept_by_f64(ratio);
         let slope = c64.map(|c| lift(&c, p, F64_BOUNDS));
-        Some((T::from_f64(s64.k, p), slope, halley))
-    }
-
-    /// Whether rounding the inputs to `f64` moved the root by less than ~1e-15 (k's
-    /// sensitivity to the gap's relative change is about 1/4), where the Halley step from the
-    /// `f64` root pays; a nonzero input within 2^53 of the f64 range's ends counts as moved.
-    fn kept_by_f64(&self, ratio: &T) -> bool {
-        let moved = |x: &T| {
-            let x64 = x.to_f64();
-            if x.is_zero() {
-                return 0.0;
-            } else if !(x64.abs() >= f64::MIN_POSITIVE * 2f64.powi(53)
-                && x64.abs() <= f64::MAX / 4.0)
-            {
-                return f64::INFINITY;
-            }
-            (x.clone() - T::from_f64(x64, x.prec())).abs().to_f64() / x64.abs()
-        };
-        let speed = self.top.speed();
-        moved(ratio) + moved(speed.material().nu()) + moved(speed.gap()) <= 1e-15
+        Some((T::from_f64(s64.k, p), slope))
     }
 
     /// The half-precision stage of [`Self::below`]: its root bounded by its estimate and
@@ -179,13 +158,13 @@ impl<T: Real> ShapeSolver<T> {
         let m = T::bits(pm) as i32;
         let (chord, seed_err) = lift(&c, p, (16 - m, 11 - m));
         let seed_err = (s.error_estimate.with_prec(p)).max_of(seed_err);
-        Some((s.k.with_prec(p), Some((chord, seed_err)), false))
+        Some((s.k.with_prec(p), Some((chord, seed_err))))
     }
 }
 
-/// A lower stage's result at the precision above: its root, its F′ with the bound on its
-/// relative error and the bound on the root's, and whether the Halley step may be tried.
-type Lifted<T> = (T, Option<(Chord<T>, T)>, bool);
+/// A lower stage's result at the precision above: its root, and its F′ with the bound on its
+/// relative error and the bound on the root's.
+type Lifted<T> = (T, Option<(Chord<T>, T)>);
 
 /// log₂ of the bounds on a lower stage's F′ (relative; a margin over the fixed rules'
 /// measured derivative errors) and on its root's error in λ (`docs/calibration.md`).

@@ -141,15 +141,17 @@ impl<'a, T: Real> Newton<'a, T> {
     }
 
     /// Runs the stage: the k = 1 probe (unseeded); with derivatives `handed` on from below
-    /// (and the bound on the seed's error) the Halley step when `halley` and they allow it,
-    /// else chord steps with them when 64(r·seed_err)² ≤ ε; then the safeguarded iteration.
+    /// (and the bound on the seed's error) the Halley step when they allow it at ≤ 106 bits in
+    /// a stage that hands nothing on, else chord steps with them when 64(r·seed_err)² ≤ ε;
+    /// then the safeguarded iteration.
     #[inline]
-    pub(super) fn run(mut self, handed: Option<(Chord<T>, T)>, halley: bool) -> Handed<T> {
+    pub(super) fn run(mut self, handed: Option<(Chord<T>, T)>) -> Handed<T> {
         if !self.seeded && self.evaluator.method() != Method::Adaptive {
             self.probe_k_one()?;
         }
         if let Some((c, seed_err)) = handed {
             if self.seeded && c.df.is_positive() && c.df.is_finite() {
+                let halley = self.allow_chord && T::bits(self.prec()) <= 106;
                 match halley.then(|| f_second(&c, &self.lam)).flatten() {
                     Some(f2) => {
                         if let Some(shape) = self.halley_step(&c, f2)? {

@@ -32,7 +32,7 @@ pub(super) fn lowest_stage<S: Real>(
         let seed = S::from_f64(seed, ratio.prec());
         let mut newton = Newton::new(ev, ratio, Some(&seed), tol.clone(), allow_chord);
         newton.budget = budget;
-        let (shape, slope) = newton.run(None, false)?;
+        let (shape, slope) = newton.run(None)?;
         let slope = match slope {
             Some(c) if !allow_chord && c.before.is_none() => Some(secant_partner(ev, ratio, c)),
             other => other,
@@ -49,7 +49,7 @@ pub(super) fn lowest_stage<S: Real>(
         shape.iterations += nodes;
         return Ok((shape, slope));
     }
-    Newton::new(ev, ratio, None, tol.clone(), allow_chord).run(None, false)
+    Newton::new(ev, ratio, None, tol.clone(), allow_chord).run(None)
 }
 
 /// A seeded stage that hands on derivatives from one evaluation leaves no earlier iterate for
@@ -154,8 +154,9 @@ const GRID_READS: usize = 8;
 /// The start of an `f64` stage by a fixed rule (`docs/calibration.md`, "The grid seed"): λ at
 /// ln(A1/B1) of the Hermite interpolant of λ(ln(I2/I1)) with slopes 1/F′ through the four
 /// nodes of a grid in λ around the root (the two that bracket it and one on either side). The
-/// bracket is found from the static seed's nearest node by Newton's step from each node read to
-/// the nearest node inside the bracket so far. Each node is evaluated on an evaluator of its
+/// bracket is found from the static seed's nearest node (k = 1 for a static seed above it with
+/// A1/B1 below 30) by Newton's step from each node read to the nearest node inside the bracket
+/// so far. Each node is evaluated on an evaluator of its
 /// own, once per speed, so that the seed does not depend on the solves before. Returns the seed
 /// and the distinct nodes read; `None` above `f64`, for the adaptive method, and where the root
 /// lies off the grid.
@@ -176,8 +177,10 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, u
     // Nodes strictly between `lo` and `hi` (index and value) lie inside the bracket.
     let (mut lo, mut hi) = (None, None);
     let ratio64 = ratio.to_f64();
+    // Below A1/B1 = 30 a start above k = 1 reads k = 1 first (as the probe does): at speed the
+    // root often lies below it, and a node above k = 1 costs a fresh speed a graded layout.
     let mut lam = match ratio64 < ASYMPTOTIC_SEED_RATIO {
-        true => std::f64::consts::FRAC_2_PI * target,
+        true => (std::f64::consts::FRAC_2_PI * target).min(0.0),
         false => static_seed_wide(ratio64).ln(),
     };
     for _ in 0..GRID_READS {
