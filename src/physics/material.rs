@@ -10,7 +10,7 @@
 use super::green::GreenFunction;
 use super::rayleigh::RayleighRoots;
 use crate::error::{Error, Result};
-use crate::scalar::{check_finite, decimal_to_rational, short, Field, Precision, Real};
+use crate::scalar::{check_finite, decimal_to_rational, short, FieldOps, Precision, Real};
 use rug::Rational;
 
 /// An isotropic elastic half-space, described by Poisson's ratio ν ∈ (−1, 1/2].
@@ -192,9 +192,10 @@ impl<T: Real> Material<T> {
     }
 }
 
-/// γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)) (M1² = γM2² in (5)): exact over [`rug::Rational`],
+/// γ = (c2/c1)² = (1 − 2ν)/(2(1 − ν)) (M1² = γM2² in (5)): exact over [`rug::Rational`] and
+/// rational functions (the series coefficients of (36) with a symbolic ν),
 /// within 2 ε otherwise. The map is its own inverse: ν = (1 − 2γ)/(2(1 − γ)) is `gamma_of(γ)`.
-pub fn gamma_of<F: Field>(nu: &F) -> F {
+pub fn gamma_of<F: FieldOps>(nu: &F) -> F {
     let one = F::one(nu.prec());
     (one.clone() - nu.clone().mul_i64(2)) / (one - nu).mul_i64(2)
 }

@@ -13,6 +13,7 @@
 //! so the forward recurrence is stable: each c_n within a few ε (`tests/series_coefficients.rs`,
 //! against the exact rational run).
 
+use crate::physics::material::gamma_of;
 use crate::scalar::{Field, FieldOps};
 
 /// Generator of the Taylor coefficients c_n = G_n·x0^n of g = −πΓ (see the module docs).
@@ -45,10 +46,8 @@ impl<F: FieldOps> GreenSeries<F> {
     pub fn new(nu: &F, x0: F) -> Self {
         let p = nu.prec();
         let one = F::one(p);
-        let one_minus_nu = one.clone() - nu;
-        // γ = (1 − 2ν)/(2(1 − ν)).
-        let gamma = (one - nu.clone().mul_i64(2)) / one_minus_nu.clone().mul_i64(2);
-        let gx0 = gamma * &x0;
+        let one_minus_nu = one - nu;
+        let gx0 = gamma_of(nu) * &x0;
         let zero = F::zero(p);
         GreenSeries {
             one_minus_nu_8: one_minus_nu.div_i64(8),
