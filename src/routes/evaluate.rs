@@ -255,11 +255,11 @@ impl<T: Real> Evaluator<T> {
     /// with the speed ([`Speed`]'s set-up cache, shared by its clones).
     #[inline]
     pub(crate) fn fixed(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
-        match self.speed.fast_setup() {
-            Ok(f) if dk => f.integrals_with_dk(axes),
-            Ok(f) => f.integrals(axes),
-            Err(e) => Err(e.clone()),
-        }
+        self.speed
+            .fast_setup()
+            .as_ref()
+            .map_err(Clone::clone)?
+            .run(axes, dk)
     }
 
     /// The graded rule at k > 1 on the layout of k's cell ([`graded::layout_cell`]), built on

@@ -103,6 +103,13 @@ impl<T: Real> SpeedConsts<T> {
         (e1, dd, qq)
     }
 
+    /// [`SpeedConsts::right_node`] at σ alone (p = 1 + σ, 2p and 4p formed here).
+    #[inline(always)]
+    pub(crate) fn right_at(&self, sg: &T, one: &T) -> (T, T, T) {
+        let pp = one.clone() + sg;
+        self.right_node(sg, &pp, &pp.clone().mul_i64(2), &pp.clone().mul_i64(4), one)
+    }
+
     /// The same at a right node σ = v² (p = 1 + σ): returns f1 = 1 + (1 − γc)σ, D' and
     /// E = Q'(σ)(1 + ε²σ), so that b(σ) = (2/m1)√f1·D'/E (module docs). `one` is 1 at the
     /// working precision.

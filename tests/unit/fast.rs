@@ -130,7 +130,7 @@ fn derivatives_match_finite_differences() {
 
 /// `FastSetup` (k-independent part kept) for many k: its node loop without the k-derivatives
 /// gives the I1, I2 of the loop with them to a few ε, and one set-up per k
-/// (`fast::integrals_with_dk`) the values of the kept one. (The fixed rules against the generic
+/// (`FastSetup::run` with the derivatives) the values of the kept one. (The fixed rules against the generic
 /// adaptive route at `f64` on every reference case: `tests/fast_path.rs`.)
 fn setup_agrees<T: Real>(p: T::Prec, label: &str) {
     for nu in [-0.9, 0.5] {
@@ -139,9 +139,9 @@ fn setup_agrees<T: Real>(p: T::Prec, label: &str) {
             let setup = FastSetup::boxed(&sp).expect("setup");
             for k in KS {
                 let ax = AxisRatio::new(T::from_f64(k, p)).expect("k");
-                let a = setup.integrals_with_dk(&ax).expect("setup route");
+                let a = setup.run(&ax, true).expect("setup route");
                 let b = fixed(&sp, &ax, true).expect("one set-up per k");
-                let i = setup.integrals(&ax).expect("setup route");
+                let i = setup.run(&ax, false).expect("setup route");
                 for (x, y) in [
                     (&a.i1, &b.i1),
                     (&a.i2, &b.i2),
@@ -219,7 +219,7 @@ fn outside_the_domain_is_a_typed_error() {
             "k = {k}"
         );
         assert!(matches!(
-            FastSetup::boxed(&sp).unwrap().integrals(&ax),
+            FastSetup::boxed(&sp).unwrap().run(&ax, false),
             Err(Error::Domain { .. })
         ));
     }

@@ -91,7 +91,7 @@
 //! (2^(−j−1), 2^(−j)]: the map sends the branch points ±ik of (σ + k²)^{−3/2} and every
 //! singularity of b (|v| ≥ 1, on or near the imaginary axis) to the edge of the strip
 //! |Im x| < π/2, so that the plain Gauss–Legendre panels converge like the graded route's, with
-//! no subtraction and O(1) work a node (`RightSinh`): about bits·log₂(1/k)/10 nodes. The
+//! no subtraction and O(1) work a node (`right_sinh`): about bits·log₂(1/k)/10 nodes. The
 //! k-independent part keeps one layout per octave of k met.
 //!
 //! **Derivatives.** ∂/∂k is taken under the integral sign on the same nodes (G is evaluated once
@@ -297,7 +297,7 @@ fn taylor_right_parts<T: Real>(
 }
 
 /// I1 = I1_L + I1_R, I2 = I2_L + I2_R and, with `dk`, dI/dk = dI_L/dk − 3k S_R, from
-/// [`left_parts`] and the right half's parts ([`taylor_right_parts`] or [`RightSinh::parts`]);
+/// [`left_parts`] and the right half's parts ([`taylor_right_parts`] or [`right_sinh`]'s sums);
 /// `work` is the number of nodes.
 fn combine<T: Real>(
     [i1l, i2l, d1l, d2l]: [T; 4],
@@ -349,7 +349,7 @@ fn taylor_poly<T: Real>(b: &[T], s: &[T], out: &mut [T]) {
 /// one integrand, this one.
 #[derive(Debug)]
 pub struct FastSetup<T: Real + 'static> {
-    rule: RuleRef<T>,
+    rule: Arc<FastRule<T>>,
     sc: SpeedConsts<T>,
     /// Left: F1 = ω L/(Q'(s + ε²)) with L = (2/m1) D' √(p − γc) (so that a(s) = (L/Q') u^{−3/2}),
     /// F2 = s F1 and F3 = s F2, so that I2_L = a0 (atan(1/ε)/ε − Σω/(s + ε²)) + Σ F1 u^{−3/2}
@@ -364,7 +364,7 @@ pub struct FastSetup<T: Real + 'static> {
     /// double-double, on first use above).
     taylor: TaylorCell<T>,
     /// The right half on sinh-mapped panels, per octave of k (above double-double; empty below).
-    sinh: Vec<OnceLock<Result<RightSinh<T>>>>,
+    sinh: Vec<OnceLock<Result<graded::NodeTables<T>>>>,
 }
 
 /// The fixed rule's k-independent part for one speed ([`FastSetup`]), built on first use and
@@ -466,12 +466,6 @@ const SETUP_INLINE: usize = 20;
 const RIGHT_INLINE: usize = 12;
 const TAYLOR_INLINE: usize = 8;
 
-impl<T: Real> std::fmt::Debug for RuleRef<T> {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "RuleRef({:?})", self.sizes)
-    }
-}
-
 impl<T: Real> FastSetup<T> {
     /// Precomputes the k-independent part for `speed` (and its material) with the default rule
     /// of the working precision (cost about that of one evaluation), built in its box: the
@@ -484,7 +478,7 @@ impl<T: Real> FastSetup<T> {
 
     /// [`FastSetup::boxed`] on `rule`; `sinh`: whether the right half may take the sinh-mapped
     /// panels above double-double ([`sinh_octave`]; not for a rule of explicit sizes).
-    fn with_rule(speed: &Speed<T>, rule: RuleRef<T>, sinh: bool) -> Result<Box<Self>> {
+    fn with_rule(speed: &Speed<T>, rule: Arc<FastRule<T>>, sinh: bool) -> Result<Box<Self>> {
         let p = speed.mr().prec();
         let n = rule.left.len();
         let eager = T::bits(p) <= 106 || !sinh;
@@ -566,24 +560,14 @@ impl<T: Real> FastSetup<T> {
     }
 
     /// I1, I2 of (34) in the normalisation of (37) at the axis ratio `axes` by the fast route
-    /// (module docs). Domain: 0 < k ≤ 1, else [`Error::Domain`]. Accuracy: relative error of I1
-    /// and I2 below [`BOUND_EPS`]·ε = 16ε, reported as `error_estimate`. Work: a square root and
-    /// a division a node and the closed forms; no allocation at `f64` and double-double; above
-    /// double-double the right half's sinh-mapped panels where they are cheaper (module docs).
-    /// The route reported is [`Route::FixedRule`]. Implements (46)–(47).
-    pub fn integrals(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-        self.run(axes, false)
-    }
-
-    /// I1, I2 of (46)–(47) (as [`FastSetup::integrals`]) and dI1/dk, dI2/dk, differentiated
-    /// under the integral sign on the same nodes (module docs), at the axis ratio `axes`. The
-    /// derivatives' relative error is below [`DK_BOUND_EPS`]·ε = 128ε (the reported estimate is
-    /// for I1, I2); cost: a few products more a node.
-    pub fn integrals_with_dk(&self, axes: &AxisRatio<T>) -> Result<Evaluation<T>> {
-        self.run(axes, true)
-    }
-
-    fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
+    /// (module docs) and, with `dk`, dI1/dk, dI2/dk differentiated under the integral sign on the
+    /// same nodes (a few products more a node). Domain: 0 < k ≤ 1, else [`Error::Domain`].
+    /// Accuracy: relative error of I1 and I2 below [`BOUND_EPS`]·ε = 16ε, reported as
+    /// `error_estimate`, of the derivatives below [`DK_BOUND_EPS`]·ε = 128ε. Work: a square root
+    /// and a division a node and the closed forms; no allocation at `f64` and double-double;
+    /// above double-double the right half's sinh-mapped panels where they are cheaper (module
+    /// docs). The route reported is [`Route::FixedRule`]. Implements (46)–(47).
+    pub(crate) fn run(&self, axes: &AxisRatio<T>, dk: bool) -> Result<Evaluation<T>> {
         check_axes(axes)?;
         let rule = &*self.rule;
         let p = rule.prec;
@@ -606,10 +590,11 @@ impl<T: Real> FastSetup<T> {
         // No octaves kept: a set-up built without the sinh-mapped panels.
         if let Some(j) = sinh_octave(rule, &axes.k).filter(|_| !self.sinh.is_empty()) {
             let rs = self.sinh[j]
-                .get_or_init(|| RightSinh::new(&self.sc, p, j))
+                .get_or_init(|| right_sinh(&self.sc, p, j))
                 .as_ref()
                 .map_err(Clone::clone)?;
-            return combine(lp, rs.parts(&kc, dk), &kc, dk, nl + rs.len());
+            let ([a, b], [c, d, _]) = rs.sums(dk, graded::Kernel::Right { k2: &kc.k2 });
+            return combine(lp, [a, b, c, d], &kc, dk, nl + rs.len());
         }
         let t = match &self.taylor {
             TaylorCell::Built(t) => t,
@@ -622,162 +607,8 @@ impl<T: Real> FastSetup<T> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::physics::Material;
-    use crate::routes::coefficients::GreenSeries;
-    use crate::scalar::{Dd, Field, Mp, MpPrec};
-    use rug::Rational;
-
-    /// b_j by an independent route at 512 bits: the coefficients c_l of g (recurrence (36),
-    /// `GreenSeries`, scale x0 = c) composed with y = σ/(1 + σ) and (1 + σ)^{−1/2}:
-    /// b = 2 Σ_l c_l σ^l (1 + σ)^{−l−1/2}. With each b_j, the sum of the moduli of its terms.
-    fn composed_b(nu: f64, mr: f64, j_max: usize) -> Vec<(rug::Float, f64)> {
-        let p = MpPrec::new(512).unwrap();
-        let mat = Material::new(Mp::from_f64(nu, p)).unwrap();
-        let sp = mat.speed(Mp::from_f64(mr, p)).unwrap();
-        let c = GreenSeries::new(mat.nu(), sp.m2sq().clone()).take(j_max);
-        (0..j_max)
-            .map(|j| {
-                let mut sum = Mp::zero(p);
-                let mut scale = 0.0;
-                for (l, cl) in c.iter().enumerate().take(j + 1) {
-                    // 2 (−1)^m (l + 1/2)_m / m!, m = j − l.
-                    let mut e = Rational::from(2);
-                    for m in 0..(j - l) {
-                        e *= Rational::from((-(2 * (l + m) as i64 + 1), 2 * m as i64 + 2));
-                    }
-                    let t = Mp::from_float(&rug::Float::with_val(600, &e), p) * cl;
-                    scale += t.to_f64().abs();
-                    sum += t;
-                }
-                (sum.to_float(512), scale)
-            })
-            .collect()
-    }
-
-    fn check_taylor<T: Real>(p: T::Prec, tol_eps: f64) {
-        let rule = FastRule::<T>::get(p).unwrap();
-        let j_max = rule.sizes.taylor;
-        for (nu, mr) in [(0.25, 0.625), (-0.9, 0.99), (0.5, 0.0), (0.5, 0.999)] {
-            let want = composed_b(nu, mr, j_max);
-            let mat = Material::new(T::from_f64(nu, p)).unwrap();
-            let sp = mat.speed(T::from_f64(mr, p)).unwrap();
-            let sc = SpeedConsts::new(&sp);
-            let mut b = vec![T::zero(p); j_max];
-            taylor_b(&sc, &rule, &mut b);
-            // b_j may cancel (which does not matter: the same polynomial is subtracted at the
-            // nodes and integrated exactly); its error is measured against its terms, and may
-            // grow like j² (the triple root of the divisor at M_R = 0).
-            let eps = T::epsilon(p).to_f64();
-            for (j, (got, (w, scale))) in b.iter().zip(&want).enumerate() {
-                let d = rug::Float::with_val(600, got.to_float(600) - w);
-                let e = d.abs().to_f64() / scale / eps;
-                let tol = tol_eps * (1 + j * j) as f64;
-                assert!(e <= tol, "nu={nu} M_R={mr} b_{j}: {e:.1} eps");
-            }
-        }
-    }
-
-    /// Above double-double the left half lies on sinh-mapped panels (`RuleSizes::left_sinh`): it
-    /// agrees with the single Gauss–Legendre rule in w of ⌈0.433·bits⌉ − 2 nodes (the layout used
-    /// up to double-double, extended) to a few ε at 256 and 1024 bits, on the left half's hardest
-    /// cases (ν = 1/2 and M_R → 1, where G's branch point comes nearest) and across k.
-    #[test]
-    fn left_layouts_agree() {
-        for bits in [256u32, 1024] {
-            let p = MpPrec::new(bits as u64).unwrap();
-            let plain = RuleSizes {
-                left: (bits as usize * 433).div_ceil(1000) - 2,
-                left_sinh: false,
-                ..RuleSizes::for_bits(bits)
-            };
-            let sinh = RuleSizes::for_bits(bits);
-            assert!(sinh.left_sinh && sinh.left == left_sinh_nodes(bits) && sinh.left < plain.left);
-            let (a, b) = (
-                Arc::new(FastRule::build(plain, p).unwrap()),
-                Arc::new(FastRule::build(sinh, p).unwrap()),
-            );
-            let eps = Mp::epsilon(p);
-            let rel = |y: &Mp, x: &Mp| ((y.clone() - x) / x).abs().to_f64() / eps.to_f64();
-            let mut worst = 0.0f64;
-            for nu in [-0.9, 0.25, 0.5] {
-                for mr in [0.0, 0.9, 0.9999, 1.0 - 1e-12] {
-                    for k in [1e-6, 0.3, 1.0] {
-                        let mat = Material::new(Mp::from_f64(nu, p)).unwrap();
-                        let sp = mat.speed(Mp::from_f64(mr, p)).unwrap();
-                        let ax = AxisRatio::new(Mp::from_f64(k, p)).unwrap();
-                        let setup = |r: &Arc<FastRule<Mp>>| {
-                            FastSetup::with_rule(&sp, RuleRef::Shared(r.clone()), false).unwrap()
-                        };
-                        let x = setup(&a).run(&ax, true).unwrap();
-                        let y = setup(&b).run(&ax, true).unwrap();
-                        let e = [
-                            rel(&y.i1, &x.i1),
-                            rel(&y.i2, &x.i2),
-                            rel(&y.di1_dk(), &x.di1_dk()),
-                            rel(&y.di2_dk(), &x.di2_dk()),
-                        ];
-                        let e = e.into_iter().fold(0.0, f64::max);
-                        assert!(e <= 8.0, "{bits} bits nu={nu} M_R={mr} k={k}: {e:.1} eps");
-                        worst = worst.max(e);
-                    }
-                }
-            }
-            println!(
-                "{bits} bits: sinh-mapped left half against the plain rule, worst {worst:.2} eps"
-            );
-        }
-    }
-
-    #[test]
-    fn taylor_coefficients_match_the_recurrence_36() {
-        check_taylor::<f64>((), 16.0);
-        check_taylor::<Dd>((), 16.0);
-        check_taylor::<Mp>(MpPrec::new(256).unwrap(), 16.0);
-    }
-
-    #[test]
-    fn moments_match_quadrature() {
-        // N_j against adaptive quadrature of v^{2j}(v² + k²)^{−1/2} at 128 bits.
-        let p = MpPrec::new(128).unwrap();
-        for k in [(1, 1000), (3, 10), (1, 1)] {
-            let kk = Mp::from_ratio(k.0, k.1, p);
-            let k2 = kk.square();
-            let inv: Vec<Mp> = (1..=12).map(|j| Mp::from_ratio(1, 2 * j, p)).collect();
-            let ratio: Vec<Mp> = (1..=12)
-                .map(|j| Mp::from_ratio(2 * j - 1, 2 * j, p))
-                .collect();
-            let (m0, p0, n0, r1) = moment_bases(&kk, &k2);
-            let mut n = vec![n0];
-            for j in 0..11 {
-                n.push(next_moment(&n[j], &k2, &r1, &inv[j], &ratio[j]));
-            }
-            let pts = [
-                Mp::zero(p),
-                kk.clone().min_of(Mp::from_ratio(1, 2, p)),
-                Mp::one(p),
-            ];
-            let lim = crate::numerics::quadrature::Limits::default();
-            let tol = Mp::epsilon(p);
-            let q = |f: &dyn Fn(&Mp) -> Mp| {
-                crate::numerics::quadrature::integrate(f, &pts, &tol, lim)
-                    .unwrap()
-                    .value
-            };
-            for (j, nj) in n.iter().enumerate() {
-                let want = q(&|v: &Mp| v.powi(2 * j as i64) / (v.square() + &k2).sqrt());
-                assert!(
-                    ((nj.clone() - &want) / &want).abs() < Mp::epsilon(p).mul_i64(64),
-                    "N_{j} k={k:?}"
-                );
-            }
-            let w = |m: i64| q(&|v: &Mp| (v.square() + &k2).powi(-m) / (v.square() + &k2).sqrt());
-            assert!(((m0 - w(1)) / w(1)).abs() < Mp::epsilon(p).mul_i64(16));
-            assert!(((p0 - w(2)) / w(2)).abs() < Mp::epsilon(p).mul_i64(16));
-        }
-    }
-}
+#[path = "../../../tests/unit/fast_internals.rs"]
+mod tests;
 
 #[cfg(test)]
 #[path = "../../../tests/unit/fast.rs"]

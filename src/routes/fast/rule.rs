@@ -122,9 +122,7 @@ impl<T: Real> Half<T> {
     /// the graded route's, shared with the right half's sinh layout.
     pub(crate) fn sinh(p: T::Prec) -> Result<Self> {
         graded::with_sinh_layout(p, LEFT_SCALE, |layout| {
-            let n = layout.nodes()?;
-            let (mut s, mut w) = (vec![T::zero(p); n], vec![T::zero(p); n]);
-            layout.fill(&T::one(p), &mut s, &mut w)?;
+            let (s, w) = layout.fill(&T::one(p))?;
             Ok(Self::from_squares(s, w, p))
         })
     }
@@ -182,7 +180,7 @@ pub struct FastRule<T: Real> {
     pub(crate) sizes: RuleSizes,
     pub(crate) left: Half<T>,
     /// The right half's rule: built with the rule at `f64` and double-double, on first use above
-    /// (where the right half may be laid out on sinh-mapped panels instead, [`RightSinh`]).
+    /// (where the right half may be laid out on sinh-mapped panels instead, [`right_sinh`]).
     pub(crate) right: OnceLock<Half<T>>,
     /// The binomial coefficients β_l of √(1 − z) = Σ β_l z^l, l < J.
     pub(crate) sqrt_binomial: Vec<T>,
@@ -191,43 +189,19 @@ pub struct FastRule<T: Real> {
     pub(crate) ratio_2j: Vec<T>,
 }
 
-/// A borrowed or shared [`FastRule`].
-pub enum RuleRef<T: Real + 'static> {
-    /// A rule in its type's static slot (`f64`, double-double).
-    Static(&'static FastRule<T>),
-    /// A rule from the shared cache (MPFR).
-    Shared(Arc<FastRule<T>>),
-}
-
-impl<T: Real> Deref for RuleRef<T> {
-    type Target = FastRule<T>;
-    fn deref(&self) -> &FastRule<T> {
-        match self {
-            RuleRef::Static(r) => r,
-            RuleRef::Shared(r) => r,
-        }
-    }
-}
-
 fixed_slot!(static_slot, FastRule);
 
 impl<T: Real> FastRule<T> {
     /// The rule for precision `p` with the sizes of [`RuleSizes::for_bits`], built on first use
     /// and cached for the life of the process.
     /// The nodes for (46)–(47); implements no equation (accuracy: [`RuleSizes::for_bits`]).
-    pub fn get(p: T::Prec) -> Result<RuleRef<T>> {
+    pub fn get(p: T::Prec) -> Result<Arc<Self>> {
         check_rule_bits(T::bits(p))?;
-        if let Some(slot) = static_slot::<T>() {
-            let build = || Self::build(Self::default_sizes(p), p);
-            return slotted(slot, 0, p, |r: &Self| r.prec, build).map(|r| RuleRef::Static(&**r));
+        let build = || Self::build(Self::default_sizes(p), p);
+        match static_slot::<T>() {
+            Some(slot) => slotted(slot, 0, p, |r: &Self| r.prec, build).cloned(),
+            None => cached(0, p, |r: &Self| r.prec, build),
         }
-        cached(
-            0,
-            p,
-            |r: &Self| r.prec,
-            || Self::build(Self::default_sizes(p), p),
-        )
-        .map(RuleRef::Shared)
     }
 
     pub(crate) fn default_sizes(p: T::Prec) -> RuleSizes {

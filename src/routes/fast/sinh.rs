@@ -20,7 +20,7 @@ pub(crate) fn octave_scale(j: usize) -> f64 {
 /// form and the kernel power), in products: the weight of J in [`sinh_octave`]'s comparison.
 pub(crate) const NODE_COST: usize = 30;
 
-/// The octave of k when the rule's right half takes the sinh-mapped panels ([`RightSinh`]):
+/// The octave of k when the rule's right half takes the sinh-mapped panels ([`right_sinh`]):
 /// above double-double, when their nodes cost less than the Taylor subtraction's
 /// n_r (1 + J/[`NODE_COST`]) (the J products of the polynomial at every node grow like bits²).
 /// At `f64` and double-double, and below k = 2⁻⁴⁰ (the Taylor form's cost does not grow as k
@@ -40,52 +40,25 @@ pub(crate) fn sinh_octave<T: Real>(rule: &FastRule<T>, k: &T) -> Option<usize> {
 }
 
 /// The right half on sinh-mapped panels: v = a sinh x over x ∈ [0, C ln 2] with a ≤ (4/5)·k for
-/// every k of one octave, the panels of [`crate::routes::graded`] (lengths ℓ ln 2, node counts
-/// from the Bernstein ellipse that reaches the strip |Im x| < π/2, where the branch points ±ik of
-/// (σ + k²)^{−3/2} and every singularity of b(σ), at |v| ≥ 1 on or near the imaginary axis,
-/// lie). No subtraction: the integrands b(σ)(σ + k²)^{−3/2} dv/dx are positive and analytic in
-/// the strip. Kept per k-independent part: σ, f = ω b(σ) (ω the weight times dv/dx), σf and
-/// σ²f;
-/// a k costs one square root and one division a node ([`graded`]'s power sums).
-#[derive(Debug)]
-pub(crate) struct RightSinh<T> {
-    pub(crate) s: Vec<T>,
-    pub(crate) f: Vec<T>,
-    pub(crate) sf: Vec<T>,
-    pub(crate) ssf: Vec<T>,
-}
-
-impl<T: Real> RightSinh<T> {
-    pub(crate) fn new(sc: &SpeedConsts<T>, p: T::Prec, j: usize) -> Result<Self> {
-        graded::with_sinh_layout(p, octave_scale(j), |layout| {
-            let n = layout.nodes()?;
-            let mut s = vec![T::zero(p); n];
-            let mut f = vec![T::zero(p); n];
-            // b(σ) = (2/m1) √f1 D′/E; the factor 2/m1 goes into the weights.
-            layout.fill(&sc.two_over_m1, &mut s, &mut f)?;
-            let one = T::one(p);
-            graded::node_map(p, &s, &mut f, |sg, fi| {
-                let pp = one.clone() + sg;
-                let (two_p, four_p) = (pp.clone().mul_i64(2), pp.clone().mul_i64(4));
-                let (f1, dd, e) = sc.right_node(sg, &pp, &two_p, &four_p, &one);
-                fi.clone() * dd * f1.sqrt_div(&e)
-            });
-            let sf: Vec<T> = s.iter().zip(&f).map(|(a, b)| a.clone() * b).collect();
-            let ssf = s.iter().zip(&sf).map(|(a, b)| a.clone() * b).collect();
-            Ok(RightSinh { s, f, sf, ssf })
-        })
-    }
-
-    pub(crate) fn len(&self) -> usize {
-        self.s.len()
-    }
-
-    /// I1_R = Σ f (σ + k²)^{−3/2}, I2_R = Σ σf (σ + k²)^{−3/2} and, with `dk`, S1, S2 the same
-    /// with (σ + k²)^{−5/2} (dI_R/dk = −3k S).
-    pub(crate) fn parts(&self, kc: &KConsts<T>, dk: bool) -> [T; 4] {
-        let g = [&self.f[..], &self.sf[..], &self.ssf[..]];
-        let right = graded::Kernel::Right { k2: &kc.k2 };
-        let ([a, b], [c, d, _]) = graded::power_sums(&self.s, g, dk, right);
-        [a, b, c, d]
-    }
+/// every k of the octave `j`, the panels of [`crate::routes::graded`] (lengths ℓ ln 2, node
+/// counts from the Bernstein ellipse that reaches the strip |Im x| < π/2, where the branch points
+/// ±ik of (σ + k²)^{−3/2} and every singularity of b(σ), at |v| ≥ 1 on or near the imaginary
+/// axis, lie). No subtraction: the integrands b(σ)(σ + k²)^{−3/2} dv/dx are positive and analytic
+/// in the strip. Kept per k-independent part: σ, f = ω b(σ) (ω the weight times dv/dx), σf and
+/// σ²f; a k costs one square root and one division a node ([`graded`]'s power sums).
+pub(crate) fn right_sinh<T: Real>(
+    sc: &SpeedConsts<T>,
+    p: T::Prec,
+    j: usize,
+) -> Result<graded::NodeTables<T>> {
+    graded::with_sinh_layout(p, octave_scale(j), |layout| {
+        // b(σ) = (2/m1) √f1 D′/E; the factor 2/m1 goes into the weights.
+        let (s, mut f) = layout.fill(&sc.two_over_m1)?;
+        let one = T::one(p);
+        graded::node_map(p, &s, &mut f, |sg, fi| {
+            let (f1, dd, e) = sc.right_at(sg, &one);
+            fi.clone() * dd * f1.sqrt_div(&e)
+        });
+        Ok(graded::NodeTables::new(s, f, p))
+    })
 }

@@ -81,6 +81,7 @@ mod plan;
 mod sums;
 pub use plan::{left_nodes, left_plan, MAX_UNITS};
 use plan::{length_costs, pick_plan, plan_table, PLANNED};
+pub(super) use sums::NodeTables;
 use sums::{chunked_sums, kernel_powers, CHUNK};
 pub(super) use sums::{dot, power_sums, Kernel};
 
@@ -339,9 +340,14 @@ impl<'r, T: Real> SinhLayout<'r, T> {
             .sum()
     }
 
-    /// Writes w² into `s` and the weights (dw/dx)·(panel weight)·`scale` into `wt` (both of
-    /// length [`SinhLayout::nodes`]), panel by panel from x = 0.
-    pub(super) fn fill(&self, scale: &T, s: &mut [T], wt: &mut [T]) -> Result<()> {
+    /// w² and the weights (dw/dx)·(panel weight)·`scale` at the layout's nodes, panel by panel
+    /// from x = 0.
+    pub(super) fn fill(&self, scale: &T) -> Result<(Vec<T>, Vec<T>)> {
+        let n = self.nodes()?;
+        let (mut s, mut wt) = (
+            vec![T::zero(scale.prec()); n],
+            vec![T::zero(scale.prec()); n],
+        );
         let plan = self.plan();
         let total: usize = plan.iter().sum();
         // a/2 = 1/(2^C − 2^−C), C = the panels' total length in units of ln 2.
@@ -364,7 +370,7 @@ impl<'r, T: Real> SinhLayout<'r, T> {
             start += l as i32;
             i0 += rule.ep.len();
         }
-        Ok(())
+        Ok((s, wt))
     }
 }
 
@@ -413,20 +419,20 @@ pub struct GradedSetup<T: Real> {
 #[derive(Clone, Debug)]
 struct GradedBody<T: Real> {
     left: LeftHalf<T>,
-    /// The right nodes' σ, f, σ·f, σ²·f (4 × the node count).
-    right: Vec<T>,
+    /// The right nodes' σ, f, σ·f, σ²·f.
+    right: NodeTables<T>,
 }
 
 /// The left half's node values: with the Rayleigh pole resolved by the panels, or subtracted.
 #[derive(Clone, Debug)]
 enum LeftHalf<T: Real> {
-    /// s, f, s·f, s²·f, one after the other (4 × the node count): the panels reach down to ε.
-    Resolved(Vec<T>),
-    /// s, F = (2/m1) D′ √e1/Q′ (so that a = F·u^{−3/2}), 1/h and the weight, one after the
-    /// other (4 × the node count), with the pole's closed-form constants: the panels stop at
-    /// min(1/k_max, δ), below which only the subtracted pole lies (module docs).
+    /// s, f, s·f, s²·f: the panels reach down to ε.
+    Resolved(NodeTables<T>),
+    /// s, F = (2/m1) D′ √e1/Q′ (so that a = F·u^{−3/2}), 1/h and the weight, with the pole's
+    /// closed-form constants: the panels stop at min(1/k_max, δ), below which only the
+    /// subtracted pole lies (module docs).
     Subtracted {
-        nodes: Vec<T>,
+        tables: [Vec<T>; 4],
         /// The speed's constants: ε², the pole's strength and atan(1/ε)/ε among them.
         sc: Box<SpeedConsts<T>>,
     },
@@ -444,16 +450,13 @@ fn left_parts<T: Real>(sc: &SpeedConsts<T>, s: &T, one: &T) -> (T, T, T) {
 fn resolved_left<T: Real>(layout: &SinhLayout<'_, T>, sc: &SpeedConsts<T>) -> Result<LeftHalf<T>> {
     let p = sc.c.prec();
     let one = T::one(p);
-    let tables = left_tables(layout, &sc.two_over_m1, 0, |ls, [lf, lsf, lssf]| {
-        node_map(p, ls, lf, |s, w| {
-            let (e1, dd, qq) = left_parts(sc, s, &one);
-            let h = s.clone() + &sc.eps2;
-            w.clone() * dd * e1.sqrt_div(&(qq * h))
-        });
-        node_map(p, lf, lsf, |f, s| s.clone() * f);
-        node_map(p, lsf, lssf, |sf, s| s.clone() * sf);
-    })?;
-    Ok(LeftHalf::Resolved(tables))
+    let (s, mut f) = layout.fill(&sc.two_over_m1)?;
+    node_map(p, &s, &mut f, |s, w| {
+        let (e1, dd, qq) = left_parts(sc, s, &one);
+        let h = s.clone() + &sc.eps2;
+        w.clone() * dd * e1.sqrt_div(&(qq * h))
+    });
+    Ok(LeftHalf::Resolved(NodeTables::new(s, f, p)))
 }
 
 /// The left half with the pole subtracted: s, F (with G's constant factor 2/m1), 1/h and the
@@ -464,42 +467,17 @@ fn subtracted_left<T: Real>(
 ) -> Result<LeftHalf<T>> {
     let p = sc.c.prec();
     let one = T::one(p);
-    let nodes = left_tables(layout, &one, 2, |ls, [lf, lih, _]| {
-        node_map(p, ls, lf, |s, _| {
-            let (e1, dd, qq) = left_parts(sc, s, &one);
-            sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq)
-        });
-        node_map(p, ls, lih, |s, _| (s.clone() + &sc.eps2).recip());
-    })?;
+    let (s, w) = layout.fill(&one)?;
+    let (mut f, mut ih) = (s.clone(), s.clone());
+    node_map(p, &s, &mut f, |s, _| {
+        let (e1, dd, qq) = left_parts(sc, s, &one);
+        sc.two_over_m1.clone() * dd * e1.sqrt_div(&qq)
+    });
+    node_map(p, &s, &mut ih, |s, _| (s.clone() + &sc.eps2).recip());
     Ok(LeftHalf::Subtracted {
-        nodes,
+        tables: [s, f, ih, w],
         sc: Box::new(sc.clone()),
     })
-}
-
-/// The left half's four tables of node values, one after the other: s = w² and, in table
-/// 1 + `weight_at` of the other three, the weight (a/2)(e^x + e^−x)·w·ℓ ln 2/2 times `scale`
-/// (every other table a copy of s), which `fill(s, tables)` then turns into the node values.
-fn left_tables<T: Real>(
-    layout: &SinhLayout<'_, T>,
-    scale: &T,
-    weight_at: usize,
-    fill: impl FnOnce(&[T], [&mut [T]; 3]),
-) -> Result<Vec<T>> {
-    let nl = layout.nodes()?;
-    let mut v = vec![T::zero(scale.prec()); 4 * nl];
-    let (ls, rest) = v.split_at_mut(nl);
-    let (a, rest) = rest.split_at_mut(nl);
-    let (b, c) = rest.split_at_mut(nl);
-    let mut tables = [a, b, c];
-    layout.fill(scale, ls, tables[weight_at])?;
-    for (i, t) in tables.iter_mut().enumerate() {
-        if i != weight_at {
-            t.clone_from_slice(ls);
-        }
-    }
-    fill(ls, tables);
-    Ok(v)
 }
 
 impl<T: Real> GradedSetup<T> {
@@ -570,28 +548,12 @@ impl<T: Real> GradedBody<T> {
         };
         // Right: σ, f, σ·f, σ²·f.
         let (right_s, right_w) = rules.right()?;
-        let nr = right_s.len();
-        let tables = [right_s, right_w, right_s, right_s];
-        let mut right: Vec<T> = tables.iter().flat_map(|t| t.iter().cloned()).collect();
-        {
-            let (rs, rest) = right.split_at_mut(nr);
-            let (rf, rest) = rest.split_at_mut(nr);
-            let (rsf, rssf) = rest.split_at_mut(nr);
-            node_map(p, rs, rf, |sg, w| {
-                let pp = one.clone() + sg;
-                let (f1, dd, e) = sc.right_node(
-                    sg,
-                    &pp,
-                    &pp.clone().mul_i64(2),
-                    &pp.clone().mul_i64(4),
-                    &one,
-                );
-                w.clone() * &sc.two_over_m1 * dd * f1.sqrt_div(&e)
-            });
-            // σ·f and σ²·f in place of σ's copies.
-            node_map(p, rf, rsf, |f, sg| sg.clone() * f);
-            node_map(p, rsf, rssf, |sf, sg| sg.clone() * sf);
-        }
+        let mut f = right_w.clone();
+        node_map(p, right_s, &mut f, |sg, w| {
+            let (f1, dd, e) = sc.right_at(sg, &one);
+            w.clone() * &sc.two_over_m1 * dd * f1.sqrt_div(&e)
+        });
+        let right = NodeTables::new(right_s.clone(), f, p);
         Ok(GradedBody { left, right })
     }
 }
@@ -615,11 +577,9 @@ impl<T: Real> GradedSetup<T> {
         let p = axes.k.prec();
         let (left, nl) = (self.body.left.sums(axes, dk, p), self.body.left.nodes());
         // Right: Σ f h^{−3/2}, Σ σ f h^{−3/2} and, with dk, the same with h^{−5/2}, h = σ + k².
-        let right = &self.body.right;
-        let nr = right.len() / 4;
-        let [rs, rf, rsf, rssf] = four_tables(right);
+        let nr = self.body.right.len();
         let right = Kernel::Right { k2: &axes.k2 };
-        let ([i1r, i2r], [d1r, d2r, _]) = power_sums(rs, [rf, rsf, rssf], dk, right);
+        let ([i1r, i2r], [d1r, d2r, _]) = self.body.right.sums(dk, right);
         let [i2l, i1l, d2l, d1l] = left;
         let i1 = i1l + &i1r;
         let i2 = i2l + &i2r;
@@ -641,7 +601,8 @@ impl<T: Real> GradedSetup<T> {
 impl<T: Real> LeftHalf<T> {
     fn nodes(&self) -> usize {
         match self {
-            LeftHalf::Resolved(v) | LeftHalf::Subtracted { nodes: v, .. } => v.len() / 4,
+            LeftHalf::Resolved(t) => t.len(),
+            LeftHalf::Subtracted { tables, .. } => tables[0].len(),
         }
     }
 
@@ -651,17 +612,16 @@ impl<T: Real> LeftHalf<T> {
         let nl = self.nodes();
         match self {
             // Σ f u^{−3/2}, Σ s f u^{−3/2} and, with dk, Σ s f u^{−5/2}, Σ s² f u^{−5/2}.
-            LeftHalf::Resolved(v) => {
-                let [ls, lf, lsf, lssf] = four_tables(v);
+            LeftHalf::Resolved(t) => {
                 let left = Kernel::Left {
                     k2: &axes.k2,
                     one: &one,
                 };
-                let ([a, b], [_, c, d]) = power_sums(ls, [lf, lsf, lssf], dk, left);
+                let ([a, b], [_, c, d]) = t.sums(dk, left);
                 [a, b, c, d]
             }
-            LeftHalf::Subtracted { nodes, sc } => {
-                let [ls, lf, lih, lw] = four_tables(nodes);
+            LeftHalf::Subtracted { tables, sc } => {
+                let [ls, lf, lih, lw] = tables;
                 // u0 = 1 − k²ε² ≥ 15/16 here.
                 let (a0, e0) = sc.pole_values(&axes.k2);
                 let (eps2, pole_t) = (&sc.eps2, &sc.pole_t);
@@ -697,15 +657,6 @@ impl<T: Real> LeftHalf<T> {
             }
         }
     }
-}
-
-/// The four tables of node values that `v` holds one after the other.
-fn four_tables<T>(v: &[T]) -> [&[T]; 4] {
-    let n = v.len() / 4;
-    let (a, rest) = v.split_at(n);
-    let (b, rest) = rest.split_at(n);
-    let (c, d) = rest.split_at(n);
-    [a, b, c, &d[..n]]
 }
 
 /// `out[i] = g(x[i], out[i])` for every node, on the cores above

@@ -168,6 +168,36 @@ pub(crate) fn power_sums<T: Real>(
     (w3, [s0, s1, s2])
 }
 
+/// One half's node tables for [`power_sums`]: the nodes s and the factors f, s·f and s²·f.
+#[derive(Clone, Debug)]
+pub(crate) struct NodeTables<T> {
+    s: Vec<T>,
+    g: [Vec<T>; 3],
+}
+
+impl<T: Real> NodeTables<T> {
+    /// The tables of the nodes `s` and the factors `f` at precision `p` (s·f and s²·f formed
+    /// here, on the cores above [`crate::numerics::shares::PARALLEL_ABOVE_BITS`]).
+    pub(crate) fn new(s: Vec<T>, f: Vec<T>, p: T::Prec) -> Self {
+        let (mut sf, mut ssf) = (s.clone(), s.clone());
+        super::node_map(p, &f, &mut sf, |f, s| s.clone() * f);
+        super::node_map(p, &sf, &mut ssf, |sf, s| s.clone() * sf);
+        NodeTables { s, g: [f, sf, ssf] }
+    }
+
+    /// The number of nodes.
+    pub(crate) fn len(&self) -> usize {
+        self.s.len()
+    }
+
+    /// [`power_sums`] over the tables.
+    #[inline(always)]
+    pub(crate) fn sums(&self, dk: bool, kernel: Kernel<'_, T>) -> ([T; 2], [T; 3]) {
+        let [f, sf, ssf] = &self.g;
+        power_sums(&self.s, [f, sf, ssf], dk, kernel)
+    }
+}
+
 /// The sums of [`power_sums`] over the chunk from node i0, from its kernel powers `v`
 /// (x^{−5/2} with `dk`, else x^{−3/2}): [Σ g0 v, Σ g1 v, 0, 0, 0] or [0, 0, Σ g0 v, Σ g1 v, Σ g2 v].
 #[inline(always)]
