@@ -367,17 +367,9 @@ impl Refine {
         Ok(Expansion { v, tau, d, tau_d })
     }
 
-    /// f(η) = Σ v_m η^m to about 2^−q relative to 2^r (Horner, falling precision).
-    fn f(ex: &Expansion, eta: &Float, q: u32, r: f64) -> Float {
-        Self::horner(&ex.v, &ex.tau, eta, q, r)
-    }
-
-    /// f'(η) = Σ d_m η^m to about 2^−q relative to |d_0| = |u_1|.
-    fn df(ex: &Expansion, eta: &Float, q: u32) -> Float {
-        Self::horner(&ex.d, &ex.tau_d, eta, q, ex.tau_d[0])
-    }
-
-    /// Σ_m c_m η^m by Horner from the top, each partial sum at the precision of its term.
+    /// Σ_m c_m η^m by Horner from the top, each partial sum at the precision of its term, to
+    /// about 2^−q relative to 2^r: f(η) = Σ v_m η^m relative to the first-order term, f′(η) =
+    /// Σ d_m η^m relative to |d_0| = |u_1|.
     fn horner(c: &[Float], tau: &[f64], eta: &Float, q: u32, r: f64) -> Float {
         let floor = r - q as f64 - 24.0;
         let top = (0..c.len()).rev().find(|&m| tau[m] >= floor).unwrap_or(0);
@@ -449,8 +441,8 @@ impl Refine {
             // convergence from a first step good to `first` bits.
             while good < need {
                 let next = (2 * good).saturating_sub(8).min(need + 8);
-                let fv = Self::f(&ex, &eta, next, r);
-                let dv = Self::df(&ex, &eta, good + 16);
+                let fv = Self::horner(&ex.v, &ex.tau, &eta, next, r);
+                let dv = Self::horner(&ex.d, &ex.tau_d, &eta, good + 16, ex.tau_d[0]);
                 let step = Float::with_val(next + 16, &fv / &dv);
                 if lg(&step) > lg(&eta) - good as f64 + 4.0 {
                     return Err(fail("Gauss-Legendre node (Newton on the Taylor expansion)"));
@@ -461,7 +453,7 @@ impl Refine {
                 }
                 good = next;
             }
-            let dfull = Self::df(&ex, &eta, w + 16);
+            let dfull = Self::horner(&ex.d, &ex.tau_d, &eta, w + 16, ex.tau_d[0]);
             (eta, dfull)
         };
         let x = Float::with_val(w, &xt + Float::with_val(w, &s * &eta));
@@ -502,7 +494,7 @@ fn node_dd(n: usize, x: f64) -> Dd {
 
 /// The rule's nonnegative nodes (decreasing) and weights at `raw` bits, by the three stages of
 /// the module docs. The nodes are independent of one another: they are built on every core
-/// ([`map_on_threads`], interleaved shares; the same values whatever the number of threads).
+/// ([`map_on_threads`]; the same values whatever the number of threads).
 pub(crate) fn build_fast(n: usize, raw: u32) -> Result<RawRule> {
     let m = n.div_ceil(2);
     let refine = Refine::new(n, raw);

@@ -2,7 +2,7 @@
 //! ([`helpers`], one thread fewer than the cores, kept for the process); `docs/design.md`
 //! ("Dependencies", `rayon`) says why the pool is shaped so:
 //!
-//! * [`map_on_threads`]: `f(0) … f(m − 1)` in interleaved shares, for the one-time work of a
+//! * [`map_on_threads`]: `f(0) … f(m − 1)` in contiguous shares, for the one-time work of a
 //!   precision (the nodes of a Gauss–Legendre rule, the graded routes' e^{±x} tables), at least
 //!   [`MIN_ITEMS_A_SHARE`] items a core.
 //! * [`for_shares`] with [`shares`]: the fixed-rule and graded routes' node loops in contiguous
@@ -16,7 +16,6 @@
 //! No item of this module implements a formula of the paper.
 
 use crate::error::{Error, Result};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Mutex, OnceLock, PoisonError};
 
 /// Precisions (bits) above which the fixed-rule routes' node loops run on every core; at and
@@ -33,7 +32,7 @@ fn cores() -> usize {
     *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |c| c.get()))
 }
 
-/// The error of a share left without a result (it cannot be: the calling thread's copy of the
+/// The error of an item left without a result (it cannot be: the calling thread's copy of the
 /// job takes shares until none is left, and nothing in the work given to [`map_on_threads`]
 /// panics).
 fn stopped() -> Error {
@@ -42,51 +41,28 @@ fn stopped() -> Error {
     }
 }
 
-/// `f(0) … f(m − 1)` in order: on every core when there are at least [`MIN_ITEMS_A_SHARE`]
-/// items a core ([`interleaved`]), else on the calling thread (the number of cores is not even
-/// asked for fewer than two shares' items). Used for the nodes of a rule and for per-node
-/// tables built from them (`routes::graded`).
+/// `f(0) … f(m − 1)` in order: on every core ([`for_shares`], contiguous shares) when there are
+/// at least [`MIN_ITEMS_A_SHARE`] items a core, else on the calling thread (the number of cores
+/// is not even asked for fewer than two shares' items). Used for the nodes of a rule and for
+/// per-node tables built from them (`routes::graded`).
 pub(crate) fn map_on_threads<R: Send>(
     m: usize,
     f: &(impl Fn(usize) -> Result<R> + Sync),
 ) -> Result<Vec<R>> {
-    let threads = if m < 2 * MIN_ITEMS_A_SHARE {
+    let count = if m < 2 * MIN_ITEMS_A_SHARE {
         1
     } else {
         cores().min(m / MIN_ITEMS_A_SHARE)
     };
-    if threads > 1 {
-        interleaved(m, threads, &|k: usize| f(k - 1))
-    } else {
-        (0..m).map(f).collect()
-    }
-}
-
-/// `one(1..=m)` in order, in `threads` interleaved shares, share t taking k ≡ t + 1 (mod
-/// `threads`), so that each share gets nodes from every part of [0, 1] (their costs differ
-/// between the ends and the middle). The shares are taken from a common counter by the threads
-/// of [`on_count`], so that every share is computed whichever threads run.
-fn interleaved<R: Send>(
-    m: usize,
-    threads: usize,
-    one: &(impl Fn(usize) -> Result<R> + Sync),
-) -> Result<Vec<R>> {
-    let slots: Vec<Mutex<Option<Result<Vec<R>>>>> =
-        (0..threads).map(|_| Mutex::new(None)).collect();
-    let next = AtomicUsize::new(0);
-    let job = || loop {
-        let t = next.fetch_add(1, Ordering::Relaxed);
-        let Some(slot) = slots.get(t) else { break };
-        let share = (t + 1..=m).step_by(threads).map(one).collect();
-        *slot.lock().unwrap_or_else(PoisonError::into_inner) = Some(share);
-    };
-    on_count(threads, &job);
-    let mut iters = Vec::with_capacity(threads);
-    for slot in slots {
-        let share = slot.into_inner().unwrap_or_else(PoisonError::into_inner);
-        iters.push(share.unwrap_or_else(|| Err(stopped()))?.into_iter());
-    }
-    Ok((0..m).filter_map(|k| iters[k % threads].next()).collect())
+    let mut out: Vec<Option<Result<R>>> = (0..m).map(|_| None).collect();
+    for_shares(count, &mut out, &mut [] as &mut [()], &|start, part, _| {
+        for (k, o) in (start..).zip(part) {
+            *o = Some(f(k));
+        }
+    });
+    out.into_iter()
+        .map(|o| o.unwrap_or_else(|| Err(stopped())))
+        .collect()
 }
 
 /// The number of shares for a loop over `n` nodes at `bits` bits: 1 at or below
