@@ -1,6 +1,6 @@
 //! The constants of one (material, speed) that the fixed-rule and graded routes share: G's
-//! cleared form at a node of either half and the Rayleigh pole's strength (module docs of
-//! [`crate::routes::fast`]).
+//! cleared form at a node of either half and the Rayleigh pole's strength
+//! (`docs/fixed-rules.md`).
 
 use crate::physics::Speed;
 use crate::scalar::Real;
@@ -75,7 +75,7 @@ impl<T: Real> SpeedConsts<T> {
 
     /// The Rayleigh pole's strength at the axis ratio with k² = `k2` (k²ε² < 1): a0 = a(−ε²) =
     /// g0 (1 − k²ε²)^{−3/2}, and e0 = ε² a0/(1 − k²ε²), the pole value of the left integrand's
-    /// k-derivative divided by 3k (module docs). Zero for both at M_R = 0. A few ε.
+    /// k-derivative divided by 3k (docs/fixed-rules.md). Zero for both at M_R = 0. A few ε.
     pub(crate) fn pole_values(&self, k2: &T) -> (T, T) {
         if self.g0.is_zero() {
             let p = k2.prec();
@@ -90,7 +90,7 @@ impl<T: Real> SpeedConsts<T> {
 
     /// G's cleared form at a left node s = w² (p = 1 + s; `two_p`, `four_p` = 2p, 4p): returns
     /// e1 = s + 1 − γc, D' = (2p − c)² + 4p√((s + 1 − γc)(s + δ²)) and
-    /// Q' = c² − (m2 + m3)c p + m2m3 p², so that 2πG√(1 + s) = (2/m1)√e1·D'/Q' (module docs).
+    /// Q' = c² − (m2 + m3)c p + m2m3 p², so that 2πG√(1 + s) = (2/m1)√e1·D'/Q' (docs/fixed-rules.md).
     /// One square root, no division.
     #[inline(always)]
     pub(crate) fn left_node(&self, s: &T, pp: &T, two_p: &T, four_p: &T) -> (T, T, T) {
@@ -111,7 +111,7 @@ impl<T: Real> SpeedConsts<T> {
     }
 
     /// The same at a right node σ = v² (p = 1 + σ): returns f1 = 1 + (1 − γc)σ, D' and
-    /// E = Q'(σ)(1 + ε²σ), so that b(σ) = (2/m1)√f1·D'/E (module docs). `one` is 1 at the
+    /// E = Q'(σ)(1 + ε²σ), so that b(σ) = (2/m1)√f1·D'/E (docs/fixed-rules.md). `one` is 1 at the
     /// working precision.
     #[inline(always)]
     pub(crate) fn right_node(&self, sg: &T, pp: &T, two_p: &T, four_p: &T, one: &T) -> (T, T, T) {

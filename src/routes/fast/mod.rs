@@ -1,139 +1,28 @@
 //! The fast route: I1, I2 of (34) (normalisation of (37)) and their derivatives with respect to
-//! the axis ratio k, by fixed Gauss–Legendre rules after the two near singularities of (46)–(47)
-//! have been taken out in closed form. No adaptivity, no trigonometric function at a node, node
-//! counts fixed by the working precision; at `f64` and double-double no allocation per call
-//! once the speed's set-up is built.
+//! the axis ratio k, 0 < k ≤ 1, by fixed Gauss–Legendre rules after the two near singularities
+//! of (46)–(47) have been taken out in closed form. No adaptivity, no trigonometric function at a
+//! node, node counts fixed by the working precision ([`RuleSizes::for_bits`]); at `f64` and
+//! double-double no allocation per call once the speed's set-up is built. The derivation, the
+//! node counts and the error argument: `docs/fixed-rules.md`. In short, with the quarter
+//! α ∈ [0, π/2] split at π/4 as in [`crate::routes::direct`]:
 //!
-//! **Variables.** As in [`crate::routes::direct`]: the quarter α ∈ [0, π/2] is split at π/4,
-//! the left half written in w = tan α, s = w², the right half in v = cot α, σ = v². With
-//! ε² = 1 − M_R², c = m1 M_R² (= M2², the squared shear Mach number), δ² = 1 − c and u = 1 + k²s,
-//!
-//! ```text
-//! left:  I2_L = ∫_0^1 A(w)/(s + ε²) dw,   I1_L = ∫_0^1 s A(w)/(s + ε²) dw,
-//!        A(w) = a(s) = 2π G(M_R²/(1 + s)) √(1 + s) / u^{3/2};
-//! right: I1_R = ∫_0^1 b(σ) (σ + k²)^{−3/2} dv,   I2_R = ∫_0^1 σ b(σ) (σ + k²)^{−3/2} dv,
-//!        b(σ) = 2π G(M_R² σ/(1 + σ)) √(1 + σ)/(1 + ε²σ) = 2 g(c σ/(1 + σ)) / √(1 + σ),
-//! ```
-//!
-//! g = πG/(1 − t) being the normalised Green's function of (35). I1 = I1_L + I1_R,
-//! I2 = I2_L + I2_R.
-//!
-//! **Left half: the Rayleigh pole.** 1/(s + ε²) has its poles at w = ±iε, which is where t = 1
-//! (the pole of (47) that makes I2 ~ 1/ε as M_R → 1). With a0 = a(−ε²),
-//!
-//! ```text
-//! I2_L = a0 · atan(1/ε)/ε + ∫_0^1 (a(s) − a0)/(s + ε²) dw,
-//! I1_L = a0 · (1 − ε atan(1/ε)) + ∫_0^1 s (a(s) − a0)/(s + ε²) dw,
-//! a0 = 2π G(1) M_R (1 − k²ε²)^{−3/2},
-//! ```
-//!
-//! and the integrands left are analytic near [0, 1]: their nearest singularity is the branch
-//! point of G where t = 1/m1 (√(1 − x) = 0), at w = ±iδ, δ ≥ √(1 − m1) ≈ 0.30 (ν = 1/2, M_R → 1),
-//! so one Gauss–Legendre rule on [0, 1] in w converges geometrically, uniformly in M_R, at
-//! 2.3 bits a node in the worst case: 20 nodes at `f64`. The pole is subtracted only when it is
-//! near, ε ≤ 1/2 (M_R ≥ √3/2; then k²ε² ≤ 1/4); farther out the plain rule converges as fast, and
-//! as M_R → 0, k → 1 the pole at iε would meet the branch point of u^{−3/2} at i/k, where a0 is
-//! unbounded. On the rule the subtracted integral splits into Σω a/(s + ε²) and a0 Σω/(s + ε²):
-//! the second's weights are k-independent, so the set-up keeps atan(1/ε)/ε − Σω/(s + ε²) (and
-//! 1 − ε atan(1/ε) − Σωs/(s + ε²)) and ω/(s + ε²) folded into the node factors, and a k costs
-//! the sum of a(s)/(s + ε²) alone. The rounding this costs is the subtraction's own: ε·a/(s + ε²)
-//! absolute at a node and ε·a0 atan(1/ε)/ε for the pole terms, both within ε·I2 (the terms are
-//! positive).
-//!
-//! **Above double-double: the left half on sinh-mapped panels.** The single rule in w needs
-//! ⌈0.433·bits⌉ nodes (1772 at 4096 bits), and a rule's construction grows like n². Above 106
-//! bits the left half is laid out instead ([`RuleSizes::left_sinh`]) on the panels of
-//! [`crate::routes::graded`] in w = a sinh x, x ∈ [0, 3 ln 2], a = 1/sinh(3 ln 2) ≈ 0.254 <
-//! δ: the map sends every singularity left after the pole subtraction (G's branch points ±iδ,
-//! the zeros of Q′, the branch points ±i/k of u^{−3/2}) to the edge of the strip
-//! |Im x| < π/2, where the panels' node counts are calibrated ([`graded::left_nodes`]); the
-//! subtracted pole ±iε is removable and may lie inside. Three units of ln 2 take one 3-unit
-//! panel up to 512 bits (77 nodes at 256 bits against 109), a 2-unit and a 1-unit panel above
-//! (1556 nodes at 4096 bits), whose rules and e^{±x} tables the right half's sinh layouts
-//! share. Checked against the single rule at 256 and 1024 bits by the unit test
-//! `left_layouts_agree` (derivatives included).
-//!
-//! **Right half: the k-peak.** The weight (σ + k²)^{−3/2} has branch points at v = ±ik, near the
-//! end v = 0 when k is small, while b is analytic in |σ| < 1 (its nearest singularity is
-//! √(1 + σ) at σ = −1). The Taylor polynomial P = Σ_{j<J} b_j σ^j of b at σ = 0 is subtracted at
-//! the nodes and integrated against the weight exactly:
-//!
-//! ```text
-//! I1_R = ∫_0^1 P(σ)(σ + k²)^{−3/2} dv + ∫_0^1 r(σ)(σ + k²)^{−3/2} dv,   r = b − P,
-//! I2_R = ∫_0^1 σ P(σ)(σ + k²)^{−3/2} dv + ∫_0^1 σ r(σ)(σ + k²)^{−3/2} dv.
-//! ```
-//!
-//! The remainder vanishes like σ^J at v = 0, which damps the peak of the weight: 12 nodes and
-//! J = 8 give ≤ 2·10⁻¹⁶ for every k ≤ 1 (the hardest k are 0.1–0.9, where the peak is neither
-//! resolved nor negligible). The Taylor coefficients come from the rationalised form of b
-//! (binomial series of its two square roots divided by a cubic, 14 operations a coefficient;
-//! checked against the recurrence (36) composed with σ/(1 + σ) in the unit tests). The
-//! polynomial's integrals are formed by expanding P about the branch point,
-//! P = P(−k²) + (σ + k²)Q(σ) (synthetic division), so that only the moments
-//! N_j = ∫ v^{2j}(v² + k²)^{−1/2} dv enter, with N_0 = asinh(1/k) and the upward recurrence
-//! N_j = (√(1 + k²) − (2j − 1)k² N_{j−1})/(2j) (stable: each step multiplies the inherited error by
-//! (2j − 1)k²/(2j) < 1), and M_0 = ∫(v² + k²)^{−3/2} dv = 1/(k²√(1 + k²)):
-//!
-//! ```text
-//! ∫ P W3 = P(−k²) M_0 + Σ q_i N_i,   ∫ σ P W3 = −k² P(−k²) M_0 + P(−k²) N_0 + Σ q_i N_{i+1}.
-//! ```
-//!
-//! Near k = 1 these sums cancel like √J·log J (P(−1) grows like √J); at `f64` and double-double
-//! (J = 8, 14) that costs under 2ε, above double-double they are formed at the guard precision
-//! [`Real::Wide`] and rounded once.
-//!
-//! **Above double-double: the right half on sinh-mapped panels.** The J products of the Taylor
-//! polynomial at every right node grow like bits² (J ≈ 0.13·bits, n_r ≈ 0.24·bits): at 4096
-//! bits they are some twenty times the rest of an evaluation. Above 106 bits the right half is
-//! therefore laid out instead, wherever that is cheaper (`sinh_octave`: most k at 128 bits
-//! and above, all but k ≲ 10⁻⁴ from 1024 bits on), on the panels of [`crate::routes::graded`]
-//! in v = a sinh x, x ∈ [0, C ln 2], a ≤ (4/5)·k for every k of one octave
-//! (2^(−j−1), 2^(−j)]: the map sends the branch points ±ik of (σ + k²)^{−3/2} and every
-//! singularity of b (|v| ≥ 1, on or near the imaginary axis) to the edge of the strip
-//! |Im x| < π/2, so that the plain Gauss–Legendre panels converge like the graded route's, with
-//! no subtraction and O(1) work a node (`right_sinh`): about bits·log₂(1/k)/10 nodes. The
-//! k-independent part keeps one layout per octave of k met.
-//!
-//! **Derivatives.** ∂/∂k is taken under the integral sign on the same nodes (G is evaluated once
-//! per node): ∂u^{−3/2}/∂k = −3ksu^{−5/2} on the left, whose pole (value 3kε²a0/(1 − k²ε²)) is
-//! subtracted the same way, and ∂(σ + k²)^{−3/2}/∂k = −3k(σ + k²)^{−5/2} on the right, where
-//! ∫ P W5 = P(−k²) P_0 + ∫ Q W3 and ∫ σ P W5 = −k² P(−k²) P_0 + P(−k²) M_0 + ∫ σ Q W3 with
-//! P_0 = ∫(v² + k²)^{−5/2} dv = (2 + 3k²)/(3k⁴(1 + k²)^{3/2}).
-//!
-//! **Cost per node.** G is evaluated in a form with the factors 1/(1 + s) cleared,
-//! G(t)√(1 + s)·2π = (2/m1)·√(p − γc)·D'/Q' with p = 1 + s, D' = (2p − c)² + 4p√((p − γc)(s + δ²))
-//! and Q' = c² − (m2 + m3)c p + m2m3 p², so that a left node costs two square roots and one
-//! division, a right node three and one, and about 25 multiplications and additions: in the
-//! set-up. A k costs u^{−3/2} (or, for the derivatives, u^{−5/2} alone) at each node and two
-//! (three) weighted sums ([`graded::power_sums`], shared with the graded route), with the
-//! weights ω, 1/(s + ε²) and the k-independent node factors folded into three tables a half
-//! (F, sF, s²F).
-//!
-//! **Many k.** [`FastSetup`] keeps the k-independent part (G at every node, the Taylor
-//! coefficients): each further k costs one square root and one division per node. Each speed
-//! keeps one, built on first use and shared by its clones, which every evaluation at that speed
-//! runs (the route's one integrand).
-//!
-//! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 0 < k ≤ 1 (every k that [`AxisRatio`] admits: at
-//! `f64` down to 1.2·10⁻⁷⁷, where k⁴ is still a normal number). As k → 0 nothing in the route
-//! changes scale: the Taylor remainder r = b − P vanishes like σ^J where the weight
-//! (σ + k²)^{−3/2} peaks, and the moments M_0, N_j, P_0 are closed forms in k; the sinh-mapped
-//! panels (one layout per octave) are kept to 2⁻⁴⁰ ≤ k, below which the Taylor form serves at a
-//! cost independent of k (tested to k = 10⁻⁷⁵ in `tests/extreme_k.rs`). For k > 1 the peak of Δ⁻³ (width 1/k)
-//! moves to α = 0, on top of the Rayleigh pole, and b's expansion would have to be about w = 0
-//! where G's branch point limits its radius to δ²; this route does not handle it and returns
-//! [`Error::Domain`] (callers fall back to the adaptive [`crate::routes::direct::quadrature`]).
-//!
-//! **Accuracy.** The node counts are fixed functions of the working precision
-//! ([`RuleSizes::for_bits`]), chosen so that the truncation error is below 1ε over the whole
-//! domain; [`BOUND_EPS`] = 16 is the a-priori bound on the relative error of I1 and I2 in units
-//! of ε and [`DK_BOUND_EPS`] that of the k-derivatives, checked against the adaptive route at 400
-//! bits (`tests/unit/fast.rs`) and at 1024 bits against it at 1088 bits
-//! (`tests/precision_scaling.rs`). The measured worst errors by precision are in
-//! docs/calibration.md. The derivatives are least accurate near k = 1, M_R = 0, where the closed
-//! forms of the (σ + k²)^{−5/2} moments cancel most (no guard precision is spent on them below
-//! MPFR); above 1024 bits the right half is always on the sinh-mapped panels, since the Taylor
-//! form's derivatives there degrade with the precision.
+//! - **Left half** (w = tan α, s = w²): the Rayleigh pole 1/(s + ε²), ε² = 1 − M_R², is
+//!   subtracted with its exact integral atan(1/ε)/ε where ε ≤ 1/2 ([`SpeedConsts`]); the rest is
+//!   analytic within δ ≥ 0.30 of [0, 1]: one rule in w up to double-double, the sinh-mapped
+//!   panels of [`crate::routes::graded`] above ([`RuleSizes::left_sinh`]).
+//! - **Right half** (v = cot α, σ = v²): the Taylor polynomial of J terms of the regular factor
+//!   b(σ) is subtracted at the nodes and integrated against (σ + k²)^{−3/2} exactly through the
+//!   moments N_j (`closed.rs`, 64 guard bits above double-double); above double-double, where
+//!   cheaper, one octave of k at a time on sinh-mapped panels instead ([`sinh_octave`]).
+//! - **Derivatives**: ∂/∂k under the integral sign on the same nodes (G once a node).
+//! - **Many k**: [`FastSetup`] keeps the k-independent part (G at every node, the Taylor
+//!   coefficients, the pole terms); a further k costs one square root and one division a node
+//!   ([`graded::power_sums`]). Each speed keeps one, built on first use ([`SetupCache`]).
+//! - **Accuracy**: relative error of I1, I2 below [`BOUND_EPS`]·ε and of the derivatives below
+//!   [`DK_BOUND_EPS`]·ε on the whole domain (down to the smallest k [`AxisRatio`] admits),
+//!   checked against the adaptive route at 400 bits (`tests/unit/fast.rs`) and at 1024 bits
+//!   against it at 1088 bits (`tests/precision_scaling.rs`); measured worst errors in
+//!   docs/calibration.md. For k > 1 this route returns [`Error::Domain`].
 
 use super::graded::{self, dot};
 use super::{AxisRatio, Evaluation, Route};
@@ -156,7 +45,7 @@ use sinh::*;
 
 /// The a-priori bound on the relative error of I1 and I2 for the default sizes, in units of ε of
 /// the working precision, valid on the whole domain of the route at every precision: the
-/// truncation error of the default rules is below 1ε everywhere on the domain (module docs), the
+/// truncation error of the default rules is below 1ε everywhere on the domain (docs/fixed-rules.md), the
 /// rest is rounding (measured worst errors: docs/calibration.md, at most 4.8ε; the solved
 /// references of `tests/references.rs` reach 6.9ε in I1 at `f64`, where k's own error enters).
 ///
@@ -560,7 +449,7 @@ impl<T: Real> FastSetup<T> {
     }
 
     /// I1, I2 of (34) in the normalisation of (37) at the axis ratio `axes` by the fast route
-    /// (module docs) and, with `dk`, dI1/dk, dI2/dk differentiated under the integral sign on the
+    /// (docs/fixed-rules.md) and, with `dk`, dI1/dk, dI2/dk differentiated under the integral sign on the
     /// same nodes (a few products more a node). Domain: 0 < k ≤ 1, else [`Error::Domain`].
     /// Accuracy: relative error of I1 and I2 below [`BOUND_EPS`]·ε = 16ε, reported as
     /// `error_estimate`, of the derivatives below [`DK_BOUND_EPS`]·ε = 128ε. Work: a square root

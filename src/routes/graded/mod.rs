@@ -1,70 +1,21 @@
 //! The fast route's companion for k ≥ 1: I1, I2 of (34) (normalisation of (37)) and their
-//! k-derivatives by composite Gauss–Legendre rules on panels graded towards α = 0.
+//! k-derivatives by composite Gauss–Legendre rules on panels graded towards α = 0, where the peak
+//! of Δ⁻³ (width 1/k) meets the Rayleigh pole (width ε = √(1 − M_R²)). The derivation, the node
+//! counts and the error argument: `docs/fixed-rules.md`. In short:
 //!
-//! **Why a second route.** For k > 1 the peak of Δ⁻³ (width 1/k in w = tan α) moves to α = 0,
-//! on top of the Rayleigh pole of G (width ε = √(1 − M_R²)), so the two closed-form subtractions
-//! of [`crate::routes::fast`] (pole on the left half, Taylor polynomial against the k-peak on the
-//! right half) no longer separate the scales, and a Taylor expansion of G about α = 0 has radius
-//! only δ² (δ ≥ 0.3, G's branch point) in s = w².
-//!
-//! **Panels.** The variables of [`crate::routes::fast`]: the left half α ∈ [0, π/4] in w = tan α,
-//! the right half in v = cot α. On the left every singularity of the integrand lies on the
-//! imaginary w-axis (the branch points ±i/k of u^{−3/2}, the poles ±iε, G's branch points ±iδ,
-//! ±i√(1 − γc), and the zeros of Q′ near ±0.8i–±i, complex only slightly off the axis for
-//! ν > 0.26) at heights ≥ a, a ≤ min(1/k, ε, δ). The map w = a sinh x sends every point iy,
-//! y ≥ a, to the line Im x = π/2: in x the integrand is analytic in the strip |Im x| < π/2
-//! whatever k and ε are, and decays like e^{−2x} past the k-peak. The left half, x from 0 to
-//! asinh(1/a), is cut into panels whose lengths are whole multiples ℓ·ln 2 of ln 2, ℓ = 1…8
-//! (the x-range rounded up to C units, a made 1/sinh(C ln 2)); on a panel of length ℓ ln 2 the
-//! strip lies outside the Bernstein ellipse ρ = h + √(h² + 1), h = π/(ℓ ln 2) (9.2 at ℓ = 1,
-//! 4.74 at 2, 1.72 at 8), so an n-point rule converges like ρ^{−2n}: [`left_nodes`]. Longer
-//! panels need fewer nodes per unit of x (at double-double 18 for ℓ = 1, 13 a unit at ℓ = 2,
-//! 9.25 at ℓ = 8) but round the x-range up further; [`left_plan`] picks the lengths with the
-//! fewest nodes in all (dynamic programming over C, cached per precision up to C = 96; above 256
-//! bits only lengths whose rule has at most [`plan::MAX_RULE_NODES`] nodes, [`plan::max_units`], since a
-//! rule's construction grows like n² and the rules are built on first use). Panel
-//! boundaries at whole multiples of ln 2 make every node's e^{±x} a product of a cached
-//! 2^{±(1+t)ℓ/2} by 2^{±c}: no exponential a node (the choice of layout: docs/calibration.md).
-//! The right half, for k ≥ 1, has its nearest singularities at v = ±i (the factor
-//! (1 + σ)^{−1/2} of b) and ±ik: one panel of [`panel_nodes`] (17 at `f64`, 36 at double-double,
-//! 86 at 256 bits; the evidence for these counts is in docs/calibration.md). The integrands are
-//! positive: no cancellation, rounding error a few ε.
-//!
-//! **The Rayleigh pole, when it lies below the k-peak.** When kε ≤ 1/4 for every k a layout
-//! serves, the pole ±iε is taken out in closed form as in [`crate::routes::fast`] (a = a(s) the
-//! left integrand without 1/h, h = s + ε², a0 = a(−ε²) = 2π G(1) M_R (1 − k²ε²)^{−3/2}):
-//!
-//! ```text
-//! I2_L = a0 · atan(1/ε)/ε + ∫_0^1 (a(s) − a0)/h dw,      I1_L = ∫_0^1 a(s) dw − ε² I2_L
-//! ```
-//!
-//! (s/h = 1 − ε²/h), and the panels stop at a ≤ min(1/k, δ): the pole left is removable, and
-//! the work no longer grows with log(1/ε) — at 4096 bits a gap of 10⁻⁵⁰⁰⁰ costs what 10⁻¹⁰ does,
-//! where the panels reaching ε would need 3.8·10⁶ nodes. I1_L is not formed as the fast route
-//! does (a0 (1 − ε atan(1/ε)) + ∫ s (a − a0)/h dw), which cancels like k when k is large. The
-//! bound kε ≤ 1/4 keeps both forms' cancellation small: ∫(a − a0)/h dw ≈ −a0 k against the pole
-//! term a0 π/(2ε) (≤ 1/(2π) of it), and ε² I2_L ≈ a0 πε/2 against ∫ a dw ≈ a0/k (≤ 0.4 of it).
-//! The k-derivatives take ∂a0/∂k = 3k ε² a0/(1 − k²ε²) out of ∂a/∂k = −3k s a/u the same way.
-//! Above kε = 1/4 the pole lies among the k-peak's scales and the panels reach down to ε
-//! (at most two units of ln 2 beyond 1/k).
-//!
-//! **Cost.** The plan's left nodes + [`panel_nodes`] evaluations of G (two square roots and
-//! one division each). The layouts lie on a fixed grid in ln k: the cell c
-//! ([`layout_cell`], about an octave) holds sinh((c − 1) ln 2) < k ≤ sinh(c ln 2), and its
-//! [`GradedSetup`] (c units of ln 2, a = 1/sinh(c ln 2) ≤ 1/k) serves every k of it, so that a
-//! further k of the cell costs one square root and one division a node (the ellipse solve's
-//! Newton iterates) and what an evaluation returns depends on k alone. Each speed keeps the
-//! layouts it met. The Gauss–Legendre rules come from the shared cache. Node counts and
-//! timings: docs/performance.md.
-//!
-//! **Domain.** 0 ≤ M_R < 1, −1 < ν ≤ 1/2, 1 ≤ k ≤ 2^180 ([`K_MAX_LOG2`]), else
-//! [`Error::Domain`]. The left half's x-range, and with it the work, grows like log₂ k (and like
-//! log₂(1/ε) only while kε > 1/4, i.e. by at most two units).
-//!
-//! **Accuracy.** Relative error of I1, I2 below [`BOUND_EPS`]·ε, reported as `error_estimate`;
-//! checked against the adaptive route at 400 bits in `tests/unit/graded.rs`, with the derivatives and
-//! with layouts for other cells. The measured worst errors, and the margin of the node counts
-//! of [`left_nodes`], are in docs/calibration.md.
+//! - **Left half** (w = tan α): w = a sinh x sends every singularity (at heights ≥ a on the
+//!   imaginary axis) to the edge of the strip |Im x| < π/2; the x-range is cut into panels of
+//!   ℓ·ln 2, ℓ = 1…[`MAX_UNITS`], of [`left_nodes`] nodes each, the lengths picked by
+//!   [`left_plan`] (fewest nodes), every e^{±x} a cached power of 2^{1/2} times 2^{±c}.
+//! - **The Rayleigh pole**, when kε ≤ 1/4, is taken out in closed form and the panels stop at
+//!   a ≤ min(1/k, δ), so that the work does not grow with log(1/ε); above, the panels reach ε.
+//! - **Right half** (v = cot α): one panel of [`panel_nodes`] nodes.
+//! - **Layouts** on a fixed grid in ln k ([`layout_cell`], about an octave), one
+//!   [`GradedSetup`] a cell kept with the speed: a further k of the cell costs one square root and
+//!   one division a node, and what an evaluation returns depends on k alone.
+//! - **Domain** 1 ≤ k ≤ 2^180 ([`K_MAX_LOG2`]), else [`Error::Domain`]; **accuracy**: relative
+//!   error of I1, I2 below [`BOUND_EPS`]·ε, checked against the adaptive route at 400 bits in
+//!   `tests/unit/graded.rs`; measured worst errors in docs/calibration.md.
 
 use super::guard::{run_guarded, GuardedJob};
 use super::speed_consts::SpeedConsts;
@@ -85,7 +36,7 @@ pub(super) use sums::NodeTables;
 use sums::{chunked_sums, kernel_powers, CHUNK};
 pub(super) use sums::{dot, power_sums, Kernel};
 
-/// The a-priori bound on the relative error of I1 and I2 in units of ε (see the module docs).
+/// The a-priori bound on the relative error of I1 and I2 in units of ε (docs/fixed-rules.md).
 pub const BOUND_EPS: i64 = 32;
 
 /// Nodes of the right half's single panel at a working precision of `bits` bits: 17 at `f64`,
@@ -399,14 +350,14 @@ fn check_k<T: Real>(k: &T) -> Result<()> {
 
 /// The k-independent part of the graded route for one material and speed: panels laid out for
 /// axis ratios up to `k_max`, G at every node. It serves every 1 ≤ k ≤ k_max with the same
-/// accuracy bound (module docs: the map's scale a is at most 1/k_max, so every branch point
+/// accuracy bound (docs/fixed-rules.md: the map's scale a is at most 1/k_max, so every branch point
 /// of u^{−3/2} stays at |Im x| ≥ π/2; smaller k only moves them away), so that Newton's method on
 /// (33) pays the square roots and the division of G once and then one square root and one
 /// division a node per k.
 ///
 /// Stored per node, weights included: on the left (w = a sinh x, s = w²) f = (2/m1) D′ √e1/(Q′ h)
 /// times dw/dx with a/h = f·u^{−3/2}, u = 1 + k²s, h = s + ε², and s·f, s²·f (or, with the pole
-/// subtracted, a·u^{3/2}, 1/h and the weight apart: module docs); on the right
+/// subtracted, a·u^{3/2}, 1/h and the weight apart: docs/fixed-rules.md); on the right
 /// (σ = v²) f = (2/m1) √f1 D′/E with b W3 = f·(σ + k²)^{−3/2}, σ·f and σ²·f. An evaluation forms
 /// u^{−3/2} (and u^{−5/2} for the derivatives) at the nodes, then weighted sums panel by panel.
 #[derive(Clone, Debug)]
@@ -430,7 +381,7 @@ enum LeftHalf<T: Real> {
     Resolved(NodeTables<T>),
     /// s, F = (2/m1) D′ √e1/Q′ (so that a = F·u^{−3/2}), 1/h and the weight, with the pole's
     /// closed-form constants: the panels stop at min(1/k_max, δ), below which only the
-    /// subtracted pole lies (module docs).
+    /// subtracted pole lies (docs/fixed-rules.md).
     Subtracted {
         tables: [Vec<T>; 4],
         /// The speed's constants: ε², the pole's strength and atan(1/ε)/ε among them.
@@ -515,7 +466,7 @@ fn cell_top<T: Real>(c: usize, p: T::Prec) -> T {
 }
 
 /// The layout cell of `k` (1 ≤ k ≤ 2^180, else [`Error::Domain`]): the least c ≥ 2 with
-/// k ≤ sinh(c ln 2) (a = 1/sinh(c ln 2) ≤ 1/k: module docs), ⌊log₂ k⌋ + 2 or one more just
+/// k ≤ sinh(c ln 2) (a = 1/sinh(c ln 2) ≤ 1/k: docs/fixed-rules.md), ⌊log₂ k⌋ + 2 or one more just
 /// below a power of 2, by exact comparisons: a fixed grid in ln k.
 pub(crate) fn layout_cell<T: Real>(k: &T) -> Result<usize> {
     check_k(k)?;

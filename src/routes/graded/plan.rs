@@ -9,7 +9,7 @@ pub const MAX_UNITS: usize = 8;
 /// ⌈c·(bits + 8)⌉ with c = ln 2/(2 ln ρ) and ρ = h + √(h² + 1), h = π/(units·ln 2), the
 /// Bernstein ellipse of the panel that just reaches the strip |Im x| < π/2 where every
 /// singularity lies: ρ^{−2n} ≤ 2^{−bits−8}. The 2^8 covers the measured constant of the u^{−5/2}
-/// branch points on the strip's edge with a margin of about two bits (module docs). At `f64`
+/// branch points on the strip's edge with a margin of about two bits (docs/fixed-rules.md). At `f64`
 /// 10, 14, 18, 22, 26, 31, 35, 40 for units 1…8; at double-double 18, 26, 33, 41, 49, 57, 65,
 /// 74; at 256 bits 42, 59, 77, 95, 113, 132, 151, 170.
 /// Node counts for (46)–(47); implements no equation.
