@@ -1,11 +1,6 @@
 //! Gauss–Legendre nodes and weights at any precision: the construction behind
-//! [`crate::numerics::quadrature::GaussLegendre`].
-//!
-//! **Targets up to 53 bits** (`reference_build` in double-double): Newton's method on the
-//! three-term recurrence from asymptotic initial values, every node polished in `Dd` and rounded
-//! once. About `n²` double-double operations a rule.
-//!
-//! **Above 53 bits** (`build_fast`), each node in three stages, the precision rising:
+//! [`crate::numerics::quadrature::GaussLegendre`], each node in three stages, the precision
+//! rising:
 //!
 //! 1. *`f64`*: an asymptotic initial value (`seed`: the Bessel-zero formula of Gatteschi and
 //!    Pittaluga near the ends, Tricomi's expansion in the interior), Newton on the recurrence in
@@ -27,12 +22,13 @@
 //!
 //! A rule of n nodes at p bits costs n²/2 fixed-point steps of `O(p/64)` word operations and
 //! `O(n·p/80)` products at falling precision, against `O(n²)` p-bit products for Newton on the
-//! recurrence at the target precision (`reference_build`; `benches/precision_scaling.rs`
-//! measures both). The nodes are independent and built on every core
+//! recurrence at the target precision (the unit tests' reference construction). The nodes are
+//! independent and built on every core
 //! (`numerics::shares::map_on_threads`); rules are kept per (n, precision) (`raw_rule`), and one
 //! built at a higher precision is rounded down for a lower one. The values are computed `GUARD`
 //! bits beyond the target and rounded once by the caller: every node and weight correctly
-//! rounded or one ulp off (`tests/quadrature.rs`, against `reference_build` at 256 and 1024 bits).
+//! rounded or one ulp off (`tests/unit/gauss_legendre.rs`, against Newton on the recurrence at
+//! the guard precision, at `f64` and 256 to 8192 bits).
 //! No item of this module implements a formula of the paper.
 
 use crate::error::{Error, Result};
@@ -152,70 +148,6 @@ pub(crate) fn seed(n: usize, k: usize) -> f64 {
 /// The `f64` node: [`seed`] polished by Newton's method in `f64`.
 fn node_f64(n: usize, k: usize) -> Result<f64> {
     polish_node::<f64>(n, seed(n, k), 40)
-}
-
-/// Nonnegative nodes (decreasing) and weights of the n-point rule, computed in `U` (precision
-/// `q`) accurately enough to be rounded to a target of `target_bits` bits: Newton's method on
-/// the recurrence at the precision of `U`, from the `f64` nodes. `O(n²)` operations in `U`.
-///
-/// Each pass doubles the correct bits. The weight `w(x) = 2/((1 − x²) P_n'(x)²)` comes from the
-/// same pass: at the last iterate `x` with step `dx` (root `x − dx`),
-/// `w(x − dx) = w(x)·(1 + 2x·dx/(1 − x²)) + O(n⁴dx²)`, since `d ln w/dx = −2x/(1 − x²)` at a root
-/// (Legendre's equation). The pass is the last once `4(n+1)⁴dx² ≤ 2^-6 ε_target`, which also
-/// makes Newton's own remaining error `≈ n² dx²/6` negligible.
-pub(crate) fn reference_build<U: Real>(
-    n: usize,
-    q: U::Prec,
-    target_bits: u32,
-) -> Result<(Vec<U>, Vec<U>)> {
-    let m = n.div_ceil(2);
-    let cap = 10 + 2 * U::bits(q).max(2).ilog2() as usize;
-    let enough = U::one(q).mul_pow2(-(target_bits as i32) - 5);
-    let n1 = U::from_i64(n as i64 + 1, q).powi(4).mul_i64(4);
-    let mut nodes = Vec::with_capacity(m);
-    let mut weights = Vec::with_capacity(m);
-    for k in 1..=m {
-        let mut x = if 2 * k - 1 == n {
-            // The middle node of an odd rule is 0 by symmetry (then P_n(0) = 0 exactly).
-            U::zero(q)
-        } else {
-            U::from_f64(node_f64(n, k)?, q)
-        };
-        let mut prev: Option<U> = None;
-        let mut done = false;
-        for it in 0..cap {
-            let (pn, d, omx2) = legendre_scaled(n, &x);
-            let dx = pn * &omx2 / &d;
-            let w = omx2.clone().mul_i64(2) / d.square();
-            let adx = dx.clone().abs();
-            let diverging = prev.as_ref().is_some_and(|pv| adx >= *pv && !adx.is_zero());
-            if !adx.is_finite() || !w.is_finite() || diverging {
-                return Err(Error::NoConvergence {
-                    what: "Gauss-Legendre node (Newton at guard precision)",
-                    iterations: it,
-                    reached: short(&adx),
-                });
-            }
-            if n1.clone() * &adx.square() <= enough {
-                let corr = (x.clone() * &dx).mul_pow2(1) / &omx2;
-                weights.push(w.clone() + &(w * &corr));
-                x -= dx;
-                done = true;
-                break;
-            }
-            x -= dx;
-            prev = Some(adx);
-        }
-        if !done {
-            return Err(Error::NoConvergence {
-                what: "Gauss-Legendre node (Newton at guard precision)",
-                iterations: cap,
-                reached: prev.as_ref().map(short).unwrap_or_default(),
-            });
-        }
-        nodes.push(x);
-    }
-    Ok((nodes, weights))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -545,7 +477,7 @@ fn store() -> &'static Store {
     STORE.get_or_init(Default::default)
 }
 
-/// The n-point rule for targets of `target_bits` bits (> 53): the most precise one built so far
+/// The n-point rule for targets of `target_bits` bits: the most precise one built so far
 /// for n if it is at least as precise as `target_bits` + [`GUARD`] (a higher precision rounds
 /// down), else a new one by [`build_fast`], kept in its place.
 pub(crate) fn raw_rule(n: usize, target_bits: u32) -> Result<Arc<RawRule>> {

@@ -16,7 +16,7 @@
 use super::gauss_legendre;
 use super::sum::CompSum;
 use crate::error::{Error, Result};
-use crate::scalar::{short, Dd, Real};
+use crate::scalar::{short, Real};
 use std::any::{Any, TypeId};
 use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
@@ -94,7 +94,7 @@ where
     }
 }
 
-/// The [`FixedSlot`] of `$rule<T>` for `T` = `f64` or [`Dd`], `None` for other types: expands to
+/// The [`FixedSlot`] of `$rule<T>` for `T` = `f64` or [`crate::scalar::Dd`], `None` for other types: expands to
 /// a function `fn $name<T: Real>() -> Option<&'static FixedSlot<$rule<T>>>`.
 macro_rules! fixed_slot {
     ($name:ident, $rule:ident) => {
@@ -117,7 +117,7 @@ macro_rules! fixed_slot {
 }
 pub(crate) use fixed_slot;
 
-/// Forgets every rule of the shared cache and every Gauss–Legendre rule built above 53 bits, so
+/// Forgets every rule of the shared cache and every Gauss–Legendre rule's raw values, so
 /// that the next request builds them again (for measuring first-use costs in one process; the
 /// rules of `f64` and double-double stay in their slots), or for giving back the memory of
 /// rules built at a high precision that is no longer used. Rules already handed out stay valid.
@@ -156,13 +156,12 @@ pub fn check_rule_bits(bits: u32) -> Result<()> {
 /// Only the nonnegative half of the symmetric rule is stored: nodes `x₁ > x₂ > … ≥ 0` (the last
 /// is `0` when `n` is odd) and their weights.
 ///
-/// Accuracy: the rule is built at a guard precision (double-double for targets of at most 53
-/// bits, 32 extra bits otherwise) and rounded once, so every node and weight is the
+/// Accuracy: the rule is built at a guard precision (32 bits beyond the target) and rounded once, so every node and weight is the
 /// working-precision number nearest to the exact one (within ε/2 relative, checked against
 /// 200–400-bit rules by the tests); at `f64` the weights sum to 2 within ε/2.
 ///
 /// Work: the first request for (n, precision) builds the rule (`numerics/gauss_legendre.rs`:
-/// about n² double-double operations up to 53 bits, n²·bits/128 word operations above); later
+/// about n²·bits/128 word operations); later
 /// requests are a cache lookup, or round down a rule of the same n built at a higher precision.
 #[derive(Debug)]
 pub struct GaussLegendre<T: Real> {
@@ -170,13 +169,6 @@ pub struct GaussLegendre<T: Real> {
     prec: T::Prec,
     nodes: Vec<T>,
     weights: Vec<T>,
-}
-
-/// Values of one real type rounded once into another (through an exact MPFR copy).
-fn convert<U: Real, T: Real>(v: &[U], p: T::Prec) -> Vec<T> {
-    v.iter()
-        .map(|u| T::from_float(&u.to_float(U::bits(u.prec())), p))
-        .collect()
 }
 
 impl<T: Real> GaussLegendre<T> {
@@ -210,15 +202,9 @@ impl<T: Real> GaussLegendre<T> {
 
     fn compute(n: usize, p: T::Prec) -> Result<Self> {
         // Computed beyond the target and rounded once (`numerics/gauss_legendre.rs`).
-        let bits = T::bits(p);
-        let (nodes, weights) = if bits <= 53 {
-            let (x, w) = gauss_legendre::reference_build::<Dd>(n, (), bits)?;
-            (convert::<Dd, T>(&x, p), convert::<Dd, T>(&w, p))
-        } else {
-            let raw = gauss_legendre::raw_rule(n, bits)?;
-            let round = |v: &[rug::Float]| v.iter().map(|f| T::from_float(f, p)).collect();
-            (round(&raw.nodes), round(&raw.weights))
-        };
+        let raw = gauss_legendre::raw_rule(n, T::bits(p))?;
+        let round = |v: &[rug::Float]| v.iter().map(|f| T::from_float(f, p)).collect::<Vec<_>>();
+        let (nodes, weights) = (round(&raw.nodes), round(&raw.weights));
         // Guard against Newton landing on a neighbouring root: nodes must decrease strictly
         // and every weight be positive and finite.
         let ordered = nodes.windows(2).all(|w| w[0] > w[1])
