@@ -212,7 +212,7 @@ fn study_integrals(out: &Path) -> Result<(), CliError> {
         &rows,
         |r| {
             vec![
-                r.mr.clone(),
+                format!("{}", r.mr),
                 r.method.label().to_string(),
                 r.precision.label(),
                 format!("{:.3e}", r.error),
@@ -226,7 +226,11 @@ fn study_integrals(out: &Path) -> Result<(), CliError> {
     draw_integrals(out)?;
     let columns = "M_R|method|precision|rel. error|estimate|time|work";
     let table = rows.iter().map(|r| {
-        let lead = [r.mr.clone(), r.method.label().into(), r.precision.label()];
+        let lead = [
+            r.mr.to_string(),
+            r.method.label().into(),
+            r.precision.label(),
+        ];
         let cells = vec![
             format!("{:.1e}", r.error),
             format!("{:.1e}", r.estimate),
