@@ -3,6 +3,9 @@
 
 use super::{Chart, Heatmap, Series, Style};
 
+/// A rectangle x0, y0, x1, y1.
+type Rect = (f64, f64, f64, f64);
+
 /// The number after `key` (`x="` …) in `tag`.
 fn num(tag: &str, key: &str) -> f64 {
     let i = tag.find(key).unwrap_or_else(|| panic!("{key} in {tag}")) + key.len();
@@ -12,7 +15,7 @@ fn num(tag: &str, key: &str) -> f64 {
 
 /// The plot area (x0, y0, x1, y1) and every data point of `svg`: markers, line vertices and
 /// heat-map cell corners.
-fn area_and_points(svg: &str) -> ((f64, f64, f64, f64), Vec<(f64, f64)>) {
+fn area_and_points(svg: &str) -> (Rect, Vec<(f64, f64)>) {
     let a = &svg[svg.find(r#"class="plot-area""#).expect("a plot area")..];
     let (x, y) = (num(a, r#"x=""#), num(a, r#"y=""#));
     let area = (x, y, x + num(a, r#"width=""#), y + num(a, r#"height=""#));
