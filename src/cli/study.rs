@@ -437,14 +437,7 @@ fn study_recursion(out: &Path) -> Result<(), CliError> {
     csv(out, "data/recursion_growth.csv", "k2,precision,predicted_bits_per_step,measured_L,measured_M,total_loss_n,predicted_total_loss_n,worst_err_eps,n_max", &gcsv, Vec::clone)?;
     charts(out, series::forward_charts(&points, &growth))?;
     write_condition_maps(out)?;
-    text(out, "data/recursion_summary.md", &md)?;
-    say!("{md}");
-    say!(
-        "wrote CSV under {} and charts under {}",
-        out.join("data").display(),
-        out.join("figures").display()
-    );
-    Ok(())
+    summarise(out, "data/recursion_summary.md", &md, &out.join("data"))
 }
 
 /// The recursion study's growth table: Markdown for the summary and CSV rows.
