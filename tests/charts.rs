@@ -10,7 +10,7 @@
 
 use std::path::{Path, PathBuf};
 
-/// The estimated width of a character, as a fraction of the font size (svg.rs's `TEXT_EM`).
+/// The estimated width of a character, as a fraction of the font size (svg.rs's `EM`).
 const TEXT_EM: f64 = 0.6;
 /// Coordinates are written to a hundredth of a pixel.
 const SLACK: f64 = 0.01;

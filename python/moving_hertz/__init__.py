@@ -172,14 +172,14 @@ def integrals(nu, *, speed=None, gap=None, k=None, precision=None, tol=None, met
 def symbolic_coefficients(n, *, format="sympy"):
     """The coefficients f_n = F_n(ν) xⁿ (x = M2²), n = 0 … ``n`` (1 <= n <= 120), of the series
     (35)-(36) of the Green's function, exact rational functions of ν, as text: ``format``
-    "sympy" (``name = expression`` lines for ``sympy.sympify``), "text", "latex" or "json"."""
+    "sympy" (``name = expression`` lines for ``sympy.sympify``) or "text"."""
     return _native.symbolic("coefficients", _count(n), format)
 
 
 def symbolic_moments(n, *, format="sympy"):
     """α_n, β_n, γ_n, δ_n(e²), n = 0 … ``n`` (1 <= n <= 150), of (40) and (42):
     L_n = α_n K + β_n E, M_n = γ_n K + δ_n E, e² = 1 - k², exact rational functions of e², as
-    text in ``format`` ("sympy", "text", "latex" or "json")."""
+    text in ``format`` ("sympy" or "text")."""
     return _native.symbolic("moments", _count(n), format)
 
 

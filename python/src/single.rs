@@ -463,8 +463,8 @@ fn report<'py, T: Real>(
 }
 
 /// The coefficients of (36) (`coefficients`: f_n = F_n(ν) xⁿ, n ≤ N, then the paper's printed
-/// f1, f2) or of (40) (`moments`: α_n … δ_n(e²)), exact, rendered as `text`, `latex`, `sympy`
-/// or `json` (as `moving-hertz symbolic KIND --n N --format FORMAT` prints them).
+/// f1, f2) or of (40) (`moments`: α_n … δ_n(e²)), exact, rendered as `text` or `sympy` (as
+/// `moving-hertz symbolic KIND --n N --format FORMAT` prints them).
 #[pyfunction]
 pub fn symbolic(py: Python<'_>, kind: &str, n: usize, format: &str) -> PyResult<String> {
     use moving_hertz::symbolic::{
@@ -472,12 +472,9 @@ pub fn symbolic(py: Python<'_>, kind: &str, n: usize, format: &str) -> PyResult<
     };
     let style = match format {
         "text" => Style::Text,
-        "latex" => Style::Latex,
         "sympy" => Style::Sympy,
-        "json" => Style::Json,
         _ => {
-            let message =
-                format!("format = {format:?} is not one of 'text', 'latex', 'sympy', 'json'");
+            let message = format!("format = {format:?} is not one of 'text', 'sympy'");
             return Err(Fail::Arg {
                 argument: "format",
                 message,

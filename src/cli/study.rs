@@ -4,8 +4,8 @@
 use super::args::OutDir;
 use super::progress::Progress;
 use super::CliError;
-use crate::studies::{self, integrals, pareto, poisson, rayleigh, series, stability};
-use moving_hertz::Method;
+use crate::studies::{self, integrals, pareto, poisson, rayleigh, series, stability, Timed};
+use moving_hertz::{Method, Route};
 use std::path::{Path, PathBuf};
 
 /// `println!` through [`super::output::emit`]: a closed or full standard output stops the
@@ -137,21 +137,6 @@ fn md_table(columns: &str, rows: impl IntoIterator<Item = Vec<String>>) -> Strin
     md
 }
 
-/// A timing study's row in its Markdown table: the `lead` cells, then `cells` or, where the run
-/// failed, the failure and blank cells to the table's `width`.
-fn timed_row(lead: [String; 3], failure: &Option<String>, cells: Vec<String>) -> Vec<String> {
-    let width = lead.len() + cells.len();
-    let mut row = lead.to_vec();
-    match failure {
-        None => row.extend(cells),
-        Some(f) => {
-            row.push(format!("failed: {f}"));
-            row.resize(width, String::new());
-        }
-    }
-    row
-}
-
 fn study_rayleigh(out: &Path) -> Result<(), CliError> {
     let nus = rayleigh::nu_grid();
     note!(
@@ -205,43 +190,71 @@ fn study_integrals(out: &Path) -> Result<(), CliError> {
     let (nu, k) = ("0.2", "0.3");
     let rows = integrals::run(nu, k, 60.0, |mr| note!("integrals: M_R = {mr} ..."))
         .map_err(CliError::lib)?;
-    let data = csv(
-        out,
-        INTEGRALS_CSV,
-        "mr,method,precision,rel_error,error_estimate,time_ns,work,failure",
-        &rows,
-        |r| {
-            vec![
-                r.mr.clone(),
-                r.method.label().to_string(),
-                r.precision.label(),
-                format!("{:.3e}", r.error),
-                format!("{:.3e}", r.estimate),
-                format!("{:.1}", r.time_ns),
-                r.work.to_string(),
-                r.failure.clone().unwrap_or_default().replace(',', ";"),
-            ]
-        },
-    )?;
+    let data = timed_outputs(out, INTEGRALS_CSV, &rows, Route::label, "µs")?;
     draw_integrals(out)?;
-    let columns = "M_R|method|precision|rel. error|estimate|time|work";
-    let table = rows.iter().map(|r| {
-        let lead = [r.mr.clone(), r.method.label().into(), r.precision.label()];
-        let cells = vec![
-            format!("{:.1e}", r.error),
-            format!("{:.1e}", r.estimate),
-            format!("{:.3} µs", r.time_ns / 1e3),
-            r.work.to_string(),
-        ];
-        timed_row(lead, &r.failure, cells)
-    });
-    super::output::emit(&md_table(columns, table))?;
     say!(
         "wrote {} and charts under {} (nu = {nu}, k = {k})",
         data.display(),
         out.join("figures").display()
     );
     Ok(())
+}
+
+/// A timing study's CSV data (`file`; integrals' with the work, pareto's with the bits) and
+/// its Markdown table on standard output (the time in `unit`, µs or ms; a failed run's
+/// failure in place of its numbers).
+fn timed_outputs<M: Copy>(
+    out: &Path,
+    file: &str,
+    rows: &[Timed<M>],
+    label: fn(&M) -> &'static str,
+    unit: &str,
+) -> Result<PathBuf, CliError> {
+    let ms = unit == "ms";
+    let header = if ms {
+        "mr,method,precision,bits,k_rel_error,error_estimate,time_ns,failure"
+    } else {
+        "mr,method,precision,rel_error,error_estimate,time_ns,work,failure"
+    };
+    let data = csv(out, file, header, rows, |r| {
+        let (bits, work) = (r.precision.bits().to_string(), r.work.to_string());
+        let mut row = vec![
+            r.mr.to_string(),
+            label(&r.method).into(),
+            r.precision.label(),
+        ];
+        row.extend(ms.then_some(bits));
+        row.extend([r.error, r.estimate].map(|x| format!("{x:.3e}")));
+        row.push(format!("{:.1}", r.time_ns));
+        row.extend((!ms).then_some(work));
+        row.push(r.failure.clone().unwrap_or_default().replace(',', ";"));
+        row
+    })?;
+    let columns = if ms {
+        "M_R|method|precision|error of k|estimate|time per solve"
+    } else {
+        "M_R|method|precision|rel. error|estimate|time|work"
+    };
+    let table = rows.iter().map(|r| {
+        let mut row = vec![
+            r.mr.to_string(),
+            label(&r.method).into(),
+            r.precision.label(),
+        ];
+        let width = if ms { 6 } else { 7 };
+        if let Some(f) = &r.failure {
+            row.push(format!("failed: {f}"));
+        } else {
+            row.extend([r.error, r.estimate].map(|x| format!("{x:.1e}")));
+            let scale = if ms { 1e6 } else { 1e3 };
+            row.push(format!("{:.3} {unit}", r.time_ns / scale));
+            row.extend((!ms).then(|| r.work.to_string()));
+        }
+        row.resize(width, String::new());
+        row
+    });
+    super::output::emit(&md_table(columns, table))?;
+    Ok(data)
 }
 
 /// A timing study's charts, drawn by `draw` from the rows `read` takes from its CSV data
@@ -343,40 +356,8 @@ fn study_poisson(out: &Path) -> Result<(), CliError> {
 fn study_pareto(out: &Path) -> Result<(), CliError> {
     let rows = pareto::run(&PARETO_METHODS, 200.0, |what| note!("pareto: {what} ..."))
         .map_err(CliError::lib)?;
-    let data = csv(
-        out,
-        PARETO_CSV,
-        "mr,method,precision,bits,k_rel_error,error_estimate,time_ns,failure",
-        &rows,
-        |r| {
-            vec![
-                format!("{}", r.mr),
-                r.method.label().to_string(),
-                r.precision.label(),
-                r.precision.bits().to_string(),
-                format!("{:.3e}", r.error),
-                format!("{:.3e}", r.estimate),
-                format!("{:.1}", r.time_ns),
-                r.failure.clone().unwrap_or_default().replace(',', ";"),
-            ]
-        },
-    )?;
+    let data = timed_outputs(out, PARETO_CSV, &rows, Method::label, "ms")?;
     draw_pareto(out)?;
-    let columns = "M_R|method|precision|error of k|estimate|time per solve";
-    let table = rows.iter().map(|r| {
-        let lead = [
-            r.mr.to_string(),
-            r.method.label().into(),
-            r.precision.label(),
-        ];
-        let cells = vec![
-            format!("{:.1e}", r.error),
-            format!("{:.1e}", r.estimate),
-            format!("{:.3} ms", r.time_ns / 1e6),
-        ];
-        timed_row(lead, &r.failure, cells)
-    });
-    super::output::emit(&md_table(columns, table))?;
     say!("wrote {} and figures/pareto_*.svg", data.display());
     Ok(())
 }
@@ -456,14 +437,7 @@ fn study_recursion(out: &Path) -> Result<(), CliError> {
     csv(out, "data/recursion_growth.csv", "k2,precision,predicted_bits_per_step,measured_L,measured_M,total_loss_n,predicted_total_loss_n,worst_err_eps,n_max", &gcsv, Vec::clone)?;
     charts(out, series::forward_charts(&points, &growth))?;
     write_condition_maps(out)?;
-    text(out, "data/recursion_summary.md", &md)?;
-    say!("{md}");
-    say!(
-        "wrote CSV under {} and charts under {}",
-        out.join("data").display(),
-        out.join("figures").display()
-    );
-    Ok(())
+    summarise(out, "data/recursion_summary.md", &md, &out.join("data"))
 }
 
 /// The recursion study's growth table: Markdown for the summary and CSV rows.

@@ -1,7 +1,7 @@
-//! `moving-hertz symbolic coefficients|moments --n N [--format text|latex|sympy|json]`: the
-//! coefficients of (36) as rational functions of ν and those of (40) as rational functions of e²,
-//! exact (`moving_hertz::symbolic`); `symbolic condition --n N [--format text|json]`: what the
-//! closed forms say about the K, E basis (the pole at e² = 0, the bits lost on a grid of e²).
+//! `moving-hertz symbolic coefficients|moments --n N [--format text|sympy]`: the coefficients of
+//! (36) as rational functions of ν and those of (40) as rational functions of e², exact
+//! (`moving_hertz::symbolic`); `symbolic condition --n N`: what the closed forms say about the
+//! K, E basis (the pole at e² = 0, the bits lost on a grid of e²).
 
 use super::output::emit;
 use super::CliError;
@@ -41,7 +41,7 @@ fn n_grid(n: usize) -> Vec<usize> {
 
 /// The pole of α_n, β_n at e² = 0 and the bits lost by α_n K + β_n E on [`E2_GRID`], as the
 /// text to print.
-fn condition(forms: &[KeTerm<RatFunc>], style: Style) -> Result<String, String> {
+fn condition(forms: &[KeTerm<RatFunc>]) -> Result<String, String> {
     let n = forms.len() - 1;
     let ns = n_grid(n);
     let poles = pole_terms(forms);
@@ -50,32 +50,6 @@ fn condition(forms: &[KeTerm<RatFunc>], style: Style) -> Result<String, String> 
         let q = decimal_to_rational(e2).map_err(|e| e.to_string())?;
         let bits = ke_condition(forms, &q).map_err(|e| e.to_string())?;
         rows.push((e2, ns.iter().map(|&k| bits[k].0).collect::<Vec<f64>>()));
-    }
-    if style == Style::Json {
-        let poles: Vec<String> = ns
-            .iter()
-            .map(|&k| {
-                let t = &poles[k];
-                format!(
-                    "{{\"n\": {}, \"order\": {}, \"a_n\": \"{}\", \"b_n\": \"{}\"}}",
-                    t.n, t.order, t.alpha, t.beta
-                )
-            })
-            .collect();
-        let rows: Vec<String> = rows
-            .iter()
-            .map(|(e2, b)| {
-                let b: Vec<String> = b.iter().map(|x| format!("{x:.3}")).collect();
-                format!("{{\"e2\": \"{e2}\", \"bits_lost_L\": [{}]}}", b.join(", "))
-            })
-            .collect();
-        let ns: Vec<String> = ns.iter().map(|k| k.to_string()).collect();
-        return Ok(format!(
-            "{{\n  \"n\": [{}],\n  \"pole_at_e2_0\": [\n    {}\n  ],\n  \"condition\": [\n    {}\n  ]\n}}\n",
-            ns.join(", "),
-            poles.join(",\n    "),
-            rows.join(",\n    ")
-        ));
     }
     let mut out = String::new();
     let _ = writeln!(
@@ -117,9 +91,8 @@ pub struct SymbolicArgs {
     /// condition (each derived in about a second).
     #[arg(long, value_name = "N")]
     pub n: usize,
-    /// Output: plain text, LaTeX (align*), sympy (`name = expression` lines that
-    /// `sympy.sympify` parses, in the variables nu, x, e2) or JSON. `condition` prints text or
-    /// JSON.
+    /// Output: plain text or sympy (`name = expression` lines that `sympy.sympify` parses, in
+    /// the variables nu, x, e2). `condition` prints text.
     #[arg(long, value_enum, default_value = "text")]
     pub format: SymbolicFormat,
 }
@@ -132,7 +105,7 @@ pub enum SymbolicKind {
     /// α_n, β_n, γ_n, δ_n(e²), n = 0 … N: L_n = α_n K + β_n E, M_n = γ_n K + δ_n E.
     Moments,
     /// From the closed forms: the pole of α_n, β_n at e² = 0 and the bits lost by the K, E basis
-    /// on a grid of e² (text or JSON only).
+    /// on a grid of e² (text only).
     Condition,
 }
 
@@ -141,12 +114,8 @@ pub enum SymbolicKind {
 pub enum SymbolicFormat {
     /// Plain text.
     Text,
-    /// LaTeX (`align*`).
-    Latex,
     /// `name = expression` lines for `sympy.sympify`.
     Sympy,
-    /// JSON with the canonical coefficient lists.
-    Json,
 }
 
 /// Derives and prints the functions of `kind` for indices 0 … `n` in `format`.
@@ -161,18 +130,16 @@ pub fn run(kind: SymbolicKind, n: usize, format: SymbolicFormat) -> Result<(), C
     }
     let style = match format {
         SymbolicFormat::Text => Style::Text,
-        SymbolicFormat::Latex => Style::Latex,
         SymbolicFormat::Sympy => Style::Sympy,
-        SymbolicFormat::Json => Style::Json,
     };
     let err = |e: moving_hertz::Error| CliError::Failed(e.to_string());
     if kind == SymbolicKind::Condition {
-        if !matches!(style, Style::Text | Style::Json) {
+        if style != Style::Text {
             return Err(CliError::Input(
-                "invalid value for '--format': `symbolic condition` prints text or json".into(),
+                "invalid value for '--format': `symbolic condition` prints text".into(),
             ));
         }
-        let text = condition(&moment_forms(n).map_err(err)?, style).map_err(CliError::Failed)?;
+        let text = condition(&moment_forms(n).map_err(err)?).map_err(CliError::Failed)?;
         return emit(&text);
     }
     let (title, items) = match kind {

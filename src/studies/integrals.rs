@@ -32,26 +32,8 @@ fn run_route<T: Real>(method: Method, (s, a): &Prepared<T>) -> moving_hertz::Res
     integrals(s, &a.k, &opts)
 }
 
-/// One measurement.
-#[derive(Clone, Debug)]
-pub struct Row {
-    /// M_R as text (exact decimal).
-    pub mr: String,
-    /// The route.
-    pub method: Route,
-    /// The precision.
-    pub precision: Precision,
-    /// Worst relative error of I1, I2 against the reference (NaN on failure).
-    pub error: f64,
-    /// The method's own error estimate (NaN on failure).
-    pub estimate: f64,
-    /// Median time per evaluation of I1 and I2 together, ns (NaN on failure).
-    pub time_ns: f64,
-    /// Terms or evaluations.
-    pub work: usize,
-    /// Why the method failed, if it did.
-    pub failure: Option<String>,
-}
+/// One measurement: a route at one precision and speed.
+pub type Row = super::Timed<Route>;
 
 /// The speeds of the study: 0.1, 0.5, 0.9, 0.99, 0.999, 0.9999, 1 − 10^-8.
 pub const SPEEDS: [&str; 7] = ["0.1", "0.5", "0.9", "0.99", "0.999", "0.9999", "0.99999999"];
@@ -77,7 +59,7 @@ fn reference(inputs: &ExactInputs) -> moving_hertz::Result<(Float, Float)> {
     Ok((r.i1.value.to_float(600), r.i2.value.to_float(600)))
 }
 
-/// The row of `route` at precision `label`: its error against the 512-bit reference, its
+/// The row of `method` at precision `p`: its error against the 512-bit reference, its
 /// estimate, work and median time, or why it failed.
 fn measure<T: Real>(
     exact: &ExactInputs,
@@ -86,44 +68,25 @@ fn measure<T: Real>(
     (route, method): (Route, Method),
     budget_ms: f64,
 ) -> Row {
-    let mut row = Row {
-        // The speed as the charts look it up: M_R rounded to the nearest `f64` (0.1 prints as 0.1).
-        mr: format!("{}", rug::Float::with_val(53, exact.mr()).to_f64()),
-        method: route,
-        precision: label,
-        error: f64::NAN,
-        estimate: f64::NAN,
-        time_ns: f64::NAN,
-        work: 0,
-        failure: None,
-    };
-    row.failure = timed::<T>(exact, p, method, budget_ms, &mut row).err();
-    row
-}
-
-/// Fills `row`'s error, estimate, work and time for `method` at precision `p`.
-fn timed<T: Real>(
-    exact: &ExactInputs,
-    p: T::Prec,
-    method: Method,
-    budget_ms: f64,
-    row: &mut Row,
-) -> Result<(), String> {
-    let text = |e: moving_hertz::Error| e.to_string();
-    let inputs = (exact.rounded::<T>(p)).map_err(|_| "inputs not representable".to_string())?;
-    let (r1, r2) = reference(&inputs).map_err(text)?;
-    let prepared = (inputs.at::<T>(p))
-        .and_then(|(s, k)| Ok((s, AxisRatio::new(k)?)))
-        .map_err(text)?;
-    let r = run_route::<T>(method, &prepared).map_err(text)?;
-    let err = |got: &T, want: &Float| super::rel_error(got, want, 600);
-    row.error = err(&r.i1.value, &r1).max(err(&r.i2.value, &r2));
-    row.estimate = r.i1.error.to_f64();
-    row.work = r.work;
-    row.time_ns = median_ns(budget_ms, || {
-        run_route::<T>(method, &prepared).map(|r| r.work)
-    });
-    Ok(())
+    // The speed as the charts look it up: M_R rounded to the nearest `f64`.
+    let mr = rug::Float::with_val(53, exact.mr()).to_f64();
+    super::Timed::measure(mr, route, label, |row| {
+        let text = |e: moving_hertz::Error| e.to_string();
+        let inputs = (exact.rounded::<T>(p)).map_err(|_| "inputs not representable".to_string())?;
+        let (r1, r2) = reference(&inputs).map_err(text)?;
+        let prepared = (inputs.at::<T>(p))
+            .and_then(|(s, k)| Ok((s, AxisRatio::new(k)?)))
+            .map_err(text)?;
+        let r = run_route::<T>(method, &prepared).map_err(text)?;
+        let err = |got: &T, want: &Float| super::rel_error(got, want, 600);
+        row.error = err(&r.i1.value, &r1).max(err(&r.i2.value, &r2));
+        row.estimate = r.i1.error.to_f64();
+        row.work = r.work;
+        row.time_ns = median_ns(budget_ms, || {
+            run_route::<T>(method, &prepared).map(|r| r.work)
+        });
+        Ok(())
+    })
 }
 
 /// Runs the study at ν = `nu`, k = `k` (exact decimal text) over [`SPEEDS`], for every method at
@@ -152,26 +115,11 @@ pub fn run(
     Ok(rows)
 }
 
-/// The rows of the study's CSV table (as `moving-hertz study integrals` writes it, header
-/// `mr,method,precision,rel_error,error_estimate,time_ns,work,failure`): the data the charts are
-/// drawn from. An error names the line that does not read.
-/// Reads the measurements of the routes to (34) back; no arithmetic.
+/// The rows of the study's CSV table (as `moving-hertz study integrals` writes it): the data
+/// the charts are drawn from ([`super::Timed::read`]).
 pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
-    table.each(|i| {
-        let (method, failure) = (table.text(i, "method")?, table.failure(i)?);
-        let route = METHODS.into_iter().find(|(r, _)| r.label() == method);
-        Ok(Row {
-            mr: table.text(i, "mr")?,
-            method: route
-                .ok_or_else(|| table.at(i, format!("no route {method:?}")))?
-                .0,
-            precision: table.precision(i, "precision")?,
-            error: table.number(i, "rel_error")?,
-            estimate: table.number(i, "error_estimate")?,
-            time_ns: table.number(i, "time_ns")?,
-            work: table.number(i, "work")?,
-            failure,
-        })
+    Row::read(table, "rel_error", |m| {
+        METHODS.into_iter().map(|(r, _)| r).find(|r| r.label() == m)
     })
 }
 
@@ -180,61 +128,21 @@ pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
 /// and the cost of each route at f64 against 1 − M_R.
 /// Draws the measurements of [`run`] on (34); no arithmetic beyond plotting.
 pub fn charts(rows: &[Row]) -> Vec<(String, String)> {
+    let methods = METHODS.map(|(r, _)| (r.label(), r));
     let mut out = Vec::new();
     for (i, mr) in SPEEDS.iter().enumerate() {
-        let key = format!("{}", mr.parse::<f64>().unwrap_or(0.0));
-        let mut chart = Chart::new(
+        let chart = Chart::new(
             format!("I1, I2 at M_R = {mr}: correct digits against time"),
             "time per evaluation of I1 and I2 (ns)",
             "correct digits of I1, I2, −log₁₀(relative error)",
-        )
-        .log(true, false);
-        for (look, (m, _)) in METHODS.into_iter().enumerate() {
-            let sel: Vec<&Row> = (rows.iter())
-                .filter(|r| r.mr == key && r.method == m)
-                .collect();
-            let pts: Vec<(f64, f64)> = (sel.iter())
-                .filter(|r| r.failure.is_none())
-                .map(|r| {
-                    let full = super::full_digits(r.precision.bits());
-                    (r.time_ns, super::correct_digits(r.error, full))
-                })
-                .collect();
-            // A route that failed at every precision (the series' term cap) is named, not drawn.
-            if !pts.is_empty() {
-                chart.push(Series::new(m.label(), pts, Style::LineMarkers).look(look));
-            }
-            let failed: Vec<String> = (sel.iter())
-                .filter(|r| r.failure.is_some())
-                .map(|r| r.precision.label())
-                .collect();
-            if !failed.is_empty() {
-                chart.notes.push(failure_note(m, &failed, &sel));
-            }
-        }
-        chart
-            .notes
-            .push("points: f64, dd, mpfr128, mpfr256 (ν = 0.2, k = 0.3)".into());
+        );
+        let at = mr.parse::<f64>().unwrap_or(0.0);
+        let mut chart = super::pareto_chart(chart, rows, at, &methods);
+        (chart.notes).push("points: f64, dd, mpfr128, mpfr256 (ν = 0.2, k = 0.3)".into());
         out.push((format!("integrals_pareto_{i}.svg"), chart.to_svg()));
     }
     out.push(("integrals_cost_f64.svg".into(), cost_chart(rows)));
     out
-}
-
-/// The legend's note for a route that failed at the precisions `failed`.
-fn failure_note(m: Route, failed: &[String], sel: &[&Row]) -> String {
-    let why = (sel.iter().find_map(|r| r.failure.as_deref())).map_or("", |f| {
-        if f.contains("cap") {
-            " (term cap)"
-        } else {
-            ""
-        }
-    });
-    if failed.len() == sel.len() {
-        format!("{}: refused at every precision{why}", m.label())
-    } else {
-        format!("{}: refused at {}{why}", m.label(), failed.join(", "))
-    }
 }
 
 /// The cost of each route at f64 against 1 − M_R; the speeds where a route failed are named in
@@ -250,15 +158,14 @@ fn cost_chart(rows: &[Row]) -> String {
         let sel: Vec<&Row> = (rows.iter())
             .filter(|r| r.method == m && r.precision == Precision::F64)
             .collect();
-        let gap = |r: &Row| 1.0 - r.mr.parse::<f64>().unwrap_or(0.0);
         let pts = (sel.iter())
             .filter(|r| r.failure.is_none())
-            .map(|r| (gap(r), r.time_ns))
+            .map(|r| (1.0 - r.mr, r.time_ns))
             .collect();
         cost.push(Series::new(m.label(), pts, Style::LineMarkers));
-        let failed: Vec<&str> = (sel.iter())
+        let failed: Vec<String> = (sel.iter())
             .filter(|r| r.failure.is_some())
-            .map(|r| r.mr.as_str())
+            .map(|r| r.mr.to_string())
             .collect();
         if !failed.is_empty() {
             cost.notes.push(format!(

@@ -119,11 +119,6 @@ impl Table {
     pub fn each<R>(&self, row: impl Fn(usize) -> Result<R, String>) -> Result<Vec<R>, String> {
         (0..self.rows.len()).map(row).collect()
     }
-    /// The failure noted in row `i` (column `failure`), `None` where empty.
-    pub fn failure(&self, i: usize) -> Result<Option<String>, String> {
-        let f = self.text(i, "failure")?;
-        Ok((!f.is_empty()).then_some(f))
-    }
     /// The message `e` about row `i`, naming the file and the line.
     pub fn at(&self, i: usize, e: impl std::fmt::Display) -> String {
         format!("{}: line {}: {e}", self.path, i + 2)
@@ -145,6 +140,121 @@ impl Table {
         let t = self.text(i, name)?;
         Precision::parse(t.strip_prefix("mpfr").unwrap_or(&t)).map_err(|e| self.at(i, e))
     }
+}
+
+/// One measurement of a timing study (`integrals`, `pareto`): a method at one precision and
+/// speed, its error against the study's reference, its own estimate, its work and median time,
+/// or why it failed (then the numbers are NaN). `M` names the method (a route, a method).
+#[derive(Clone, Debug)]
+pub struct Timed<M> {
+    /// M_R.
+    pub mr: f64,
+    /// The method.
+    pub method: M,
+    /// The precision.
+    pub precision: Precision,
+    /// Relative error against the reference.
+    pub error: f64,
+    /// The method's own error estimate.
+    pub estimate: f64,
+    /// Median time per evaluation, ns.
+    pub time_ns: f64,
+    /// Terms or evaluations (0 where the study does not count them).
+    pub work: usize,
+    /// Why the method failed, if it did.
+    pub failure: Option<String>,
+}
+
+impl<M: Copy> Timed<M> {
+    /// The measurement of `method` at `precision`, M_R = `mr`, filled by `measure` (its error
+    /// is the failure).
+    pub fn measure(
+        mr: f64,
+        method: M,
+        precision: Precision,
+        measure: impl FnOnce(&mut Timed<M>) -> Result<(), String>,
+    ) -> Timed<M> {
+        let nan = f64::NAN;
+        let mut t = Timed {
+            mr,
+            method,
+            precision,
+            error: nan,
+            estimate: nan,
+            time_ns: nan,
+            work: 0,
+            failure: None,
+        };
+        t.failure = measure(&mut t).err();
+        t
+    }
+
+    /// The rows of a timing study's CSV table (columns `mr`, `method`, `precision`, `error`
+    /// (the error's column), `error_estimate`, `time_ns`, `failure`, and `work` where the table
+    /// has it), the method read by `method`: the data its charts are drawn from. An error names
+    /// the line that does not read. Reads measurements back; no arithmetic.
+    pub fn read(
+        table: &Table,
+        error: &str,
+        method: impl Fn(&str) -> Option<M>,
+    ) -> Result<Vec<Timed<M>>, String> {
+        table.each(|i| {
+            let (m, f) = (table.text(i, "method")?, table.text(i, "failure")?);
+            Ok(Timed {
+                mr: table.number(i, "mr")?,
+                method: method(&m).ok_or_else(|| table.at(i, format!("no method {m:?}")))?,
+                precision: table.precision(i, "precision")?,
+                error: table.number(i, error)?,
+                estimate: table.number(i, "error_estimate")?,
+                time_ns: table.number(i, "time_ns")?,
+                work: match table.header.iter().any(|h| h == "work") {
+                    true => table.number(i, "work")?,
+                    false => 0,
+                },
+                failure: (!f.is_empty()).then_some(f),
+            })
+        })
+    }
+
+    /// The correct digits (an exact result counts the digits of its precision).
+    pub fn digits(&self) -> f64 {
+        correct_digits(self.error, full_digits(self.precision.bits()))
+    }
+}
+
+/// A timing study's Pareto chart at one speed: correct digits (linear) against time (log), a
+/// line per method of `methods` (label, method) through its precisions in order of time, in the
+/// colour and marker of its place; a method's failures named in the legend, not drawn.
+pub fn pareto_chart<M: Copy + PartialEq>(
+    mut chart: svg::Chart,
+    rows: &[Timed<M>],
+    mr: f64,
+    methods: &[(&str, M)],
+) -> svg::Chart {
+    chart = chart.log(true, false);
+    for (look, &(label, m)) in methods.iter().enumerate() {
+        let sel: Vec<&Timed<M>> = (rows.iter())
+            .filter(|r| r.mr == mr && r.method == m)
+            .collect();
+        let mut pts: Vec<(f64, f64)> = (sel.iter())
+            .filter(|r| r.failure.is_none())
+            .map(|r| (r.time_ns, r.digits()))
+            .collect();
+        pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if !pts.is_empty() {
+            chart.push(svg::Series::new(label, pts, svg::Style::LineMarkers).look(look));
+        }
+        let failed: Vec<&&Timed<M>> = sel.iter().filter(|r| r.failure.is_some()).collect();
+        if let Some(first) = failed.first() {
+            let precs: Vec<String> = failed.iter().map(|r| r.precision.label()).collect();
+            let why = first.failure.as_deref().unwrap_or_default();
+            (chart.notes).push(format!(
+                "{label} failed at {} (not drawn): {why}",
+                precs.join(", ")
+            ));
+        }
+    }
+    chart
 }
 
 /// |got − want|/|want|, the difference formed and divided at `bits` bits (enough above both

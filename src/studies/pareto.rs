@@ -10,24 +10,8 @@ use moving_hertz::scalar::{Mp, MpPrec, Precision, Real};
 use moving_hertz::{solve_ellipse, with_precision, Method, Options};
 use rug::Float;
 
-/// One measurement.
-#[derive(Clone, Debug)]
-pub struct Row {
-    /// M_R.
-    pub mr: f64,
-    /// The method.
-    pub method: Method,
-    /// The precision.
-    pub precision: Precision,
-    /// Relative error of k against the 1536-bit reference (NaN on failure).
-    pub error: f64,
-    /// The solve's own error estimate.
-    pub estimate: f64,
-    /// Median time per solve, ns.
-    pub time_ns: f64,
-    /// Failure, if any.
-    pub failure: Option<String>,
-}
+/// One measurement: a method at one precision and speed.
+pub type Row = super::Timed<Method>;
 
 /// Speeds of the study.
 pub const SPEEDS: [f64; 5] = [0.5, 0.9, 0.99, 0.999, 0.9999];
@@ -47,35 +31,22 @@ struct Case<'a> {
 /// The row of `case` at precision `label`: the error of k against the reference, the solve's
 /// estimate and median time, or why it failed.
 fn measure<T: Real>(case: &Case<'_>, p: T::Prec, label: Precision) -> Row {
-    let mut row = Row {
-        mr: case.mr,
-        method: case.method,
-        precision: label,
-        error: f64::NAN,
-        estimate: f64::NAN,
-        time_ns: f64::NAN,
-        failure: None,
-    };
-    row.failure = timed::<T>(case, p, &mut row).err();
-    row
-}
-
-/// Fills `row`'s error, estimate and time for `case` at precision `p`.
-fn timed<T: Real>(case: &Case<'_>, p: T::Prec, row: &mut Row) -> Result<(), String> {
-    let mat = Material::new(T::from_f64(case.nu, p)).map_err(|_| "material")?;
-    let sp = mat.speed(T::from_f64(case.mr, p)).map_err(|_| "speed")?;
-    let r = T::from_f64(case.ratio, p);
-    let opts = Options {
-        method: case.method,
-        ..Default::default()
-    };
-    let s = solve_ellipse(&sp, &r, &opts).map_err(|e| e.to_string())?;
-    row.error = super::rel_error(&s.k().value, case.reference, 1600);
-    row.estimate = s.k().error.to_f64();
-    row.time_ns = median_ns(case.budget_ms, || {
-        solve_ellipse(&sp, &r, &opts).map(|s| s.iterations())
-    });
-    Ok(())
+    super::Timed::measure(case.mr, case.method, label, |row| {
+        let mat = Material::new(T::from_f64(case.nu, p)).map_err(|_| "material")?;
+        let sp = mat.speed(T::from_f64(case.mr, p)).map_err(|_| "speed")?;
+        let r = T::from_f64(case.ratio, p);
+        let opts = Options {
+            method: case.method,
+            ..Default::default()
+        };
+        let s = solve_ellipse(&sp, &r, &opts).map_err(|e| e.to_string())?;
+        row.error = super::rel_error(&s.k().value, case.reference, 1600);
+        row.estimate = s.k().error.to_f64();
+        row.time_ns = median_ns(case.budget_ms, || {
+            solve_ellipse(&sp, &r, &opts).map(|s| s.iterations())
+        });
+        Ok(())
+    })
 }
 
 /// Runs the study at ν = 0.2, A1/B1 = 0.5 (exact binary inputs) for every method in `methods`.
@@ -113,23 +84,10 @@ pub fn run(
     Ok(rows)
 }
 
-/// The rows of the study's CSV table (as `moving-hertz study pareto` writes it, header
-/// `mr,method,precision,bits,k_rel_error,error_estimate,time_ns,failure`): the data the charts
-/// are drawn from. An error names the line that does not read.
-/// Reads the measurements of (33)'s solve back; no arithmetic.
+/// The rows of the study's CSV table (as `moving-hertz study pareto` writes it): the data the
+/// charts are drawn from ([`super::Timed::read`]).
 pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
-    table.each(|i| {
-        let failure = table.failure(i)?;
-        Ok(Row {
-            mr: table.number(i, "mr")?,
-            method: Method::parse(&table.text(i, "method")?).map_err(|e| table.at(i, e))?,
-            precision: table.precision(i, "precision")?,
-            error: table.number(i, "k_rel_error")?,
-            estimate: table.number(i, "error_estimate")?,
-            time_ns: table.number(i, "time_ns")?,
-            failure,
-        })
-    })
+    Row::read(table, "k_rel_error", |m| Method::parse(m).ok())
 }
 
 /// Pareto charts (correct digits of k on a linear axis against time on a log axis, one line
@@ -138,26 +96,15 @@ pub fn rows_from_csv(table: &super::Table) -> Result<Vec<Row>, String> {
 /// precisions, f64 and double-double as markers of their own).
 /// Draws the measurements of (33)'s solve; no arithmetic beyond plotting.
 pub fn charts(rows: &[Row], methods: &[Method]) -> Vec<(String, String)> {
+    let labelled: Vec<(&str, Method)> = methods.iter().map(|&m| (m.label(), m)).collect();
     let mut out = Vec::new();
-    for (i, mr) in SPEEDS.iter().enumerate() {
-        let mut c = Chart::new(
+    for (i, &mr) in SPEEDS.iter().enumerate() {
+        let chart = Chart::new(
             format!("Ellipse solve at M_R = {mr}: correct digits of k against time"),
             "time per solve (ns)",
             "correct digits of k, −log₁₀(relative error)",
-        )
-        .log(true, false);
-        for &m in methods {
-            let sel: Vec<&Row> = (rows.iter())
-                .filter(|r| r.mr == *mr && r.method == m)
-                .collect();
-            let mut pts: Vec<(f64, f64)> = (sel.iter())
-                .filter(|r| r.failure.is_none())
-                .map(|r| (r.time_ns, digits(r)))
-                .collect();
-            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            c.push(Series::new(m.label(), pts, Style::LineMarkers));
-            c.notes.extend(refused(m.label(), &sel));
-        }
+        );
+        let mut c = super::pareto_chart(chart, rows, mr, &labelled);
         c.notes
             .push("points: f64, dd and MPFR 64, 128, 256, 512, 1024 bits, in order of time".into());
         out.push((format!("pareto_ellipse_{i}.svg"), c.to_svg()));
@@ -169,24 +116,6 @@ pub fn charts(rows: &[Row], methods: &[Method]) -> Vec<(String, String)> {
         ));
     }
     out
-}
-
-/// The correct digits of a row's k (an exact k counts the digits of its precision).
-fn digits(r: &Row) -> f64 {
-    super::correct_digits(r.error, super::full_digits(r.precision.bits()))
-}
-
-/// The legend's note for the rows of one method that failed, if any: the method, the
-/// precisions and the first reason.
-fn refused(method: &str, rows: &[&Row]) -> Option<String> {
-    let failed: Vec<&&Row> = rows.iter().filter(|r| r.failure.is_some()).collect();
-    let first = failed.first()?;
-    let precs: Vec<String> = failed.iter().map(|r| r.precision.label()).collect();
-    Some(format!(
-        "{method} failed at {} (not drawn): {}",
-        precs.join(", "),
-        first.failure.as_deref().unwrap_or_default()
-    ))
 }
 
 /// Time per solve against the significand bits for method `m`: the MPFR precisions a line per

@@ -1,6 +1,5 @@
-//! Output of the symbolic results: plain text, LaTeX, sympy input (`name = expression`, one per
-//! line, parsed by `sympy.sympify`) and JSON with the canonical coefficient lists. Exact: every
-//! integer is printed in full.
+//! Output of the symbolic results: plain text and sympy input (`name = expression`, one per
+//! line, parsed by `sympy.sympify`). Exact: every integer is printed in full.
 //!
 //! An expression is written as ±A·P(v) / (B·Π q_i(v)^{e_i}), as the paper prints f2: P and each
 //! base q_i are integer polynomials with coprime coefficients, written in ascending powers with
@@ -11,7 +10,6 @@
 //! [`super::green_coefficients`] ((35)-(36)) and [`super::moment_forms`] ((40), (42)) without
 //! rounding.
 
-use super::poly::Poly;
 use super::ratfunc::RatFunc;
 use crate::routes::moments::KeTerm;
 use rug::{Integer, Rational};
@@ -23,13 +21,8 @@ use std::fmt::Write;
 pub enum Style {
     /// Plain text for a reader: `f_2 = x^2 (67 - 220 nu + ... + 64 nu^4)/(64 (1 - nu))`.
     Text,
-    /// LaTeX, one `align*` environment.
-    Latex,
     /// `name = expression` per line, in sympy syntax (`**` for powers), variables `nu`, `x`, `e2`.
     Sympy,
-    /// A JSON document with, per function, the canonical numerator and denominator coefficient
-    /// lists (ascending powers, lowest terms, monic denominator) and the sympy expression.
-    Json,
 }
 
 /// The variable of a rational function.
@@ -42,20 +35,13 @@ pub enum Variable {
 }
 
 impl Variable {
-    fn name(self, style: Style) -> &'static str {
-        match (self, style) {
-            (Variable::Nu, Style::Latex) => "\\nu",
-            (Variable::E2, Style::Latex) => "e",
-            (Variable::Nu, _) => "nu",
-            (Variable::E2, _) => "e2",
-        }
-    }
     /// v^k as `style` writes it.
     fn power(self, k: usize, style: Style) -> String {
-        match (style, self) {
-            (Style::Latex, Variable::E2) => format!("e^{{{}}}", 2 * k),
-            _ => power(self.name(style), k, style),
-        }
+        let name = match self {
+            Variable::Nu => "nu",
+            Variable::E2 => "e2",
+        };
+        power(name, k, style)
     }
 }
 
@@ -63,9 +49,8 @@ impl Variable {
 fn power(base: &str, k: usize, style: Style) -> String {
     match style {
         _ if k == 1 => base.to_string(),
-        Style::Latex => format!("{base}^{{{k}}}"),
         Style::Text => format!("{base}^{k}"),
-        _ => format!("{base}**{k}"),
+        Style::Sympy => format!("{base}**{k}"),
     }
 }
 
@@ -108,9 +93,8 @@ fn int_poly(c: &[Integer], v: Variable, style: Style) -> String {
 /// The sign of a product as `style` writes it.
 fn times(style: Style) -> &'static str {
     match style {
-        Style::Latex => "\\,",
         Style::Text => " ",
-        _ => "*",
+        Style::Sympy => "*",
     }
 }
 
@@ -148,11 +132,7 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
         r *= Rational::from(Integer::from(rug::ops::Pow::pow(&lead, *e)));
         bases.push((qi, *e));
     }
-    let (neg, latex, mul) = (
-        r.cmp0() == Ordering::Less,
-        style == Style::Latex,
-        times(style),
-    );
+    let (neg, mul) = (r.cmp0() == Ordering::Less, times(style));
     let (a, b) = (Integer::from(r.numer().abs_ref()), r.denom().clone());
     let has_den = b != 1 || !bases.is_empty();
     // Numerator: [A ·] [x^k ·] P; P stands bare when nothing precedes it and the sign or a
@@ -165,12 +145,7 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
         num.push(power("x", xpow, style));
     }
     if prim.len() > 1 {
-        let bare = num.is_empty()
-            && if latex {
-                has_den || !neg
-            } else {
-                !has_den && !neg
-            };
+        let bare = num.is_empty() && !has_den && !neg;
         num.push(wrapped(
             int_poly(&prim, v, style),
             !bare && terms(&prim) > 1,
@@ -190,17 +165,13 @@ pub fn expression(f: &RatFunc, v: Variable, xpow: usize, style: Style) -> String
     if b != 1 {
         den.push(b.to_string());
     }
-    let lone = b == 1 && bases.len() == 1;
     for (qi, e) in &bases {
         den.push(if terms(qi) == 1 && qi.len() == 2 {
             v.power(*e as usize, style)
         } else {
-            let wrap = terms(qi) > 1 && (!latex || *e > 1 || !lone);
+            let wrap = terms(qi) > 1;
             power(&wrapped(int_poly(qi, v, style), wrap), *e as usize, style)
         });
-    }
-    if latex {
-        return format!("{sign}\\frac{{{num}}}{{{}}}", den.join(mul));
     }
     format!("{sign}{num}/{}", wrapped(den.join(mul), den.len() > 1))
 }
@@ -218,74 +189,17 @@ pub struct Named {
     pub xpow: usize,
 }
 
-fn latex_name(name: &str) -> String {
-    let greek = ["alpha", "beta", "gamma", "delta"];
-    let (base, rest) = name.split_once('_').unwrap_or((name, ""));
-    let base = if greek.contains(&base) {
-        format!("\\{base}")
-    } else {
-        base.to_string()
-    };
-    match rest.split_once('_') {
-        Some((idx, tag)) => format!("{base}_{{{idx}}}^{{\\mathrm{{{}}}}}", tag.replace('_', " ")),
-        None if rest.is_empty() => base,
-        None => format!("{base}_{{{rest}}}"),
-    }
-}
-
-fn json_list(p: &Poly) -> String {
-    let items: Vec<String> = p.coeffs().iter().map(|c| format!("\"{c}\"")).collect();
-    format!("[{}]", items.join(", "))
-}
-
-/// The document for `items` in `style`, with `title` as a comment (text, LaTeX) or a field
-/// (JSON); sympy output holds only `name = expression` lines.
+/// The document for `items` in `style`: `name = expression` lines, under `title` as a comment in
+/// text (sympy output holds only the lines).
 pub fn render(title: &str, items: &[Named], style: Style) -> String {
     let mut out = String::new();
-    match style {
-        Style::Text | Style::Sympy => {
-            if style == Style::Text {
-                let _ = writeln!(out, "# {title}");
-            }
-            for it in items {
-                let e = expression(&it.value, it.var, it.xpow, style);
-                let _ = writeln!(out, "{} = {e}", it.name);
-            }
-        }
-        Style::Latex => {
-            let _ = writeln!(out, "% {title}\n\\begin{{align*}}");
-            for (i, it) in items.iter().enumerate() {
-                let end = if i + 1 < items.len() { " \\\\" } else { "" };
-                let e = expression(&it.value, it.var, it.xpow, style);
-                let _ = writeln!(out, "{} &= {e}{end}", latex_name(&it.name));
-            }
-            let _ = writeln!(out, "\\end{{align*}}");
-        }
-        Style::Json => out = render_json(title, items),
+    if style == Style::Text {
+        let _ = writeln!(out, "# {title}");
     }
-    out
-}
-
-/// [`render`]'s JSON: the title and, per function, its name, variable, power of x, the
-/// canonical coefficient lists of numerator and denominator, and the sympy form.
-fn render_json(title: &str, items: &[Named]) -> String {
-    let mut out = String::new();
-    let _ = writeln!(out, "{{\n  \"title\": \"{title}\",\n  \"functions\": [");
-    for (i, it) in items.iter().enumerate() {
-        let var = it.var.name(Style::Sympy);
-        let e = expression(&it.value, it.var, it.xpow, Style::Sympy);
-        let comma = if i + 1 < items.len() { "," } else { "" };
-        let _ = writeln!(
-            out,
-            "    {{\"name\": \"{}\", \"variable\": \"{var}\", \"power_of_x\": {}, \
-             \"numerator\": {}, \"denominator\": {}, \"sympy\": \"{e}\"}}{comma}",
-            it.name,
-            it.xpow,
-            json_list(it.value.numer()),
-            json_list(&it.value.denom()),
-        );
+    for it in items {
+        let e = expression(&it.value, it.var, it.xpow, style);
+        let _ = writeln!(out, "{} = {e}", it.name);
     }
-    let _ = writeln!(out, "  ]\n}}");
     out
 }
 
