@@ -27,7 +27,6 @@ mod rational;
 
 pub use complex::Complex;
 pub use dd::Dd;
-pub(crate) use f64_impl::write_exponent;
 pub use mp::{mixed_precision_events, Mp, MpPrec};
 pub use parse::decimal_to_rational;
 
