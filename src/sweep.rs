@@ -473,6 +473,8 @@ struct Place {
 /// The roots a trail keeps: a cubic through four roots starts most points of a smooth curve
 /// close enough for one evaluation (the evidence: docs/calibration.md).
 const TRAIL: usize = 4;
+// [`lagrange`] takes up to four points.
+const _: () = assert!(TRAIL <= 4);
 
 /// The last roots of a block (at most [`TRAIL`], oldest first), for the next point's start.
 #[derive(Default)]
@@ -521,22 +523,38 @@ impl Trail {
 
 /// The polynomial through (`xs`, `ys`) (distinct abscissae; `None` otherwise or when empty)
 /// at `t`, in Lagrange's form (each weight the product of (t − x_j)/(x_i − x_j) in the order of
-/// the points).
+/// the points), by [`lagrange_n`] for the number of points (its loops unrolled).
 fn lagrange(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+    fn by<const N: usize>(xs: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+        lagrange_n::<N>(xs.first_chunk()?, ys.first_chunk()?, t)
+    }
+    match xs.len().min(ys.len()) {
+        1 => by::<1>(xs, ys, t),
+        2 => by::<2>(xs, ys, t),
+        3 => by::<3>(xs, ys, t),
+        4 => by::<4>(xs, ys, t),
+        _ => None,
+    }
+}
+
+/// [`lagrange`] through `N` points.
+#[inline]
+fn lagrange_n<const N: usize>(xs: &[f64; N], ys: &[f64; N], t: f64) -> Option<f64> {
+    let dt = xs.map(|x| t - x);
     let mut sum = 0.0;
-    for (i, (xi, yi)) in xs.iter().zip(ys).enumerate() {
+    for i in 0..N {
         let mut w = 1.0;
-        for (j, xj) in xs.iter().enumerate() {
+        for j in 0..N {
             if i != j {
-                if xi == xj {
+                if xs[i] == xs[j] {
                     return None;
                 }
-                w *= (t - xj) / (xi - xj);
+                w *= dt[j] / (xs[i] - xs[j]);
             }
         }
-        sum += w * yi;
+        sum += w * ys[i];
     }
-    (!xs.is_empty() && sum.is_finite()).then_some(sum)
+    sum.is_finite().then_some(sum)
 }
 
 #[cfg(test)]
