@@ -295,8 +295,26 @@ impl fmt::Display for RelError {
 
 impl RelError {
     /// Appends the bound's text (ASCII) as [`fmt::Display`] writes it (three significant
-    /// digits), without a string of its own (the `sweep` commands' rows).
+    /// digits), without a string of its own (the `sweep` commands' rows): a bound whose three
+    /// digits fit an `f64`'s decimal range (every bound of an `f64` result) as `d.dde±x`
+    /// straight from those digits, any other through the general decimal text.
     pub fn push_text(&self, out: &mut Vec<u8>) {
+        if let Some((mant, exp10)) = self.decimal_in_f64(2) {
+            // "d.dde-xxx": three digits, a point, "e", a sign and at most 3 digits (|exp10|
+            // ≤ 310 in that range), copied whole (a fixed-size copy) and cut to length.
+            let mut text = [0u8; 10];
+            let mant = mant as u32; // in [100, 1000)
+            text[0] = b'0' + (mant / 100) as u8;
+            text[1] = b'.';
+            text[2] = b'0' + (mant / 10 % 10) as u8;
+            text[3] = b'0' + (mant % 10) as u8;
+            text[4] = b'e';
+            let end = crate::scalar::write_exponent(&mut text, 5, exp10 as i32);
+            let start = out.len();
+            out.extend_from_slice(&text);
+            out.truncate(start + end);
+            return;
+        }
         let (text, end) = self.text(2);
         out.extend_from_slice(&text[..end]);
     }

@@ -27,6 +27,7 @@ mod rational;
 
 pub use complex::Complex;
 pub use dd::Dd;
+pub(crate) use f64_impl::write_exponent;
 pub use mp::{mixed_precision_events, Mp, MpPrec};
 pub use parse::decimal_to_rational;
 
