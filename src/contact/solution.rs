@@ -483,14 +483,6 @@ impl<T: Real> ContactSolution<T> {
     pub fn e(&self) -> &Estimated<T> {
         &self.ellipse.e
     }
-    /// A1 = 1/(2 R1) of (26)–(30), the curvature along the motion (one rounding).
-    pub fn a1(&self) -> &T {
-        &self.a1
-    }
-    /// B1 = 1/(2 R2) of (26)–(30), the curvature across the motion (one rounding).
-    pub fn b1(&self) -> &T {
-        &self.b1
-    }
 
     /// True when (x, y) lies in the closed contact region of (9), x²/a² + y²/b² ≤ 1.
     pub fn inside(&self, x: &T, y: &T) -> bool {

@@ -8,6 +8,7 @@ use crate::physics::Speed;
 use crate::routes::graded::GradedSetup;
 use crate::routes::{Evaluation, Method};
 use crate::scalar::{Dd, Real};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, OnceLock};
 
 /// What the ellipse solves at one speed keep, with the speed and shared by its clones: the speed
@@ -16,21 +17,53 @@ use std::sync::{Arc, OnceLock};
 #[derive(Clone, Debug)]
 pub(crate) struct SolveCache<T: Real>(Arc<Kept<T>>);
 
-/// Values kept on first use, one slot each.
-type Slots<V> = Box<[OnceLock<V>]>;
+/// The graded route's layouts, one slot for each cell of k in chunks of [`CHUNK`] made on
+/// first use: a speed made for one solve touches a chunk or two, where making and dropping
+/// a slot for each of the 183 cells cost it about 3,000 instructions.
+type Layouts<T> = [OnceLock<Box<[OnceLock<Result<GradedSetup<T>>>; CHUNK]>>; LAYOUT_CHUNKS];
+
+const CHUNK: usize = 8;
+
+/// A node of the seed grid: F + ln(A1/B1) and F′ as `f64` bits, filled on first use, F′
+/// stored last and read first, its bits 0 while empty (a node's F′ is positive; a node whose
+/// evaluation fails is not kept). Atomics, not a `OnceLock`: nothing to drop, where dropping
+/// 127 `OnceLock`s cost a speed made for one solve 1,000 instructions.
+#[derive(Debug, Default)]
+pub(crate) struct GridSlot([AtomicU64; 2]);
+
+impl GridSlot {
+    /// The node's values (`None`: not kept yet).
+    #[inline]
+    pub(crate) fn get(&self) -> Option<(f64, f64)> {
+        let d = self.0[1].load(Ordering::Acquire);
+        let value = || f64::from_bits(self.0[0].load(Ordering::Relaxed));
+        (d != 0).then(|| (value(), f64::from_bits(d)))
+    }
+
+    /// Keeps `v` (a pure function of the node, so that a race between two threads stores the
+    /// same bits twice) and returns it.
+    #[cold]
+    pub(crate) fn fill(&self, v: Option<(f64, f64)>) -> Option<(f64, f64)> {
+        if let Some((g, d)) = v {
+            self.0[0].store(g.to_bits(), Ordering::Relaxed);
+            self.0[1].store(d.to_bits(), Ordering::Release);
+        }
+        v
+    }
+}
 
 #[derive(Debug)]
 struct Kept<T: Real> {
     at_f64: OnceLock<Option<Speed<f64>>>,
     at_dd: OnceLock<Option<Speed<Dd>>>,
-    /// F + ln(A1/B1) and F′ at the nodes of the ellipse solve's grid seed, each on first use.
     /// The k = 1 probe's evaluation by method (auto, fixed): it does not depend on A1/B1 (it
     /// still counts as an evaluation, so that a solve's steps do not depend on whether it was
     /// kept).
     probe: [OnceLock<Evaluation<T>>; 2],
-    grid: OnceLock<Slots<Option<(f64, f64)>>>,
+    /// F + ln(A1/B1) and F′ at the nodes of the ellipse solve's grid seed, each on first use.
+    grid: OnceLock<Box<[GridSlot]>>,
     /// The graded route's layouts by cell of k (`graded::layout_cell`), each on first use.
-    layouts: OnceLock<Slots<Result<GradedSetup<T>>>>,
+    layouts: OnceLock<Box<Layouts<T>>>,
 }
 
 impl<T: Real> SolveCache<T> {
@@ -63,22 +96,20 @@ impl<T: Real> SolveCache<T> {
         cell: usize,
         build: impl FnOnce(usize) -> Result<GradedSetup<T>>,
     ) -> Result<&GradedSetup<T>> {
-        let slots = self
-            .0
-            .layouts
-            .get_or_init(|| (0..GRADED_CELLS).map(|_| OnceLock::new()).collect());
         let c = cell.min(GRADED_CELLS - 1);
-        slots[c]
+        let chunks = self.0.layouts.get_or_init(Default::default);
+        let chunk = chunks[c / CHUNK].get_or_init(Default::default);
+        chunk[c % CHUNK]
             .get_or_init(|| build(c))
             .as_ref()
             .map_err(Clone::clone)
     }
 
     /// The slots of the seed grid's `n` nodes.
-    pub(crate) fn grid(&self, n: usize) -> &[OnceLock<Option<(f64, f64)>>] {
+    pub(crate) fn grid(&self, n: usize) -> &[GridSlot] {
         self.0
             .grid
-            .get_or_init(|| (0..n).map(|_| OnceLock::new()).collect())
+            .get_or_init(|| (0..n).map(|_| Default::default()).collect())
     }
 
     /// The k = 1 probe's slot for `method` (`None`: not kept).
@@ -93,3 +124,4 @@ impl<T: Real> SolveCache<T> {
 
 /// The layout cells a speed keeps (`graded::layout_cell`: k ≤ 2^180 lies in cell 182 or below).
 const GRADED_CELLS: usize = 183;
+const LAYOUT_CHUNKS: usize = GRADED_CELLS.div_ceil(CHUNK);

@@ -80,7 +80,6 @@ pub fn shear_from_youngs<F: Field>(youngs_modulus: &F, nu: &F) -> F {
 pub struct Solid<T: Real> {
     material: Material<T>,
     shear_modulus: Option<T>,
-    density: Option<T>,
     c1: Option<T>,
     c2: T,
     c_r: T,
@@ -199,8 +198,8 @@ impl<T: Real> Solid<T> {
 
     /// The half-space whose dilatational and shear wave speeds are `c1` and `c2` (m/s),
     /// 0 < c2 < (√3/2)·c1: ν = (1 − 2γ)/(2(1 − γ)) with γ = (c2/c1)² formed exactly and
-    /// rounded once, c_R = c2·√m1 within 2 ε; c1 and c2 as given. μ and ρ are not known
-    /// ([`Solid::shear_modulus`] and [`Solid::density`] are `None`).
+    /// rounded once, c_R = c2·√m1 within 2 ε; c1 and c2 as given. μ is not known
+    /// ([`Solid::shear_modulus`] is `None`).
     pub fn from_wave_speeds(c1: T, c2: T) -> Result<Solid<T>> {
         let p = c2.prec();
         let c1 = Given::value(C1_NAME, &c1)?;
@@ -216,8 +215,8 @@ impl<T: Real> Solid<T> {
         Solid::from_speeds(c1, c2, p)
     }
 
-    /// From the material, its exact ν, the stiffness (E or μ) and the density: μ and ρ
-    /// rounded once, the speeds from the exact μ/ρ.
+    /// From the material, its exact ν, the stiffness (E or μ) and the density: μ rounded
+    /// once (and ρ, to refuse one that is not a normal number), the speeds from the exact μ/ρ.
     fn from_moduli(
         material: Material<T>,
         nu_exact: Rational,
@@ -237,8 +236,8 @@ impl<T: Real> Solid<T> {
         }
         let (mu, rho) = (mu.positive()?, rho.positive()?);
         let c2_squared = mu.exact.clone() / &rho.exact; // c2² = μ/ρ, exact
-        let (mu, rho) = (mu.round::<T>(p)?, rho.round::<T>(p)?);
-        Solid::finish(material, nu_exact, c2_squared, Some(mu), Some(rho))
+        let (mu, _) = (mu.round::<T>(p)?, rho.round::<T>(p)?);
+        Solid::finish(material, nu_exact, c2_squared, Some(mu))
     }
 
     /// From (c1, c2): checks 0 < c2, 0 < c1 and γ = (c2/c1)² < 3/4 exactly, then ν of γ.
@@ -261,7 +260,7 @@ impl<T: Real> Solid<T> {
             c2.text
         );
         let material = Material::from_exact(&nu_exact, &text, p)?;
-        Solid::finish(material, nu_exact, c2_squared, None, None)
+        Solid::finish(material, nu_exact, c2_squared, None)
     }
 
     /// The speeds from the exact ν and c2²: c2, c1 = c2/√γ and c_R = c2·√m1 taken
@@ -271,7 +270,6 @@ impl<T: Real> Solid<T> {
         nu_exact: Rational,
         c2_squared: Rational,
         shear_modulus: Option<T>,
-        density: Option<T>,
     ) -> Result<Self> {
         let p = material.nu().prec();
         let bits = T::bits(p) + GUARD;
@@ -283,7 +281,6 @@ impl<T: Real> Solid<T> {
         Ok(Solid {
             material,
             shear_modulus,
-            density,
             c1,
             c2: round(&c2, C2_NAME)?,
             c_r: round(&c_r_guard, "Rayleigh wave speed c_R (m/s)")?,
@@ -305,10 +302,6 @@ impl<T: Real> Solid<T> {
     /// was given); `None` for a half-space given by its wave speeds.
     pub fn shear_modulus(&self) -> Option<&T> {
         self.shear_modulus.as_ref()
-    }
-    /// The density ρ (kg/m³), rounded once; `None` for a half-space given by its wave speeds.
-    pub fn density(&self) -> Option<&T> {
-        self.density.as_ref()
     }
     /// The dilatational wave speed c1 = c2/√γ (m/s; c1 of (5)), within 1 ε (as given when
     /// the half-space was given by its wave speeds); `None` for ν = 1/2 (incompressible: γ = 0,

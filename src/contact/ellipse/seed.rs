@@ -171,7 +171,8 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, u
     let mut node = |j: i64| -> Option<(f64, f64, f64)> {
         let slot = slots.get(usize::try_from(j + GRID_HALF).ok()?)?;
         read |= 1 << (j + GRID_HALF);
-        let (g, d) = (*slot.get_or_init(|| grid_node(ev, j as f64 * GRID_STEP)))?;
+        let kept = slot.get();
+        let (g, d) = kept.or_else(|| slot.fill(grid_node(ev, j as f64 * GRID_STEP)))?;
         Some((j as f64 * GRID_STEP, g - target, d))
     };
     // Nodes strictly between `lo` and `hi` (index and value) lie inside the bracket.
@@ -207,7 +208,9 @@ pub(super) fn grid_seed<S: Real>(ev: &Evaluator<S>, ratio: &S) -> Option<(f64, u
     None
 }
 
-/// ln(I2/I1) and its λ-derivative F′ at λ, by the fixed rules on an evaluator of its own.
+/// ln(I2/I1) and its λ-derivative F′ at λ, by the fixed rules on an evaluator of its own. Out
+/// of line: it runs once per node and speed.
+#[inline(never)]
 fn grid_node<S: Real>(ev: &Evaluator<S>, lam: f64) -> Option<(f64, f64)> {
     let own = Evaluator::new(ev.speed(), newton_options(Method::Auto)).ok()?;
     let one = S::one(ev.speed().mr().prec());
