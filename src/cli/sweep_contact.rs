@@ -6,7 +6,7 @@
 //! of `contact --json` for the same inputs.
 
 use super::args::{self, Decimal};
-use super::contact::ratio_fits;
+use super::contact::{ratio_fits, solid};
 use super::sweep::{
     axis, check_and_bind, checked_nus, one_of, write_in_order, Axis, Checked, Column, Grid, Row,
     RunArgs, APPROACH, GAP, LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
@@ -15,7 +15,7 @@ use super::CliError;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
 use moving_hertz::sweep;
 use moving_hertz::{
-    with_precision, ContactProblem, ContactSolution, Loading, Material, Moduli, Options, Solid,
+    with_precision, ContactProblem, ContactSolution, Loading, Material, Options, Solid,
 };
 use rayon::prelude::*;
 
@@ -186,26 +186,7 @@ fn half_spaces<T: Real + Send + Sync>(
     if let Some(rho) = &a.density {
         args::positive::<T>(rho, "--density", "density rho", p)?;
         let density = rho.text.as_str();
-        half.solids = per_pair(nus, moduli, |nu, m| {
-            let names = [
-                ("Young's modulus", option, m),
-                ("shear modulus", option, m),
-                ("density", "--density", density),
-                ("nu", "--nu", nu),
-            ];
-            let moduli = match youngs {
-                true => Moduli::Youngs {
-                    youngs_modulus: m,
-                    density,
-                },
-                false => Moduli::Shear {
-                    shear_modulus: m,
-                    density,
-                },
-            };
-            Solid::parse(nu, moduli, p)
-                .map_err(|e| CliError::from_run(e, &names, "forming the half-space's wave speeds"))
-        })?;
+        half.solids = per_pair(nus, moduli, |nu, m| solid([nu, m, density, ""], option, p))?;
         // A half-space of moduli always has μ; none would be refused as 0.
         let mu = |s: &Solid<T>| s.shear_modulus().cloned().unwrap_or_else(|| T::zero(p));
         (half.mu, half.mu_by_nu) = (half.solids.iter().map(mu).collect(), true);
