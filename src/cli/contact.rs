@@ -116,40 +116,16 @@ pub(super) fn ratio_fits<T: Real>(
 fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliError> {
     let nu = &a.input.nu;
     if let (Some(v), Some(rho)) = (&a.velocity, &a.density) {
-        let density = rho.text.as_str();
         // μ is named after the option that gave it (E gives μ = E/(2(1 + ν))).
-        let (moduli, option, modulus) = match (&a.youngs_modulus, &a.shear_modulus) {
-            (Some(e), _) => (
-                Moduli::Youngs {
-                    youngs_modulus: e.text.as_str(),
-                    density,
-                },
-                "--youngs-modulus",
-                e.text.as_str(),
-            ),
-            (None, Some(mu)) => (
-                Moduli::Shear {
-                    shear_modulus: mu.text.as_str(),
-                    density,
-                },
-                "--shear-modulus",
-                mu.text.as_str(),
-            ),
+        let (option, modulus) = match (&a.youngs_modulus, &a.shear_modulus) {
+            (Some(e), _) => ("--youngs-modulus", e),
+            (None, Some(mu)) => ("--shear-modulus", mu),
             (None, None) => return Err(CliError::Input(MODULUS_REQUIRED.into())),
         };
-        let names = [
-            ("Young's modulus", option, modulus),
-            ("shear modulus", option, modulus),
-            ("density", "--density", density),
-            ("nu", "--nu", nu.text.as_str()),
-            ("velocity", "--velocity", v.text.as_str()),
-        ];
-        let context = "forming the half-space's wave speeds";
-        let solid = Solid::<T>::parse(&nu.text, moduli, p)
-            .map_err(|e| CliError::from_run(e, &names, context))?;
-        let speed = solid
-            .parse_velocity(&v.text)
-            .map_err(|e| CliError::from_run(e, &names, context))?;
+        let texts = [&nu.text, &modulus.text, &rho.text, &v.text].map(String::as_str);
+        let solid = solid::<T>(texts, option, p)?;
+        let speed =
+            (solid.parse_velocity(&v.text)).map_err(|e| half_space_error(e, texts, option))?;
         let mu = solid
             .shear_modulus()
             .cloned()
@@ -172,6 +148,41 @@ fn half_space<T: Real>(a: &ContactArgs, p: T::Prec) -> Result<HalfSpace<T>, CliE
         (None, None) => return Err(CliError::Input(MODULUS_REQUIRED.into())),
     };
     Ok((speed, mu, None))
+}
+
+/// The half-space ([`Solid::parse`]) of the texts of ν, the modulus (of `option`: E or μ), ρ
+/// (and the velocity, named in refusals); a refusal names the option and quotes the text.
+pub(super) fn solid<T: Real>(
+    texts: [&str; 4],
+    option: &'static str,
+    p: T::Prec,
+) -> Result<Solid<T>, CliError> {
+    let [nu, modulus, density, _] = texts;
+    let moduli = match option {
+        "--youngs-modulus" => Moduli::Youngs {
+            youngs_modulus: modulus,
+            density,
+        },
+        _ => Moduli::Shear {
+            shear_modulus: modulus,
+            density,
+        },
+    };
+    Solid::parse(nu, moduli, p).map_err(|e| half_space_error(e, texts, option))
+}
+
+/// A library error forming a half-space or its speed from the texts of ν, the modulus (of
+/// `option`), ρ and V, against the option that gave it.
+fn half_space_error(e: moving_hertz::Error, texts: [&str; 4], option: &str) -> CliError {
+    let [nu, modulus, density, velocity] = texts;
+    let names = [
+        ("Young's modulus", option, modulus),
+        ("shear modulus", option, modulus),
+        ("density", "--density", density),
+        ("nu", "--nu", nu),
+        ("velocity", "--velocity", velocity),
+    ];
+    CliError::from_run(e, &names, "forming the half-space's wave speeds")
 }
 
 /// The speed, μ and (when the speed was given by --velocity) the half-space.

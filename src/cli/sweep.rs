@@ -9,7 +9,7 @@ use super::pipeline;
 use super::progress::Progress;
 use super::CliError;
 use moving_hertz::scalar::{short, Precision, Real};
-use moving_hertz::sweep::{self, AtSpeed, SpeedGiven, BLOCK};
+use moving_hertz::sweep::{self, AtSpeed, BLOCK};
 use moving_hertz::{with_precision, Ellipse, Estimated, Material, Method, Options, Speed};
 use rayon::prelude::*;
 use rug::{Float, Rational};
@@ -296,12 +296,13 @@ pub(super) const SHEAR: Checked = checked("--shear-modulus", "shear modulus mu",
 pub(super) const YOUNGS: Checked = checked("--youngs-modulus", "Young's modulus E", "(0, inf)");
 
 impl Checked {
-    /// The option's key in the sweeps' rows: `gap` for `--gap`, `youngs_modulus` for
-    /// `--youngs-modulus`.
+    /// The option's key in the sweeps' rows: `gap` for `--gap`, `r_along` for `--r-along`.
     pub(super) fn key(&self) -> &'static str {
         match self.option {
             "--shear-modulus" => "shear_modulus",
             "--youngs-modulus" => "youngs_modulus",
+            "--r-along" => "r_along",
+            "--r-across" => "r_across",
             option => &option[2..],
         }
     }
@@ -409,86 +410,122 @@ pub fn run(a: &SweepArgs) -> Result<(), CliError> {
     with_precision!(a.run.precision, T, p => solve_and_write::<T>(a, total, p))
 }
 
-/// The grid's three axes, each value with its text, in the order ν, speed, ratio (ratio
-/// fastest): its points are formed a block at a time, so that a sweep holds one batch of points
-/// and rows, not all of them; each (ν, speed) pair's speed is formed once, when its first block
-/// is solved, and shared by every block of its points ([`sweep::ellipses_at`]: its set-ups
-/// and solve cache built once a speed, not once a block), until its last point is taken.
-struct Grid<T: Real> {
-    nus: Vec<(String, T)>,
-    speeds: Vec<(String, SpeedGiven<T>)>,
-    ratios: Vec<(String, T)>,
-    /// The materials of the ν in use, by index of ν.
-    materials: Live<moving_hertz::Result<Material<T>>>,
-    /// The speeds of the (ν, speed) pairs in use, by index of the pair (ν slowest).
-    formed: Live<moving_hertz::Result<Speed<T>>>,
+/// An axis's values at the working precision: each value's output cell in the sweep's format
+/// (quoted where CSV or JSON needs it, once a value rather than once a row), the value, and
+/// where asked its text (as typed for a list, as the value prints for a range).
+pub(super) struct Column<T> {
+    pub texts: Vec<String>,
+    pub values: Vec<T>,
+    cells: Vec<String>,
 }
 
-impl<T: Real> Grid<T> {
-    /// The text of the `j`-th point's ν, speed and ratio (their cells).
-    fn texts(&self, j: usize) -> [&str; 3] {
-        let (nr, ns) = (self.ratios.len(), self.speeds.len());
-        [
-            &self.nus[j / (nr * ns)].0,
-            &self.speeds[(j / nr) % ns].0,
-            &self.ratios[j % nr].0,
-        ]
+impl<T> Column<T> {
+    pub(super) fn new(values: Vec<(String, T)>, format: Format, keep_texts: bool) -> Self {
+        let n = values.len();
+        let mut col = Column {
+            texts: Vec::with_capacity(if keep_texts { n } else { 0 }),
+            values: Vec::with_capacity(n),
+            cells: Vec::with_capacity(n),
+        };
+        for (text, x) in values {
+            let mut cell = Vec::new();
+            push_cell(&mut cell, format == Format::Jsonl, &text);
+            col.cells.push(String::from_utf8_lossy(&cell).into_owned());
+            col.values.push(x);
+            if keep_texts {
+                col.texts.push(text);
+            }
+        }
+        col
+    }
+}
+
+/// A sweep's grid: its axes in the order of the rows (the last fastest), ν first, the speed's
+/// axis at `speed`. Its points are formed a block at a time, so that a sweep holds one batch of
+/// points and rows, not all of them; the material of each ν and each speed (the axes up to the
+/// speed's) are formed once, when the first block with a point of them is solved, and shared
+/// by every block of their points ([`sweep::ellipses_at`]: a speed's set-ups and solve cache
+/// built once a speed, not once a block), until their last point is taken.
+pub(super) struct Grid<T: Real, const N: usize> {
+    pub cols: [Column<T>; N],
+    speed: usize,
+    materials: Live<moving_hertz::Result<Material<T>>>,
+    speeds: Live<moving_hertz::Result<Speed<T>>>,
+}
+
+/// A speed shared by the points of a block, formed on first use.
+pub(super) type Shared<T> = Arc<OnceLock<moving_hertz::Result<Speed<T>>>>;
+
+impl<T: Real, const N: usize> Grid<T, N> {
+    pub(super) fn new(cols: [Column<T>; N], speed: usize) -> Self {
+        Grid {
+            cols,
+            speed,
+            materials: Live::default(),
+            speeds: Live::default(),
+        }
     }
 
-    /// The speed of `pair` in the material of its ν (itself formed once for every speed of
-    /// that ν).
-    fn form(&self, pair: usize) -> moving_hertz::Result<Speed<T>> {
-        let ns = self.speeds.len();
-        let (nu, given) = (pair / ns, &self.speeds[pair % ns].1);
-        let material = self.materials.take(nu, ns, 1);
-        let material = material.get_or_init(|| Material::new(self.nus[nu].1.clone()));
-        given.speed_in(material.as_ref().map_err(Clone::clone)?)
+    /// How many consecutive points share the value of axis `i` (and of every axis before it).
+    pub(super) fn stride(&self, i: usize) -> usize {
+        self.cols[i + 1..].iter().map(|c| c.values.len()).product()
     }
 
-    /// The ellipses of the points `range`, solved by [`sweep::ellipses_at`] at the grid's
-    /// shared speeds.
-    fn solve(
+    /// The indices of point `j` on the axes.
+    pub(super) fn indices(&self, mut j: usize) -> [usize; N] {
+        let mut at = [0; N];
+        for (i, c) in self.cols.iter().enumerate().rev() {
+            at[i] = j % c.values.len();
+            j /= c.values.len();
+        }
+        at
+    }
+
+    /// The speeds of the points `range`, one for each run of points that share one (from the
+    /// run of `range.start`), each formed once by `form` from its first point's indices and the
+    /// material of its ν (formed once by `material` from ν's index, when `form` first asks).
+    pub(super) fn speeds(
         &self,
         range: std::ops::Range<usize>,
-        opts: &Options<T>,
-    ) -> Vec<moving_hertz::Result<Ellipse<T>>>
-    where
-        T: Send + Sync,
-    {
-        let nr = self.ratios.len();
+        material: impl Fn(usize) -> moving_hertz::Result<Material<T>>,
+        form: impl for<'m> Fn([usize; N], Materials<'m, T>) -> moving_hertz::Result<Speed<T>>,
+    ) -> Vec<Shared<T>> {
+        let (per, per_nu) = (self.stride(self.speed), self.stride(0));
         let Some(last) = range.end.checked_sub(1) else {
             return Vec::new();
         };
-        let first = range.start / nr;
-        let taken: Vec<_> = (first..=last / nr)
-            .map(|pair| {
-                let n = range.end.min((pair + 1) * nr) - range.start.max(pair * nr);
-                self.formed.take(pair, nr, n)
+        (range.start / per..=last / per)
+            .map(|run| {
+                let n = range.end.min((run + 1) * per) - range.start.max(run * per);
+                let speed = self.speeds.take(run, per, n);
+                speed.get_or_init(|| {
+                    let at = self.indices(run * per);
+                    let m = self.materials.take(at[0], per_nu / per, 1);
+                    form(at, &|| {
+                        let m = m.get_or_init(|| material(at[0]));
+                        m.as_ref().map_err(Clone::clone)
+                    })
+                });
+                speed
             })
-            .collect();
-        let speeds: Vec<_> = (taken.iter().zip(first..))
-            .map(|(s, pair)| s.get_or_init(|| self.form(pair)))
-            .collect();
-        let points: Vec<_> = range
-            .map(|j| AtSpeed {
-                speed: speeds[j / nr - first],
-                ratio: &self.ratios[j % nr].1,
-            })
-            .collect();
-        sweep::ellipses_at(&points, opts)
+            .collect()
+    }
+
+    /// Point `j`'s speed among the `speeds` of a block that begins at `start`.
+    pub(super) fn speed_of<'s>(
+        &self,
+        speeds: &'s [Shared<T>],
+        start: usize,
+        j: usize,
+    ) -> &'s moving_hertz::Result<Speed<T>> {
+        let per = self.stride(self.speed);
+        let s = &speeds[j / per - start / per];
+        s.get_or_init(|| unreachable!("every speed of a block is formed before its points"))
     }
 }
 
-/// An axis's values with each text as its output cell in `format` (quoted where CSV or JSON
-/// needs it).
-fn cells<X>(axis: Vec<(String, X)>, format: Format) -> Vec<(String, X)> {
-    let cell = |text: String| {
-        let mut out = Vec::new();
-        push_cell(&mut out, format == Format::Jsonl, &text);
-        String::from_utf8_lossy(&out).into_owned()
-    };
-    axis.into_iter().map(|(t, x)| (cell(t), x)).collect()
-}
+/// The material of a speed's ν (formed once for every speed of it), or its error.
+pub(super) type Materials<'m, T> = &'m dyn Fn() -> moving_hertz::Result<&'m Material<T>>;
 
 /// Values that many points share, each formed on first use and kept while points of it are
 /// still to be taken (a count of points given with the first take): the sweep holds those of
@@ -522,34 +559,6 @@ impl<V> Live<V> {
     }
 }
 
-/// The grid of the three axes, each value with its text as its output cell in `format` (quoted
-/// where CSV or JSON needs it, once a value rather than once a row); a value that overflows or
-/// underflows the working precision is refused before any work.
-fn points<T: Real + Send>(a: &SweepArgs, p: T::Prec) -> Result<Grid<T>, CliError> {
-    let [(nu, _), (speed, speed_checked), (ratio, _)] = a.axes()?;
-    let nus = checked_nus(nu, &a.run.precision, p)?;
-    let speeds = speed_checked.values::<T>(speed, &a.run.precision, p)?;
-    let ratios = RATIO.values::<T>(ratio, &a.run.precision, p)?;
-    let by_gap = speed_checked.option == GAP.option;
-    let speeds = (speeds.into_iter())
-        .map(|(text, sp)| {
-            let given = match by_gap {
-                true => SpeedGiven::Gap(sp),
-                false => SpeedGiven::Text(text.clone()),
-            };
-            (text, given)
-        })
-        .collect();
-    let format = a.run.format;
-    Ok(Grid {
-        nus: cells(nus, format),
-        speeds: cells(speeds, format),
-        ratios: cells(ratios, format),
-        materials: Live::default(),
-        formed: Live::default(),
-    })
-}
-
 /// The values of `--nu` at `p`, refused before any work, naming the text,
 /// where one is not a normal number of the working precision or rounds onto −1.
 pub(super) fn checked_nus<T: Real + Send>(
@@ -571,54 +580,76 @@ pub(super) fn checked_nus<T: Real + Send>(
 }
 
 /// Solves the sweep block by block on the pool, writing the rows in input order as they are
-/// solved; exit code 1 when a point failed (its row carries the error).
+/// solved; exit code 1 when a point failed (its row carries the error). The axes' values that
+/// overflow or underflow the working precision are refused before any work.
 fn solve_and_write<T: Real + Send + Sync>(
     a: &SweepArgs,
     total: usize,
     p: T::Prec,
 ) -> Result<(), CliError> {
-    let grid = points::<T>(a, p)?;
+    let [(nu, _), (speed, given), (ratio, _)] = a.axes()?;
+    let (precision, format) = (&a.run.precision, a.run.format);
+    let grid = Grid::new(
+        [
+            Column::new(checked_nus(nu, precision, p)?, format, false),
+            Column::new(given.values::<T>(speed, precision, p)?, format, true),
+            Column::new(RATIO.values::<T>(ratio, precision, p)?, format, false),
+        ],
+        1,
+    );
     let opts = Options::<T> {
         method: a.run.method,
         ..Default::default()
     };
-    let speed = if a.speed.gap.is_some() {
-        "gap"
-    } else {
-        "speed"
-    };
+    let [nus, speeds, ratios] = &grid.cols;
     let results = "k,k_error,e,e_error,major_axis,route,iterations,error".split(',');
-    let keys: Vec<_> = ["nu", speed, "ratio"].into_iter().chain(results).collect();
-    let solve = |range| grid.solve(range, &opts);
-    let row = |row: &mut Row, j: usize, r: &moving_hertz::Result<Ellipse<T>>| {
-        for (key, cell) in keys.iter().zip(grid.texts(j)) {
-            row.open(key);
-            row.out.extend_from_slice(cell.as_bytes());
-        }
-        match r {
-            Ok(e) => {
-                row.estimated(["k", "k_error"], e.k());
-                row.estimated(["e", "e_error"], e.e());
-                row.label("major_axis", e.major().label());
-                row.label("route", e.integrals().route.label());
-                row.count("iterations", e.iterations());
-                row.text("error", "");
-            }
-            Err(err) => row.failed(&keys[3..10], err),
-        }
+    let keys: Vec<_> = ["nu", given.key(), "ratio"]
+        .into_iter()
+        .chain(results)
+        .collect();
+    let solve = |range: std::ops::Range<usize>| {
+        let shared = grid.speeds(
+            range.clone(),
+            |iv| Material::new(nus.values[iv].clone()),
+            |[_, is, _], material| match given.key() {
+                "gap" => material()?.speed_from_gap(speeds.values[is].clone()),
+                _ => material()?.parse_speed(&speeds.texts[is]),
+            },
+        );
+        let points: Vec<_> = (range.clone())
+            .map(|j| AtSpeed {
+                speed: grid.speed_of(&shared, range.start, j),
+                ratio: &ratios.values[j % ratios.values.len()],
+            })
+            .collect();
+        sweep::ellipses_at(&points, &opts)
     };
-    write_in_order("sweep", &keys, &a.run, total, solve, row)
+    let row = |row: &mut Row, r: &moving_hertz::Result<Ellipse<T>>| match r {
+        Ok(e) => {
+            row.estimated(["k", "k_error"], e.k());
+            row.estimated(["e", "e_error"], e.e());
+            row.label("major_axis", e.major().label());
+            row.label("route", e.integrals().route.label());
+            row.count("iterations", e.iterations());
+            row.text("error", "");
+        }
+        Err(err) => row.failed(&keys[3..10], err),
+    };
+    write_in_order("sweep", &keys, &a.run, &grid, total, solve, |r, _, x| {
+        row(r, x)
+    })
 }
 
 /// Writes the CSV header of `keys` (in CSV), then solves the points of `0..total` block by block
-/// on every thread (`solve` gives a block's results in order) and writes their lines (`row`
-/// appends a point's cells: its inputs, its results or its error) in input order
-/// ([`pipeline::solve_in_order`]), the lines formed where their block is solved, under a
+/// on every thread (`solve` gives a block's results in order) and writes their lines (the
+/// point's input cells from `grid`, then what `row` appends: its results or its error) in input
+/// order ([`pipeline::solve_in_order`]), the lines formed where their block is solved, under a
 /// progress bar `label`; then [`CliError::Failed`] counting the points that failed.
-pub(super) fn write_in_order<R>(
+pub(super) fn write_in_order<T: Real + Sync, R, const N: usize>(
     label: &str,
     keys: &[&str],
     run: &RunArgs,
+    grid: &Grid<T, N>,
     total: usize,
     solve: impl Fn(std::ops::Range<usize>) -> Vec<moving_hertz::Result<R>> + Sync,
     row: impl Fn(&mut Row, usize, &moving_hertz::Result<R>) + Sync,
@@ -635,6 +666,10 @@ pub(super) fn write_in_order<R>(
             // Room for the whole line first, so that its cells never reallocate.
             out.reserve(ROW_BYTES);
             let mut line = Row::new(out, run.format);
+            for ((key, col), i) in keys.iter().zip(&grid.cols).zip(grid.indices(j)) {
+                line.open(key);
+                line.out.extend_from_slice(col.cells[i].as_bytes());
+            }
             row(&mut line, j, r);
             line.end();
         }

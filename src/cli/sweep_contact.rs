@@ -6,17 +6,16 @@
 //! of `contact --json` for the same inputs.
 
 use super::args::{self, Decimal};
-use super::contact::ratio_fits;
+use super::contact::{ratio_fits, solid};
 use super::sweep::{
-    axis, check_and_bind, checked_nus, one_of, write_in_order, Axis, Checked, Row, RunArgs,
-    APPROACH, GAP, LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
+    axis, check_and_bind, checked_nus, one_of, write_in_order, Axis, Checked, Column, Grid, Row,
+    RunArgs, APPROACH, GAP, LOAD, NU, R_ACROSS, R_ALONG, SHEAR, SPEED, VELOCITY, YOUNGS,
 };
 use super::CliError;
 use moving_hertz::scalar::{decimal_to_rational, Precision, Real};
 use moving_hertz::sweep;
 use moving_hertz::{
-    with_precision, ContactProblem, ContactSolution, Loading, Material, Moduli, Options, Solid,
-    Speed,
+    with_precision, ContactProblem, ContactSolution, Loading, Material, Options, Solid,
 };
 use rayon::prelude::*;
 
@@ -125,110 +124,75 @@ fn positive_values<T: Real + Send>(
         .collect()
 }
 
-/// The grid: each axis's values (ν and the speeds as text, the rest rounded), μ (per modulus,
-/// or per (ν, E) when E is given without a velocity), in the order of the rows.
-struct Grid<T> {
-    nus: Vec<String>,
-    moduli: Vec<String>,
-    speeds: Vec<String>,
-    along: Vec<(String, T)>,
-    across: Vec<(String, T)>,
-    sizes: Vec<(String, T)>,
-    /// μ by modulus, or by (ν, E) (index ν·|E| + E) when `mu_by_nu`; empty with --velocity.
+/// What the sweep forms of its half-spaces before any work: μ (per modulus, or per (ν, E)
+/// when E is given), and with --velocity the [`Solid`] of every (ν, modulus) (index
+/// ν·|moduli| + modulus), which gives c_R and μ.
+struct HalfSpaces<T: Real> {
     mu: Vec<T>,
     mu_by_nu: bool,
-    /// With --velocity, c_R of each (ν, modulus) (index ν·|moduli| + modulus).
-    c_r: Vec<T>,
-    /// The speed's, the modulus's and the size's options as given (`--gap`, `--youngs-modulus`,
-    /// `--load`, …).
+    solids: Vec<Solid<T>>,
+    /// The speed's, the modulus's and the size's options as given (`--gap`,
+    /// `--youngs-modulus`, `--load`, …).
     given: [&'static Checked; 3],
-    density: String,
 }
 
-impl<T> Grid<T> {
-    fn velocity(&self) -> bool {
-        self.given[0].option == "--velocity"
+/// The grid of the command line at precision `p` (ν, modulus, speed, R1, R2, load or
+/// approach), and its half-spaces; every refusal before any work.
+fn grid<T: Real + Send + Sync>(
+    a: &ContactSweepArgs,
+    p: T::Prec,
+) -> Result<(Grid<T, 6>, HalfSpaces<T>), CliError> {
+    let (precision, format) = (&a.run.precision, a.run.format);
+    let [(speed_axis, speed), (modulus_axis, modulus), (size_axis, size)] = a.groups()?;
+    let nus = checked_nus::<T>(&a.nu, precision, p)?;
+    let speeds = match speed.option {
+        "--velocity" => speed_axis.values::<T>(p),
+        _ => speed.values::<T>(speed_axis, precision, p)?,
+    };
+    let along = positive_values::<T>(&a.r_along, &R_ALONG, precision, p)?;
+    let across = positive_values::<T>(&a.r_across, &R_ACROSS, precision, p)?;
+    for r2 in a.r_across.extremes() {
+        for r1 in a.r_along.extremes() {
+            ratio_fits::<T>(r2, r1, p)?;
+        }
     }
-
-    fn youngs(&self) -> bool {
-        self.given[1].option == "--youngs-modulus"
-    }
-
-    fn by_load(&self) -> bool {
-        self.given[2].option == "--load"
-    }
+    let sizes = positive_values::<T>(size_axis, size, precision, p)?;
+    let moduli = positive_values::<T>(modulus_axis, modulus, precision, p)?;
+    let grid = Grid::new(
+        [nus, moduli, speeds, along, across, sizes].map(|c| Column::new(c, format, true)),
+        2,
+    );
+    let half = half_spaces(a, &grid, [speed, modulus, size], p)?;
+    Ok((grid, half))
 }
 
-impl<T: Real + Send + Sync> Grid<T> {
-    /// The grid of the command line at precision `p`; every refusal before any work.
-    fn new(a: &ContactSweepArgs, p: T::Prec) -> Result<Self, CliError> {
-        let precision = &a.run.precision;
-        let nus = checked_nus::<T>(&a.nu, precision, p)?;
-        let [(speed_axis, speed), (modulus_axis, modulus), (size_axis, size)] = a.groups()?;
-        let speeds = match speed.option {
-            "--velocity" => speed_axis.values::<T>(p),
-            _ => speed.values::<T>(speed_axis, precision, p)?,
-        };
-        let along = positive_values::<T>(&a.r_along, &R_ALONG, precision, p)?;
-        let across = positive_values::<T>(&a.r_across, &R_ACROSS, precision, p)?;
-        for r2 in a.r_across.extremes() {
-            for r1 in a.r_along.extremes() {
-                ratio_fits::<T>(r2, r1, p)?;
-            }
-        }
-        let sizes = positive_values::<T>(size_axis, size, precision, p)?;
-        let texts = |values: Vec<(String, T)>| values.into_iter().map(|(t, _)| t).collect();
-        let mut grid = Grid {
-            nus: texts(nus),
-            moduli: Vec::new(),
-            speeds: texts(speeds),
-            along,
-            across,
-            sizes,
-            mu: Vec::new(),
-            mu_by_nu: false,
-            c_r: Vec::new(),
-            given: [speed, modulus, size],
-            density: String::new(),
-        };
-        let moduli = positive_values::<T>(modulus_axis, modulus, precision, p)?;
-        grid.moduli = moduli.iter().map(|(t, _)| t.clone()).collect();
-        grid.half_spaces(a, moduli, modulus.option, p)?;
-        Ok(grid)
-    }
-
-    /// Forms μ (and, with --velocity, checks every half-space) before any work: a refusal
-    /// names the option and quotes the text.
-    fn half_spaces(
-        &mut self,
-        a: &ContactSweepArgs,
-        moduli: Vec<(String, T)>,
-        option: &'static str,
-        p: T::Prec,
-    ) -> Result<(), CliError> {
-        if let Some(rho) = &a.density {
-            args::positive::<T>(rho, "--density", "density rho", p)?;
-            self.density = rho.text.clone();
-            let context = "forming the half-space's wave speeds";
-            self.c_r = self.per_pair(|nu, m| {
-                let names = [
-                    ("Young's modulus", option, m),
-                    ("shear modulus", option, m),
-                    ("density", "--density", rho.text.as_str()),
-                    ("nu", "--nu", nu),
-                ];
-                self.solid(nu, m, p)
-                    .map(|s| s.c_r().clone())
-                    .map_err(|e| CliError::from_run(e, &names, context))
-            })?;
-            return Ok(());
-        }
-        if !self.youngs() {
-            self.mu = moduli.into_iter().map(|(_, mu)| mu).collect();
-            return Ok(());
-        }
+/// Forms μ (and, with --velocity, every half-space) before any work: a refusal names the
+/// option and quotes the text.
+fn half_spaces<T: Real + Send + Sync>(
+    a: &ContactSweepArgs,
+    grid: &Grid<T, 6>,
+    given: [&'static Checked; 3],
+    p: T::Prec,
+) -> Result<HalfSpaces<T>, CliError> {
+    let [nus, moduli, ..] = &grid.cols;
+    let option = given[1].option;
+    let youngs = option == "--youngs-modulus";
+    let mut half = HalfSpaces {
+        mu: Vec::new(),
+        mu_by_nu: youngs,
+        solids: Vec::new(),
+        given,
+    };
+    if let Some(rho) = &a.density {
+        args::positive::<T>(rho, "--density", "density rho", p)?;
+        let density = rho.text.as_str();
+        half.solids = per_pair(nus, moduli, |nu, m| solid([nu, m, density, ""], option, p))?;
+        // A half-space of moduli always has μ; none would be refused as 0.
+        let mu = |s: &Solid<T>| s.shear_modulus().cloned().unwrap_or_else(|| T::zero(p));
+        (half.mu, half.mu_by_nu) = (half.solids.iter().map(mu).collect(), true);
+    } else if youngs {
         // μ = E/(2(1 + ν)) exactly at each (ν, E), rounded once, as `contact` forms it.
-        self.mu = self.per_pair(|nu, e| {
+        half.mu = per_pair(nus, moduli, |nu, e| {
             let exact =
                 |t: &str| decimal_to_rational(t).map_err(|err| CliError::value(option, t, err));
             let e = Decimal {
@@ -237,181 +201,47 @@ impl<T: Real + Send + Sync> Grid<T> {
             };
             args::mu_from_youngs::<T>(&e, &exact(nu)?, p)
         })?;
-        self.mu_by_nu = true;
-        Ok(())
+    } else {
+        half.mu = moduli.values.clone();
     }
-
-    /// `f` of the texts of every (ν, modulus) (index ν·|moduli| + modulus), formed on the pool;
-    /// the first refusal in that order.
-    fn per_pair(
-        &self,
-        f: impl Fn(&str, &str) -> Result<T, CliError> + Sync,
-    ) -> Result<Vec<T>, CliError> {
-        let n = self.moduli.len();
-        let all: Vec<_> = (0..self.nus.len() * n)
-            .into_par_iter()
-            .map(|j| f(&self.nus[j / n], &self.moduli[j % n]))
-            .collect();
-        all.into_iter().collect()
-    }
-
-    /// The half-space of ν and modulus text with the density ([`Solid::parse`], as `contact`).
-    fn solid(&self, nu: &str, modulus: &str, p: T::Prec) -> moving_hertz::Result<Solid<T>> {
-        let density = self.density.as_str();
-        let moduli = match self.youngs() {
-            true => Moduli::Youngs {
-                youngs_modulus: modulus,
-                density,
-            },
-            false => Moduli::Shear {
-                shear_modulus: modulus,
-                density,
-            },
-        };
-        Solid::parse(nu, moduli, p)
-    }
-
-    /// The indices of point `j` on the six axes, in the order of the rows (the last fastest).
-    fn indices(&self, mut j: usize) -> [usize; 6] {
-        let lens = [
-            self.nus.len(),
-            self.moduli.len(),
-            self.speeds.len(),
-            self.along.len(),
-            self.across.len(),
-            self.sizes.len(),
-        ];
-        let mut at = [0; 6];
-        for (i, n) in lens.iter().enumerate().rev() {
-            at[i] = j % n;
-            j /= n;
-        }
-        at
-    }
+    Ok(half)
 }
 
-/// The half-space of a point: a [`Solid`] (with --velocity) or the material with μ.
-enum Half<T: Real> {
-    Solid(Solid<T>),
-    Material(Material<T>, T),
+/// `f` of the texts of every (ν, modulus) (index ν·|moduli| + modulus), formed on the pool;
+/// the first refusal in that order.
+fn per_pair<T: Sync, V: Send>(
+    nus: &Column<T>,
+    moduli: &Column<T>,
+    f: impl Fn(&str, &str) -> Result<V, CliError> + Sync,
+) -> Result<Vec<V>, CliError> {
+    let n = moduli.texts.len();
+    let all: Vec<_> = (0..nus.texts.len() * n)
+        .into_par_iter()
+        .map(|j| f(&nus.texts[j / n], &moduli.texts[j % n]))
+        .collect();
+    all.into_iter().collect()
 }
 
-impl<T: Real> Half<T> {
-    fn shear_modulus(&self) -> Option<T> {
-        match self {
-            Half::Solid(s) => s.shear_modulus().cloned(),
-            Half::Material(_, mu) => Some(mu.clone()),
-        }
-    }
-}
-
-/// What a block formed last, at its indices: kept while consecutive points share it.
-type Cached<K, V> = Option<(K, moving_hertz::Result<V>)>;
-
-impl<T: Real + Send + Sync> Grid<T> {
-    /// The half-space of ν `iv` and modulus `im` (checked before any work).
-    fn half(&self, iv: usize, im: usize, p: T::Prec) -> moving_hertz::Result<Half<T>> {
-        let nu = &self.nus[iv];
-        if self.velocity() {
-            return self.solid(nu, &self.moduli[im], p).map(Half::Solid);
-        }
-        let mu = match self.mu_by_nu {
-            true => &self.mu[iv * self.moduli.len() + im],
+impl<T: Real> HalfSpaces<T> {
+    /// μ of ν `iv` and modulus `im`.
+    fn mu(&self, iv: usize, im: usize, moduli: usize) -> &T {
+        match self.mu_by_nu {
+            true => &self.mu[iv * moduli + im],
             false => &self.mu[im],
-        };
-        Ok(Half::Material(Material::parse(nu, p)?, mu.clone()))
-    }
-
-    /// The speed `is` in `half`, from its text exactly (as `contact` forms it).
-    fn speed(&self, half: &Half<T>, is: usize) -> moving_hertz::Result<Speed<T>> {
-        let text = &self.speeds[is];
-        match (half, self.given[0].option) {
-            (Half::Solid(s), _) => s.parse_velocity(text),
-            (Half::Material(m, _), "--gap") => m.parse_gap(text),
-            (Half::Material(m, _), _) => m.parse_speed(text),
         }
-    }
-
-    /// The problems of the points `range`, each half-space and speed formed once for the
-    /// consecutive points that share it.
-    fn problems(
-        &self,
-        range: std::ops::Range<usize>,
-        p: T::Prec,
-    ) -> Vec<moving_hertz::Result<ContactProblem<T>>> {
-        let mut half: Cached<(usize, usize), Half<T>> = None;
-        let mut speed: Cached<(usize, usize, usize), Speed<T>> = None;
-        let mut out = Vec::with_capacity(range.len());
-        for j in range {
-            let [iv, im, is, i1, i2, il] = self.indices(j);
-            let h = match &mut half {
-                Some((at, h)) if *at == (iv, im) => &*h,
-                slot => &slot.insert(((iv, im), self.half(iv, im, p))).1,
-            };
-            let sp = match &mut speed {
-                Some((at, sp)) if *at == (iv, im, is) => &*sp,
-                slot => {
-                    let sp = h
-                        .as_ref()
-                        .map_err(Clone::clone)
-                        .and_then(|h| self.speed(h, is));
-                    &slot.insert(((iv, im, is), sp)).1
-                }
-            };
-            let size = self.sizes[il].1.clone();
-            let problem = sp.clone().and_then(|speed| {
-                let h = h.as_ref().map_err(Clone::clone)?;
-                Ok(ContactProblem {
-                    speed,
-                    radius_along: self.along[i1].1.clone(),
-                    radius_across: self.across[i2].1.clone(),
-                    loading: if self.by_load() {
-                        Loading::Load(size)
-                    } else {
-                        Loading::Approach(size)
-                    },
-                    // A half-space of moduli always has μ; none would be refused as 0.
-                    shear_modulus: h.shear_modulus().unwrap_or_else(|| T::zero(p)),
-                })
-            });
-            out.push(problem);
-        }
-        out
-    }
-
-    /// c_R of point `j`'s half-space (with --velocity).
-    fn c_r(&self, j: usize) -> Option<&T> {
-        if self.c_r.is_empty() {
-            return None;
-        }
-        let [iv, im, ..] = self.indices(j);
-        self.c_r.get(iv * self.moduli.len() + im)
-    }
-
-    /// The texts of point `j`'s inputs, in the order of the columns.
-    fn texts(&self, j: usize) -> [&str; 6] {
-        let [iv, im, is, i1, i2, il] = self.indices(j);
-        [
-            &self.nus[iv],
-            &self.moduli[im],
-            &self.speeds[is],
-            &self.along[i1].0,
-            &self.across[i2].0,
-            &self.sizes[il].0,
-        ]
     }
 
     /// The columns: the inputs, c_R and M_R with --velocity, the results, the error.
     fn keys(&self) -> Vec<&'static str> {
         let [speed, modulus, size] = self.given.map(Checked::key);
         let mut keys = vec!["nu", modulus, speed, "r_along", "r_across", size];
-        if self.velocity() {
+        if !self.solids.is_empty() {
             keys.extend(["c_r", "mr"]);
         }
         keys.extend("a,a_error,b,b_error,k,k_error,e,e_error,major_axis,p0,p0_error".split(','));
-        let other = match self.by_load() {
-            true => ["d0", "d0_error"],
-            false => ["load", "load_error"],
+        let other = match self.given[2].option {
+            "--load" => ["d0", "d0_error"],
+            _ => ["load", "load_error"],
         };
         keys.extend(other.into_iter().chain(["route", "iterations", "error"]));
         keys
@@ -434,14 +264,14 @@ impl<T: Real + Send + Sync> Grid<T> {
         };
         let mut keys = keys.iter();
         let mut key = || keys.next().copied().unwrap_or_default();
-        if self.velocity() {
-            match c_r {
-                Some(c_r) => row.value(key(), c_r),
-                None => row.text(key(), ""),
-            }
+        if let Some(c_r) = c_r {
+            row.value(key(), c_r);
             row.value(key(), s.problem().speed.mr());
         }
-        let other = if self.by_load() { s.d0() } else { s.load() };
+        let other = match self.given[2].option {
+            "--load" => s.d0(),
+            _ => s.load(),
+        };
         for x in [s.a(), s.b(), s.k(), s.e()] {
             row.estimated([key(), key()], x);
         }
@@ -456,24 +286,54 @@ impl<T: Real + Send + Sync> Grid<T> {
 }
 
 /// Solves the sweep block by block on the pool, writing the rows in input order as they are
-/// solved; exit code 1 when a point failed (its row carries the error).
+/// solved; exit code 1 when a point failed (its row carries the error). Each point's
+/// half-space and speed are formed from their text exactly, as `contact` forms them.
 fn solve_and_write<T: Real + Send + Sync>(
     a: &ContactSweepArgs,
     total: usize,
     p: T::Prec,
 ) -> Result<(), CliError> {
-    let grid = Grid::<T>::new(a, p)?;
+    let (grid, half) = grid::<T>(a, p)?;
     let opts = Options::<T> {
         method: a.run.method,
         ..Default::default()
     };
-    let keys = grid.keys();
-    let solve = |range| sweep::try_contacts(&grid.problems(range, p), &opts);
-    let row = |row: &mut Row, j: usize, r: &moving_hertz::Result<ContactSolution<T>>| {
-        for (key, text) in keys.iter().zip(grid.texts(j)) {
-            row.text(key, text);
-        }
-        grid.push_results(row, &keys[6..], r, grid.c_r(j));
+    let keys = half.keys();
+    let [nus, moduli, speeds, along, across, sizes] = &grid.cols;
+    let nm = moduli.texts.len();
+    let solve = |range: std::ops::Range<usize>| {
+        let material = |iv: usize| Material::parse(&nus.texts[iv], p);
+        let shared = grid.speeds(range.clone(), material, |[iv, im, is, ..], material| {
+            let text = &speeds.texts[is];
+            match half.given[0].option {
+                "--velocity" => half.solids[iv * nm + im].parse_velocity(text),
+                "--gap" => material()?.parse_gap(text),
+                _ => material()?.parse_speed(text),
+            }
+        });
+        let problems: Vec<_> = (range.clone())
+            .map(|j| {
+                let [iv, im, _, i1, i2, il] = grid.indices(j);
+                let size = sizes.values[il].clone();
+                let speed = grid.speed_of(&shared, range.start, j).clone()?;
+                Ok(ContactProblem {
+                    speed,
+                    radius_along: along.values[i1].clone(),
+                    radius_across: across.values[i2].clone(),
+                    loading: match half.given[2].option {
+                        "--load" => Loading::Load(size),
+                        _ => Loading::Approach(size),
+                    },
+                    shear_modulus: half.mu(iv, im, nm).clone(),
+                })
+            })
+            .collect();
+        sweep::try_contacts(&problems, &opts)
     };
-    write_in_order("sweep contact", &keys, &a.run, total, solve, row)
+    let row = |row: &mut Row, j: usize, r: &moving_hertz::Result<ContactSolution<T>>| {
+        let [iv, im, ..] = grid.indices(j);
+        let c_r = half.solids.get(iv * nm + im).map(Solid::c_r);
+        half.push_results(row, &keys[6..], r, c_r);
+    };
+    write_in_order("sweep contact", &keys, &a.run, &grid, total, solve, row)
 }
